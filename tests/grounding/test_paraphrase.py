@@ -71,9 +71,10 @@ KNOWN_MISSES = frozenset(
         # name) and 'do that last'
         "so the doctor wants her spoon and the visitor wants the white cup and omar said he "
         "wanted the bowl but he can wait so do that last",
-        # blind13 / causes15: 'she won't need it' after two people: whose, and which 'it'
+        # blind13: 'she won't need it' after two people: the list of first names says nothing of
+        # Sam, who may be 'she' (causes15's "Lena's off home, … Marco can have the knife, she
+        # won't need it" reads since session 36, 12t)
         "Priya's leaving, give her the notepad, and Sam can have the stapler, she won't need it",
-        "Lena's off home, give her the lemon, and Marco can have the knife, she won't need it",
         # causes15: 'after those two' after three sentences of which the first two are meant
         # blind15 (tuned on in session 17) and causes17: kinds not met yet (docs/grounding.md,
         # "Session 17"): a remark before a pronoun request, 'them' for one person, 'each' with a
@@ -197,7 +198,6 @@ KNOWN_MISSES = frozenset(
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
-        "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         'Tom needs the glovrs, the pallets are splintery.',
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)

@@ -137,6 +137,69 @@ test_who_has = CASES.test(
 )
 
 
+# -- a closing '<P> won't need it' after '<Q> can have the X' ----------------------------------
+
+
+test_wont_need = CASES.test(
+    (
+        "Lena's off home, give her the lemon, and Marco can have the knife, she won't need it",
+        "lemon>B & knife>A",
+        KITCHEN,
+    ),
+    (
+        "Lena's off home, give her the lemon, and Marco can have the knife, Lena won't need it",
+        "lemon>B & knife>A",
+        KITCHEN,
+    ),
+    # the object she gets; he (Marco may be it); Marco himself; the knife given twice; a
+    # request after it; no one else named; Sam (the list says nothing of Sam)
+    (
+        "Lena's off home, give her the lemon, and Marco can have the knife, she won't need the "
+        "lemon",
+        None,
+        KITCHEN,
+    ),
+    (
+        "Lena's off home, give her the lemon, and Marco can have the knife, he won't need it",
+        None,
+        KITCHEN,
+    ),
+    (
+        "Lena's off home, give her the lemon, and Marco can have the knife, Marco won't need it",
+        None,
+        KITCHEN,
+    ),
+    ("give Lena the knife, and Marco can have the knife, she won't need it", None, KITCHEN),
+    (
+        "Lena's off home, give her the lemon, and Marco can have the knife, she won't need it. "
+        "Give Mr Novak the salt",
+        None,
+        KITCHEN,
+    ),
+    ("Marco can have the knife, she won't need it", None, KITCHEN),
+    (
+        "Priya's leaving, give her the notepad, and Sam can have the stapler, she won't need it",
+        None,
+        OFFICE,
+    ),
+)
+
+
+# -- 'human <noun>': an adjective, not a person ------------------------------------------------
+
+
+test_human_noun = CASES.test(
+    (
+        "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
+        "block_red>C & block_green>C",
+        NURSERY,
+    ),
+    # 'a human being' (a person); 'the human' of three
+    ("Ava is a human being; the two blocks to her.", None, NURSERY),
+    ("Give the human the teddy", None, NURSERY),
+)
+
+
 # -- a remark of several people, then a request whose one person is he / him / she / her -------
 
 

@@ -22922,6 +22922,68 @@ def _who_has36t(text: str, lexicon: Lexicon) -> str:
     return f"{m['who']} {m['rest']}"
 
 
+# a closing "she won't need it": why the object of the clause before may go to its new holder
+_WONT_NEED36T = re.compile(
+    r",\s*(?P<p>[^,.;!?]+?) (?:won't|will not|doesn't|does not|shan't) (?:need|want|be needing|"
+    r"be using) (?:it|that)(?: any ?more| now)?\s*(?P<end>[.!]?)\s*$",
+    _F,
+)
+_CAN_HAVE36T = re.compile(
+    r"(?:^|,\s*)(?:and\s+)?(?P<q>[^,.;!?]+?) (?:can have|can take|can keep|gets) (?P<x>[^,.;!?]+?)"
+    r"\s*$",
+    _F,
+)
+
+
+def _wont_need36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Lena's off home, give her the lemon, and Marco can have the knife, she
+    won't need it" — a closing '<P> won't need it' after a last clause '<Q> can have / gets the X'
+    says why Q may have X (P, who gave it up, has no more use for it): it asks nothing and is taken
+    off. Only when 'it' can be that one object (named once, in Q's clause), and P is someone else:
+    a name other than Q's, or a he / she that Q may not be (`_may_be35t`: title, first name, kin)
+    and exactly one other person named before may be. "…, she won't need the lemon" (the object
+    she gets), "…, he won't need it" (Marco may be he) and blind13's "… Sam can have the stapler,
+    she won't need it" (Sam may be she) stay refused."""
+    m = _WONT_NEED36T.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    q = _CAN_HAVE36T.search(rest)
+    if q is None or not _only_person(q["q"], lexicon) or not _only_kind(q["x"], lexicon, "object"):
+        return text
+    (qid,) = _ids(q["q"], lexicon, "human")
+    thing = _ids(q["x"], lexicon, "object")
+    if len(thing) != 1 or thing & _ids(rest[: q.start()], lexicon, "object"):
+        return text
+    said = m["p"].strip()
+    if said.lower() in ("he", "she"):
+        others = _ids(rest, lexicon, "human") - {qid}
+        if (
+            _may_be35t(qid, said, lexicon)
+            or len([p for p in others if _may_be35t(p, said, lexicon)]) != 1
+        ):
+            return text
+    elif not _only_person(said, lexicon) or _ids(said, lexicon, "human") == {qid}:
+        return text
+    return rest + m["end"]
+
+
+# 'human <noun>' naming a thing or an act, never a person (a closed list)
+_HUMAN_NOUN36T = re.compile(
+    r"\bhuman (?=(?:pyramid|pyramids|chain|chains|tower|towers|shield|error|nature|touch|"
+    r"rights|race|resources|cannonball|statue|statues)\b)",
+    _F,
+)
+
+
+def _human_noun36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Ava is building a tower like the acrobats' human pyramid; the two
+    blocks to her." — 'human' before a noun of a closed list ('pyramid', 'chain', 'error', …) is
+    an adjective, not the word for any person (`GENERIC_PEOPLE`), so it is taken off; 'a human',
+    'the human' and 'human being' are left."""
+    return _HUMAN_NOUN36T.sub("", text)
+
+
 _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _next_event36t,
     _people_in36t,
@@ -22930,6 +22992,8 @@ _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _kids36t,
     _upset_about36t,
     _who_has36t,
+    _wont_need36t,
+    _human_noun36t,
 )
 
 
