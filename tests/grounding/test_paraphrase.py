@@ -199,7 +199,6 @@ KNOWN_MISSES = frozenset(
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
-        'Tom needs the glovrs, the pallets are splintery.',
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         # a time after the request puts it off (test_phrasing_s34's "Give Carol the apple after

@@ -200,6 +200,21 @@ test_human_noun = CASES.test(
 )
 
 
+# -- a closing 'the <surface> is <state>' --------------------------------------------------------
+
+
+test_surface_state = CASES.test(
+    ("Tom needs the glovrs, the pallets are splintery.", "gloves>B", DEPOT),
+    ("Tom needs the gloves, the pallet is splintery.", "gloves>B", DEPOT),
+    # an object, not a surface; a negation; an object or a person as the state; no request
+    ("Tom needs the gloves, the scanner is splintery.", None, DEPOT),
+    ("Tom needs the gloves, the pallet is not splintery.", None, DEPOT),
+    ("Tom needs the gloves, the pallet is tape.", None, DEPOT),
+    ("Tom needs the gloves, the pallet is his.", None, DEPOT),
+    ("the pallet is splintery", None, DEPOT),
+)
+
+
 # -- a remark of several people, then a request whose one person is he / him / she / her -------
 
 

@@ -22984,6 +22984,34 @@ def _human_noun36t(text: str, lexicon: Lexicon) -> str:
     return _HUMAN_NOUN36T.sub("", text)
 
 
+def _surface_state36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Tom needs the glovrs, the pallets are splintery." — a closing comma
+    part that says a surface of the scene (or its kind, plural) is in some state asks nothing:
+    taken off. Only for 'the <surface>(s) is / are <word>' (an adverb of degree allowed) whose
+    word is no word of the scene, of the grammar (a verb) or of counting, choosing, negating or
+    pointing back (`_KEEP_WORDS`), and a request before it that names something."""
+    m = _rx(
+        r",\s*the (?P<s>[a-z]+?)(?:s)? (?:is|are|'s|'re) (?:so |really |very |a bit |all |too "
+        r")?(?P<adj>[a-z]+)\s*(?P<end>[.!]?)\s*$"
+    ).search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    surface = _ids(m["s"], lexicon, "surface")
+    adj = m["adj"].lower()
+    if (
+        len(surface) != 1
+        or not _only_kind(m["s"], lexicon, "surface")
+        or adj in _scene_words29(lexicon)
+        or adj in VERBS
+        or _KEEP_WORDS.search(adj)
+        or _names(adj, lexicon)
+        or not _names(rest, lexicon)
+    ):
+        return text
+    return rest + m["end"]
+
+
 _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _next_event36t,
     _people_in36t,
@@ -22994,6 +23022,7 @@ _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _who_has36t,
     _wont_need36t,
     _human_noun36t,
+    _surface_state36t,
 )
 
 
