@@ -62,8 +62,6 @@ KNOWN_MISSES = frozenset(
         "her so if you could bring Grandad the bib and the beaker that would be amazing thanks",
         "So the thing is Jess is up a ladder fixing the light and she's going to need the "
         "flashlight and honestly the screws too so could you get both of those over to her",
-        # blind9: 'him' and 'her' after two names without titles: the grounder knows no one's sex
-        "Bob, then Alice: chips for him, bottle for her",
         # causes11 (session 11): a plan naming an object the request does not ("to move the large
         # box") may ask for it
         "Tom wants to move the large box, can he have the gloves?",

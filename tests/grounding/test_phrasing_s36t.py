@@ -215,6 +215,26 @@ test_surface_state = CASES.test(
 )
 
 
+# -- 'P, then Q: X for him, Y for her' ---------------------------------------------------------
+
+
+test_then_header = CASES.test(
+    ("Bob, then Alice: chips for him, bottle for her", "chips>B ; bottle>A", TWO),
+    # the pronouns in the other order; one pronoun twice; a person as the second thing; two
+    # women; a name the list gives no sex (Sam)
+    ("Bob, then Alice: chips for her, bottle for him", None, TWO),
+    ("Bob, then Alice: chips for him, bottle for him", None, TWO),
+    ("Bob, then Alice: chips for him, Bob for her", None, TWO),
+    ("Ruth, then Mrs Khan: the jug for her, the magazine for her", None, WARD),
+    ("Priya, then Sam: the stapler for her, the red pen for him", None, OFFICE),
+)
+
+# titles alone read it as before (not this rule's)
+test_then_header_by_titles = PhrasingCases().test(
+    ("Mr Lee, then Mrs Khan: the jug for him, the magazine for her", "jug>B ; magazine>C", WARD),
+)
+
+
 # -- a remark of several people, then a request whose one person is he / him / she / her -------
 
 

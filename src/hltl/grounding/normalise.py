@@ -23012,6 +23012,31 @@ def _surface_state36t(text: str, lexicon: Lexicon) -> str:
     return rest + m["end"]
 
 
+def _then_header36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Bob, then Alice: chips for him, bottle for her" — a header of two people
+    in order ('P, then Q:') and after it one object for each, said with him / her in that order:
+    'chips to Bob, then bottle to Alice'. Only when each pronoun is its person for certain
+    (`_sure36t`: a title, a word of kin or a first name of that sex) and the other person may not
+    be it (`_may_be35t`); pronouns in the other order, or one either may be, are left (refused)."""
+    m = _rx(
+        r"^(?P<a>[^,:;.!?]+?),\s*(?:and\s+)?then\s+(?P<b>[^,:;.!?]+?)\s*:\s*(?P<x>[^,;.!?]+?) for "
+        r"(?P<p>him|her),\s*(?:and\s+)?(?:then\s+)?(?P<y>[^,;.!?]+?) for (?P<q>him|her)"
+        r"\s*(?P<end>[.!]?)\s*$"
+    ).match(text.strip())
+    if m is None or not (_only_person(m["a"], lexicon) and _only_person(m["b"], lexicon)):
+        return text
+    (a,) = _ids(m["a"], lexicon, "human")
+    (b,) = _ids(m["b"], lexicon, "human")
+    if a == b or not all(_only_kind(m[k], lexicon, "object") for k in ("x", "y")):
+        return text
+    p, q = m["p"].lower(), m["q"].lower()
+    if not (_sure36t(a, p, lexicon) and _sure36t(b, q, lexicon)):
+        return text
+    if _may_be35t(b, p, lexicon) or _may_be35t(a, q, lexicon):
+        return text
+    return f"{m['x']} to {m['a']}, then {m['y']} to {m['b']}{m['end']}"
+
+
 _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _next_event36t,
     _people_in36t,
@@ -23023,6 +23048,7 @@ _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _wont_need36t,
     _human_noun36t,
     _surface_state36t,
+    _then_header36t,
 )
 
 
