@@ -65,10 +65,6 @@ KNOWN_MISSES = frozenset(
         # causes11 (session 11): a plan naming an object the request does not ("to move the large
         # box") may ask for it
         "Tom wants to move the large box, can he have the gloves?",
-        # blind13: a run-on of three wants with 'he' for the third person (said by role and
-        # name) and 'do that last'
-        "so the doctor wants her spoon and the visitor wants the white cup and omar said he "
-        "wanted the bowl but he can wait so do that last",
         # blind13: 'she won't need it' after two people: the list of first names says nothing of
         # Sam, who may be 'she' (causes15's "Lena's off home, … Marco can have the knife, she
         # won't need it" reads since session 36, 12t)

@@ -12,6 +12,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     WARD,
@@ -232,6 +233,42 @@ test_then_header = CASES.test(
 # titles alone read it as before (not this rule's)
 test_then_header_by_titles = PhrasingCases().test(
     ("Mr Lee, then Mrs Khan: the jug for him, the magazine for her", "jug>B ; magazine>C", WARD),
+)
+
+
+# -- '<P> said he wanted the X': P's want; 'but he can wait' of the last want ------------------
+
+
+test_said_wanted = CASES.test(
+    (
+        "so the doctor wants her spoon and the visitor wants the white cup and omar said he "
+        "wanted the bowl but he can wait so do that last",
+        "(spoon>A & cup_white>C) ; bowl>B",
+        LAB,
+    ),
+    ("Omar said he wanted the bowl", "bowl>B", LAB),
+    # a pronoun of the other sex; a name the list gives no sex; 'it' or a person wanted
+    ("Omar said she wanted the bowl", None, LAB),
+    ("Emma said he wanted the bowl", None, LAB),
+    ("Dana wants the spoon and Omar said he wanted it", None, LAB),
+    ("Dana wants the spoon and Omar said he wanted Emma", None, LAB),
+)
+
+# session 15's `_can_wait` took the first 'and … wants' as the one who can wait: "… the visitor
+# wants the white cup and Omar wants the bowl but he can wait …" had read `spoon>A ;
+# (cup_white>C & bowl>B)` (a wrong reading); the want of the one who waits names no other person
+test_can_wait_is_the_last_want = PhrasingCases().test(
+    (
+        "the doctor wants her spoon and the visitor wants the white cup and Omar wants the bowl "
+        "but he can wait so do that last",
+        "(spoon>A & cup_white>C) ; bowl>B",
+        LAB,
+    ),
+    (
+        "the doctor wants her spoon and Omar wants the bowl but he can wait so do that last",
+        "spoon>A ; bowl>B",
+        LAB,
+    ),
 )
 
 

@@ -4467,12 +4467,17 @@ def _can_wait(text: str, lexicon: Lexicon) -> str:
     """'Priya wants the stapler and Sam wants the notepad but he can wait so do that last': the
     want of the one who can wait comes after the other."""
     m = _rx(
-        r"^(.+?) and ([^,]+?) (wants|needs|gets) (.+?),? but (?:he|she|they) can wait,?\s*so do "
+        r"^(.+) and ([^,]+?) (wants|needs|gets) (.+?),? but (?:he|she|they) can wait,?\s*so do "
         r"(?:that|his|hers|theirs|it|them) last\s*([.!]?)$"
     ).match(text.strip())
     if m is None or not _only_person(m.group(2), lexicon):
         return text
     if not _fits(next(iter(_ids(m.group(2), lexicon))), m.group(0), lexicon):
+        return text
+    # session 36 (12t): the one who can wait is the subject of the last want ("… and the
+    # visitor wants the white cup and Omar wants the bowl but he can wait …" had put the cup
+    # last with the bowl): the want said of them names no other person
+    if _ids(m.group(4), lexicon, "human"):
         return text
     return f"{m.group(1)}, then {m.group(2)} {m.group(3)} {m.group(4)}{m.group(5)}"
 
@@ -23037,6 +23042,32 @@ def _then_header36t(text: str, lexicon: Lexicon) -> str:
     return f"{m['x']} to {m['a']}, then {m['y']} to {m['b']}{m['end']}"
 
 
+def _said_wanted36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "… and omar said he wanted the bowl but he can wait …" — '<P> said he /
+    she wanted the X' is P's want, 'P wants the X' (the pronoun opening the clause said by P is P,
+    as `_subject_pronoun35t` reads one opening the clause after P's): only when P names one person
+    the pronoun is for certain (`_sure36t`: a title, a word of kin or a first name of that sex) and
+    what is wanted names objects alone. ('Mr Lee said she wanted the jug' and 'Emma said he wanted
+    the bowl', a name the list gives no sex, are left, refused.)"""
+
+    def want(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or not _only_kind(m["x"], lexicon, "object"):
+            return m[0]
+        (pid,) = _ids(m["p"], lexicon, "human")
+        if not _sure36t(pid, m["pro"], lexicon):
+            return m[0]
+        return f"{m['lead']}{m['p']} wants {m['x']}"
+
+    return _sub(
+        r"(?P<lead>^|\band |,\s*)(?P<p>[A-Za-z]\w*(?: [A-Za-z]\w*){0,2}) said (?P<pro>he|she) "
+        r"(?:wanted|needed|"
+        r"would like|'d like) (?P<x>(?:the|a|an|some|both) [a-z ]+?)(?=\s*(?:,|\bbut\b|\band\b|"
+        r"[.!?]|$))",
+        want,
+        text,
+    )
+
+
 _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _next_event36t,
     _people_in36t,
@@ -23049,6 +23080,7 @@ _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _human_noun36t,
     _surface_state36t,
     _then_header36t,
+    _said_wanted36t,
 )
 
 
