@@ -109,8 +109,8 @@ WARD_ORDER = "Thermometer to Ruth, the juggler. After that, tablets to Mr Lee."
     [
         (WARD_ORDER, "thermometer>A ; pills>B", WARD),
         (
-            "Hammer to Kofi, the crofter. No, hang on, the drill to Kofi, leave the hammer where it "
-            "is.",
+            "Hammer to Kofi, the crofter. No, hang on, the drill to Kofi, leave the hammer "
+            "where it is.",
             "drill>A",
             WORKSHOP,
         ),

@@ -22827,24 +22827,20 @@ def _no_trouble36t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# the words before 'habit' read as 'force of habit' after an apology (a closed list)
+_HABITS36T = r"chef|kitchen|workshop|old|bad"
+
+
 def _habit36t(text: str, lexicon: Lexicon) -> str:
     """Session 36 (12t): "Behind! Sorry, chef habit." — '<word> habit' after an apology, closing
-    its sentence, is 'force of habit' (read since session 15 as the apology for a call): the word
-    before 'habit' says what kind of habit, never who or what to act on, so a role of a person in
-    the scene ('chef') may be it; a word naming an object or a person by name ('salt habit',
-    'Lena habit') or one that counts, chooses or points back (`_KEEP_WORDS`) is not, and is left
-    as it was."""
-
-    def habit(m: re.Match[str]) -> str:
-        word = m["w"]
-        roles = {a for h in lexicon.scene.humans for a in h.aliases if a.islower()}
-        if _KEEP_WORDS.search(word) or (_names(word, lexicon) and word.lower() not in roles):
-            return m[0]
-        return f"{m['sorry']}, force of habit"
+    its sentence, is 'force of habit' (read since session 15 as the apology for a call) for the
+    words of a closed list (`_HABITS36T`, the trades and places session 15's remark openers name:
+    'chef', 'kitchen', 'workshop', and 'old', 'bad'); 'salt habit', 'Lena habit', a request before
+    the apology or no full stop after it are left (refused)."""
 
     return _sub(
-        r"\b(?P<sorry>sorry),\s+(?:(?:old|bad|an?)\s+)?(?P<w>[a-z]+) habits?(?=\s*[.!])",
-        habit,
+        rf"\b(?P<sorry>sorry),\s+(?:an?\s+)?(?:{_HABITS36T}) habits?(?=\s*[.!])",
+        lambda m: f"{m['sorry']}, force of habit",
         text,
     )
 
@@ -22872,107 +22868,6 @@ def _kids36t(text: str, lexicon: Lexicon) -> str:
     return text
 
 
-def _aside_object36t(what: str, rest: str, lexicon: Lexicon) -> bool:
-    """Whether ``what``, said aside of a person, names objects alone and the request ``rest``
-    after it names none of them nor an it / them / that / those / one (which could be them)."""
-    ids = _ids(what, lexicon)
-    return (
-        bool(ids)
-        and _only_kind(what, lexicon, "object")
-        and not ids & _ids(rest, lexicon)
-        and not re.search(r"\b(?:it|them|that|those|one)\b", rest, _F)
-    )
-
-
-# a feeling about something (a closed list): what it is about is no request
-_FEELING36T = (
-    r"upset|sad|cross|angry|annoyed|grumpy|moody|worried|unhappy|fed up|sulking|miffed|"
-    r"gutted|disappointed|down"
-)
-
-
-def _upset_about36t(text: str, lexicon: Lexicon) -> str:
-    """Session 36 (12t): "Bob is upset about the cup, so give him the apple" — a person's feeling
-    about an object (a closed list of feelings), then 'so' and a request: what the feeling is
-    about asks for nothing, so it is taken off ('Bob is upset, so give him the apple', read since
-    session 21 as a reason). Only when the request names neither that object nor an it / them /
-    that / one (which could be it), and the feeling is said of one person alone."""
-    m = _rx(
-        rf"^(?P<who>[^,.;!?]+?)(?P<be>'s|\s+is|\s+was|'s been|\s+has been)\s+(?:really |so |a bit "
-        rf"|very )?(?P<feel>{_FEELING36T}) (?:about|over|with) (?P<what>[^,.;!?]+?)"
-        r"(?P<rest>,?\s+so\s+[^.;!?]+[.!]?)\s*$"
-    ).match(text.strip())
-    if m is None or not _only_person(m["who"], lexicon):
-        return text
-    if not _aside_object36t(m["what"], m["rest"], lexicon):
-        return text
-    return f"{m['who']}{m['be']} {m['feel']}{m['rest']}"
-
-
-def _who_has36t(text: str, lexicon: Lexicon) -> str:
-    """Session 36 (12t): "Lena, who has the knife, wants the lemon" — a relative clause of
-    possession or use between commas after a person ('who has / has got / 's got / is holding /
-    is using the X') says what that person has, no request (a scene holds nothing in anyone's
-    hands, so it changes nothing): taken off. Only when X is objects alone and what follows names
-    neither X nor an it / them / that / one; 'who wants / needs …' (a want) and 'which is on the
-    shelf' (a place the scene may belie) are left."""
-    m = _rx(
-        r"^(?P<who>[^,.;!?]+?),\s+who(?:'s| has| is)?\s+(?:got|has|holding|using|carrying|"
-        r"minding)\s+(?P<what>[^,.;!?]+?),\s+(?P<rest>[^,.;!?]+[.!]?)\s*$"
-    ).match(text.strip())
-    if m is None or not _only_person(m["who"], lexicon):
-        return text
-    if not _aside_object36t(m["what"], m["rest"], lexicon):
-        return text
-    return f"{m['who']} {m['rest']}"
-
-
-# a closing "she won't need it": why the object of the clause before may go to its new holder
-_WONT_NEED36T = re.compile(
-    r",\s*(?P<p>[^,.;!?]+?) (?:won't|will not|doesn't|does not|shan't) (?:need|want|be needing|"
-    r"be using) (?:it|that)(?: any ?more| now)?\s*(?P<end>[.!]?)\s*$",
-    _F,
-)
-_CAN_HAVE36T = re.compile(
-    r"(?:^|,\s*)(?:and\s+)?(?P<q>[^,.;!?]+?) (?:can have|can take|can keep|gets) (?P<x>[^,.;!?]+?)"
-    r"\s*$",
-    _F,
-)
-
-
-def _wont_need36t(text: str, lexicon: Lexicon) -> str:
-    """Session 36 (12t): "Lena's off home, give her the lemon, and Marco can have the knife, she
-    won't need it" — a closing '<P> won't need it' after a last clause '<Q> can have / gets the X'
-    says why Q may have X (P, who gave it up, has no more use for it): it asks nothing and is taken
-    off. Only when 'it' can be that one object (named once, in Q's clause), and P is someone else:
-    a name other than Q's, or a he / she that Q may not be (`_may_be35t`: title, first name, kin)
-    and exactly one other person named before may be. "…, she won't need the lemon" (the object
-    she gets), "…, he won't need it" (Marco may be he) and blind13's "… Sam can have the stapler,
-    she won't need it" (Sam may be she) stay refused."""
-    m = _WONT_NEED36T.search(text)
-    if m is None:
-        return text
-    rest = text[: m.start()]
-    q = _CAN_HAVE36T.search(rest)
-    if q is None or not _only_person(q["q"], lexicon) or not _only_kind(q["x"], lexicon, "object"):
-        return text
-    (qid,) = _ids(q["q"], lexicon, "human")
-    thing = _ids(q["x"], lexicon, "object")
-    if len(thing) != 1 or thing & _ids(rest[: q.start()], lexicon, "object"):
-        return text
-    said = m["p"].strip()
-    if said.lower() in ("he", "she"):
-        others = _ids(rest, lexicon, "human") - {qid}
-        if (
-            _may_be35t(qid, said, lexicon)
-            or len([p for p in others if _may_be35t(p, said, lexicon)]) != 1
-        ):
-            return text
-    elif not _only_person(said, lexicon) or _ids(said, lexicon, "human") == {qid}:
-        return text
-    return rest + m["end"]
-
-
 # 'human <noun>' naming a thing or an act, never a person (a closed list)
 _HUMAN_NOUN36T = re.compile(
     r"\bhuman (?=(?:pyramid|pyramids|chain|chains|tower|towers|shield|error|nature|touch|"
@@ -22987,34 +22882,6 @@ def _human_noun36t(text: str, lexicon: Lexicon) -> str:
     an adjective, not the word for any person (`GENERIC_PEOPLE`), so it is taken off; 'a human',
     'the human' and 'human being' are left."""
     return _HUMAN_NOUN36T.sub("", text)
-
-
-def _surface_state36t(text: str, lexicon: Lexicon) -> str:
-    """Session 36 (12t): "Tom needs the glovrs, the pallets are splintery." — a closing comma
-    part that says a surface of the scene (or its kind, plural) is in some state asks nothing:
-    taken off. Only for 'the <surface>(s) is / are <word>' (an adverb of degree allowed) whose
-    word is no word of the scene, of the grammar (a verb) or of counting, choosing, negating or
-    pointing back (`_KEEP_WORDS`), and a request before it that names something."""
-    m = _rx(
-        r",\s*the (?P<s>[a-z]+?)(?:s)? (?:is|are|'s|'re) (?:so |really |very |a bit |all |too "
-        r")?(?P<adj>[a-z]+)\s*(?P<end>[.!]?)\s*$"
-    ).search(text)
-    if m is None:
-        return text
-    rest = text[: m.start()]
-    surface = _ids(m["s"], lexicon, "surface")
-    adj = m["adj"].lower()
-    if (
-        len(surface) != 1
-        or not _only_kind(m["s"], lexicon, "surface")
-        or adj in _scene_words29(lexicon)
-        or adj in VERBS
-        or _KEEP_WORDS.search(adj)
-        or _names(adj, lexicon)
-        or not _names(rest, lexicon)
-    ):
-        return text
-    return rest + m["end"]
 
 
 def _then_header36t(text: str, lexicon: Lexicon) -> str:
@@ -23074,11 +22941,7 @@ _STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
     _no_trouble36t,
     _habit36t,
     _kids36t,
-    _upset_about36t,
-    _who_has36t,
-    _wont_need36t,
     _human_noun36t,
-    _surface_state36t,
     _then_header36t,
     _said_wanted36t,
 )
