@@ -133,9 +133,16 @@ class PhrasingCases:
         """Every case that reads is refused with ``steps`` taken out of the rewrites
         (normalise._STEPS19): each rule is what reads it (the "cannot fail" rule)."""
         mine = set(steps)
-        monkeypatch.setattr(
-            normalise, "_STEPS19", tuple(s for s in normalise._STEPS19 if s not in mine)
-        )
+        kept = tuple(s for s in normalise._STEPS19 if s not in mine)
+        self.refused_with(normalise, "_STEPS19", kept, monkeypatch)
+
+    def refused_with(
+        self, module: object, name: str, off: object, monkeypatch: pytest.MonkeyPatch
+    ) -> None:
+        """Every case that reads is refused with ``module.name`` replaced by ``off`` (a rule
+        outside the rewrites, e.g. one the grammar calls, turned off): that rule is what reads
+        it."""
+        monkeypatch.setattr(module, name, off)
         assert self.read
         for text, _want, scene in self.read:
             assert_refused(text, scene)

@@ -66,32 +66,12 @@ KNOWN_MISSES = frozenset(
         "her so if you could bring Grandad the bib and the beaker that would be amazing thanks",
         "So the thing is Jess is up a ladder fixing the light and she's going to need the "
         "flashlight and honestly the screws too so could you get both of those over to her",
-        # blind9: 'him' and 'her' after two names without titles: the grounder knows no one's sex
-        "Bob, then Alice: chips for him, bottle for her",
         # causes11 (session 11): a plan naming an object the request does not ("to move the large
         # box") may ask for it
         "Tom wants to move the large box, can he have the gloves?",
-        # blind13 (tuned on in session 15; its 'wee box' reads since session 34): 'Sorry' after
-        # a call and before a remark of two words ("Behind! Sorry, chef habit.") could correct;
-        # 'chef habit' opens with no speaker or hearer
-        "Behind! Sorry, chef habit. Tongs to Lena please, thank you!",
-        # blind13 / causes15: two people said in a remark, then 'him'/'her': the grounder knows
-        # no one's sex from a first name, and a remark of two people is not taken off
-        "Ruth and Mr Lee are both here now, pass him the magazine",
-        "Marco and Lena are both in now, pass her the lemon",
-        # blind13: a run-on of three wants with 'he' for the third person (said by role and
-        # name) and 'do that last'
-        "so the doctor wants her spoon and the visitor wants the white cup and omar said he "
-        "wanted the bowl but he can wait so do that last",
         # blind13 / causes15: 'she won't need it' after two people: whose, and which 'it'
         "Priya's leaving, give her the notepad, and Sam can have the stapler, she won't need it",
         "Lena's off home, give her the lemon, and Marco can have the knife, she won't need it",
-        # blind13 / causes15: 'one of …' and 'the other two' (the grammar reads 'the other' for
-        # two objects only)
-        "Give Sam one of the pens and put the other two in the box",
-        "Give Tom one of the boxes and put the other two on the pallet",
-        # blind13: 'the kids' is not a name of the students
-        "Each of the kids gets a book",
         # causes15: 'after those two' after three sentences of which the first two are meant
         # blind15 (tuned on in session 17) and causes17: kinds not met yet (docs/grounding.md,
         # "Session 17"): a remark before a pronoun request, 'them' for one person, 'each' with a
@@ -121,8 +101,6 @@ KNOWN_MISSES = frozenset(
         # ('Cart'), corrections with a remark ('it's been redirected'), 'One apiece' headers
         "Good morning, good morning! Before the next track, could our robot friend pop the "
         "lemon over to Mr Novak? Lovely stuff.",
-        "Sorry, I'm so sorry to bother you, but if it's not too much trouble could the apple "
-        "maybe go to Carol? Sorry. Thank you.",
         "Person A takes the cup, and then the apple follows it to the very same player!",
         "Sorry, the crisps go to Carol, but not the apple, sorry, please leave that one.",
         "Cart the grey blanket over to Mr Lee.",
@@ -193,7 +171,6 @@ KNOWN_MISSES = frozenset(
         'anyway.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
-        'Drop the scnner on the belt before the next load comes down.',
         # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both
         # give Alice."; session 33, 12t)
         "Two items, both give Alice lah.",
@@ -212,7 +189,6 @@ KNOWN_MISSES = frozenset(
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
         'says.',
-        "Ava is building a tower like the acrobats' human pyramid; the two blocks to her.",
         'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
         'Tom needs the glovrs, the pallets are splintery.',
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)

@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from hltl.bench.grounding import show_tree
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, person_name, title_sex
+from hltl.grounding.normalise import _may_be35t
 from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
 from tests.grounding import fuzz
@@ -268,7 +269,8 @@ def test_a_correction_cut_off_after_i_mean_is_still_refused() -> None:
 #
 # "Mrs Ortiz was talking to Zoe about the ruler, let her have it" was refused at 'let her' without
 # its readings. The oracle: the pronoun could mean each person the remark names whom no title
-# rules out; refused naming them.
+# rules out; refused naming them (since session 36, when a first name or a word of kin rules all
+# but one out too, read as that one or refused).
 
 REMARKS = [
     "{a} was talking to {b} about the {o}, let {x} have it",
@@ -296,11 +298,16 @@ def test_a_pronoun_after_a_remark_of_two_people_lists_them(
     lexicon = Lexicon.of(scene)
     sex = PRONOUN_SEX[pronoun]
     fits = [p.id for p in (a, b) if title_sex(p.id, lexicon) in (None, sex)]
+    # session 36 (12t, normalise._named_by_sex36t): a first name of one sex or a word of kin
+    # rules a person out as a title does; when it leaves one, the pronoun may be read as that one
+    may = [p for p in fits if _may_be35t(p, pronoun, lexicon)]
     got = tree(text, scene)
-    if len(fits) == 2:
+    if len(may) == 2:
         _refused_naming(text, scene, fits)
     else:
-        assert got is None or show_tree(got) == f"{oid}>{fits[0]}", show_tree(got)
+        left = may or fits
+        read = got is not None and len(left) == 1 and show_tree(got) == f"{oid}>{left[0]}"
+        assert got is None or read, show_tree(got)
 
 
 def test_a_remark_of_two_people_and_a_title() -> None:

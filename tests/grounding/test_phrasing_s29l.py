@@ -108,12 +108,23 @@ WARD_ORDER = "Thermometer to Ruth, the juggler. After that, tablets to Mr Lee."
     ("text", "want", "scene"),
     [
         (WARD_ORDER, "thermometer>A ; pills>B", WARD),
-        ("Hammer to Kofi, the crofter. No, hang on, the drill to Kofi, leave the hammer where it "
-         "is.", "drill>A", WORKSHOP),
-        ("The cup goes to Bob, the baker. Before that, though, give Alice the apple.",
-         "apple>A ; cup>B", CELL),
-        ("Last, the stapler goes to Sam, the night porter. First, though, give Priya the "
-         "notebook.", "notebook>A ; stapler>B", OFFICE),
+        (
+            "Hammer to Kofi, the crofter. No, hang on, the drill to Kofi, leave the hammer "
+            "where it is.",
+            "drill>A",
+            WORKSHOP,
+        ),
+        (
+            "The cup goes to Bob, the baker. Before that, though, give Alice the apple.",
+            "apple>A ; cup>B",
+            CELL,
+        ),
+        (
+            "Last, the stapler goes to Sam, the night porter. First, though, give Priya the "
+            "notebook.",
+            "notebook>A ; stapler>B",
+            OFFICE,
+        ),
     ],
 )
 def test_a_sentence_end_is_not_inside_an_aside(text: str, want: str, scene: Scene) -> None:
@@ -130,10 +141,14 @@ def test_a_sentence_end_is_not_inside_an_aside(text: str, want: str, scene: Scen
     ("text", "want"),
     [
         # an aside that ends inside its sentence is still dropped
-        ("Thermometer to Ruth, the nurse, please. After that, tablets to Mr Lee.",
-         "thermometer>A ; pills>B"),
-        ("Thermometer to Ruth, who is busy. After that, tablets to Mr Lee.",
-         "thermometer>A ; pills>B"),
+        (
+            "Thermometer to Ruth, the nurse, please. After that, tablets to Mr Lee.",
+            "thermometer>A ; pills>B",
+        ),
+        (
+            "Thermometer to Ruth, who is busy. After that, tablets to Mr Lee.",
+            "thermometer>A ; pills>B",
+        ),
         ("Thermometer to Ruth, who is busy.", "thermometer>A"),
         ("Thermometer to Ruth. After that, tablets to Mr Lee.", "thermometer>A ; pills>B"),
     ],

@@ -863,6 +863,9 @@ def _people_then_pronoun(text: str, lexicon: Lexicon) -> str:
     ):
         person = _ids(m.group(1), lexicon, "human")
         if len(person) > 1:
+            named = _named_by_sex36t(m.group(1), m.group(2), person, lexicon)
+            if named is not None:
+                return named
             _pronoun_among([m.group(1)], m.group(2), person, lexicon)
     return text
 
@@ -4490,12 +4493,17 @@ def _can_wait(text: str, lexicon: Lexicon) -> str:
     """'Priya wants the stapler and Sam wants the notepad but he can wait so do that last': the
     want of the one who can wait comes after the other."""
     m = _rx(
-        r"^(.+?) and ([^,]+?) (wants|needs|gets) (.+?),? but (?:he|she|they) can wait,?\s*so do "
+        r"^(.+) and ([^,]+?) (wants|needs|gets) (.+?),? but (?:he|she|they) can wait,?\s*so do "
         r"(?:that|his|hers|theirs|it|them) last\s*([.!]?)$"
     ).match(text.strip())
     if m is None or not _only_person(m.group(2), lexicon):
         return text
     if not _fits(next(iter(_ids(m.group(2), lexicon))), m.group(0), lexicon):
+        return text
+    # session 36 (12t): the one who can wait is the subject of the last want ("… and the
+    # visitor wants the white cup and Omar wants the bowl but he can wait …" had put the cup
+    # last with the bowl): the want said of them names no other person
+    if _ids(m.group(4), lexicon, "human"):
         return text
     return f"{m.group(1)}, then {m.group(2)} {m.group(3)} {m.group(4)}{m.group(5)}"
 
@@ -23406,6 +23414,259 @@ def _can_keep35t(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- session 36 (engineer 12t) ---------------------------------------------------------------
+
+# the words after 'the next' that point back to a task or an object ('before the next one'),
+# never an event of the world
+_NEXT_TASK36T = frozenset(
+    (
+        "one",
+        "ones",
+        "thing",
+        "things",
+        "bit",
+        "bits",
+        "item",
+        "items",
+        "task",
+        "tasks",
+        "step",
+        "steps",
+        "job",
+        "jobs",
+        "lot",
+        "person",
+        "people",
+        "time",
+        "go",
+        "turn",
+        "round",
+    )
+)
+_NEXT_EVENT36T = re.compile(
+    r"(?P<lead>,?\s+before the) next (?P<noun>[a-z]+)(?P<more>(?: [a-z']+){0,3})"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _next_event36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): a closing deadline 'before the next <noun> …' whose noun is an event of
+    the world ("Drop the scnner on the belt before the next load comes down."): 'next' there
+    orders nothing of the request, so the deadline is read as '… before the load comes down' is
+    (`_when` / `_before_deadline32`: met by doing the task now) — only when the noun names nothing
+    of the scene (nor a typo of it), is no word for a task or an object ('the next one', 'the next
+    bit'), and the deadline without 'next' is one those rules take off; else left as it was."""
+    m = _NEXT_EVENT36T.search(text)
+    if m is None or m["noun"].lower() in _NEXT_TASK36T or _names(m["noun"], lexicon):
+        return text
+    plain = f"{text[: m.start()]}{m['lead']} {m['noun']}{m['more']}{m['end']}"
+    for rule in (_when, _before_deadline32):
+        out = rule(plain, lexicon)
+        if out != plain and "before" not in out[m.start() :].lower():
+            return out
+    return text
+
+
+def _sure36t(pid: str, pronoun: str, lexicon: Lexicon) -> bool:
+    """Whether he/she ``pronoun`` is person ``pid`` by what the scene says of its sex: a title or
+    word of kin (`said_sex35s`) or a first name of that sex (data/first_names_sex.txt)."""
+    sex = PRONOUN_SEX[pronoun.lower()]
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    firsts = {n.lower().split()[0] for n in (human.name, *human.aliases)}
+    named = {name_sexes().get(n) for n in firsts} - {None}
+    return said_sex35s(pid, lexicon) == sex or named == {sex}
+
+
+def _named_by_sex36t(said: str, request: str, person: set[str], lexicon: Lexicon) -> str | None:
+    """Session 36 (12t): 'Ruth and Mr Lee are both here now, pass him the magazine' — a remark
+    naming several people and asking nothing, then a request whose one person is a he / him /
+    she / her: when all but one of those named are ruled out (`_may_be35t`: a title, a first name
+    of one sex, a word of kin) and that one is the pronoun for certain (`_sure36t`) or no one else
+    in the scene may be it ("Marco and Lena are both in now, pass her the lemon": Marco and Mr
+    Novak are men), the pronoun is that person's name; None otherwise (`_pronoun_among` then
+    refuses with the readings, "Marco and Mr Novak …, pass him the lemon"). A 'her' before a
+    noun (a possessive) is left, and so is what a title alone decides (`_pronoun_among` lets the
+    grammar read 'Mr Lee and Mrs Khan: the jug for her, the magazine for him')."""
+    pronouns = {w.lower() for w in re.findall(r"\b(?:he|him|she|her)\b", request, _F)}
+    if len(pronouns) != 1 or _ids(request, lexicon, "human"):
+        return None
+    if re.search(r"\b(?:he|him|his|she|her|hers)\b", said, _F):
+        return None  # the remark has a pronoun of its own to read first
+    pronoun = next(iter(pronouns))
+    sex = PRONOUN_SEX[pronoun]
+    fits = [p for p in person if title_sex(p, lexicon) in (None, sex)]
+    if len(fits) == 1 and said_sex35s(fits[0], lexicon) == sex:
+        return None  # a title decides: the grammar reads it among them (as before)
+    if re.search(r"\bher (?!(?:the|a|an|both|some|one|all|these|those|this|that)\b)[a-z]", request):
+        return None  # 'her cup': a possessive
+    may = [p for p in sorted(person) if _may_be35t(p, pronoun, lexicon)]
+    if len(may) != 1:
+        return None
+    (pid,) = may
+    others = [h.id for h in lexicon.scene.humans if h.id != pid]
+    if not _sure36t(pid, pronoun, lexicon) and any(_may_be35t(o, pronoun, lexicon) for o in others):
+        return None
+    name = next(it.text for it in _names(said, lexicon) if {r.id for r in it.refs} == {pid})
+    told = _sub(r"\b" + pronoun + r"\b", name, request)
+    return f"{said}, {told}"
+
+
+def _people_in36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): 'Marco and Lena are (both) in (now).' — people 'in' with no place after
+    it have come in, as 'Lena's in now' says of one (`_why_said_first`): read as '… are here'.
+    Only for a sentence of people named alone, joined by 'and'."""
+
+    def here(m: re.Match[str]) -> str:
+        who = re.split(r",\s*|\s+and\s+", m["who"])
+        return (
+            f"{m['who']} are here{m['rest']}"
+            if len(who) > 1 and all(_only_person(w, lexicon) for w in who)
+            else m[0]
+        )
+
+    return _sub(
+        r"(?:^|(?<=[.!?]\s))(?P<who>[^,.!?;]+?) (?:are|'re) (?:both |all )?in"
+        r"(?P<rest>(?: now)?(?:[.!,]|$))",
+        here,
+        text,
+    )
+
+
+def _no_trouble36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "if it's not too much trouble could the apple maybe go to Carol?" — the
+    condition of courtesy said straight before a polite question (no comma between: session 19's
+    `_hedges19` takes it off only before a comma or the end) asks nothing: taken off, so the
+    question is read as said alone (its 'maybe' a softener there). Only 'trouble' / 'bother', and
+    only before could / can / would / will / might opening the question."""
+    return _sub(
+        r"(?:^|(?<=[.!?,]\s))(?:but\s+)?if (?:it's|it is) (?:not|no) (?:too much |any )?"
+        r"(?:trouble|bother)\s*,?\s+(?=(?:could|can|would|will|might) [a-z])",
+        "",
+        text,
+    )
+
+
+# the words before 'habit' read as 'force of habit' after an apology (a closed list)
+_HABITS36T = r"chef|kitchen|workshop|old|bad"
+
+
+def _habit36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Behind! Sorry, chef habit." — '<word> habit' after an apology, closing
+    its sentence, is 'force of habit' (read since session 15 as the apology for a call) for the
+    words of a closed list (`_HABITS36T`, the trades and places session 15's remark openers name:
+    'chef', 'kitchen', 'workshop', and 'old', 'bad'); 'salt habit', 'Lena habit', a request before
+    the apology or no full stop after it are left (refused)."""
+
+    return _sub(
+        rf"\b(?P<sorry>sorry),\s+(?:an?\s+)?(?:{_HABITS36T}) habits?(?=\s*[.!])",
+        lambda m: f"{m['sorry']}, force of habit",
+        text,
+    )
+
+
+# words for the children of a group, said of the people of a shared role for children (a closed
+# list both ways: 'the kids' of the classroom's two students)
+_KIDS36T = r"kids|children|pupils|schoolkids|schoolchildren"
+_CHILD_ROLES36T = ("student", "pupil")
+
+
+def _kids36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Each of the kids gets a book" — 'the kids' / 'the children' / 'the
+    pupils' where two people or more of the scene share a role for children ('student', 'pupil')
+    and no one else has it: those people, said as the role's plural ('the students', which the
+    grammar reads as every one of them). Left as it was in a scene without such a role (the
+    nursery's toddler and big sister are no role shared) or when a name of the scene is one of
+    those words."""
+    said = {a.lower() for h in lexicon.scene.humans for a in (h.name, *h.aliases)}
+    if said & set(_KIDS36T.split("|")):
+        return text
+    for role in _CHILD_ROLES36T:
+        held = [h for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)]
+        if len(held) >= 2:
+            return _sub(rf"\bthe (?:{_KIDS36T})\b", f"the {role}s", text)
+    return text
+
+
+# 'human <noun>' naming a thing or an act, never a person (a closed list)
+_HUMAN_NOUN36T = re.compile(
+    r"\bhuman (?=(?:pyramid|pyramids|chain|chains|tower|towers|shield|error|nature|touch|"
+    r"rights|race|resources|cannonball|statue|statues)\b)",
+    _F,
+)
+
+
+def _human_noun36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Ava is building a tower like the acrobats' human pyramid; the two
+    blocks to her." — 'human' before a noun of a closed list ('pyramid', 'chain', 'error', …) is
+    an adjective, not the word for any person (`GENERIC_PEOPLE`), so it is taken off; 'a human',
+    'the human' and 'human being' are left."""
+    return _HUMAN_NOUN36T.sub("", text)
+
+
+def _then_header36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "Bob, then Alice: chips for him, bottle for her" — a header of two people
+    in order ('P, then Q:') and after it one object for each, said with him / her in that order:
+    'chips to Bob, then bottle to Alice'. Only when each pronoun is its person for certain
+    (`_sure36t`: a title, a word of kin or a first name of that sex) and the other person may not
+    be it (`_may_be35t`); pronouns in the other order, or one either may be, are left (refused)."""
+    m = _rx(
+        r"^(?P<a>[^,:;.!?]+?),\s*(?:and\s+)?then\s+(?P<b>[^,:;.!?]+?)\s*:\s*(?P<x>[^,;.!?]+?) for "
+        r"(?P<p>him|her),\s*(?:and\s+)?(?:then\s+)?(?P<y>[^,;.!?]+?) for (?P<q>him|her)"
+        r"\s*(?P<end>[.!]?)\s*$"
+    ).match(text.strip())
+    if m is None or not (_only_person(m["a"], lexicon) and _only_person(m["b"], lexicon)):
+        return text
+    (a,) = _ids(m["a"], lexicon, "human")
+    (b,) = _ids(m["b"], lexicon, "human")
+    if a == b or not all(_only_kind(m[k], lexicon, "object") for k in ("x", "y")):
+        return text
+    p, q = m["p"].lower(), m["q"].lower()
+    if not (_sure36t(a, p, lexicon) and _sure36t(b, q, lexicon)):
+        return text
+    if _may_be35t(b, p, lexicon) or _may_be35t(a, q, lexicon):
+        return text
+    return f"{m['x']} to {m['a']}, then {m['y']} to {m['b']}{m['end']}"
+
+
+def _said_wanted36t(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12t): "… and omar said he wanted the bowl but he can wait …" — '<P> said he /
+    she wanted the X' is P's want, 'P wants the X' (the pronoun opening the clause said by P is P,
+    as `_subject_pronoun35t` reads one opening the clause after P's): only when P names one person
+    the pronoun is for certain (`_sure36t`: a title, a word of kin or a first name of that sex) and
+    what is wanted names objects alone. ('Mr Lee said she wanted the jug' and 'Emma said he wanted
+    the bowl', a name the list gives no sex, are left, refused.)"""
+
+    def want(m: re.Match[str]) -> str:
+        if not _only_person(m["p"], lexicon) or not _only_kind(m["x"], lexicon, "object"):
+            return m[0]
+        (pid,) = _ids(m["p"], lexicon, "human")
+        if not _sure36t(pid, m["pro"], lexicon):
+            return m[0]
+        return f"{m['lead']}{m['p']} wants {m['x']}"
+
+    return _sub(
+        r"(?P<lead>^|\band |,\s*)(?P<p>[A-Za-z]\w*(?: [A-Za-z]\w*){0,2}) said (?P<pro>he|she) "
+        r"(?:wanted|needed|"
+        r"would like|'d like) (?P<x>(?:the|a|an|some|both) [a-z ]+?)(?=\s*(?:,|\bbut\b|\band\b|"
+        r"[.!?]|$))",
+        want,
+        text,
+    )
+
+
+_STEPS36T: tuple[Callable[[str, Lexicon], str], ...] = (
+    _next_event36t,
+    _people_in36t,
+    _no_trouble36t,
+    _habit36t,
+    _kids36t,
+    _human_noun36t,
+    _then_header36t,
+    _said_wanted36t,
+)
+
+
 _STEPS35T: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and35t,
     _subject_pronoun35t,
@@ -28237,6 +28498,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS34T,
     # session 35 (12t): blind19, blind23, blind18, blind17 and causes15's kinds
     *_STEPS35T,
+    # session 36 (12t): blind23, causes10, blind13, blind17 and causes15's kinds
+    *_STEPS36T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
     # session 36 (12r): blind34's choices, counts, negation, exclusions and corrections

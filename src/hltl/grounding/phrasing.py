@@ -3664,14 +3664,18 @@ def _others_of_one(items: list[Item], k: int, n: int, count: int) -> tuple[list[
         for j in range(len(items))
         if _objects(items[j])
         and j
-        and items[j - 1].text.lower() in ("a", "an", "one")
+        and (items[j - 1].text.lower() in ("a", "an", "one") or _one_of36t(items, j))
         and len({r.id for r in items[j].refs}) > 1
     ]
     rest = items[:k] + items[k + n :]
     if (
         len(chosen) != 1
         or chosen[0] > k
-        or any(_is(x, "or", "either", "q:some", "whichever") for x in rest)
+        or any(
+            _is(x, "or", "either", "q:some", "whichever")
+            for j, x in enumerate(rest)
+            if not (j == chosen[0] - 1 and _one_of36t(items, chosen[0]))
+        )
     ):
         return None
     noun = items[chosen[0]]
@@ -3692,6 +3696,18 @@ def _others_of_one(items: list[Item], k: int, n: int, count: int) -> tuple[list[
             out.append(Item("word", "and", "and"))
         out += [Item("word", "other", "another"), noun]
     return out, n + (1 if named else 0)
+
+
+def _one_of36t(items: list[Item], j: int) -> bool:
+    """Session 36 (12t): whether 'one of the' is said before the plural name at ``j`` ("Give Sam
+    one of the pens and put the other two in the box"): the one choice of the instruction, as
+    'one pen' is (`_others_of_one`); 'any of', 'either of', 'some of' are not one."""
+    return (
+        j > 0
+        and _is(items[j - 1], "q:some")
+        and items[j - 1].text.lower() in ("one of the", "one of")
+        and items[j].text.lower().endswith("s")
+    )
 
 
 def _other_kind(
