@@ -175,14 +175,24 @@ def test_a_pronoun_a_person_named_may_be_is_read(text: str, want: str) -> None:
 @pytest.mark.parametrize(
     ("text", "want"),
     [
-        # the repair wins, asked as a question or not (Priya is Person A)
-        ("The stapler is for Sam, er, I mean Priya?", "stapler>A"),
+        # the repair wins (Priya is Person A)
         ("The stapler is for Sam, er, I mean Priya.", "stapler>A"),
-        ("The stapler is for Priya, er, I mean Sam?", "stapler>B"),
+        ("The stapler is for Priya, er, I mean Sam.", "stapler>B"),
     ],
 )
-def test_a_repair_in_a_question_wins(text: str, want: str) -> None:
+def test_a_repair_in_a_statement_wins(text: str, want: str) -> None:
     assert_reads(text, want, OFFICE)
+
+
+# Session 36 (lead): asked as a question, a repair leaves it a question, as "The stapler is for
+# Priya?" is (session 32's "…, sorry, Priya?"); a filler before the repair had let "…, er, I mean
+# Priya?" read, and 12c's repairs fuzz found "…, uh, no, Priya?" read the same way
+@pytest.mark.parametrize(
+    "text",
+    ["The stapler is for Sam, er, I mean Priya?", "The stapler is for Priya, er, I mean Sam?"],
+)
+def test_a_repair_in_a_question_is_no_request(text: str) -> None:
+    assert_refused(text, OFFICE, match="is a question")
 
 
 def test_a_question_without_a_repair_is_no_request() -> None:

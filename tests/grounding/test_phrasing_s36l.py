@@ -4,11 +4,18 @@
 - 12c's remarks fuzz: "Give Person B a snack, the heating's off" (4-2) read any of the four
   objects: 'a snack, the …' was taken for a kind said before the object it is ("Person B wants a
   snack, the chips") whatever followed 'the', so 'a snack' became 'something' and the remark was
-  dropped as a reason. The phrase after the comma must name an object of the scene now."""
+  dropped as a reason. The phrase after the comma must name an object of the scene now.
+- 12c's repairs fuzz: "The stapler is for Sam, uh, no, Priya?" (office) read stapler>A, where
+  "The stapler is for Priya?" is refused as a question: a comma beside a repair word ends no
+  clause, but a filler between them ('uh') hid the repair. Fillers are passed over now.
+- 12c's remarks fuzz: "Marco needs the knife so Lena can have the lemon. It's for the bake sale."
+  (kitchen) read knife>A & lemon>B, where the sentence without the remark is refused: a want run
+  on into 'so …' is split when the request after 'so' says 'it'/'them', and the 'It' of the next
+  sentence was taken for it. Only the request's own sentence counts now."""
 
 from __future__ import annotations
 
-from tests.grounding.helpers import PhrasingCases
+from tests.grounding.helpers import KITCHEN, OFFICE, PhrasingCases
 from tests.grounding.test_phrasing_s32r import F42
 
 CASES = PhrasingCases()
@@ -24,4 +31,22 @@ test_kind_before_its_object = CASES.test(
     ("Person B wants a snack, the heating's off.", None, F42),
     # the kind does not fit the object (refused, as before)
     ("Person B wants a snack, the cup please.", None, F42),
+)
+
+test_repair_said_as_a_question = CASES.test(
+    ("The stapler is for Sam, uh, no, Priya?", None, OFFICE),
+    ("The stapler is for Sam, erm, no, Priya?", None, OFFICE),
+    ("The stapler is for Sam, no, Priya?", None, OFFICE),
+    # said as a statement or a request, the repair reads as before
+    ("The stapler is for Sam, uh, no, Priya.", "stapler>A", OFFICE),
+    ("Give the stapler to Sam, uh, no, Priya.", "stapler>A", OFFICE),
+    ("Sam's busy, uh, can you give Priya the stapler?", "stapler>A", OFFICE),
+)
+
+test_run_on_want_its_own_sentence = CASES.test(
+    ("Marco needs the knife so Lena can have the lemon. It's for the bake sale.", None, KITCHEN),
+    ("Marco needs the knife so Lena can have the lemon.", None, KITCHEN),
+    # the request after 'so' saying 'it' itself: split as before
+    ("Marco needs the knife so hand it over.", "knife>A", KITCHEN),
+    ("Marco needs the knife. It's for the bake sale.", "knife>A", KITCHEN),
 )

@@ -12512,9 +12512,11 @@ _WANT_RUN_ON35 = re.compile(
 def _want_run_on35(text: str, lexicon: Lexicon) -> str:
     """Session 35: a mark put after the want ('…, so take it over', '…. can you get it to her')
     when its object is objects of the scene only ('her bottle' as 'the bottle'), its person one
-    person, and the request after it says 'it' or 'them'."""
+    person, and the request after it says 'it' or 'them' (in its own sentence: session 36, the
+    lead — "Marco needs the knife so Lena can have the lemon. It's for the bake sale." had taken
+    the next sentence's 'It' and read the lemon as a handover to Lena)."""
     m = _WANT_RUN_ON35.match(text)
-    if m is None or not re.search(r"\b(?:it|them)\b", text[m.end() :], _F):
+    if m is None or not re.search(r"\b(?:it|them)\b", re.split(r"[.;!?]", text[m.end() :])[0], _F):
         return text
     x = m["x"] or re.sub(r"^(?:her|his|their)\b", "the", m["y"], flags=_F)
     if not _things31(x, lexicon) or not _only_person(m["p"] or m["q"], lexicon):

@@ -197,9 +197,17 @@ def _said_as_a_question(items: list[Item], k: int, end: int) -> bool:
 def _beside_a_repair32l(items: list[Item], n: int) -> bool:
     """Session 32 (lead): whether the comma ``items[n]`` only sets off a repair word ('The stapler
     is for Sam, sorry, Priya?'): such commas end no clause, so the statement is still said as a
-    question (it had been read as a request after a repair: 12c's repairs fuzz)."""
-    return (n + 1 < len(items) and _repair_word32l(items[n + 1])) or (
-        n > 0 and _repair_word32l(items[n - 1])
+    question (it had been read as a request after a repair: 12c's repairs fuzz). Session 36
+    (lead): fillers and commas between the comma and the repair word are passed over ("The
+    stapler is for Sam, uh, no, Priya?" had been read as a request)."""
+    after = n + 1
+    while after < len(items) and _is(items[after], ",", "filler"):
+        after += 1
+    before = n - 1
+    while before >= 0 and _is(items[before], ",", "filler"):
+        before -= 1
+    return (after < len(items) and _repair_word32l(items[after])) or (
+        before >= 0 and _repair_word32l(items[before])
     )
 
 
