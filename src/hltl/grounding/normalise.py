@@ -28321,6 +28321,7 @@ def _only_chew36r(text: str, lexicon: Lexicon) -> str:
         return text
     return f"{text[: m.start()]}{m['end'] or '.'}"
 
+
 # "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A."
 _WHERE_WAS_I36R = re.compile(
     r"\bthe,\s*(?:(?:sorry|erm|um|er|uh),?\s*)*(?:where was i|what's it called|what do you call "
@@ -28720,3 +28721,33 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 32 (12s): blind17-23's kinds
     *_STEPS32S,
 )
+
+
+# Session 36 (lead): two objects said as the subject of one verb of placing, in a question whose
+# verb comes first ("… so can the packing tape and the scanner go on the pallet for now?", "could
+# the X and, er, the Y go in the box"): the verb before them makes both its subject
+_GO_TOGETHER36L = re.compile(
+    r"\b(?:can|could|should|would|will|shall|may|might) (?P<a>the [a-z' -]+?) and,? "
+    r"(?:(?:er|erm|uh|um),? )?(?P<b>the [a-z' -]+?) (?:both )?(?:go|be put|get put) (?:back )?"
+    r"(?:on|onto|in|into|up on|over on) (?P<s>the [a-z' -]+?)(?=[.,;!?]|$| for | now| please)",
+    _F,
+)
+
+
+def said_together36l(text: str, lexicon: Lexicon) -> list[tuple[str, set[str], str]]:
+    """Session 36 (lead): each stretch of ``text`` that says two objects of the scene go on one
+    surface of it together (above): the words, both objects' ids and the surface's id."""
+    if " and" not in text:
+        return []
+    out: list[tuple[str, set[str], str]] = []
+    for m in _GO_TOGETHER36L.finditer(text):
+        if not (
+            _only(m["a"], lexicon, "object")
+            and _only(m["b"], lexicon, "object")
+            and _only(m["s"], lexicon, "surface")
+        ):
+            continue
+        both = _ids(m["a"], lexicon, "object") | _ids(m["b"], lexicon, "object")
+        if len(both) == 2:
+            out.append((m[0], both, next(iter(_ids(m["s"], lexicon, "surface")))))
+    return out

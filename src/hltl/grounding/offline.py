@@ -38,6 +38,7 @@ from hltl.grounding.normalise import (
     people_named,
     placed_list32l,
     rewritten19,
+    said_together36l,
     trades29,
     trades31,
 )
@@ -564,6 +565,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             _two_sexes_one_person(text, lexicon)
             _said_against33s(text, node, lexicon)
             _asked_again34s(text, node, scene, lexicon)
+            _placed_together36l(text, node, lexicon)
         return node
     except GroundingError as refused:
         if not normalise:
@@ -612,6 +614,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 _two_sexes_one_person(text, lexicon)
                 _said_against33s(text, node, lexicon)
                 _asked_again34s(text, node, scene, lexicon)
+                _placed_together36l(text, node, lexicon)
                 if cut is not None:
                     raise cut
                 return node
@@ -919,6 +922,24 @@ def _place_said33s(items: list[Item], n: int) -> int:
     ):
         return n + 1
     return 0
+
+
+def _placed_together36l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 36 (lead): two objects said to go on a surface together ("Tom's off, so can the
+    packing tape and the scanner go on the pallet for now?") are not split between a person and
+    the surface: the grammar had read 'Tom … the packing tape' as a handover and only the
+    scanner onto the pallet (12c's repairs fuzz). Refused naming both readings."""
+    for words, both, surface in said_together36l(text, lexicon):
+        given = [t for t in tasks(node) if t.kind == "deliver" and t.obj in both]
+        if not given:
+            continue
+        t = given[0]
+        raise GroundingError(
+            f"{words!r} says the {' and the '.join(sorted(both))} go on the "
+            f"{lexicon.display(surface)}, yet the {t.obj} would go to "
+            f"{lexicon.display(t.target)}: put both on the {lexicon.display(surface)}, or give "
+            f"{lexicon.display(t.target)} the {t.obj}? say which"
+        )
 
 
 # Session 33 (12s): the forms of 'have' that say what a person holds now ("he's got one",
