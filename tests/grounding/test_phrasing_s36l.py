@@ -72,3 +72,10 @@ test_both_said_to_go_on_a_surface = CASES.test(
     ),
     ("the bottle goes to Alice and the chips go on the shelf", "bottle>A & chips@shelf", CELL),
 )
+
+test_an_order_word_keeps_the_opening_statement = CASES.test(
+    ("Order's up so last, give Carol the apple. Then give Bob the chips.", None, CELL),
+    # no order word: the statement is taken off as before
+    ("Order's up, give Carol the apple.", "apple>C", CELL),
+    ("Stock room's a mess, give Carol the apple.", "apple>C", CELL),
+)

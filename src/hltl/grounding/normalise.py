@@ -22238,6 +22238,9 @@ _OPENING33T = (
 # give Bob the chips": between what?): the statement is kept, so the request is not read alone
 # ('meanwhile', 'in the meantime' are while the statement's matter goes on: read as before)
 _ORDER_HELD36S = frozenset({"between"})
+# session 36 (lead): a word that puts the request in an order ("Order's up so last, give Carol the
+# apple. Then give Bob the chips." had read the apple first: 'last' went with the statement)
+_ORDER_HELD36L = frozenset({"first", "last", "lastly", "next", "finally", "then", "after"})
 
 
 def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
@@ -22251,7 +22254,7 @@ def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
         return text
     words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["said"].lower())
     held = _OPENING_HELD32S | {"he", "she", "they", "you", "not", "no", "never", "nothing"}
-    held |= _ORDER_HELD36S
+    held |= _ORDER_HELD36S | _ORDER_HELD36L
     if any(w in held or w.split("'")[0] in held or w.endswith("n't") for w in words):
         return text
     rest = m["lead"] + m["rest"]
