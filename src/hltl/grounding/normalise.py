@@ -23980,10 +23980,17 @@ _KIND_BEFORE34S = re.compile(
 
 
 def _kind_before34s(text: str, lexicon: Lexicon) -> str:
-    """'wants a snack, the chips' → 'wants something, the chips' (above)."""
-    return _KIND_BEFORE34S.sub(
-        lambda m: "something, " if _names_nothing(m["kind"], lexicon) else m.group(0), text
-    )
+    """'wants a snack, the chips' → 'wants something, the chips' (above). The phrase after the
+    comma must name an object of the scene (session 36, the lead: "Give Person B a snack, the
+    heating's off" had become 'something' and read as any object)."""
+
+    def kind(m: re.Match[str]) -> str:
+        then = re.split(r"[,.;!?]", text[m.end() :], maxsplit=1)[0]
+        if not _names_nothing(m["kind"], lexicon) or not _ids(then, lexicon, "object"):
+            return m.group(0)
+        return "something, "
+
+    return _KIND_BEFORE34S.sub(kind, text)
 
 
 # An apology opening the text, then its excuse ("Sorry, cold hands, give Person A the applw.",
