@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.grounding import normalise, offline
+from hltl.grounding.lexicon import name_sexes
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
@@ -199,3 +200,39 @@ def test_the_rules_are_what_changes_them(monkeypatch: pytest.MonkeyPatch) -> Non
     assert_case("Give Alice the cup, Bob had the chips.", "cup>A & chips>B", CELL)
     monkeypatch.setattr(normalise, "_kin_fits36s", lambda pid, text, lexicon: True)
     assert_case("Grandad's here, she'll need her bib", "bib>B", NURSERY)
+
+
+# -- first names of en_NZ's lists ('Lily', 'Ava'): a he / she they rule out --------------------
+
+test_lily = CASES.test(
+    # 'he' cannot be Lily (offline._named_other_sex34s, now that 'Lily' says her sex)
+    ("Lily's here, he'll need the bib", None, NURSERY),
+    ("Give Lily the teddy and hand him the bib", None, NURSERY),
+    # 'she' may be Lily: read as before
+    ("Lily's here, she'll need the bib", "bib>A", NURSERY),
+    ("Give Lily the teddy and hand her the bib", "teddy>A & bib>A", NURSERY),
+    # a first name rules Lily out, 'Grandad' says his sex: 'him' is Grandad (lexicon.named_out36s)
+    (
+        "Give Lily the teddy and Grandad the bib, then hand him the wipes.",
+        "(teddy>A & bib>B) ; wipes>B",
+        NURSERY,
+    ),
+    # 'her' there: Grandad ruled out by his kin word, Lily only by a name: refused as before
+    ("Give Lily the teddy and Grandad the bib, then hand her the wipes.", None, NURSERY),
+)
+
+
+def test_lily_refusal_names_who_he_may_be() -> None:
+    assert_refused(
+        "Lily's here, he'll need the bib",
+        NURSERY,
+        match=r"cannot mean Lily \(a woman's name\); it could mean Person B \(Grandad, grandpa\);",
+    )
+
+
+def test_first_names_added_keep_short_forms_out() -> None:
+    """en_NZ's names join the list; a name that begins one of the other sex ('Sam': Samantha)
+    stays out, as 'Sam' and 'Jess' were (blind27 says 'her' of Sam)."""
+    sexes = name_sexes()
+    assert (sexes["lily"], sexes["ava"]) == ("f", "f")
+    assert "sam" not in sexes and "jess" not in sexes
