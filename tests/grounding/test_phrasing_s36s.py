@@ -236,3 +236,32 @@ def test_first_names_added_keep_short_forms_out() -> None:
     sexes = name_sexes()
     assert (sexes["lily"], sexes["ava"]) == ("f", "f")
     assert "sam" not in sexes and "jess" not in sexes
+
+
+# -- blind21: 'while you're there' as an aside before the request (normalise._while_there36s) ----
+
+test_while_there = CASES.test(
+    (
+        "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
+        "killing me.",
+        "chips@shelf",
+        CELL,
+    ),
+    ("While you're there, put the crisps on the shelf.", "chips@shelf", CELL),
+    ("Could you, while you're there, put the crisps on the shelf?", "chips@shelf", CELL),
+    ("Give Bob the cup, while you're there, give Alice the apple.", "cup>B & apple>A", CELL),
+    # a 'there' after it may point back at where the hearer is; nothing asked after it
+    ("While you're there, put the crisps there too.", None, CELL),
+    ("While you're there, the crisps.", None, CELL),
+)
+
+
+def test_while_there_is_the_rule(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(normalise, "_while_there36s", lambda text, lexicon: text)
+    monkeypatch.setattr(normalise, "_STEPS36S", ())
+    monkeypatch.setattr(
+        normalise,
+        "_STEPS19",
+        tuple(s for s in normalise._STEPS19 if s.__name__ != "_while_there36s"),
+    )
+    assert_refused("While you're there, put the crisps on the shelf.", CELL)
