@@ -2354,23 +2354,6 @@ def first_name_sex36s(pid: str, lexicon: Lexicon) -> str | None:
     return next(iter(sexes)) if len(sexes) == 1 else None
 
 
-def named_out36s(candidates: list[str], sex: str | None, lexicon: Lexicon) -> list[str]:
-    """Session 36 (12s): "Grandad's got Lily on his knee with a messy face, hand him the wipes.":
-    the persons a he / she may be, less those a first name of the other sex rules out
-    (``first_name_sex36s``), when that leaves one whose title or word of kin says the pronoun's
-    sex for certain: the pronoun is that one (said by 'Grandad', not guessed from a name). Else
-    the candidates as they were (a name alone never resolves a pronoun)."""
-    out = [
-        p
-        for p in candidates
-        if said_sex35s(p, lexicon) is None and first_name_sex36s(p, lexicon) not in (None, sex)
-    ]
-    rest = [p for p in candidates if p not in out]
-    if out and len(rest) == 1 and said_sex35s(rest[0], lexicon) == sex:
-        return rest
-    return candidates
-
-
 def said_sex35s(pid: str, lexicon: Lexicon) -> str | None:
     """Session 35 (12s): 'm' or 'f' when the scene names person ``pid`` with a title or a word
     of kin ('Mr Lee', 'Grandad'); what resolving a he / she / him / her as a person of the

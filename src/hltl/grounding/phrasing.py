@@ -20,7 +20,6 @@ from hltl.grounding.lexicon import (
     Ref,
     common_words,
     first_names,
-    named_out36s,
     near_keyword,
     person_name,
     said_sex35s,
@@ -3067,7 +3066,6 @@ def _persons(items: list[Item], lexicon: Lexicon) -> list[Item]:
                 # "… and Carol the mug nearest to her": the one person of that part
                 candidates = [own]
             sex = PRONOUN_SEX.get(low)
-            candidates = named_out36s(candidates, sex, lexicon)
             if any(said_sex35s(p, lexicon) not in (None, sex) for p in candidates):
                 # "Mr Lee is cold, give her the blanket": not Mr Lee (a title says who is who;
                 # session 35, a word of kin too: "… for Grandad, give her both!")
