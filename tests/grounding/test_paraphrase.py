@@ -137,8 +137,6 @@ KNOWN_MISSES = frozenset(
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give Person A something to eat, but not the apple, she's allergic.",
-        "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
-        "killing me.",
         "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "

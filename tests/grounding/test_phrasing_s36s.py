@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.grounding import normalise, offline
+from hltl.grounding.lexicon import name_sexes
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
@@ -199,3 +200,63 @@ def test_the_rules_are_what_changes_them(monkeypatch: pytest.MonkeyPatch) -> Non
     assert_case("Give Alice the cup, Bob had the chips.", "cup>A & chips>B", CELL)
     monkeypatch.setattr(normalise, "_kin_fits36s", lambda pid, text, lexicon: True)
     assert_case("Grandad's here, she'll need her bib", "bib>B", NURSERY)
+
+
+# -- first names of en_NZ's lists ('Lily', 'Ava'): a he / she they rule out --------------------
+
+test_lily = CASES.test(
+    # 'he' cannot be Lily (offline._named_other_sex34s, now that 'Lily' says her sex)
+    ("Lily's here, he'll need the bib", None, NURSERY),
+    ("Give Lily the teddy and hand him the bib", None, NURSERY),
+    # 'she' may be Lily: read as before
+    ("Lily's here, she'll need the bib", "bib>A", NURSERY),
+    ("Give Lily the teddy and hand her the bib", "teddy>A & bib>A", NURSERY),
+    # of two people named a name does not pick one, either way: refused as before
+    ("Give Lily the teddy and Grandad the bib, then hand him the wipes.", None, NURSERY),
+    ("Give Lily the teddy and Grandad the bib, then hand her the wipes.", None, NURSERY),
+)
+
+
+def test_lily_refusal_names_who_he_may_be() -> None:
+    assert_refused(
+        "Lily's here, he'll need the bib",
+        NURSERY,
+        match=r"cannot mean Lily \(a woman's name\); it could mean Person B \(Grandad, grandpa\);",
+    )
+
+
+def test_first_names_added_keep_short_forms_out() -> None:
+    """en_NZ's names join the list; a name that begins one of the other sex ('Sam': Samantha)
+    stays out, as 'Sam' and 'Jess' were (blind27 says 'her' of Sam)."""
+    sexes = name_sexes()
+    assert (sexes["lily"], sexes["ava"]) == ("f", "f")
+    assert "sam" not in sexes and "jess" not in sexes
+
+
+# -- blind21: 'while you're there' as an aside before the request (normalise._while_there36s) ----
+
+test_while_there = CASES.test(
+    (
+        "Would you mind, while you're there, shoving the crisps up on the shelf? My back's "
+        "killing me.",
+        "chips@shelf",
+        CELL,
+    ),
+    ("While you're there, put the crisps on the shelf.", "chips@shelf", CELL),
+    ("Could you, while you're there, put the crisps on the shelf?", "chips@shelf", CELL),
+    ("Give Bob the cup, while you're there, give Alice the apple.", "cup>B & apple>A", CELL),
+    # a 'there' after it may point back at where the hearer is; nothing asked after it
+    ("While you're there, put the crisps there too.", None, CELL),
+    ("While you're there, the crisps.", None, CELL),
+)
+
+
+def test_while_there_is_the_rule(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(normalise, "_while_there36s", lambda text, lexicon: text)
+    monkeypatch.setattr(normalise, "_STEPS36S", ())
+    monkeypatch.setattr(
+        normalise,
+        "_STEPS19",
+        tuple(s for s in normalise._STEPS19 if s.__name__ != "_while_there36s"),
+    )
+    assert_refused("While you're there, put the crisps on the shelf.", CELL)

@@ -2344,6 +2344,16 @@ def _kin_sex35s(name: str) -> str | None:
     return KIN_SEX35S.get(words[-1]) if words else None
 
 
+def first_name_sex36s(pid: str, lexicon: Lexicon) -> str | None:
+    """Session 36 (12s): 'm' or 'f' when a one-word name the scene gives person ``pid`` is a
+    first name of that sex (data/first_names_sex.txt), and none of another; used only to rule a
+    person out."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    sexes = {name_sexes().get(a.lower()) for a in (human.name, *human.aliases) if " " not in a}
+    sexes.discard(None)
+    return next(iter(sexes)) if len(sexes) == 1 else None
+
+
 def said_sex35s(pid: str, lexicon: Lexicon) -> str | None:
     """Session 35 (12s): 'm' or 'f' when the scene names person ``pid`` with a title or a word
     of kin ('Mr Lee', 'Grandad'); what resolving a he / she / him / her as a person of the

@@ -24473,6 +24473,30 @@ def _when_talked35s(text: str, lexicon: Lexicon) -> str:
     return _WHEN_TALKED35S.sub(said, text)
 
 
+# the hearer passing by, said as an aside before the request ("Would you mind, while you're
+# there, shoving the crisps up on the shelf?"): when, now, as session 26's closing one
+_WHILE_THERE36S = re.compile(
+    r"(?P<lead>^|,)\s*while (?:you're|you are) (?:there|over there|passing|up there)\s*,\s*", _F
+)
+
+
+def _while_there36s(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (12s): 'while you're there' set off by commas before the request (as
+    `_while26` takes it off closing one, and the lexicon's fillers 'while you're over there' /
+    'at it'): taken off when a request follows it and what is left reads; a 'there' after it
+    (which could point back at where the hearer is) keeps it."""
+    m = _WHILE_THERE36S.search(text)
+    if m is None or re.search(r"\bthere\b", text[m.end() :], _F):
+        return text
+    out = text[: m.start()] + (" " if m["lead"] else "") + text[m.end() :]
+    out = out.strip()
+    out = out[:1].upper() + out[1:]
+    return out if _reading(out, lexicon) is not None else text
+
+
+_STEPS36S: tuple[Callable[[str, Lexicon], str], ...] = (_while_there36s,)
+
+
 _STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (
     _worked_on35s,
     _when_talked35s,
@@ -28526,6 +28550,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS34S,
     # session 35 (12s): blind21/22's kinds
     *_STEPS35S,
+    # session 36 (12s): blind21's kinds
+    *_STEPS36S,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,

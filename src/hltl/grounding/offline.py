@@ -18,6 +18,7 @@ from hltl.grounding.lexicon import (
     Item,
     Lexicon,
     ambiguous,
+    first_name_sex36s,
     first_names,
     foreign_words,
     lex,
@@ -1625,10 +1626,13 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
             continue
         if not given & set(named):
             continue  # "Give Ruth the jug, no, give it to him": read as someone else already
+        # session 36 (12s): nor one a word of kin or a first name says is of the other sex
         others = [
             h.id
             for h in lexicon.scene.humans
-            if h.id not in named and title_sex(h.id, lexicon) in (None, sex)
+            if h.id not in named
+            and said_sex35s(h.id, lexicon) in (None, sex)
+            and first_name_sex36s(h.id, lexicon) in (None, sex)
         ]
         kind = "a woman's name" if sex == "m" else "a man's name"
         if len(named) > 1:
