@@ -15,7 +15,7 @@
 
 from __future__ import annotations
 
-from tests.grounding.helpers import CELL, DEPOT, KITCHEN, OFFICE, PhrasingCases
+from tests.grounding.helpers import CELL, DEPOT, KITCHEN, NURSERY, OFFICE, PhrasingCases
 from tests.grounding.test_phrasing_s32r import F42
 
 CASES = PhrasingCases()
@@ -78,4 +78,12 @@ test_an_order_word_keeps_the_opening_statement = CASES.test(
     # no order word: the statement is taken off as before
     ("Order's up, give Carol the apple.", "apple>C", CELL),
     ("Stock room's a mess, give Carol the apple.", "apple>C", CELL),
+)
+
+test_a_name_inside_a_things_name = CASES.test(
+    ("give Lily the baby wipes, he's drawing margins.", None, NURSERY),
+    ("give Ava the baby wipes, he's thirsty.", None, NURSERY),
+    # a pronoun the person named may be, or no first name said: read as before
+    ("give Lily the baby wipes, she's drawing margins.", "wipes>A", NURSERY),
+    ("give the baby the baby wipes, he's drawing margins.", "wipes>A", NURSERY),
 )

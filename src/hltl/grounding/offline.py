@@ -1610,9 +1610,23 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
         return
     named: dict[str, set[str | None]] = {}
     said: dict[str, str] = {}
+    # session 36 (lead): a person's name inside a thing's name is not the person ('baby' of the
+    # nursery's Lily in "give Lily the baby wipes, he's drawing margins" had hidden her sex)
+    things = sorted(
+        {
+            n
+            for x in (*lexicon.scene.objects, *lexicon.scene.surfaces)
+            for n in (x.id.replace("_", " "), *x.aliases)
+        },
+        key=len,
+        reverse=True,
+    )
+    bare = text
+    for n in things:
+        bare = re.sub(rf"\b{re.escape(n)}\b", lambda m: " " * len(m[0]), bare, flags=re.I)
     for human in lexicon.scene.humans:
         for name in (human.name, *human.aliases):
-            found = re.search(rf"\b{re.escape(name)}\b", text, re.I)
+            found = re.search(rf"\b{re.escape(name)}\b", bare, re.I)
             if found is None:
                 continue
             # a first name said alone (a title, a role, a label say no sex here)
