@@ -1613,11 +1613,8 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
     # session 36 (lead): a person's name inside a thing's name is not the person ('baby' of the
     # nursery's Lily in "give Lily the baby wipes, he's drawing margins" had hidden her sex)
     things = sorted(
-        {
-            n
-            for x in (*lexicon.scene.objects, *lexicon.scene.surfaces)
-            for n in (x.id.replace("_", " "), *x.aliases)
-        },
+        {n for o in lexicon.scene.objects for n in (o.id.replace("_", " "), *o.aliases)}
+        | {n for s in lexicon.scene.surfaces for n in (s.id.replace("_", " "), *s.aliases)},
         key=len,
         reverse=True,
     )
