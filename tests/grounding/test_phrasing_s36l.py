@@ -15,7 +15,7 @@
 
 from __future__ import annotations
 
-from tests.grounding.helpers import KITCHEN, OFFICE, PhrasingCases
+from tests.grounding.helpers import CELL, DEPOT, KITCHEN, NURSERY, OFFICE, PhrasingCases
 from tests.grounding.test_phrasing_s32r import F42
 
 CASES = PhrasingCases()
@@ -49,4 +49,41 @@ test_run_on_want_its_own_sentence = CASES.test(
     # the request after 'so' saying 'it' itself: split as before
     ("Marco needs the knife so hand it over.", "knife>A", KITCHEN),
     ("Marco needs the knife. It's for the bake sale.", "knife>A", KITCHEN),
+)
+
+test_both_said_to_go_on_a_surface = CASES.test(
+    (
+        "Tom's off, so can the packing tape and, er, the scanner go on the pallet for now?",
+        None,
+        DEPOT,
+    ),
+    ("Tom's off, so can the packing tape and the scanner go on the pallet for now?", None, DEPOT),
+    # no person before them: both go there, as before
+    (
+        "Can the packing tape and, er, the scanner go on the pallet for now?",
+        "tape@pallet & scanner@pallet",
+        DEPOT,
+    ),
+    # a handover and a placement said apart: read as before
+    (
+        "Can Tom have the tape, and can the scanner go on the pallet?",
+        "tape>B & scanner@pallet",
+        DEPOT,
+    ),
+    ("the bottle goes to Alice and the chips go on the shelf", "bottle>A & chips@shelf", CELL),
+)
+
+test_an_order_word_keeps_the_opening_statement = CASES.test(
+    ("Order's up so last, give Carol the apple. Then give Bob the chips.", None, CELL),
+    # no order word: the statement is taken off as before
+    ("Order's up, give Carol the apple.", "apple>C", CELL),
+    ("Stock room's a mess, give Carol the apple.", "apple>C", CELL),
+)
+
+test_a_name_inside_a_things_name = CASES.test(
+    ("give Lily the baby wipes, he's drawing margins.", None, NURSERY),
+    ("give Ava the baby wipes, he's thirsty.", None, NURSERY),
+    # a pronoun the person named may be, or no first name said: read as before
+    ("give Lily the baby wipes, she's drawing margins.", "wipes>A", NURSERY),
+    ("give the baby the baby wipes, he's drawing margins.", "wipes>A", NURSERY),
 )

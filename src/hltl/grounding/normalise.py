@@ -22238,6 +22238,9 @@ _OPENING33T = (
 # give Bob the chips": between what?): the statement is kept, so the request is not read alone
 # ('meanwhile', 'in the meantime' are while the statement's matter goes on: read as before)
 _ORDER_HELD36S = frozenset({"between"})
+# session 36 (lead): a word that puts the request in an order ("Order's up so last, give Carol the
+# apple. Then give Bob the chips." had read the apple first: 'last' went with the statement)
+_ORDER_HELD36L = frozenset({"first", "last", "lastly", "next", "finally", "then", "after"})
 
 
 def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
@@ -22251,7 +22254,7 @@ def _opening_scene33t(text: str, lexicon: Lexicon) -> str:
         return text
     words = re.findall(r"[a-z]+(?:'[a-z]+)?", m["said"].lower())
     held = _OPENING_HELD32S | {"he", "she", "they", "you", "not", "no", "never", "nothing"}
-    held |= _ORDER_HELD36S
+    held |= _ORDER_HELD36S | _ORDER_HELD36L
     if any(w in held or w.split("'")[0] in held or w.endswith("n't") for w in words):
         return text
     rest = m["lead"] + m["rest"]
@@ -28345,6 +28348,7 @@ def _only_chew36r(text: str, lexicon: Lexicon) -> str:
         return text
     return f"{text[: m.start()]}{m['end'] or '.'}"
 
+
 # "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A."
 _WHERE_WAS_I36R = re.compile(
     r"\bthe,\s*(?:(?:sorry|erm|um|er|uh),?\s*)*(?:where was i|what's it called|what do you call "
@@ -28746,3 +28750,33 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 32 (12s): blind17-23's kinds
     *_STEPS32S,
 )
+
+
+# Session 36 (lead): two objects said as the subject of one verb of placing, in a question whose
+# verb comes first ("… so can the packing tape and the scanner go on the pallet for now?", "could
+# the X and, er, the Y go in the box"): the verb before them makes both its subject
+_GO_TOGETHER36L = re.compile(
+    r"\b(?:can|could|should|would|will|shall|may|might) (?P<a>the [a-z' -]+?) and,? "
+    r"(?:(?:er|erm|uh|um),? )?(?P<b>the [a-z' -]+?) (?:both )?(?:go|be put|get put) (?:back )?"
+    r"(?:on|onto|in|into|up on|over on) (?P<s>the [a-z' -]+?)(?=[.,;!?]|$| for | now| please)",
+    _F,
+)
+
+
+def said_together36l(text: str, lexicon: Lexicon) -> list[tuple[str, set[str], str]]:
+    """Session 36 (lead): each stretch of ``text`` that says two objects of the scene go on one
+    surface of it together (above): the words, both objects' ids and the surface's id."""
+    if " and" not in text:
+        return []
+    out: list[tuple[str, set[str], str]] = []
+    for m in _GO_TOGETHER36L.finditer(text):
+        if not (
+            _only(m["a"], lexicon, "object")
+            and _only(m["b"], lexicon, "object")
+            and _only(m["s"], lexicon, "surface")
+        ):
+            continue
+        both = _ids(m["a"], lexicon, "object") | _ids(m["b"], lexicon, "object")
+        if len(both) == 2:
+            out.append((m[0], both, next(iter(_ids(m["s"], lexicon, "surface")))))
+    return out
