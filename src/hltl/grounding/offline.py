@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 import re
 import threading
@@ -1595,6 +1596,24 @@ def _two_sexes_one_person(text: str, lexicon: Lexicon) -> None:
         )
 
 
+def _things_blanked36l(text: str, lexicon: Lexicon) -> str:
+    """Session 36 (lead): ``text`` with every name of the scene's objects and surfaces blanked
+    out, so a person's name inside a thing's name is not the person ('baby' of the nursery's
+    Lily in "give Lily the baby wipes, he's drawing margins" had hidden her sex)."""
+    scene = lexicon.scene
+    names = frozenset(n for o in scene.objects for n in (o.id.replace("_", " "), *o.aliases)) | {
+        n for x in scene.surfaces for n in (x.id.replace("_", " "), *x.aliases)
+    }
+    return _names_rx36l(names).sub(lambda m: " " * len(m[0]), text)
+
+
+@functools.lru_cache(maxsize=64)
+def _names_rx36l(names: frozenset[str]) -> re.Pattern[str]:
+    """One pattern for ``names``, the longest tried first."""
+    said = "|".join(re.escape(n) for n in sorted(names, key=lambda n: (-len(n), n)))
+    return re.compile(rf"\b(?:{said})\b", re.I)
+
+
 def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 34 (12s): 'Alice is off to work, so he is having the bottle': a he / she that no
     person the instruction names may be, each named by a first name of the other sex
@@ -1610,17 +1629,7 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
         return
     named: dict[str, set[str | None]] = {}
     said: dict[str, str] = {}
-    # session 36 (lead): a person's name inside a thing's name is not the person ('baby' of the
-    # nursery's Lily in "give Lily the baby wipes, he's drawing margins" had hidden her sex)
-    things = sorted(
-        {n for o in lexicon.scene.objects for n in (o.id.replace("_", " "), *o.aliases)}
-        | {n for s in lexicon.scene.surfaces for n in (s.id.replace("_", " "), *s.aliases)},
-        key=len,
-        reverse=True,
-    )
-    bare = text
-    for n in things:
-        bare = re.sub(rf"\b{re.escape(n)}\b", lambda m: " " * len(m[0]), bare, flags=re.I)
+    bare = _things_blanked36l(text, lexicon)
     for human in lexicon.scene.humans:
         for name in (human.name, *human.aliases):
             found = re.search(rf"\b{re.escape(name)}\b", bare, re.I)

@@ -200,14 +200,10 @@ def _beside_a_repair32l(items: list[Item], n: int) -> bool:
     question (it had been read as a request after a repair: 12c's repairs fuzz). Session 36
     (lead): fillers and commas between the comma and the repair word are passed over ("The
     stapler is for Sam, uh, no, Priya?" had been read as a request)."""
-    after = n + 1
-    while after < len(items) and _is(items[after], ",", "filler"):
-        after += 1
-    before = n - 1
-    while before >= 0 and _is(items[before], ",", "filler"):
-        before -= 1
-    return (after < len(items) and _repair_word32l(items[after])) or (
-        before >= 0 and _repair_word32l(items[before])
+    return any(
+        _repair_word32l(x)
+        for side in (items[n + 1 :], reversed(items[:n]))
+        for x in itertools.islice(itertools.dropwhile(lambda x: _is(x, ",", "filler"), side), 1)
     )
 
 
