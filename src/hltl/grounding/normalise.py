@@ -28685,13 +28685,15 @@ def _only_one_got37r(text: str, _lexicon: Lexicon) -> str:
 
 
 # "The pair of cups, the green and the white, want putting on the tray"
-_PAIR_OF37R = re.compile(r"\bthe pair of (?P<ks>[a-z]+s)\b", _F)
+_PAIR_OF37R = re.compile(
+    r"\bthe pair of (?P<ks>[a-z]+s)(?=,\s*the [a-z]+(?: one)? and the [a-z]+(?: one)?,)", _F
+)
 
 
 def _pair_of37r(text: str, lexicon: Lexicon) -> str:
-    """Session 37 (12r): "the pair of cups" is "both cups" where the scene holds exactly two
-    objects of that kind (else left), then read as session 33's "Both cups, the green and the
-    white, …" is."""
+    """Session 37 (12r): "the pair of cups, the green and the white, …" is "both cups, …" where
+    the scene holds exactly two objects of that kind (else left), then read as session 33's "Both
+    cups, the green and the white, …" is."""
 
     def both(m: re.Match[str]) -> str:
         ids = _ids(f"the {m['ks']}", lexicon, "object")
