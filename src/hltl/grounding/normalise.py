@@ -28673,11 +28673,13 @@ def _wants_framed37(text: str, lexicon: Lexicon) -> str:
 # "…, from a very tired steel fixer.": the message signed by the speaker's trade
 _SIGNED37 = re.compile(
     r",\s*(?:and\s+)?from (?:a|an|the|one|your|yours truly, a) (?:(?:very|rather|pretty|really|"
-    r"ever so|so|most) )?(?:(?:tired|weary|grateful|thankful|thirsty|hungry|busy|happy|"
+    r"ever so|so|most) )?(?:(?P<adj>tired|weary|grateful|thankful|thirsty|hungry|busy|happy|"
     r"exhausted|knackered|humble|harassed|frazzled|cold|wet|worn-out|worn out|old|young|"
     r"friendly|hard-working|hardworking) )?(?P<trade>[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)\s*$",
     _F,
 )
+# a word for someone who does something ('fixer', 'shunter', 'philatelist', 'keeper')
+_DOER37 = re.compile(r"(?:er|or|ist|ian|man|woman|hand|keeper|maker|smith|wright|eer|ant|ent)$", _F)
 # "…, I'm a french polisher and I need the room": the speaker needs room (to work), closing
 _NEED_ROOM37 = re.compile(
     r"(?P<lead>,\s*|\s+and\s+)(?:I|we) (?:need|want|could use|could do with) (?:the |some |a bit "
@@ -28708,7 +28710,11 @@ def _courtesies37(text: str, lexicon: Lexicon) -> str:
     as 'the apple is meant for' (X objects only) — each when what is left names something."""
     out = text
     m = _SIGNED37.search(out)
-    if m is not None and _trade_words29(m["trade"], lexicon):
+    if (
+        m is not None
+        and _trade_words29(m["trade"], lexicon)
+        and (m["adj"] or _DOER37.search(m["trade"]))
+    ):
         out = out[: m.start()] + m["end"].strip()
     m = _NEED_ROOM37.search(out)
     if m is not None and _names_nothing(m["what"], lexicon):
@@ -28971,8 +28977,9 @@ def _splits37(text: str, lexicon: Lexicon) -> str:
     m = _WITH_IT37.search(text)
     if m is not None and (_surface_only(m["s"], lexicon) or _only_person(m["s"], lexicon)):
         sent = re.split(r"[.;!?]\s+", text[: m.start()])[-1]
+        clause = re.split(r",\s*", sent)[-1]  # "onto the counter": no object of its own
         objs = _ids(sent, lexicon, "object")
-        if len(objs) == 1 and m["pron"].lower() == "it":
+        if len(objs) == 1 and m["pron"].lower() == "it" and not _names(clause, lexicon):
             text = text[: m.end("to")] + text[m.end() :]
     m = _CAN_SIT37.search(text)
     if m is not None and _things31(m["x"], lexicon) and _surface_only(m["s"], lexicon):
