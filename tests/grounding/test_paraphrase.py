@@ -199,6 +199,84 @@ KNOWN_MISSES = frozenset(
         # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         "Alice and Bob each get something: she's having the chips, he's having the bottle.",
+        # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
+        "Sorry, sorry, I know you're busy, but the apple's meant for Person B, if that's alright.",
+        'The bottle for Person A, please and thank you, from a very tired steel fixer.',
+        "Oh, thank you, and, um, the bib for Lily, please, she's a messy little thing.",
+        "Honestly, the crisps are the thing Bob's been craving since his gliding lesson.",
+        'After a whole hour of crossfit, Person A is gasping for that bottle.',
+        "Person B's the one who's in need of the bottle, by the look of him.",
+        "Person A would like the bottle, if that's not too much to ask of you.",
+        "She's desperate for her bottle, Person A is, after the wild swimming.",
+        "Dana's got to have the spoon for her yoghurt, and Emma would quite fancy the green cup.",
+        "Tom's going to need the work gloves for unloading the pallets.",
+        'Alice was on about the crisps after her juggling, can you take them to her.',
+        "Bob's to have the bottle and Alice the crisps, they've both been down with the tunneller "
+        "all day.",
+        "Person A, that's the apple for you. Person B, yours is the bottle.",
+        "There's Person A, pass her the bottle, would you.",
+        "Start with Person B, he gets the chips, and then it's the bottle for Person A.",
+        "Emma's only here for the afternoon as a visitor, hand her the white cup.",
+        "Lena's run out of salt at her table, take her the salt.",
+        'Mrs Ortiz put in for the glue, and the ruler is what Noah asked for, so pass it to him.',
+        'Cup first, onto the counter with it. After that, Carol gets the apple.',
+        "Give Person A the bottle then give Person B the cup then that's all, I'm off to my shift "
+        "as a shunter.",
+        "Right, there's the bottle, Person A's waiting on it, so off you go now.",
+        "Marco's waiting on the knife. Mr Novak, the white plate. And the lemon can sit on the "
+        "worktop.",
+        "Teddy to Lily and the wipes on the high chair and that's her sorted.",
+        "There's something for both of them, mind: the apple is Person A's and the cup is Person "
+        "B's.",
+        'Go whichever route suits you, as long as Person A gets the bottle in the end.',
+        'Either arm can do it: the bottle to Person A.',
+        'Give one of them the chips, Person A or Person B, and the other one the bottle.',
+        "Sam's only signing for the key cutter, so any pen at all will do him.",
+        'The belt needs one box on it, either the small or the medium, not the big one.',
+        "A book apiece for Noah and Zoe, I don't care who ends up with which.",
+        "Lily can have a block, she won't mind if it's the red or the green.",
+        "Carol's got a pair of things coming, the apple and the cup, she's off to her life "
+        "drawing.",
+        "Person B's taking the lot, bottle, chips, cup and apple, to his weightlifting do.",
+        "Both the cup and the apple, that's two, are going to Person A for her bookbinding class.",
+        'Just the one item for Person A: the chips.',
+        'The two things here, one per person: bottle to Person A, chips to Person B.',
+        "Every last thing you've got there is for Person A, she's hosting the fossil hunting club.",
+        "Person A should get the bottle, it's the only one we've got left.",
+        'The pair of cups, the green and the white, want putting on the tray, ta.',
+        'Every box in the place, big one included, goes on the belt.',
+        'Mrs Ortiz needs both books for her lesson on fossils, red and green.',
+        "Alice doesn't want the bottle, only the crisps, she's just had a cuppa.",
+        "The bottle for Bob, and nothing besides that, he's on a diet for the bodybuilding.",
+        "It's the cup Person B should have, the apple isn't his.",
+        "Only the chips for Person B, don't bother with anything more, he's the tug skipper and "
+        "he's in a hurry.",
+        'No need to wait about, the bottle goes to Person A.',
+        "The chips are going to Person A, Person B's had his fill.",
+        'The cups, except the green one, go in the sink.',
+        'None of the boxes, just the scanner to Mia.',
+        'Leave the drill, Kofi only wants the torch.',
+        "Bob's to have the cup, or no, wait, it was the apple he asked me for.",
+        'Cup to Person A, oh dear, my mistake, it should be Person B.',
+        "Chips to Person A. No, correction, they're for Person B, she's eaten already.",
+        "Bottle to Person B, what am I saying, there's no Person B here, Person A gets it.",
+        'Chips for Person A, no, sorry, I meant to say the bottle.',
+        'Bottle to Person A and chips to Person B, no, the other way about.',
+        'Noah should get the globe, hang about, I mean Zoe.',
+        'Teddy on the high chair, or no, the bib goes there.',
+        'crisps go up on the shelf out of bobs reach, hes had plenty',
+        'person b wants the chips after his bodyboarding',
+        "Bob wants the crispps, he's a roughneck on leave.",
+        "Stick the bottle on the sheelf, would you, I'm a french polisher and I need the room.",
+        'Person B gets the bottole after his sumo practice.',
+        'The chnips are for Person A after her padel game.',
+        "Would you mind taking the bottle to Alice? She's just back from crabbing.",
+        'Any chance Person B could have the cup after his powerlifting?',
+        'Could you do the apple for Person B before anything else, and the bottle for Person A '
+        'after?',
+        'Mind bringing the bottle over to Person A? Her airsoft game starts at four.',
+        "Would you stick the stapler in the box, I'm the philatelist and I need the room?",
+        "Could Ava have the teddy, do you think? She's tired from tap dancing.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -272,8 +350,11 @@ KNOWN_UNCLEAR = frozenset(
 # committed alone, reviewed by a second one, measured once at the end of session 34 (0 wrong), tuned
 # on in session 35: asserted now, the rest in KNOWN_MISSES; "blind34" written in session 35 by
 # another engineer and committed alone, reviewed by a second one, measured once at the end of
-# session 35 (1 wrong, fixed), tuned on in session 36: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind35"})
+# session 35 (1 wrong, fixed), tuned on in session 36: asserted now, the rest in KNOWN_MISSES;
+# "blind35" written in session 36 by another engineer and committed alone, reviewed by a second
+# one, measured once at the end of session 36 (0 wrong), tuned on in session 37: asserted now,
+# the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

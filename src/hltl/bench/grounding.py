@@ -122,7 +122,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of
 # session 35; its one wrong reading fixed and tuned on in session 36), blind35 (written in
 # session 36 by another engineer and committed alone, never opened by the engineers who change
-# the grounder before its one measurement at the end of session 36; tests do not assert it).
+# the grounder before its one measurement at the end of session 36; tuned on in session 37).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
