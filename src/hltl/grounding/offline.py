@@ -117,6 +117,7 @@ def parse_instruction(
             _kind_fits35s(text, lexicon)
             _named_other_sex34s(text, node, lexicon)
             _use_said36s(text, node, lexicon)
+            _away_till37s(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
@@ -551,6 +552,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _other_after_repair33s(text, lexicon)
         _them_after_choice33s(text, lexicon)
         _doer_said34s(text, lexicon)
+        _spoken_to37s(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -1228,6 +1230,65 @@ def _doer_said34s(text: str, lexicon: Lexicon) -> None:
                     f"tells what {said[0].text} does or did, not what the robots are to do; say "
                     "each thing the robots are to do as a request"
                 )
+
+
+# words between a list of objects and its verb that leave the verb's number unsaid or say the
+# list is its subject ("the tape and the scanner should go", "… both go")
+_BEFORE_VERB37S = frozenset({"both", "all", "each"})
+
+
+def _spoken_to37s(text: str, lexicon: Lexicon) -> None:
+    """Session 37 (12s): 'Tom, the tape and the scanner go on the pallet.': a person's name set
+    off by a comma opening a sentence, then two or more objects and a plural 'go' / 'belong'
+    (or one after a modal or 'both'). The plural verb makes the objects its subject, so the
+    name is someone spoken to (the robots are not: is it that person's to do?); the grammar had
+    read the telegraphic 'Tom, the tape' (tape>B and the scanner on the pallet), which the verb's
+    number speaks against. Refused naming both readings. 'Tom, the tape; the scanner goes on
+    the pallet' (the singular 'goes' agrees with the scanner alone) and 'Tom, the tape and the
+    scanner.' (no verb) read as before."""
+    if "," not in text:
+        return
+    try:
+        items = [it for it in lex(text, lexicon) if not _is(it, "filler")]
+    except GroundingError:
+        return
+    sentence: list[Item] = []
+    for it in [*items, None]:
+        if it is not None and not (it.kind == "punct" and it.lemma in (".", "!", "?", ";", ":")):
+            sentence.append(it)
+            continue
+        said, sentence = sentence, []
+        if not (
+            len(said) > 4
+            and said[0].kind == "ent"
+            and len({r.id for r in said[0].refs}) == 1
+            and said[0].refs[0].kind == "human"
+            and _is(said[1], ",")
+        ):
+            continue
+        k, objects = 2, []
+        while k < len(said) and (_objects_only32s(said[k]) or _is(said[k], "det", "and", ",")):
+            if _objects_only32s(said[k]):
+                objects.append(said[k])
+            k += 1
+        if len(objects) < 2 or not any(_is(x, "and") for x in said[2:k]):
+            continue
+        while k < len(said) and (_is(said[k], "aux") or said[k].text.lower() in _BEFORE_VERB37S):
+            k += 1
+        if k >= len(said) or said[k].lemma not in ("verb:go", "verb:belong"):
+            continue
+        verb = said[k]
+        if verb.text.lower() not in ("go", "belong") and not _is(said[k - 1], "aux"):
+            continue  # 'goes', 'belongs': the verb agrees with the last object alone
+        who = said[0].refs[0].id
+        first = ", ".join(r.id for r in objects[0].refs)
+        rest = " and ".join(r.id for x in objects for r in x.refs)
+        raise GroundingError(
+            f"{said[0].text!r} before {_text(said[2 : k + 1]).strip()!r}: {said[0].text} may be "
+            f"spoken to (the {verb.text!r} has {rest} as its subject: is it for {who} to do?) or "
+            f"get {first} ({first}>{who}, the rest {verb.text} …): say who gets what, or say it "
+            "to the robots"
+        )
 
 
 def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
@@ -4179,3 +4240,56 @@ def _use_said36s(text: str, node: Node, lexicon: Lexicon) -> None:
                     f"it goes to {where}: either leave it with them (or hand it to them), or "
                     f"move it to {where} anyway; say which"
                 )
+
+
+# a person said to come (back) at a later time ("…, he's back at six", "…, Tom gets in at nine",
+# "…, she's due in after lunch"): away until then
+_NUMBERS37S = (
+    r"(?:\d{1,2}(?:[:.]\d\d)?(?:\s*[ap]\.?m\.?)?|one|two|three|four|five|six|seven|eight|nine|"
+    r"ten|eleven|twelve|noon|midday|midnight|half(?: past)? \w+|quarter (?:past|to) \w+)"
+)
+_AWAY_TILL37S = re.compile(
+    r"(?:^|[,;.!?]\s*|\s-\s)(?:(?:as|since|because|cos|and|but|so)\s+)?"
+    r"(?P<who>[A-Za-z][\w.]*(?: [A-Z]\w*)?)"
+    r"(?:(?:'s|\u2019s| is|'ll be|\u2019ll be| will be| should be| won't be| isn't)"
+    r" (?:only |not )?(?:back|in|here|due(?: back| in| here)?|arriving|coming(?: back| in)?)"
+    r"| (?:gets|comes|walks) (?:back|in|here)| (?:arrives|turns up|shows up|lands))"
+    rf"(?P<when> (?:(?:at|around|about|after|from|till|until|not till|by) (?:{_NUMBERS37S}\b|"
+    r"lunch|dinner|tea|breakfast|the break)|in (?:the )?(?:morning|afternoon|evening|an hour|"
+    r"half an hour|a bit|a while|\w+ minutes|\w+ hours)|tonight|tomorrow|later|this "
+    r"(?:morning|afternoon|evening)|on \w+day))\b",
+    re.I,
+)
+
+
+def _away_till37s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 37 (12s): 'give bob the cup, he's back at six', 'tom needs the scanner, he's in
+    at nine': a remark that the person who gets something comes (back) at a later time says they
+    are away until then; the handover waits on their coming, an outside event (blind34's time
+    rule), or is to be done now for them to find (the remark had been taken off: cup>B). Refused
+    naming both. Said of someone who gets nothing ('give bob the cup, alice finishes at six',
+    '…, alice is back at six') it is the speaker's context, read as now; so is a time the
+    person is busy or done at ('he finishes at six', 'he's on at six': doing it now meets it),
+    and 'he's back' with no time (here again)."""
+    if not any(w in text.lower() for w in ("back", " in ", " here", "due", "arriv", " up", "land")):
+        return
+    given = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not given:
+        return
+    for m in _AWAY_TILL37S.finditer(text):
+        who = m["who"].lower()
+        if who in ("i", "we", "you", "it", "that", "this", "there", "what", "which"):
+            continue
+        if who in ("he", "she", "they"):
+            sex = PRONOUN_SEX.get(who)
+            person = {p for p in given if said_sex35s(p, lexicon) in (None, sex)}
+        else:
+            person = people_named(m["who"], lexicon) & given
+        if not person:
+            continue
+        names = " or ".join(person_name(p, lexicon) for p in sorted(person))
+        raise GroundingError(
+            f"{m.group(0).strip(' ,;.!?-')!r} says {names} comes{m['when']}: give it now, for "
+            f"them to find, or wait until they come? the cell acts now, so say the request when "
+            "it is to be done"
+        )
