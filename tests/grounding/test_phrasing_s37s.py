@@ -6,16 +6,26 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import offline, phrasing
+from hltl.grounding import normalise, offline, phrasing
+from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
+    KITCHEN,
+    LAB,
+    ROOT,
+    WARD,
     PhrasingCases,
     assert_case,
     assert_refused,
 )
 
+TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
+T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")
+
 CASES = PhrasingCases()
+# the cases of blind21/22's rewrites (part 2), each read by them alone
+CASES2 = PhrasingCases()
 
 
 # -- a later name of a choice corrected: that name only, or the whole choice? ---------------------
@@ -142,6 +152,8 @@ test_read_as_before = CASES.test(
     ("give the apple to Carol, maybe", "apple>C", CELL),
     # with no comma, or adding a further object: refused as before
     ("Give the apple to Carol maybe", None, CELL),
+    # a need of a thing said another way: read by an earlier rule too
+    ("Can Mr Novak have the salt, he says the stew could do with some.", "salt>C", KITCHEN),
 )
 
 
@@ -158,3 +170,93 @@ def test_the_rules_are_what_changes_them(monkeypatch: pytest.MonkeyPatch) -> Non
     assert_case("Tom, the tape and the scanner go on the pallet.", "tape>B & scanner@pallet", DEPOT)
     monkeypatch.setattr(offline, "_away_till37s", lambda text, node, lexicon: None)
     assert_case("give bob the cup, he's back at six", "cup>B", CELL)
+
+
+# -- blind22: the one person of a role, and a need reported of a thing ----------------------------
+# (normalise._only_role37s, normalise._says_needs37s)
+
+test_reasons = CASES2.test(
+    ("Could Bob have the crisps before we go on, he's the only tenor we've got?", "chips>B", TWO),
+    ("Could Bob have the crisps, he's the only tenor we have.", "chips>B", TWO),
+    ("Can Mr Novak have the salt, please, he says the soup needs it?", "salt>C", KITCHEN),
+    # 'the only one' could narrow what is given; a person or an object of the scene needing it
+    ("Could Bob have the crisps, he's the only one we've got?", None, TWO),
+    ("Can Mr Novak have the salt, please, he says Marco needs it?", None, KITCHEN),
+    ("Can Mr Novak have the salt, please, he says the knife needs it?", None, KITCHEN),
+)
+
+
+# -- blind21: a size said with '-sized', or 'middle' for medium (normalise._sized37s) ------------
+
+test_sized = CASES2.test(
+    (
+        "Could the middle-sized box go onto the pallet with the big one?",
+        "box_medium@pallet",
+        DEPOT,
+    ),
+    ("Put the mid-sized box on the pallet.", "box_medium@pallet", DEPOT),
+    ("Put the small-sized box on the pallet.", "box_small@pallet", DEPOT),
+    ("Put the middle box on the pallet.", "box_medium@pallet", DEPOT),
+    # 'middle' of a place; a size no object has
+    ("Put the box in the middle of the pallet.", None, DEPOT),
+    ("Put the middle-sized scanner on the pallet.", None, DEPOT),
+)
+
+
+# -- blind21: 'once they're both there' after placing them is 'once that's done' -----------------
+# (normalise._once_there37s)
+
+test_once_there = CASES2.test(
+    (
+        "Put the spoon on the tray and the green cup on the tray and then once they're both "
+        "there the sponge goes in the sink.",
+        "(spoon@tray & cup_green@tray) ; sponge@sink",
+        LAB,
+    ),
+    (
+        "Put the spoon on the tray and then once it's there the sponge goes in the sink.",
+        "spoon@tray ; sponge@sink",
+        LAB,
+    ),
+    (
+        "Put the spoon on the tray, then once it's there put the sponge in the sink.",
+        "spoon@tray ; sponge@sink",
+        LAB,
+    ),
+    # 'it' after two things placed; two places; a handover ('there' is no place said)
+    (
+        "Put the spoon on the tray and the green cup on the tray and then once it's there the "
+        "sponge goes in the sink.",
+        None,
+        LAB,
+    ),
+    (
+        "Put the spoon on the tray and the green cup in the sink and then once they're both "
+        "there the sponge goes in the sink.",
+        None,
+        LAB,
+    ),
+    ("Give Dana the spoon and then once it's there the sponge goes in the sink.", None, LAB),
+)
+
+
+# -- blind21/22: a correction of the recipient left open names the people --------------------------
+# (offline._more_readings37s)
+
+
+def test_corrections_left_open_name_the_people() -> None:
+    assert_refused(
+        "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
+        T21,
+        match=r"it could be Person A or Person B",
+    )
+    assert_refused(
+        "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
+        "asked.",
+        WARD,
+        match=r"it could be Person B \(Mr Lee, patient\) or Person C",
+    )
+
+
+def test_the_part2_rules_are_what_reads_them(monkeypatch: pytest.MonkeyPatch) -> None:
+    CASES2.refused_without(normalise._STEPS37S + normalise._STEPS37S_FIRST, monkeypatch)

@@ -24497,6 +24497,140 @@ def _while_there36s(text: str, lexicon: Lexicon) -> str:
 _STEPS36S: tuple[Callable[[str, Lexicon], str], ...] = (_while_there36s,)
 
 
+# -- session 37 (engineer 12s): blind21 and blind22's kinds ---------------------------------------
+
+# the person who gets it described as the only one of a role, closing the request ("Could Bob
+# have the crisps, he's the only tenor we've got?"): a reason, as session 21's ('he's the best
+# tenor we've got'), which holds back every 'only' (it could narrow what is given)
+_ONLY_ROLE37S = re.compile(
+    r"\s*,\s*(?:(?:and|cos|because|as|since)\s+)?(?:he|she|they)(?:'s|\u2019s|'re| is| are) "
+    r"(?:the|our|my) only (?P<what>[a-z]+(?: [a-z]+)?)"
+    r"(?: (?:we've got|we have|we've|we got|here|left|around|on shift|today|tonight))?"
+    r"(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+# what would make 'the only …' pick or count rather than describe
+_NOT_A_ROLE37S = frozenset(
+    {"one", "ones", "thing", "things", "person", "people", "other", "choice", "option", "way"}
+)
+
+
+def _only_role37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing description above taken off when its words name nothing
+    in the scene and are a role ('tenor', 'driver on shift'), not 'one' / 'thing' / 'person'
+    (which could narrow what is given), the request before it names one person, and what is
+    left reads."""
+    m = _ONLY_ROLE37S.search(text)
+    if m is None or set(m["what"].lower().split()) & _NOT_A_ROLE37S:
+        return text
+    if not _names_nothing(m["what"], lexicon):
+        return text
+    rest = text[: m.start()]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    out = rest + m["end"].strip()
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a need of a thing, not a person, reported from the person asked for ("Can Mr Novak have the
+# salt, please, he says the soup needs it?"): why they want it
+_SAYS_NEEDS37S = re.compile(
+    r"\s*,\s*(?:(?:and|cos|because|as|since)\s+)?(?:he|she|they) (?:says|said|reckons|thinks) "
+    r"(?:that )?(?P<thing>(?:the|his|her|their|my|our) [a-z]+(?: [a-z]+)?) "
+    r"(?:needs|wants|could use|could do with|is missing|lacks) "
+    r"(?:it|them|some|some more|a bit|a bit more|more)(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+
+
+def _says_needs37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the reported need above taken off when the thing needing it names
+    nothing in the scene (the soup, not a person or an object of it), the request before it
+    names one person and an object, and what is left reads (as session 31's ', the soup needs
+    it' after a request)."""
+    m = _SAYS_NEEDS37S.search(text)
+    if m is None or not _names_nothing(m["thing"], lexicon):
+        return text
+    rest = text[: m.start()]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    out = rest + m["end"].strip()
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a size said with '-sized' ('the middle-sized box', 'the small-sized one'), or 'middle' / 'mid'
+# for the medium one
+_SIZED37S = re.compile(
+    r"\b(?P<size>small|medium|large|big|little|middle|mid)(?:[- ]sized?|-size)?"
+    r"(?P<noun> [a-z]+)\b",
+    _F,
+)
+
+
+def _sized37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'the middle-sized box' (blind21) is 'the medium box': a size word with
+    '-sized' is that size, and 'middle' / 'mid' (with or without '-sized') is 'medium', when the
+    scene has one object the size word and the noun after it name and the words as said name
+    nothing ('in the middle of the table' is kept: 'medium of' names nothing)."""
+    if not re.search(r"\b(?:middle|mid|sized?)\b|-size", text, _F):
+        return text
+
+    def sized(m: re.Match[str]) -> str:
+        size = m["size"].lower()
+        if size in ("middle", "mid"):
+            size = "medium"
+        elif m[0].lower() == f"{size}{m['noun'].lower()}":
+            return m[0]  # said as it is already
+        said = f"{size}{m['noun']}"
+        if _only(f"the {m[0]}", lexicon, "object") or not _only(f"the {said}", lexicon, "object"):
+            return m[0]
+        return said
+
+    return _SIZED37S.sub(sized, text)
+
+
+# 'once' the things just placed are there ("… and the green cup on the tray and then once
+# they're both there the sponge goes in the sink"): once that is done
+_ONCE_THERE37S = re.compile(
+    r"\bonce (?P<what>it's|it is|they're|they are)(?: (?P<both>both|all))? (?:there|in place|"
+    r"on there|in there)\b(?!,)"
+    r"(?= (?:the|put|place|give|hand|pass|bring|take|[a-z]+ (?:goes|go) ))",
+    _F,
+)
+
+
+def _once_there37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'once it's there' / 'once they're (both) there' before the next step,
+    said after placing: 'once that's done' (which the grammar reads as the order), when the text
+    before it names one surface (the 'there'), one object for 'it' or more for 'they', no
+    person, and what is left reads."""
+    m = _ONCE_THERE37S.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    objects = _ids(before, lexicon, "object")
+    many = m["what"].lower().startswith("they")
+    if (
+        len(_ids(before, lexicon, "surface")) != 1
+        or _ids(before, lexicon, "human")
+        or (len(objects) != 1 if not many else len(objects) < 2)
+        or (m["both"] is not None and not many)
+        or (m["both"] is not None and m["both"].lower() == "both" and len(objects) != 2)
+    ):
+        return text
+    out = f"{before}once that's done{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+_STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _only_role37s,
+    _says_needs37s,
+    _once_there37s,
+)
+# (first: the later rewrites look for the object's name as the scene says it)
+_STEPS37S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_sized37s,)
+
+
 _STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (
     _worked_on35s,
     _when_talked35s,
@@ -28522,6 +28656,8 @@ _STEPS34R: tuple[Callable[[str, Lexicon], str], ...] = (
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 36 (12): an apostrophe dropped (asked of the text as said)
     *_STEPS36_FIRST,
+    # session 37 (12s): a size said with '-sized' (first: what follows looks for the name)
+    *_STEPS37S_FIRST,
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
@@ -28552,6 +28688,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS35S,
     # session 36 (12s): blind21's kinds
     *_STEPS36S,
+    # session 37 (12s): blind21 and blind22's kinds
+    *_STEPS37S,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,

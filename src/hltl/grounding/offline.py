@@ -126,6 +126,7 @@ def parse_instruction(
                 for m in (
                     _more_readings29(text, refused, lexicon),
                     _more_readings33s(text, refused, lexicon),
+                    _more_readings37s(text, refused, lexicon),
                 )
                 if m
             )
@@ -336,6 +337,46 @@ _ONE_OF_THE33S = re.compile(
 _ONE_OF_THEM_GETS33S = re.compile(
     r"\bone of them (?:gets|wants|needs|can have|should get|is getting|is having)\b", re.I
 )
+
+
+def _more_readings37s(text: str, refused: GroundingError, lexicon: Lexicon) -> str:
+    """Session 37 (12s): a refusal of a request whose recipient is corrected and left open
+    ("The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
+    "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who
+    asked.": blind21/22's refusals without their readings) names the people the corrections go
+    between: each person named, and for 'the other <title>' everyone of that title. A person
+    named before a correction and one after it; '' when the refusal names them already."""
+    said = str(refused)
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return ""
+    marks = [
+        k
+        for k, x in enumerate(items)
+        if _is(x, "correct")
+        or (x.lemma == "not" and x.text.lower() == "no" and k > 0 and _is(items[k - 1], ","))
+    ]
+    if not marks:
+        return ""
+    people: list[str] = []
+    before = after = False
+    for k, x in enumerate(items):
+        if x.kind != "ent" or not all(r.kind == "human" for r in x.refs):
+            continue
+        ids = [r.id for r in x.refs]
+        if len(ids) > 1 and not (k > 0 and items[k - 1].text.lower() == "other"):
+            return ""  # a name of several people: _unclear_names says which
+        people += ids
+        before = before or k < marks[0]
+        after = after or k > marks[0]
+    people = list(dict.fromkeys(people))
+    if not (before and after) or len(people) < 2:
+        return ""
+    names = [person_name(p, lexicon) for p in sorted(people)]
+    if all(p in said for p in sorted(people)) and _readings(refused):
+        return ""
+    return f"the corrections leave open who gets it: it could be {' or '.join(names)}"
 
 
 def _more_readings33s(text: str, refused: GroundingError, lexicon: Lexicon) -> str:
