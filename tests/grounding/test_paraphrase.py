@@ -132,12 +132,9 @@ KNOWN_MISSES = frozenset(
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
         "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
         "so she's got two.",
-        "Put the spoon on the tray and the green cup on the tray and then once they're both "
-        "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give Person A something to eat, but not the apple, she's allergic.",
-        "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
@@ -157,9 +154,7 @@ KNOWN_MISSES = frozenset(
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         'knife on the worktop please, the guests want it by their bread',
-        "Could Bob have the crisps before we go on, he's the only tenor we've got?",
         "Could Person A get her bottle, she's been out on the water all day?",
-        'Can Mr Novak have the salt, please, he says the soup needs it?',
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
         'be tuning this thing for another hour.',
@@ -283,10 +278,7 @@ KNOWN_MISSES = frozenset(
 KNOWN_UNCLEAR = frozenset(
     {
         # blind21 (tuned on in session 23)
-        "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
         # blind22 (tuned on in session 24)
-        "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
-        "asked.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

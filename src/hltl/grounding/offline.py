@@ -374,8 +374,10 @@ def _more_readings37s(text: str, refused: GroundingError, lexicon: Lexicon) -> s
     if not (before and after) or len(people) < 2:
         return ""
     names = [person_name(p, lexicon) for p in sorted(people)]
-    if all(p in said for p in sorted(people)) and _readings(refused):
-        return ""
+    if (all(p in said for p in sorted(people)) and _readings(refused)) or _unclear_names(
+        text, lexicon
+    ):
+        return ""  # (an object of several: its readings are what the refusal must name)
     return f"the corrections leave open who gets it: it could be {' or '.join(names)}"
 
 
