@@ -123,9 +123,7 @@ KNOWN_MISSES = frozenset(
         # Jess'), exclusions and negation, corrections with remarks, typos in a remark
         "Jess needs some screws, give her the tin.",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
         "The little one wants her teddy, she won't settle without it.",
-        "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
         "See the blue mug? That's Bob's, give it to him.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
@@ -138,14 +136,11 @@ KNOWN_MISSES = frozenset(
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
         "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
         "The doctor's after the white cup, and the visitor would like that banana, she's had no "
         "breakfast.",
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
         "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
-        'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
-        'you?',
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',

@@ -13,8 +13,10 @@ from tests.grounding.helpers import (
     DEPOT,
     KITCHEN,
     LAB,
+    OFFICE,
     ROOT,
     WARD,
+    WORKSHOP,
     PhrasingCases,
     assert_case,
     assert_refused,
@@ -237,6 +239,63 @@ test_once_there = CASES2.test(
         LAB,
     ),
     ("Give Dana the spoon and then once it's there the sponge goes in the sink.", None, LAB),
+)
+
+
+# -- blind22: an ordeal in a want frame, and 'sort them out for me' closing what was asked -------
+# (normalise._ordeal37s, normalise._sort_out37s)
+
+test_ordeal_sort_out = CASES2.test(
+    (
+        "What Bob really needs after three hours of the Messiah is the crisps, poor man.",
+        "chips>B",
+        TWO,
+    ),
+    ("What Bob needs after a long day is the crisps.", "chips>B", TWO),
+    (
+        "Person B asked for the bottle and Person A for the chips. Sort them out for me, would "
+        "you?",
+        "bottle>B & chips>A",
+        T21,
+    ),
+    (
+        "Person B asked for the bottle and Person A for the chips. Sort them out for me.",
+        "bottle>B & chips>A",
+        T21,
+    ),
+    # 'after the show' could be when; a count of things; the speaker's own want; nothing asked
+    ("What Bob needs after the show is the crisps.", None, TWO),
+    ("What Bob needs after three hours of all that is the crisps.", None, TWO),
+    ("Person B asked for the bottle and I want the chips. Sort them out for me.", None, T21),
+    ("Sort them out for me.", None, T21),
+)
+
+
+# -- blind21: a task the person has as why they need it; where a person wants it to sit ----------
+# (normalise._task_had37s, normalise._sitting37s)
+
+test_task_sitting = CASES2.test(
+    (
+        "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
+        "drill>B",
+        WORKSHOP,
+    ),
+    ("Jess has forty brackets to put up, so she needs the power drill.", "drill>B", WORKSHOP),
+    (
+        "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
+        "stapler@desk",
+        OFFICE,
+    ),
+    ("The manager wants the stapler sitting on the desk.", "stapler@desk", OFFICE),
+    ("Put the stapler on the desk, not in a drawer.", "stapler@desk", OFFICE),
+    ("Bob wants the cup sitting on the shelf.", "cup@shelf", CELL),
+    # a time the need may wait for; a count that chooses; a person needed; a place of the scene
+    # set against; no place said
+    ("Jess has forty brackets to put up tomorrow, so she needs the power drill.", None, WORKSHOP),
+    ("Jess has both shelves to put up, so she needs the power drill.", None, WORKSHOP),
+    ("Jess has forty brackets to put up, so she needs Kofi.", None, WORKSHOP),
+    ("Put the stapler on the desk, not in the box.", None, OFFICE),
+    ("Give Sam the stapler, not in a drawer.", None, OFFICE),
 )
 
 

@@ -24622,7 +24622,138 @@ def _once_there37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# what a person has been through, said in a want frame before 'is' ("What Bob really needs after
+# three hours of the Messiah is the crisps"): why they need it, a span already past, not when
+_ORDEAL37S = re.compile(
+    r"\b(?P<frame>what [A-Za-z][\w ]*? (?:really |actually |most )?(?:needs|wants|could use|"
+    r"could do with|would like)) after (?P<ordeal>(?:(?:a|an|one|two|three|four|five|six|seven|"
+    r"eight|nine|ten|twelve|\d+|several|a few|many) (?:hours?|minutes?|days?|weeks?|months?|years?|"
+    r"shifts?|laps?|miles?) of [a-z' -]+?|a (?:long|hard|busy|tough|rough) (?:day|shift|night|week|"
+    r"morning|afternoon|evening|run|walk)(?: of [a-z' -]+?)?|all that)) (?=is )",
+    _F,
+)
+
+
+def _ordeal37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the ordeal above taken off a want frame when it names nothing in the
+    scene, so session 18's 'What P really needs is X' reads it; 'after the show' (which could be
+    when) and 'after the crisps' (an order) are not this."""
+
+    def past(m: re.Match[str]) -> str:
+        # (the count of the span is no count of things: what it was of must hold none)
+        of = m["ordeal"].split(" of ", 1)[1] if " of " in m["ordeal"] else ""
+        if not _names_nothing(m["ordeal"], lexicon) or _KEEP_WORDS.search(of):
+            return m[0]
+        return f"{m['frame']} "
+
+    return _ORDEAL37S.sub(past, text)
+
+
+# a sentence of its own asking the hearer to see to what was just said ("… Sort them out for
+# me, would you?"): 'for me' is the favour asked ('do it for me'), not the speaker getting them
+_SORT_OUT37S = re.compile(
+    r"(?:(?<=[.!?;]) |^)(?:(?:could|can|would|will) you |please )?sort (?:it|them|that|this|"
+    r"those|these|them all|it all|that lot|everything) out(?: for (?:me|us))?"
+    r"(?:,? (?:would you|will you|could you|can you|please|thanks|cheers|ta))?\s*[.!?]?\s*$",
+    _F,
+)
+
+
+def _sort_out37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing sentence above taken off (session 26's `_phrasal26` had
+    made 'sort them out for me' 'get them for me', the speaker's own request) when the text
+    before it names a person and an object, asks nothing for the speaker ('me', 'I', 'my'), and
+    what is left reads."""
+    m = _SORT_OUT37S.search(text)
+    if m is None or m.start() == 0:
+        return text
+    before = text[: m.start()].rstrip()
+    if re.search(r"\b(?:me|my|mine|i|we|us|our)\b", before, _F):
+        return text
+    if not (_ids(before, lexicon, "human") and _ids(before, lexicon, "object")):
+        return text
+    return before if _reading(before, lexicon) is not None else text
+
+
+# a task a person has, said as why they need the object ("Jess has forty shelf brackets to get
+# up before close, so she needs the power drill."): their need
+_TASK_HAD37S = re.compile(
+    r"(?P<who>\b[A-Z][a-z]+(?: [A-Z][a-z]+)?) (?:has|has got|'s got|\u2019s got) "
+    r"(?P<task>[a-z0-9' -]+? to [a-z]+(?: [a-z' -]+?)?)(?P<when> (?:before|by) [a-z' -]+?)?, "
+    r"so (?P<pro>she|he)(?:'ll| will)? (?:needs?|wants?|could use|could do with) "
+    r"(?P<x>[^,.;!?]+)",
+    _F,
+)
+
+
+def _task_had37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the task above taken off, leaving 'P needs X', when P is one person
+    the he / she may be (a title, kin word or first name of the other sex rules them out), the
+    task and its deadline name nothing in the scene and hold no word that counts, chooses or
+    points back but the task's own count, X names objects only, and what is left reads (a
+    deadline is met by acting now)."""
+    m = _TASK_HAD37S.search(text)
+    if m is None or not _only_person(m["who"], lexicon) or not _objects_only(m["x"], lexicon):
+        return text
+    said = f"{m['task']}{m['when'] or ''}"
+    if re.search(r"\b(?:tomorrow|tonight|later|next|after|when|once|until|till)\b", said, _F):
+        return text  # a time the need may wait for
+    if not _names_nothing(said, lexicon) or _KEEP_WORDS.search(
+        re.sub(
+            r"^(?:\d+|[a-z]+ty|[a-z]+teen|two|three|four|five|six|seven|eight|nine|ten) ", "", said
+        )
+    ):
+        return text
+    who = next(iter(_ids(m["who"], lexicon, "human")))
+    sex = said_sex35s(who, lexicon)
+    if sex is not None and PRONOUN_SEX.get(m["pro"].lower()) != sex:
+        return text
+    out = f"{text[: m.start()]}{m['who']} needs {m['x']}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# where a person wants the object to stay, said with a participle of lying ("The manager wants
+# the stapler sitting on the desk"): on it
+_SITTING37S = re.compile(
+    r"\b(?P<want>wants|would like|'d like|likes|needs|prefers) (?P<x>the [a-z' -]+?) "
+    r"(?:sitting|sat|standing|stood|lying|kept|resting) (?P<on>on|in|by|next to) "
+    r"(?P<s>the [a-z' -]+?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# a place the object is not to go, naming nothing of the scene, after where it goes ("…, not
+# hidden away in a drawer"): a contrast that changes nothing
+_NOT_THERE37S = re.compile(
+    r",\s*(?:and )?not (?:(?:hidden|tucked|shoved|stuck|put|left|lost|buried)(?: away)? )?"
+    r"(?:in|on|under|inside|into|in with) (?:a|an|some|the) (?P<w>[a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _sitting37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'P wants X sitting on S' is 'P wants X on S' (a want of where it is to
+    be, as 'wants X left on S' reads) when X is one object and S one surface of the scene; then a
+    closing ', not (hidden away) in a drawer' (above) is taken off when it names nothing in the
+    scene and the text before puts an object on a surface. What is left must read."""
+    out = text
+    m = _SITTING37S.search(out)
+    if m is not None and _only(m["x"], lexicon, "object") and _surface_only(m["s"], lexicon):
+        out = f"{out[: m.start()]}{m['want']} {m['x']} {m['on']} {m['s']}{out[m.end() :]}"
+    n = _NOT_THERE37S.search(out)
+    if n is not None and _names_nothing(n["w"], lexicon):
+        before = out[: n.start()]
+        if _ids(before, lexicon, "surface") and _ids(before, lexicon, "object"):
+            out = before + n["end"].strip()
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _sitting37s,
+    _task_had37s,
+    _sort_out37s,
+    _ordeal37s,
     _only_role37s,
     _says_needs37s,
     _once_there37s,
