@@ -299,6 +299,20 @@ test_task_sitting = CASES2.test(
 )
 
 
+# -- blind21: whose it is, then 'give it to him' (normalise._owner_then37s) ----------------------
+
+test_owner_then = CASES2.test(
+    ("See the blue mug? That's Bob's, give it to him.", "mug_blue>B", CELL),
+    ("The blue mug's Bob's, give it to him.", "mug_blue>B", CELL),
+    ("That blue mug is Bob's, give it to him.", "mug_blue>B", CELL),
+    ("The blue mug is Bob's. Give it to him.", "mug_blue>B", CELL),
+    # a pronoun that cannot be the owner; a kind of several; nothing pointed at
+    ("See the blue mug? That's Bob's, give it to her.", None, CELL),
+    ("That mug is Bob's, give it to him.", None, CELL),
+    ("That's Bob's, give it to him.", None, CELL),
+)
+
+
 # -- blind21/22: a correction of the recipient left open names the people --------------------------
 # (offline._more_readings37s)
 

@@ -24749,7 +24749,41 @@ def _sitting37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# whose the object is, then it handed to them by a pronoun ("See the blue mug? That's Bob's, give
+# it to him.", "The blue mug is Bob's, give it to him."): handed to that owner
+_OWNER_THEN37S = re.compile(
+    r"(?P<x>\b(?:that|it|this|(?:the|that|this) [a-z' -]+?)) ?(?:'s|\u2019s| is) "
+    r"(?P<who>[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?:'s|\u2019s)\s*[,.;]\s*(?:so\s+)?"
+    r"(?P<verb>give|hand|take|pass|bring) it (?:back |over |right back )?to "
+    r"(?P<pro>him|her)\b",
+    _F,
+)
+
+
+def _owner_then37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the owner said, then the object handed to a him / her (above): '<verb>
+    it to <owner>' ('<verb> the X to <owner>' when the object was named there), when the owner
+    is one person the pronoun may be (a title, kin word or first name of the other sex rules
+    them out), a named object is one of the scene, and what is left reads ("See the blue mug?
+    Give it to Bob." reads the pointing)."""
+    m = _OWNER_THEN37S.search(text)
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    who = next(iter(_ids(m["who"], lexicon, "human")))
+    sex = said_sex35s(who, lexicon)
+    if sex is not None and PRONOUN_SEX.get(m["pro"].lower()) != sex:
+        return text
+    x = m["x"]
+    named = " " in x.strip()
+    thing = "the " + x.strip().split(" ", 1)[1] if named else "it"
+    if named and not _only(thing, lexicon, "object"):
+        return text
+    out = f"{text[: m.start()]}{m['verb']} {thing} to {m['who']}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _owner_then37s,
     _sitting37s,
     _task_had37s,
     _sort_out37s,
