@@ -146,7 +146,6 @@ KNOWN_MISSES = frozenset(
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
-        "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         'knife on the worktop please, the guests want it by their bread',
         "Could Person A get her bottle, she's been out on the water all day?",
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")

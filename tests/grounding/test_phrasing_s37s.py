@@ -24,6 +24,7 @@ from tests.grounding.helpers import (
 
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
 T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")
+DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -310,6 +311,24 @@ test_owner_then = CASES2.test(
     ("See the blue mug? That's Bob's, give it to her.", None, CELL),
     ("That mug is Bob's, give it to him.", None, CELL),
     ("That's Bob's, give it to him.", None, CELL),
+    ("The blue mug's Bob's, so take it over.", "mug_blue>B", CELL),
+    ("That's Bob's, take it over.", None, CELL),
+)
+
+
+# -- blind22: the speaker not knowing a name is no doubt (normalise._name_unknown37s, offline
+# ._DOUBT) ----------------------------------------------------------------------------------------
+
+test_name_unknown = CASES2.test(
+    (
+        "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
+        "bottle>B",
+        DUO,
+    ),
+    ("Give the bottle to Person B, I don't know his name.", "bottle>B", DUO),
+    # unsure of what is asked: refused as before
+    ("Give the bottle to whoever isn't Person A, I don't know.", None, DUO),
+    ("Give the bottle to the other one, I don't know the other one's name.", None, DUO),
 )
 
 

@@ -24753,9 +24753,9 @@ def _sitting37s(text: str, lexicon: Lexicon) -> str:
 # it to him.", "The blue mug is Bob's, give it to him."): handed to that owner
 _OWNER_THEN37S = re.compile(
     r"(?P<x>\b(?:that|it|this|(?:the|that|this) [a-z' -]+?)) ?(?:'s|\u2019s| is) "
-    r"(?P<who>[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?:'s|\u2019s)\s*[,.;]\s*(?:so\s+)?"
-    r"(?P<verb>give|hand|take|pass|bring) it (?:back |over |right back )?to "
-    r"(?P<pro>him|her)\b",
+    r"(?P<who>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s|\u2019s)\s*[,.;]\s*(?:so\s+)?"
+    r"(?:(?P<verb>give|hand|take|pass|bring) it (?:back |over |right back )?to (?P<pro>him|her)\b"
+    r"|(?P<over>take|bring|run|carry) it (?:over|across|round)(?= *(?:[,.;!?]|$)))",
     _F,
 )
 
@@ -24771,18 +24771,43 @@ def _owner_then37s(text: str, lexicon: Lexicon) -> str:
         return text
     who = next(iter(_ids(m["who"], lexicon, "human")))
     sex = said_sex35s(who, lexicon)
-    if sex is not None and PRONOUN_SEX.get(m["pro"].lower()) != sex:
+    if m["pro"] is not None and sex is not None and PRONOUN_SEX.get(m["pro"].lower()) != sex:
         return text
     x = m["x"]
     named = " " in x.strip()
     thing = "the " + x.strip().split(" ", 1)[1] if named else "it"
     if named and not _only(thing, lexicon, "object"):
         return text
-    out = f"{text[: m.start()]}{m['verb']} {thing} to {m['who']}{text[m.end() :]}"
+    verb = m["verb"] or m["over"]
+    out = f"{text[: m.start()]}{verb} {thing} to {m['who']}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# the speaker not knowing a person's name, closing the request ("…, I don't know the other one's
+# name."): it asks nothing and names no one
+_NAME_UNKNOWN37S = re.compile(
+    r"\s*[,;]\s*(?:(?:and|but|as|because|cos|sorry)\s+)?i (?:don't|do not|dont|can't|cannot) "
+    r"(?:know|remember|recall) (?:his|her|their|the other (?:one|person|guy|lady|man|woman)'s)"
+    r" names?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _name_unknown37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing remark above taken off when the request before it names
+    someone and what is left reads ('whoever isn't Person A' says who without the name)."""
+    m = _NAME_UNKNOWN37S.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    if not _ids(rest, lexicon, "human") or not _ids(rest, lexicon, "object"):
+        return text
+    out = rest + m["end"].strip()
     return out if _reading(out, lexicon) is not None else text
 
 
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _name_unknown37s,
     _owner_then37s,
     _sitting37s,
     _task_had37s,

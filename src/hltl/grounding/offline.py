@@ -1522,9 +1522,12 @@ _DEFERRED = re.compile(
 
 
 # the speaker saying they are unsure of what they ask
+# (session 37, 12s: not knowing a person's name is no doubt about what to do: "…, I don't know
+# the other one's name")
+_NAME37S = r" (?:his|her|their|the other (?:one|person|guy|lady|man|woman)'s) names?\b"
 _DOUBT = re.compile(
-    r"\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know|dunno|no idea|"
-    r"(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)|"
+    rf"\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know(?!{_NAME37S})|"
+    rf"dunno|no idea|(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)(?!{_NAME37S})|"
     # session 32: 'before I forget' is no doubt (the speaker remembers now)
     r"(?<!\bbefore )i forget|i forgot|"
     r"lost track)\b",
