@@ -123,7 +123,6 @@ KNOWN_MISSES = frozenset(
         # Jess'), exclusions and negation, corrections with remarks, typos in a remark
         "Jess needs some screws, give her the tin.",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "The little one wants her teddy, she won't settle without it.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",

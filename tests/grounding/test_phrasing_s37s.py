@@ -13,6 +13,7 @@ from tests.grounding.helpers import (
     DEPOT,
     KITCHEN,
     LAB,
+    NURSERY,
     OFFICE,
     ROOT,
     WARD,
@@ -329,6 +330,18 @@ test_name_unknown = CASES2.test(
     # unsure of what is asked: refused as before
     ("Give the bottle to whoever isn't Person A, I don't know.", None, DUO),
     ("Give the bottle to the other one, I don't know the other one's name.", None, DUO),
+)
+
+
+# -- blind21: 'the little one' wanting something is the scene's one small child -----------------
+# (normalise._little_one37s)
+
+test_little_one = CASES2.test(
+    ("The little one wants her teddy, she won't settle without it.", "teddy>A", NURSERY),
+    ("The little one wants the teddy.", "teddy>A", NURSERY),
+    # no child in the scene; sizes of objects ('the little one' could be the small box)
+    ("The little one wants the cup.", None, CELL),
+    ("The little one wants the tape.", None, DEPOT),
 )
 
 

@@ -24806,7 +24806,42 @@ def _name_unknown37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# a small child said as 'the little one' / 'the wee one' wanting something ("The little one wants
+# her teddy, …"): the one person of the scene called a child
+_LITTLE_ONE37S = re.compile(
+    r"\bthe (?:little|wee|youngest|smallest) one(?= (?:wants|needs|would like|'d like|is after|"
+    r"'s after|could do with|could use)\b)",
+    _F,
+)
+_CHILD_WORDS37S = frozenset({"toddler", "baby", "infant", "child", "kid", "little one", "tot"})
+
+
+def _little_one37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'the little one' above is the one person of the scene whose names say a
+    small child (toddler, baby, …), when no object of the scene is named by a size ('the little
+    one' could be the small box) and what is left reads."""
+    m = _LITTLE_ONE37S.search(text)
+    if m is None:
+        return text
+    if any(
+        w in ("small", "little", "smallest", "mini", "tiny")
+        for o in lexicon.scene.objects
+        for n in (o.id.replace("_", " "), *o.aliases)
+        for w in n.lower().split()
+    ):
+        return text
+    kids = [h for h in lexicon.scene.humans if {a.lower() for a in h.aliases} & _CHILD_WORDS37S]
+    if len(kids) != 1:
+        return text
+    name = next((a for a in (kids[0].name, *kids[0].aliases) if _only_person(a, lexicon)), None)
+    if name is None:
+        return text
+    out = f"{text[: m.start()]}{name}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _little_one37s,
     _name_unknown37s,
     _owner_then37s,
     _sitting37s,
