@@ -69,6 +69,17 @@ test_choice_repaired = CASES.test(
 )
 
 
+# a hesitation inside 'one of …': the list goes on (phrasing._one_of_list31r), as without it and as
+# a plain 'or' list does; it had read the choice and the last name too
+test_one_of_halting = CASES.test(
+    ("One of the cup or the chips, er, the apple for Person A.", "cup>A | chips>A | apple>A", CELL),
+    ("Give Person A one of the cup, the chips, er, the apple.", "cup>A | chips>A | apple>A", CELL),
+    ("Give Bob the cup or the chips, er, the apple.", "cup>B | chips>B | apple>B", CELL),
+    ("One of the cup or the chips, the apple for Person A.", "cup>A | chips>A | apple>A", CELL),
+    ("Give Person A one of the mugs, er, the apple.", "apple>A", CELL),
+)
+
+
 def test_choice_repaired_names_both_readings() -> None:
     assert_refused(
         "One of the cup or the chips, er, I mean the apple for Person A, whichever is nearer.",

@@ -1663,6 +1663,10 @@ def _both_of_two31r(items: list[Item], k: int, j: int) -> bool:
     )
 
 
+# the sounds of a speaker hesitating (no word of repair: "er", not "sorry")
+_HESITATIONS37S = frozenset({"er", "erm", "um", "umm", "uh", "uhm", "hmm", "ah"})
+
+
 def _one_of_list31r(items: list[Item], k: int, j: int) -> tuple[Item, int] | None:
     """Session 31 (12r): 'one of / any one of / either of the cup, the apple and the bottle' (a
     chooser with 'of', then a list of names of one object each): one of the listed objects, a
@@ -1686,6 +1690,18 @@ def _one_of_list31r(items: list[Item], k: int, j: int) -> tuple[Item, int] | Non
         m = n
         if _is(items[m], ","):
             m += 1
+            # session 37 (12s): 'one of the cup or the chips, er, the apple': a list said
+            # haltingly goes on past the hesitation, as it does without it (it had been read as
+            # the choice and the apple too; the lexer leaves 'er' as a second comma)
+            if m < len(items) and _is(items[m], ","):
+                m += 1
+            elif (
+                m + 1 < len(items)
+                and _is(items[m], "filler")
+                and items[m].text.lower() in _HESITATIONS37S
+                and _is(items[m + 1], ",")
+            ):
+                m += 2
         if m < len(items) and _is(items[m], "and", "or"):
             m += 1
         if m == n:
