@@ -132,8 +132,6 @@ KNOWN_MISSES = frozenset(
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give Person A something to eat, but not the apple, she's allergic.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
-        "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
-        "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
         "The doctor's after the white cup, and the visitor would like that banana, she's had no "
         "breakfast.",
         "That bottle by the door, up on the shelf with it, there's a good chap.",

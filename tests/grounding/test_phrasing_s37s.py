@@ -26,6 +26,7 @@ from tests.grounding.helpers import (
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
 T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")
 DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")
+FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -353,6 +354,23 @@ test_little_one = CASES2.test(
     # no child in the scene; sizes of objects ('the little one' could be the small box)
     ("The little one wants the cup.", None, CELL),
     ("The little one wants the tape.", None, DEPOT),
+)
+
+
+# -- blind22: 'Pardon? Speak up …' opening the text (normalise._pardon37s) -----------------------
+
+test_pardon = CASES2.test(
+    (
+        "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
+        "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
+        "bottle>A",
+        FIG1,
+    ),
+    ("Pardon? Let Alice have the bottle.", "bottle>A", FIG1),
+    ("Sorry? Speak up, please. Give Bob the chips.", "chips>B", FIG1),
+    # the aside names someone; nothing asked after it
+    ("Pardon? Speak up, Alice wants the bottle. Give Bob the chips.", None, FIG1),
+    ("Pardon?", None, FIG1),
 )
 
 

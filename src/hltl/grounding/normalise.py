@@ -24840,7 +24840,29 @@ def _little_one37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# the speaker not having heard the robot, opening the text ("Pardon? Speak up a touch, this
+# hearing aid of mine keeps whistling. …"): talk about the talk, asking nothing of the scene
+_PARDON37S = re.compile(
+    r"^(?:(?:pardon|sorry|come again|what was that|eh|what's that|say again)\s*\?\s*)+"
+    r"(?:(?:speak up|say (?:that|it) again|a bit louder|louder)(?: a (?:bit|touch|little))?"
+    r"(?:,? please)?(?P<aside>,[^.!?]*)?[.!]\s*)?",
+    _F,
+)
+
+
+def _pardon37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the opening above taken off when its words (an aside after 'speak up'
+    too) name nothing in the scene, a request follows, and what is left reads."""
+    m = _PARDON37S.match(text)
+    if m is None or m.end() >= len(text) or not _names_nothing(m[0], lexicon):
+        return text
+    out = text[m.end() :].strip()
+    out = out[:1].upper() + out[1:]
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _pardon37s,
     _little_one37s,
     _name_unknown37s,
     _owner_then37s,
