@@ -126,8 +126,6 @@ KNOWN_MISSES = frozenset(
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
-        "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
-        "so she's got two.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give Person A something to eat, but not the apple, she's allergic.",

@@ -27,6 +27,7 @@ TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
 T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")
 DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")
 FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")
+SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -372,6 +373,26 @@ test_pardon = CASES2.test(
     # the aside names someone; nothing asked after it
     ("Pardon? Speak up, Alice wants the bottle. Give Bob the chips.", None, FIG1),
     ("Pardon?", None, FIG1),
+)
+
+
+# -- blind21: 'so she's got two' said of the one person given two (normalise._got_count37s) ------
+
+test_got_count = CASES2.test(
+    (
+        "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
+        "so she's got two.",
+        "chips>A & bottle>B & apple>A",
+        SQ,
+    ),
+    (
+        "Give Person A the chips and Person B the bottle and the apple so she's got two.",
+        "chips>A & bottle>B & apple>B",
+        SQ,
+    ),
+    # no one, or a count no one gets
+    ("Give Person A the chips and Person B the bottle so she's got two.", None, SQ),
+    ("Give Person A the chips and the apple so she's got three.", None, SQ),
 )
 
 

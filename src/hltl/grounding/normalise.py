@@ -24861,7 +24861,43 @@ def _pardon37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# how many things a he / she ends up with, closing the request ("… and the apple goes to Person A
+# as well so she's got two."): said of the one person the request gives that many
+_GOT_COUNT37S = re.compile(
+    r"(?:\s*,\s*|\s+)(?:so|and|which means|meaning)\s+(?P<pro>she|he)(?:'s| has| will have|'ll "
+    r"have)(?: got)? (?P<n>two|three|four|both)(?: (?:of them|things|items|now))?(?P<end>\s*[.!]?)"
+    r"\s*$",
+    _F,
+)
+_COUNTS37S = {"two": 2, "both": 2, "three": 3, "four": 4}
+
+
+def _got_count37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing count above taken off when the request before it reads
+    and gives exactly one person that many objects, one the pronoun may be (a title, kin word or
+    first name of the other sex rules them out): it points at them and adds nothing. No one, or
+    several, with that many: left (refused)."""
+    m = _GOT_COUNT37S.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()] + m["end"].strip()
+    node = _reading(rest, lexicon)
+    if node is None:
+        return text
+    got: dict[str, set[str]] = {}
+    for t in tasks(node):
+        if t.kind == "deliver":
+            got.setdefault(t.target, set()).add(t.obj)
+    n = _COUNTS37S[m["n"].lower()]
+    sex = PRONOUN_SEX.get(m["pro"].lower())
+    fits = [p for p, objs in got.items() if len(objs) == n]
+    if len(fits) != 1 or said_sex35s(fits[0], lexicon) not in (None, sex):
+        return text
+    return rest
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _got_count37s,
     _pardon37s,
     _little_one37s,
     _name_unknown37s,
