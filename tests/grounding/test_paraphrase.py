@@ -134,7 +134,6 @@ KNOWN_MISSES = frozenset(
         "breakfast.",
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
-        "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',

@@ -28,6 +28,7 @@ T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")
 DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")
 FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")
 SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
+ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -393,6 +394,21 @@ test_got_count = CASES2.test(
     # no one, or a count no one gets
     ("Give Person A the chips and Person B the bottle so she's got two.", None, SQ),
     ("Give Person A the chips and the apple so she's got three.", None, SQ),
+)
+
+
+# -- blind22: a hyphenated occasion in a deadline (normalise._hyphen_time37s) ---------------------
+
+test_hyphen_time = CASES2.test(
+    (
+        "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
+        "bottle>A",
+        ONE,
+    ),
+    ("Take the bottle to Person A before the weigh-in.", "bottle>A", ONE),
+    ("Take the bottle to Person A for the warm-up.", "bottle>A", ONE),
+    # a delay stays refused
+    ("Take the bottle to Person A after the weigh-in.", None, ONE),
 )
 
 

@@ -24896,7 +24896,35 @@ def _got_count37s(text: str, lexicon: Lexicon) -> str:
     return rest
 
 
+# an occasion said as a hyphenated noun in a deadline or purpose ("… before the weigh-in", "for
+# the warm-up"): its words as a plain noun phrase, as "before the race" reads
+_HYPHEN_TIME37S = re.compile(
+    r"\b(?P<lead>(?:before|by|for) (?:the|her|his|their|our|my) )(?P<a>[a-z]+)-(?P<b>[a-z]+)\b",
+    _F,
+)
+
+
+def _hyphen_time37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the hyphen above taken out when the word names nothing in the scene
+    and what is left reads ('the middle-sized box' is `_sized37s`'s)."""
+    if "-" not in text:
+        return text
+    out = _HYPHEN_TIME37S.sub(
+        lambda m: (
+            f"{m['lead']}{m['a']} {m['b']}"
+            if _names_nothing(f"{m['a']}-{m['b']}", lexicon)
+            and _names_nothing(f"{m['a']} {m['b']}", lexicon)
+            else m[0]
+        ),
+        text,
+    )
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _hyphen_time37s,
     _got_count37s,
     _pardon37s,
     _little_one37s,
