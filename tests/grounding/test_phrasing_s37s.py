@@ -136,6 +136,7 @@ test_away_till = CASES.test(
     ("give bob the cup, he arrives at six", None, CELL),
     ("give bob the cup, bob's back at half five", None, CELL),
     ("give bob the cup, he'll be back in ten minutes", None, CELL),
+    ("give bob the cup, he isn't back until six", None, CELL),
     ("tom needs the scanner, he's in at nine", None, DEPOT),
     ("tom needs the scanner, he's back in the morning", None, DEPOT),
     # someone else's hours, or his own busy / done at a time (the context, read as now; doing it
@@ -146,6 +147,7 @@ test_away_till = CASES.test(
     ("give bob the cup, he's on at six", "cup>B", CELL),
     ("give bob the cup, he's back", "cup>B", CELL),
     ("give bob the cup, he's back at his desk", "cup>B", CELL),
+    ("give bob the cup, he's in till six", "cup>B", CELL),
     ("put the cup on the shelf, bob's back at six", "cup@shelf", CELL),
 )
 
@@ -154,7 +156,7 @@ def test_away_till_names_both_readings() -> None:
     assert_refused(
         "give bob the cup, he's back at six",
         CELL,
-        match=r"says Person B \(Bob\) comes at six: give it now, .* or wait until they come",
+        match=r"says Person B \(Bob\) comes later \(at six\): give it now, .* or wait until they come",
     )
 
 

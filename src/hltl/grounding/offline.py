@@ -4300,7 +4300,7 @@ _AWAY_TILL37S = re.compile(
     r"(?:(?:'s|\u2019s| is|'ll be|\u2019ll be| will be| should be| won't be| isn't)"
     r" (?:only |not )?(?:back|in|here|due(?: back| in| here)?|arriving|coming(?: back| in)?)"
     r"| (?:gets|comes|walks) (?:back|in|here)| (?:arrives|turns up|shows up|lands))"
-    rf"(?P<when> (?:(?:at|around|about|after|from|till|until|not till|by) (?:{_NUMBERS37S}\b|"
+    rf"(?P<when> (?:(?:at|around|about|after|from|till|until|by) (?:{_NUMBERS37S}\b|"
     r"lunch|dinner|tea|breakfast|the break)|in (?:the )?(?:morning|afternoon|evening|an hour|"
     r"half an hour|a bit|a while|\w+ minutes|\w+ hours)|tonight|tomorrow|later|this "
     r"(?:morning|afternoon|evening)|on \w+day))\b",
@@ -4323,6 +4323,10 @@ def _away_till37s(text: str, node: Node, lexicon: Lexicon) -> None:
     if not given:
         return
     for m in _AWAY_TILL37S.finditer(text):
+        if m["when"].lower().startswith((" till", " until")) and not re.search(
+            r"\bnot\b|n't\b", m[0], re.I
+        ):
+            continue  # 'he's in till six' is here now, until then
         who = m["who"].lower()
         if who in ("i", "we", "you", "it", "that", "this", "there", "what", "which"):
             continue
@@ -4335,7 +4339,8 @@ def _away_till37s(text: str, node: Node, lexicon: Lexicon) -> None:
             continue
         names = " or ".join(person_name(p, lexicon) for p in sorted(person))
         raise GroundingError(
-            f"{m.group(0).strip(' ,;.!?-')!r} says {names} comes{m['when']}: give it now, for "
+            f"{m.group(0).strip(' ,;.!?-')!r} says {names} comes later ({m['when'].strip()}): "
+            "give it now, for "
             f"them to find, or wait until they come? the cell acts now, so say the request when "
             "it is to be done"
         )
