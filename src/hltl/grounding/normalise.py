@@ -24764,8 +24764,9 @@ def _owner_then37s(text: str, lexicon: Lexicon) -> str:
     """Session 37 (12s): the owner said, then the object handed to a him / her (above): '<verb>
     it to <owner>' ('<verb> the X to <owner>' when the object was named there), when the owner
     is one person the pronoun may be (a title, kin word or first name of the other sex rules
-    them out), a named object is one of the scene, and what is left reads ("See the blue mug?
-    Give it to Bob." reads the pointing)."""
+    them out), a named object is one of the scene ('that' / 'it': the text before names one
+    object, not a choice), and what is left reads ("See the blue mug? Give it to Bob." reads the
+    pointing)."""
     m = _OWNER_THEN37S.search(text)
     if m is None or not _only_person(m["who"], lexicon):
         return text
@@ -24778,6 +24779,8 @@ def _owner_then37s(text: str, lexicon: Lexicon) -> str:
     thing = "the " + x.strip().split(" ", 1)[1] if named else "it"
     if named and not _only(thing, lexicon, "object"):
         return text
+    if not named and len(_ids(text[: m.start()], lexicon, "object")) != 1:
+        return text  # 'that' / 'it' points back at one object said before it, or is not this
     verb = m["verb"] or m["over"]
     out = f"{text[: m.start()]}{verb} {thing} to {m['who']}{text[m.end() :]}"
     return out if _reading(out, lexicon) is not None else text
