@@ -78,7 +78,6 @@ KNOWN_MISSES = frozenset(
         # list after, 'one of the <description>', purposes ('to bang together', 'before
         # service'), comparatives ('the two smaller'), verbs the grammar lacks ('Tidy', 'Clear',
         # 'Load … up with'), 'one of the other two', "bring Grandad's X over to him" (no title)
-        "The little one could do with her sippy cup",
         "Mia wants the tape, she's sealing boxes, and Tom wants the scanner, he's checking the "
         "load",
         "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",

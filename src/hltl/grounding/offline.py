@@ -345,8 +345,11 @@ def _more_readings37s(text: str, refused: GroundingError, lexicon: Lexicon) -> s
     "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who
     asked.": blind21/22's refusals without their readings) names the people the corrections go
     between: each person named, and for 'the other <title>' everyone of that title. A person
-    named before a correction and one after it; '' when the refusal names them already."""
+    named before a correction and one after it, and the speaker's doubt said ('not sure', 'lost
+    track', 'maybe'); '' when the refusal names them already."""
     said = str(refused)
+    if not (_DOUBT.search(text) or re.search(r"\b(?:maybe|perhaps|or was it)\b", text, re.I)):
+        return ""  # nothing said leaves it open: the refusal is the grammar's alone
     try:
         items = lex(text, lexicon)
     except GroundingError:
