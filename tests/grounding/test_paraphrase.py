@@ -140,7 +140,6 @@ KNOWN_MISSES = frozenset(
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         'knife on the worktop please, the guests want it by their bread',
-        "Could Person A get her bottle, she's been out on the water all day?",
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
         'be tuning this thing for another hour.',

@@ -29,6 +29,7 @@ DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")
 FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")
 SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")
+T12 = load_scene(ROOT / "examples/scenes/1-2.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -412,6 +413,16 @@ test_hyphen_time = CASES2.test(
     ("Take the bottle to Person A before the weigh-in.", "bottle>A", ONE),
     # a delay stays refused
     ("Take the bottle to Person A after the weigh-in.", None, ONE),
+)
+
+
+# -- blind22: 'out on the water' is afloat, not the drink (normalise._on_the_water37s) -----------
+
+test_on_the_water = CASES2.test(
+    ("Could Person A get her bottle, she's been out on the water all day?", "bottle>A", T12),
+    ("Could Person A get her bottle? She's been out on the water all day.", "bottle>A", T12),
+    # the water named as the thing asked for: as before
+    ("Give Bob the water, he's been out on the water.", "bottle>B", CELL),
 )
 
 

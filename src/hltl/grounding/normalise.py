@@ -24926,7 +24926,29 @@ def _hyphen_time37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# a person said to be (or have been) out on the water: afloat, a place, not the drink ('water'
+# names the bottle in scenes with one): "…, she's been out on the water all day"
+_ON_THE_WATER37S = re.compile(
+    r"\b(?P<lead>(?:she|he|they|we|i)(?:'s|\u2019s|'ve| has| have| had|'d)? been out|(?:she|he|"
+    r"they|we|i)(?:'s|\u2019s| is| was| were|'re| are|'m| am) (?:still )?out) on the "
+    r"(?:water|sea|river)\b",
+    _F,
+)
+
+
+def _on_the_water37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'out on the water' above said as 'out afloat' (what the person has been
+    doing), when what is left reads."""
+    if "out on the" not in text.lower():
+        return text
+    out = _ON_THE_WATER37S.sub(lambda m: f"{m['lead']} afloat", text)
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _on_the_water37s,
     _hyphen_time37s,
     _got_count37s,
     _pardon37s,
