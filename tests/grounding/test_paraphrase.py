@@ -129,8 +129,6 @@ KNOWN_MISSES = frozenset(
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         "Give Person A something to eat, but not the apple, she's allergic.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
-        "The doctor's after the white cup, and the visitor would like that banana, she's had no "
-        "breakfast.",
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "

@@ -173,6 +173,8 @@ test_read_as_before = CASES.test(
     ("give the apple to Carol, maybe", "apple>C", CELL),
     # with no comma, or adding a further object: refused as before
     ("Give the apple to Carol maybe", None, CELL),
+    # one person named: read by earlier rules too
+    ("The doctor's after the white cup, she's had no breakfast.", "cup_white>A", LAB),
     # 'for the warm-up': read by earlier rules too
     ("Take the bottle to Person A for the warm-up.", "bottle>A", ONE),
     # 'Sorry? Speak up, please.' opening a request: read by earlier rules too
@@ -423,6 +425,20 @@ test_on_the_water = CASES2.test(
     ("Could Person A get her bottle? She's been out on the water all day.", "bottle>A", T12),
     # the water named as the thing asked for: as before
     ("Give Bob the water, he's been out on the water.", "bottle>B", CELL),
+)
+
+
+# -- blind22: 'she's had no breakfast' of someone who gets something (normalise._had_no37s) ------
+
+test_had_no = CASES2.test(
+    (
+        "The doctor's after the white cup, and the visitor would like that banana, she's had no "
+        "breakfast.",
+        "cup_white>A & banana>C",
+        LAB,
+    ),
+    # no one named: who she is is left open, as before
+    ("Put the white cup in the sink, she's had no breakfast.", None, LAB),
 )
 
 

@@ -24947,7 +24947,38 @@ def _on_the_water37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# a person said to have gone without a meal or sleep, closing the request ("…, and the visitor
+# would like that banana, she's had no breakfast."): why, a state; session 21's reasons hold
+# back every 'no' (it could say someone gets none)
+_HAD_NO37S = re.compile(
+    r"\s*,\s*(?:(?:and|as|because|cos|since|poor thing)\s+)?(?P<pro>she|he)(?:'s|\u2019s| has)"
+    r" (?:had|eaten) (?:no|nothing for) (?:breakfast|lunch|dinner|tea|supper|brunch|food|sleep|"
+    r"break|coffee)(?: (?:yet|today|all day|this morning|since [a-z]+))?(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+
+
+def _had_no37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing state above taken off when the request before it reads
+    and every person it names that the he / she may be (a title, kin word or first name of the
+    other sex rules them out) gets something: whoever it is, the reading is the same."""
+    m = _HAD_NO37S.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()] + m["end"].strip()
+    node = _reading(rest, lexicon)
+    if node is None:
+        return text
+    sex = PRONOUN_SEX.get(m["pro"].lower())
+    named = {p for p in _ids(rest, lexicon, "human") if said_sex35s(p, lexicon) in (None, sex)}
+    given = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not named or not named <= given:
+        return text
+    return rest
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _had_no37s,
     _on_the_water37s,
     _hyphen_time37s,
     _got_count37s,
