@@ -127,7 +127,6 @@ KNOWN_MISSES = frozenset(
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
-        "Give Person A something to eat, but not the apple, she's allergic.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',

@@ -30,6 +30,7 @@ FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")
 SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")
 T12 = load_scene(ROOT / "examples/scenes/1-2.yaml")
+F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -439,6 +440,17 @@ test_had_no = CASES2.test(
     ),
     # no one named: who she is is left open, as before
     ("Put the white cup in the sink, she's had no breakfast.", None, LAB),
+)
+
+
+# -- blind21: 'something to eat, but not the apple' (normalise._to_eat37s) ------------------------
+
+test_to_eat = CASES2.test(
+    ("Give Person A something to eat, but not the apple, she's allergic.", "chips>A", F42),
+    ("Give Person A something to drink, but not the cup.", "bottle>A", F42),
+    ("Give Bob something to drink, but not the bottle.", "cup>B | mug_red>B | mug_blue>B", CELL),
+    # what is left out is not of that kind
+    ("Give Person A something to eat, not the bottle.", None, F42),
 )
 
 

@@ -24977,7 +24977,39 @@ def _had_no37s(text: str, lexicon: Lexicon) -> str:
     return rest
 
 
+# 'something to eat / drink' with one of them left out ("Give Person A something to eat, but not
+# the apple, she's allergic."): the scene's snacks (drinks) but that one
+_TO_EAT37S = re.compile(
+    r"\bsomething (?P<what>to eat|to nibble|to snack on|to drink)\s*,?\s*(?:but |just |only )?not "
+    r"(?P<x>the [a-z' -]+?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _to_eat37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the phrase above is the one object of the kind left ('the chips'), or
+    a choice of those left ('one of the cup or the bottle'), when the object left out is one of
+    the scene's of that kind (KIND_CATEGORIES: snacks for eating, drinks for drinking), and what
+    is left reads."""
+    m = _TO_EAT37S.search(text)
+    if m is None or not _only(m["x"], lexicon, "object"):
+        return text
+    kind = KIND_CATEGORIES["drinks" if m["what"].lower() == "to drink" else "snacks"]
+    out_id = next(iter(_ids(m["x"], lexicon, "object")))
+    of_kind = [o for o in lexicon.scene.objects if o.category in kind]
+    if out_id not in {o.id for o in of_kind}:
+        return text
+    left = [o for o in of_kind if o.id != out_id]
+    names = [f"the {o.aliases[0] if o.aliases else o.id.replace('_', ' ')}" for o in left]
+    if not left or not all(_only(n, lexicon, "object") for n in names):
+        return text
+    said = names[0] if len(names) == 1 else "one of " + ", ".join(names[:-1]) + " or " + names[-1]
+    out = f"{text[: m.start()]}{said}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _to_eat37s,
     _had_no37s,
     _on_the_water37s,
     _hyphen_time37s,
