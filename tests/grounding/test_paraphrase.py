@@ -132,7 +132,6 @@ KNOWN_MISSES = frozenset(
         'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",

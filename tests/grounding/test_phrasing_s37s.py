@@ -31,6 +31,7 @@ SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")
 T12 = load_scene(ROOT / "examples/scenes/1-2.yaml")
 F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")
+F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -451,6 +452,31 @@ test_to_eat = CASES2.test(
     ("Give Bob something to drink, but not the bottle.", "cup>B | mug_red>B | mug_blue>B", CELL),
     # what is left out is not of that kind
     ("Give Person A something to eat, not the bottle.", None, F42),
+)
+
+
+# -- blind22: 'X for one, Y for the other' after two people (normalise._one_other37s) -------------
+
+test_one_other = CASES2.test(
+    (
+        "Person A and Person B each one drink, bottle for one, cup for other, any way also can.",
+        "(bottle>A & cup>B) | (cup>A & bottle>B)",
+        F41,
+    ),
+    (
+        "Person A and Person B each get one drink: the bottle for one and the cup for the other.",
+        "(bottle>A & cup>B) | (cup>A & bottle>B)",
+        F41,
+    ),
+    (
+        "Alice and Bob, the cup for one, the apple for the other.",
+        "(cup>A & apple>B) | (apple>A & cup>B)",
+        CELL,
+    ),
+    # an object of several, the same person twice, the same object twice
+    ("Alice and Bob, the mug for one, the apple for the other.", None, CELL),
+    ("Alice and Alice, the cup for one, the apple for the other.", None, CELL),
+    ("Person A and Person B each one drink, bottle for one, bottle for other.", None, F41),
 )
 
 

@@ -25008,7 +25008,42 @@ def _to_eat37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# two people, then two objects 'for one' and 'for (the) other' ("Person A and Person B each one
+# drink, bottle for one, cup for other, any way also can."): one each, either way round
+_ONE_OTHER37S = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?)(?: (?:each|both))?(?: (?:get|have|want|"
+    r"need|gets|has))?(?: one [a-z]+(?: each)?)?\s*[,:;]\s*(?P<x>(?:the )?[a-z' -]+?) for one\s*,?"
+    r"\s*(?:and )?(?P<y>(?:the )?[a-z' -]+?) for (?:the )?other(?: one)?"
+    r"(?:\s*,\s*(?:either way|any way|anyway|whichever way|either way round|any which way)"
+    r"(?: (?:is fine|is ok|is okay|also can|can|works|will do|round))?)?\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _one_other37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the shape above is 'Either P gets X and Q Y, or P gets Y and Q X' (the
+    grammar's choice of the two pairings), when P and Q are two people, X and Y two objects of
+    the scene (said by a name of one object each), and what is left reads."""
+    m = _ONE_OTHER37S.match(text.strip())
+    if m is None:
+        return text
+    p, q = m["p"].strip(), m["q"].strip()
+    x, y = (w.strip() for w in (m["x"], m["y"]))
+    x, y = (w if w.lower().startswith("the ") else f"the {w}" for w in (x, y))
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon):
+        return text
+    if not (_only(x, lexicon, "object") and _only(y, lexicon, "object")):
+        return text
+    if _ids(x, lexicon) == _ids(y, lexicon):
+        return text
+    out = f"Either {p} gets {x} and {q} {y}, or {p} gets {y} and {q} {x}."
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _one_other37s,
     _to_eat37s,
     _had_no37s,
     _on_the_water37s,
