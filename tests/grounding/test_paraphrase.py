@@ -129,7 +129,6 @@ KNOWN_MISSES = frozenset(
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "That bottle by the door, up on the shelf with it, there's a good chap.",
-        'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",

@@ -32,6 +32,7 @@ ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")
 T12 = load_scene(ROOT / "examples/scenes/1-2.yaml")
 F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")
 F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")
+L44 = load_scene(ROOT / "examples/scenes/4-4-line.yaml")
 
 CASES = PhrasingCases()
 # the cases of blind21/22's rewrites (part 2), each read by them alone
@@ -477,6 +478,23 @@ test_one_other = CASES2.test(
     ("Alice and Bob, the mug for one, the apple for the other.", None, CELL),
     ("Alice and Alice, the cup for one, the apple for the other.", None, CELL),
     ("Person A and Person B each one drink, bottle for one, bottle for other.", None, F41),
+)
+
+
+# -- blind22: the object fronted before 'you <verb>', a person before a he / she's state ----------
+# (normalise._fronted_you37s)
+
+test_fronted_you = CASES2.test(
+    (
+        "Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.",
+        "bottle>A",
+        L44,
+    ),
+    ("That bottle, you bring for Person A, please.", "bottle>A", L44),
+    ("That cup, you give to Person B.", "cup>B", L44),
+    # the pronoun cannot be the person named; an object of several
+    ("Bob, she is very thirsty. That bottle, you bring for her.", None, CELL),
+    ("That mug, you give to Bob.", None, CELL),
 )
 
 

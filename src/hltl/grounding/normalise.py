@@ -25042,7 +25042,45 @@ def _one_other37s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# the object fronted, then 'you <verb>' ("That bottle, you bring for her, please."): the order
+# said with the object first, as 'Bring that bottle for her'
+_FRONTED_YOU37S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?P<x>(?:that|this|the) [a-z' -]+?), you (?:can |could |please )?"
+    r"(?P<verb>bring|give|take|hand|pass|carry|put) (?P<rest>(?:for|to|over to|on|in|onto|into)"
+    r" [^,.;!?]+)",
+    _F,
+)
+# a person named, then a he / she saying their state ("Person A, she is very thirsty from
+# walking, …"): said of that person
+_NAMED_STATE37S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?P<p>[A-Z][\w]*(?: [A-Z][\w]*)?), (?P<pro>she|he) (?P<be>is|was|'s)\b",
+    _F,
+)
+
+
+def _fronted_you37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the fronted object above said as an order ('Bring that bottle for her')
+    when it is one object of the scene, and a person said before a he / she of their state (above)
+    as the state's subject when the pronoun may be them (a title, kin word or first name of the
+    other sex rules them out); taken when what is left reads."""
+    out = text
+    m = _FRONTED_YOU37S.search(out)
+    if m is not None and _only("the " + m["x"].split(" ", 1)[1], lexicon, "object"):
+        verb = m["verb"][:1].upper() + m["verb"][1:]
+        out = f"{out[: m.start()]}{verb} {m['x']} {m['rest']}{out[m.end() :]}"
+    n = _NAMED_STATE37S.search(out)
+    if n is not None and _only_person(n["p"], lexicon):
+        who = next(iter(_ids(n["p"], lexicon, "human")))
+        if said_sex35s(who, lexicon) in (None, PRONOUN_SEX.get(n["pro"].lower())):
+            be = "is" if n["be"] == "'s" else n["be"]
+            out = f"{out[: n.start()]}{n['p']} {be}{out[n.end() :]}"
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
 _STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _fronted_you37s,
     _one_other37s,
     _to_eat37s,
     _had_no37s,
