@@ -14863,6 +14863,16 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
         ),
         out,
     )
+    # session 37 (lead): the same cue closing the repair's sentence, another sentence after it
+    # ("Give Person B the bottle, er, no, the apple, my mistake. Person B's going to need the
+    # chips."): said of the repair before it, not a correction of everything before the next
+    # sentence (12c's fuzz: it had dropped the apple)
+    out = _sub(
+        r"(,\s*no,[^,.!?;]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)\s*([.!])"
+        r"(?=\s+\S)",
+        r"\1\2",
+        out,
+    )
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
     if m is not None and m.start() > 0:
         before, after = out[: m.start()], out[m.end() :]

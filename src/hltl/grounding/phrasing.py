@@ -380,6 +380,8 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
             break
     bare = all(_objects(x) or _is(x, "det", "and", "or", ",", "filler") for x in head)
     if bare and any(_objects(x) for x in head):
+        if _heading37l(head, rest[stop + 1 :] if stop is not None else []):
+            return []
         if len(people) != 1:
             raise GroundingError(
                 f"who gets {_words_of(head)!r}? the remark before it names "
@@ -395,6 +397,16 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
             f"{_words_of(sent)!r} does not say who gets what: say 'give <person> …'"
         )
     return []
+
+
+def _heading37l(head: list[Item], after: list[Item]) -> bool:
+    """Session 37 (lead): "Zoe is thirsty. Books. Red one to Zoe." — objects alone after a
+    remark, then a later sentence that names one of those objects again ('Red one': a book):
+    the objects alone are a heading the later sentence picks from, not what the remark's
+    person gets (it had read both books to Zoe, where "Books. Red one to Zoe." reads the red
+    book alone). The remark then only goes."""
+    said = {r.id for x in head if _objects(x) for r in x.refs}
+    return any(_objects(x) and said & {r.id for r in x.refs} for x in after)
 
 
 def _named_after32s(person: Item, head: list[Item], after: list[Item]) -> None:
