@@ -46,14 +46,25 @@ test_after_doing = CASES.test(
     ("Carol wants the apple after her kitesurfing.", "apple>C", CELL),
     ("Bob gets the cup after his darts practice.", "cup>B", CELL),
     ("The apple is for Carol after her rowing lesson.", "apple>C", CELL),
+    ("Bob wants the cup after a long day of fencing.", "cup>B", CELL),
+    ("Mr Lee's after his pills after his physio.", "pills>B", WARD),
+    ("Lily's desperate for her teddy, she is, after her nap.", "teddy>A", NURSERY),
+    ("Following her swim, Carol wants the apple.", "apple>C", CELL),
+    ("After her run, Carol wants the apple.", "apple>C", CELL),
     # an event says when; an order, not a want; something of the scene; a pronoun that cannot be
-    # the one person; two people; a surface
+    # the one person; two people; a surface; 'shift' may be a verb of the grammar
     ("Bob wants the cup after his meeting.", None, CELL),
     ("Bob wants the cup after the meeting.", None, CELL),
     ("Give Bob the cup after his kitesurfing.", None, CELL),
     ("Bob wants the cup after her kitesurfing.", None, CELL),
     ("Bob and Carol want the cup after their rowing.", None, CELL),
     ("Bob wants the cup on the shelf after his rowing.", None, CELL),
+    ("Bob wants the cup after a long day of the apple.", None, CELL),
+    ("After his meeting, Bob needs the cup.", None, CELL),
+    ("After his swim, Carol wants the apple.", None, CELL),
+    ("After her run, give Carol the apple.", None, CELL),
+    ("After his swim, Bob and Carol need the cup.", None, CELL),
+    ("After his shift, Bob needs the cup.", None, CELL),
 )
 
 # -- wants said by a frame: 'after an hour of X,', 'the one who's in need of', "'s got to have",
@@ -77,6 +88,10 @@ test_wants_framed = CASES.test(
     ("Carol needs the apple, by the look of her.", "apple>C", CELL),
     ("Mia needs the gloves for unloading the pallet.", "gloves>A", DEPOT),
     ("Mia needs the gloves for sweeping the conveyor.", "gloves>A", DEPOT),
+    ("Bob wouldn't say no to the cup.", "cup>B", CELL),
+    ("Carol's been on at me about the apple.", "apple>C", CELL),
+    ("Carol would kill for the apple.", "apple>C", CELL),
+    ("Bob could really go for the cup.", "cup>B", CELL),
     # an order after the hour; two people; the thing of a surface; a pronoun that cannot be the
     # one person, or of two; a doing with a thing of the scene, or a pronoun, or a verb of the
     # grammar; two people's need
@@ -84,6 +99,8 @@ test_wants_framed = CASES.test(
     ("After an hour of kickboxing, Carol and Bob want the cup.", None, CELL),
     ("After an hour of the apple, Carol wants the cup.", None, CELL),
     ("The shelf is in need of the cup.", None, CELL),
+    ("Bob wouldn't say no to the shelf.", None, CELL),
+    ("The shelf would kill for the cup.", None, CELL),
     ("The apple is the thing the shelf's been after.", None, CELL),
     ("Carol needs the apple, by the look of him.", None, CELL),
     ("Carol and Bob need the apple, by the look of her.", None, CELL),
@@ -224,6 +241,9 @@ test_pronouns = CASES.test(
     ("Carol, that's the apple for you. Bob, yours is the cup.", "apple>C & cup>B", CELL),
     ("Bob, yours is the cup and the apple.", "cup>B & apple>B", CELL),
     ("There's Carol, hand her the apple.", "apple>C", CELL),
+    ("That's Bob over there, the cup's for him.", "cup>B", CELL),
+    ("See Carol? Give her the apple.", "apple>C", CELL),
+    ("Bob's the tall one, hand him the cup.", "cup>B", CELL),
     ("Marco's run out of lemon, take him the lemon.", "lemon>A", KITCHEN),
     ("There's the apple, Carol's waiting on it.", "apple>C", CELL),
     ("Carol first, she gets the apple, and then it's the cup for Bob.", "apple>C ; cup>B", CELL),
@@ -245,6 +265,8 @@ test_pronouns = CASES.test(
     ("Bob, that's the shelf for you.", None, CELL),
     ("Bob, that's the cup for you and Carol.", None, CELL),
     ("There's Carol, hand him the apple.", None, CELL),
+    ("See Carol? Give him the apple.", None, CELL),
+    ("That's Bob over there, the cup's for her.", None, CELL),
     ("There's Carol, hand her the apple and Bob the cup.", None, CELL),
     ("Marco's run out of lemon, take him the knife.", None, KITCHEN),
     ("Marco's run out of lemon, take her the lemon.", None, KITCHEN),
@@ -296,6 +318,11 @@ test_splits = CASES.test(
     ),
     ("Could Ava have the teddy, do you think? She's tired.", "teddy>C", NURSERY),
     ("Apple first, onto the shelf with it. Then Bob gets the cup.", "apple@shelf ; cup>B", CELL),
+    (
+        "Knife first, over to Marco with it. After that, Lena gets the lemon.",
+        "knife>A ; lemon>B",
+        KITCHEN,
+    ),
     ("chips go up on the shelf out of bobs reach", "chips@shelf", TWO),
     ("Could you do the cup for Bob first, and the apple for Carol after?", "cup>B ; apple>C", CELL),
     # 'with it' of two objects or 'them' of one; with a thing of the scene; the lemon on a person
@@ -303,6 +330,8 @@ test_splits = CASES.test(
     ("The apple and the cup onto the shelf with it.", None, CELL),
     ("Apple first, onto the shelf with them.", None, CELL),
     ("Take the cup. Put the apple on the shelf with it.", None, CELL),
+    ("Give the knife to Marco with it.", None, KITCHEN),
+    ("Knife first, to Marco with them.", None, KITCHEN),
     ("Cup first, onto the counter with the apple.", None, CELL),
     ("Give Marco the knife. And the lemon can sit on Lena.", None, KITCHEN),
     ("Give Marco the knife. And the lemon can sit on the worktop tomorrow.", None, KITCHEN),
