@@ -200,44 +200,6 @@ KNOWN_MISSES = frozenset(
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         "Alice and Bob each get something: she's having the chips, he's having the bottle.",
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
-        "There's something for both of them, mind: the apple is Person A's and the cup is Person "
-        "B's.",
-        'Go whichever route suits you, as long as Person A gets the bottle in the end.',
-        'Either arm can do it: the bottle to Person A.',
-        'Give one of them the chips, Person A or Person B, and the other one the bottle.',
-        "Sam's only signing for the key cutter, so any pen at all will do him.",
-        'The belt needs one box on it, either the small or the medium, not the big one.',
-        "A book apiece for Noah and Zoe, I don't care who ends up with which.",
-        "Lily can have a block, she won't mind if it's the red or the green.",
-        "Carol's got a pair of things coming, the apple and the cup, she's off to her life "
-        "drawing.",
-        "Person B's taking the lot, bottle, chips, cup and apple, to his weightlifting do.",
-        "Both the cup and the apple, that's two, are going to Person A for her bookbinding class.",
-        'Just the one item for Person A: the chips.',
-        'The two things here, one per person: bottle to Person A, chips to Person B.',
-        "Every last thing you've got there is for Person A, she's hosting the fossil hunting club.",
-        "Person A should get the bottle, it's the only one we've got left.",
-        'The pair of cups, the green and the white, want putting on the tray, ta.',
-        'Every box in the place, big one included, goes on the belt.',
-        'Mrs Ortiz needs both books for her lesson on fossils, red and green.',
-        "Alice doesn't want the bottle, only the crisps, she's just had a cuppa.",
-        "The bottle for Bob, and nothing besides that, he's on a diet for the bodybuilding.",
-        "It's the cup Person B should have, the apple isn't his.",
-        "Only the chips for Person B, don't bother with anything more, he's the tug skipper and "
-        "he's in a hurry.",
-        'No need to wait about, the bottle goes to Person A.',
-        "The chips are going to Person A, Person B's had his fill.",
-        'The cups, except the green one, go in the sink.',
-        'None of the boxes, just the scanner to Mia.',
-        'Leave the drill, Kofi only wants the torch.',
-        "Bob's to have the cup, or no, wait, it was the apple he asked me for.",
-        'Cup to Person A, oh dear, my mistake, it should be Person B.',
-        "Chips to Person A. No, correction, they're for Person B, she's eaten already.",
-        "Bottle to Person B, what am I saying, there's no Person B here, Person A gets it.",
-        'Chips for Person A, no, sorry, I meant to say the bottle.',
-        'Bottle to Person A and chips to Person B, no, the other way about.',
-        'Noah should get the globe, hang about, I mean Zoe.',
-        'Teddy on the high chair, or no, the bib goes there.',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -315,7 +277,7 @@ KNOWN_UNCLEAR = frozenset(
 # "blind35" written in session 36 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 36 (0 wrong), tuned on in session 37: asserted now,
 # the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind36"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -411,6 +373,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind34"].entries}) >= 3
     assert len(CORPORA["blind35"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind35"].entries}) >= 3
+    assert len(CORPORA["blind36"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind36"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -28375,6 +28375,664 @@ def _where_was_i36r(text: str, lexicon: Lexicon) -> str:
     return _WHERE_WAS_I36R.sub(said, text)
 
 
+# -- session 37 (12r): blind35's choices, counts, negation, exclusions and corrections -----------
+
+# "There's something for both of them, mind: the apple is Person A's and the cup is Person B's."
+_SOMETHING_FOR37R = re.compile(
+    r"^there(?:'s| is) (?:something|one thing|a thing) (?:for|going to) (?P<q>both|each|all) "
+    r"(?:of )?them(?:,\s*mind)?\s*:\s*(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _something_for37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): a heading "There's something for both of them(, mind):" before a list is
+    read as the list alone ("the apple is Person A's" being "the apple to Person A", as session
+    36's "Two people, two things:" reads it), only when the list hands over to every person of the
+    scene (two of them for 'both') and to no one else; else left, and refused."""
+    m = _SOMETHING_FOR37R.match(text)
+    if m is None:
+        return text
+
+    def whose(w: re.Match[str]) -> str:
+        if not _only_person(w["p"], lexicon) or not _whole_name(w["x"], lexicon, "object"):
+            return w[0]
+        return f"{w['x']} to {w['p']}"
+
+    rest = _WHOSE36R.sub(whose, m["rest"])
+    rest = rest[:1].upper() + rest[1:]
+    said = _handovers33t(rest, lexicon)
+    people = {h.id for h in lexicon.scene.humans}
+    if said is None or {t.target for t in said} != people:
+        return text
+    if m["q"].lower() == "both" and len(people) != 2:
+        return text
+    return rest
+
+
+# "Go whichever route suits you, as long as Person A gets the bottle in the end."
+_AS_LONG_AS37R = re.compile(
+    r"^(?:go|do it|get it done|do it) (?:whichever|whatever|any|which ever) (?:route|way) "
+    r"(?:suits you|you like|you want|you fancy|works for you|is easiest)(?: best)?,\s*"
+    r"(?:as long as|so long as|just so long as|provided|provided that) (?P<rest>.+?)"
+    r"(?: in the end| at the end| eventually)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _as_long_as37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Go whichever route suits you, as long as Person A gets the bottle (in
+    the end)" leaves the how to the robots and asks for the outcome: read as "Person A gets the
+    bottle" (the clause after 'as long as' must read by itself as hand-overs or placements, no
+    choice or negation in it)."""
+    m = _AS_LONG_AS37R.match(text)
+    if m is None or re.search(r"\b(?:not|n't|no|never|or)\b", m["rest"], _F):
+        return text
+    rest = m["rest"][:1].upper() + m["rest"][1:] + (m["end"] or ".")
+    node = _reading(rest, lexicon)
+    if node is None or (isinstance(node, Group) and node.op != "and"):
+        return text
+    return rest
+
+
+# "Either arm can do it: the bottle to Person A."
+_ANY_ARM37R = re.compile(
+    r"^(?:either|any|whichever|each) (?:arm|robot|hand|one of you|of you|of your arms)"
+    r" (?:can|will|could|may) do (?:it|this|that|the job)\s*[:;,.]\s*(?=\S)",
+    _F,
+)
+
+
+def _any_arm37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Either arm can do it:" before a request says which robot acts, said to
+    the robots (as session 29's "I don't mind which of your arms does it"): taken off."""
+    out = _ANY_ARM37R.sub("", text)
+    return text if out == text else out[:1].upper() + out[1:]
+
+
+# "Give one of them the chips, Person A or Person B, and the other one the bottle."
+_ONE_OTHER37R = re.compile(
+    r"^give one of (?:them|the two(?: of them)?) (?P<x>the [a-z]+(?: [a-z]+)?),\s*"
+    r"(?P<p>[a-z][\w ]*?) or (?P<q>[a-z][\w ]*?),\s*and the other(?: one)? "
+    r"(?P<y>the [a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_other37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Give one of them the chips, Person A or Person B, and the other one the
+    bottle" is "Give Person A the chips and Person B the bottle, or the other way round": the two
+    people named, each another, two objects, each another (else left, and refused)."""
+    m = _ONE_OTHER37R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]):
+        return text
+    if not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    return f"Give {m['p']} {m['x']} and {m['q']} {m['y']}, or the other way round{m['end'] or '.'}"
+
+
+# "Sam's only signing for the key cutter, so any pen at all will do him."
+_WILL_DO_HIM37R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?)(?:'s| is) (?:only|just) [a-z]+ing\b(?P<why>[^,]*),\s*so "
+    r"(?P<x>any [a-z]+)(?: at all)? will do (?P<pro>him|her)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _will_do_him37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Sam's only signing (for the key cutter), so any pen at all will do him"
+    is "Any pen will do for Sam": what the one person is only doing is why any one of the kind
+    will do (it names nothing of the scene; the pronoun one that person may be)."""
+    m = _WILL_DO_HIM37R.match(text)
+    if m is None or not _the_one36r(m["p"], m["pro"], lexicon):
+        return text
+    if not _names_nothing(m["why"], lexicon):
+        return text
+    x = m["x"][:1].upper() + m["x"][1:]
+    return f"{x} will do for {m['p']}{m['end'] or '.'}"
+
+
+# "The belt needs one box on it, either the small or the medium, not the big one."
+_NEEDS_ON_IT37R = re.compile(
+    r"^(?P<s>the [a-z]+(?: [a-z]+)?) needs (?:one|a|an) (?P<k>[a-z]+) (?:on|in) it,\s*"
+    r"(?P<choice>either the [a-z]+ or the [a-z]+)(?: one)?(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _needs_on_it37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "The belt needs one box on it, either the small or the medium" is
+    "Either the small or the medium box on the belt": a surface said to need one thing of a kind,
+    then the choice of which (the surface one whole name; each of the two one whole object of the
+    kind, each another)."""
+    m = _NEEDS_ON_IT37R.match(text)
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _objects34r(lexicon, *(f"{w} {m['k']}" for w in m["choice"][7:].split(" or "))):
+        return text
+    choice = m["choice"][:1].upper() + m["choice"][1:]
+    return f"{choice} {m['k']} on the {m['s'][4:]}{text[m.end() :]}"
+
+
+# "A book apiece for Noah and Zoe, I don't care who ends up with which."
+_WHO_WHICH37R = re.compile(
+    r"\b(?P<head>(?:apiece|each) for [a-z][\w ]*? and [a-z][\w ]*?),\s*(?:i|we) (?:don't|do not) "
+    r"(?:care|mind) (?:who (?:ends up with|gets|has) which|which (?:one )?(?:goes to|gets) who)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _who_which37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): after "a book apiece for Noah and Zoe", the speaker not caring who ends
+    up with which says what 'apiece' already leaves open: taken off."""
+    m = _WHO_WHICH37R.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m['head']}{m['end'] or '.'}"
+
+
+# "Lily can have a block, she won't mind if it's the red or the green."
+_WONT_MIND_IF37R = re.compile(
+    r"^(?P<head>(?P<p>[a-z][\w ]*?) (?:can have|gets|is to have|should have|can take) (?:a|one) "
+    r"(?P<k>[a-z]+)),\s*(?P<pro>she|he) (?:won't|will not|doesn't|does not) mind (?:if|whether) "
+    r"(?:it's|it is) (?P<a>the [a-z]+)(?: one)? or (?P<b>the [a-z]+)(?: one)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _wont_mind_if37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Lily can have a block, she won't mind if it's the red or the green" is
+    "Lily can have a block, the red or the green": the pronoun one the person named may be, and
+    each of the two a whole object of the kind, each another."""
+    m = _WONT_MIND_IF37R.match(text)
+    if m is None or not _the_one36r(m["p"], m["pro"], lexicon):
+        return text
+    if not _objects34r(lexicon, f"{m['a']} {m['k']}", f"{m['b']} {m['k']}"):
+        return text
+    return f"{m['head']}, {m['a']} or {m['b']}{m['end'] or '.'}"
+
+
+_COUNT37R = {"two": 2, "three": 3, "four": 4, "a pair of": 2, "a couple of": 2, "both": 2}
+
+# "Carol's got a pair of things coming, the apple and the cup, …"
+_GOT_COMING37R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?)(?:'s| has) got (?P<n>a pair of|a couple of|two|three|four) "
+    r"(?:things|items) coming,\s*(?P<list>the [a-z ,]+?)(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _got_coming37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Carol's got a pair of things coming, the apple and the cup" is "Carol
+    gets the apple and the cup": the count said must be the number of objects the list names,
+    each another, all to the one person."""
+    m = _GOT_COMING37R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    said = _handovers33t(f"{m['p']} gets {m['list']}.", lexicon)
+    if said is None or len({t.obj for t in said}) != _COUNT37R[m["n"].lower()]:
+        return text
+    return f"{m['p']} gets {m['list']}{text[m.end() :]}"
+
+
+# "Person B's taking the lot, …, to his weightlifting do."
+_TO_HIS_DO37R = re.compile(
+    r",\s*(?:off )?to (?P<pro>his|her) (?P<what>[a-z]+(?: [a-z]+)?) (?:do|party|bash|night|"
+    r"session|class|club|practice|rehearsal|recital|match|meeting)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _to_his_do37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): a closing ", to his weightlifting do" after a request to one person the
+    pronoun may be says where they are taking it, not who gets it: taken off (it names nothing of
+    the scene)."""
+    m = _TO_HIS_DO37R.search(text)
+    if m is None or not _names_nothing(m["what"], lexicon):
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    if len(people) != 1:
+        return text
+    pro = "he" if m["pro"].lower() == "his" else "she"
+    if not _may_be35t(next(iter(people)), pro, lexicon):
+        return text
+    if not _ids(text[: m.start()], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# "Both the cup and the apple, that's two, are going to Person A"
+_THATS_N37R = re.compile(
+    r"^(?P<list>(?:both )?the [a-z ,]+?),\s*that(?:'s| is| makes) (?P<n>two|three|four|both)"
+    r"(?: (?:things|items|of them))?,\s*",
+    _F,
+)
+
+
+def _thats_n37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Both the cup and the apple, that's two, …" counts the objects just
+    listed: taken off when the count is the number of objects the list names, each another."""
+    m = _THATS_N37R.match(text)
+    if m is None:
+        return text
+    items = re.split(r",\s*(?:and\s+)?|\s+and\s+", re.sub(r"^both ", "", m["list"], flags=_F))
+    if not all(_whole_name(w, lexicon, "object") for w in items):
+        return text
+    if not _objects34r(lexicon, *items) or len(items) != _COUNT37R[m["n"].lower()]:
+        return text
+    return f"{m['list']} {text[m.end() :]}"
+
+
+# "Just the one item for Person A: the chips."
+_THE_ONE_ITEM37R = re.compile(r"^(?:just |only )?the one (?:item|thing) for (?=[^:]+:)", _F)
+
+
+def _the_one_item37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): a heading "Just the one item for P:" is "One thing for P:" (the count
+    then checked against the list by the grammar, as that heading is)."""
+    return _THE_ONE_ITEM37R.sub("One thing for ", text, count=1)
+
+
+# "The two things here, one per person: bottle to Person A, chips to Person B."
+_N_THINGS_EACH37R = re.compile(
+    r"^(?:the )?(?P<n>two|three|four) (?:things|items)(?: here| there)?,\s*one (?:per person|"
+    r"each|apiece|per head)\s*:\s*(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _n_things_each37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "The two things here, one per person: …" is session 36's "One each: …"
+    (every person exactly one object), when the list hands over as many objects as counted and
+    the scene holds that many objects."""
+    m = _N_THINGS_EACH37R.match(text)
+    if m is None:
+        return text
+    n = _N33T[m["n"].lower()]
+    said = _handovers33t(m["rest"], lexicon)
+    if said is None or len(said) != n or len(lexicon.scene.objects) != n:
+        return text
+    return f"One thing apiece: {m['rest']}"
+
+
+# "Every last thing you've got there is for Person A"
+_EVERY_LAST37R = re.compile(
+    r"\bevery last (?:thing|item|one of them|bit)(?: (?:you've|you have|we've|we have) got"
+    r"(?: (?:there|here|about))?| (?:here|there|about))?(?=\s+(?:is|goes|should|can|needs)\b)",
+    _F,
+)
+
+
+def _every_last37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): "every last thing (you've got there)" as a subject is "everything"."""
+    return _EVERY_LAST37R.sub("everything", text)
+
+
+# "…, it's the only one we've got left."
+_ONLY_ONE_GOT37R = re.compile(
+    r"\b(?P<head>it(?:'s| is) the (?:only|last) one) (?:we've|we have|I've|I have|you've|you have)"
+    r" got( left)?(?=\s*[.!]?$)",
+    _F,
+)
+
+
+def _only_one_got37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): ", it's the only one we've got left" is ", it's the only one left" (what
+    the grammar checks against the scene)."""
+    return _ONLY_ONE_GOT37R.sub(lambda m: f"{m['head']} left", text)
+
+
+# "The pair of cups, the green and the white, want putting on the tray"
+_PAIR_OF37R = re.compile(
+    r"\bthe pair of (?P<ks>[a-z]+s)(?=,\s*the [a-z]+(?: one)? and the [a-z]+(?: one)?,)", _F
+)
+
+
+def _pair_of37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "the pair of cups, the green and the white, …" is "both cups, …" where
+    the scene holds exactly two objects of that kind (else left), then read as session 33's "Both
+    cups, the green and the white, …" is."""
+
+    def both(m: re.Match[str]) -> str:
+        ids = _ids(f"the {m['ks']}", lexicon, "object")
+        if len(ids) != 2:
+            return m[0]
+        return f"{'B' if m[0][0].isupper() else 'b'}oth {m['ks']}"
+
+    out = _PAIR_OF37R.sub(both, text)
+    # "Both cups, the green and the white, …": session 33's reading of the two named after it
+    return text if out == text else _both_named33t(out, lexicon)
+
+
+# "Every box in the place, big one included, goes on the belt."
+_EVERY_INCLUDED37R = re.compile(
+    r"\b(?P<every>every|all the) (?P<k>[a-z]+?)(?P<pl>es|s)?(?: in the (?:place|room|building))?"
+    r",\s*(?:(?:the )?(?P<a>[a-z]+) one included|including the (?P<b>[a-z]+) one),\s*",
+    _F,
+)
+
+
+def _every_included37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Every box in the place, big one included, goes …" is "Every box goes
+    …": every one of the kind, the one said included already (it must be one object of that kind
+    in the scene)."""
+
+    def every(m: re.Match[str]) -> str:
+        adj = m["a"] or m["b"]
+        one = f"the {adj} {m['k']}"
+        if len(_ids(one, lexicon, "object")) != 1 or not _whole_name(one, lexicon, "object"):
+            return m[0]
+        return f"{m['every']} {m['k']}{m['pl'] or ''} "
+
+    return _EVERY_INCLUDED37R.sub(every, text)
+
+
+# "Mrs Ortiz needs both books for her lesson on fossils"
+_LESSON_ON37R = re.compile(
+    r"\bfor (?P<pro>her|his|their) (?P<what>lesson|talk|class|lecture|session|presentation|"
+    r"seminar|assembly) (?:on|about) (?P<topic>[a-z]+(?: [a-z]+)?)(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _lesson_on37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "for her lesson on fossils" is "for her lesson" (the topic naming
+    nothing of the scene), as the grammar reads a purpose."""
+
+    def drop(m: re.Match[str]) -> str:
+        if not _names_nothing(m["topic"], lexicon) or re.search(r"\b(?:the|a|an)\b", m["topic"]):
+            return m[0]
+        return f"for {m['pro']} {m['what']}"
+
+    return _LESSON_ON37R.sub(drop, text)
+
+
+# "Alice doesn't want the bottle, only the crisps, …"
+_DOESNT_ONLY37R = re.compile(
+    r"^(?P<p>[a-z][\w ]*?) (?:doesn't|does not) (?P<v>want|need) (?P<x>the [a-z]+(?: [a-z]+)?),"
+    r"\s*(?:only|just) (?P<y>the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _doesnt_only37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Alice doesn't want the bottle, only the crisps" is "Alice wants the
+    crisps, not the bottle" (one person, two whole objects, each another)."""
+    m = _DOESNT_ONLY37R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    return f"{m['p']} {m['v']}s {m['y']}, not {m['x']}{text[m.end() :]}"
+
+
+# "The bottle for Bob, and nothing besides that, …"; "…, don't bother with anything more"
+_NOTHING_BESIDES37R = re.compile(
+    r",\s*(?:and )?(?:nothing (?:besides|beyond|on top of|apart from|other than) (?:that|it|this)|"
+    r"(?:don't|do not) bother with anything (?:more|else|other))(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _nothing_besides37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): ", and nothing besides that" and ", don't bother with anything more"
+    after a request are ", nothing else" (what the grammar reads as the request alone)."""
+    return _NOTHING_BESIDES37R.sub(", nothing else", text)
+
+
+# "It's the cup Person B should have, the apple isn't his."
+_CLEFT_ISNT37R = re.compile(
+    r"^it(?:'s| is) (?P<x>the [a-z]+(?: [a-z]+)??) (?:that )?(?P<p>[a-z][\w ]*?) should "
+    r"(?P<v>have|get),\s*(?P<y>the [a-z]+(?: [a-z]+)?) (?:isn't|is not|'s not) (?P<pro>his|hers)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _cleft_isnt37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "It's the cup Person B should have, the apple isn't his" is "Person B
+    should have the cup, not the apple" (one person the pronoun may be, two whole objects, each
+    another)."""
+    m = _CLEFT_ISNT37R.match(text)
+    if m is None or not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    if not _the_one36r(m["p"], "he" if m["pro"].lower() == "his" else "she", lexicon):
+        return text
+    return f"{m['p']} should {m['v']} {m['x']}, not {m['y']}{m['end'] or '.'}"
+
+
+# "No need to wait about, the bottle goes to Person A."
+_NO_WAIT37R = re.compile(
+    r"^no need to (?:wait|hang) (?:about|around|round)(?: for anything| for me)?\s*[,;:]\s*(?=\S)",
+    _F,
+)
+
+
+def _no_wait37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): an opening "No need to wait about," says to start now, as the robots do:
+    taken off."""
+    out = _NO_WAIT37R.sub("", text)
+    return text if out == text else out[:1].upper() + out[1:]
+
+
+# "The chips are going to Person A, Person B's had his fill."
+_HAD_FILL37R = re.compile(
+    r",\s*(?P<p>[a-z][\w ]*?)(?:'s| has) had (?P<pro>his|her) fill(?P<end>\s*[.!]?)$", _F
+)
+
+
+def _had_fill37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): a closing "P's had his fill" (P one person the pronoun may be) is "P's
+    full", the state the grammar reads as a remark."""
+    m = _HAD_FILL37R.search(text)
+    if m is None or not _the_one36r(m["p"], "he" if m["pro"].lower() == "his" else "she", lexicon):
+        return text
+    return f"{text[: m.start()]}, {m['p']}'s full{m['end'] or '.'}"
+
+
+# "The cups, except the green one, go in the sink."
+_EXCEPT_COMMAS37R = re.compile(
+    r"^(?P<ks>the [a-z]+s),\s*(?P<ex>(?:except|apart from|but not|bar) the [a-z]+ one),\s*"
+    r"(?=(?:go|goes|should go|want|need|belong)\b)",
+    _F,
+)
+
+
+def _except_commas37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): "The cups, except the green one, go …" is "The cups except the green one
+    go …" (the exception said between commas)."""
+    return _EXCEPT_COMMAS37R.sub(lambda m: f"{m['ks']} {m['ex']} ", text)
+
+
+# "Only the chips for Person B, …"
+_ONLY_FOR37R = re.compile(
+    r"^only (?P<x>the [a-z]+(?: [a-z]+)?) (?P<to>for|to) (?P<p>[a-z][\w ]*?)(?=\s*(?:[,.!]|$))", _F
+)
+
+
+def _only_for37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): an opening "Only the chips for Person B" is "Just the chips for Person
+    B" (one whole object, one person)."""
+    m = _ONLY_FOR37R.match(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object") or not _only_person(m["p"], lexicon):
+        return text
+    return f"Just {m['x']} {m['to']} {m['p']}{text[m.end() :]}"
+
+
+# "None of the boxes, just the scanner to Mia."
+_NONE_OF37R = re.compile(r"^none of (?P<x>the [a-z]+),\s*(?=(?:just|only) )", _F)
+
+
+def _none_of37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): an opening "None of the boxes, just …" is "Not the boxes, just …"."""
+    return _NONE_OF37R.sub(lambda m: f"Not {m['x']}, ", text)
+
+
+# "Leave the drill, Kofi only wants the torch."
+_LEAVE_ONLY37R = re.compile(
+    r"^leave (?P<x>the [a-z]+(?: [a-z]+)?)(?: (?:be|alone|where it is))?,\s*(?P<p>[a-z][\w ]*?) "
+    r"(?P<o>only|just) (?P<v>wants|needs) (?P<y>the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _leave_only37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Leave the drill, Kofi only wants the torch" is "Kofi only wants the
+    torch, not the drill" (one person, two whole objects, each another)."""
+    m = _LEAVE_ONLY37R.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    return f"{m['p']} {m['o']} {m['v']} {m['y']}, not {m['x']}{text[m.end() :]}"
+
+
+# -- corrections: the corrected words said again in a clause ------------------------------------
+
+# the cues before a correction, one or more between commas
+_CUE37R = (
+    r"(?:(?:or |oh )?no|sorry|correction|my mistake|my bad|oh dear|oops|whoops|wait|hang on|"
+    r"hold on|hang about|actually|what am i saying)"
+)
+_RESTATED37R = re.compile(
+    rf",\s*(?P<cues>{_CUE37R}(?:,?\s*{_CUE37R})*),\s*"
+    r"(?:there's no (?P<gone>[a-z][\w ]*?) here,\s*)?(?:"
+    r"(?:it|that|they) should (?:be|go to|be for) (?P<p1>[a-z][\w ]*?)|"
+    r"(?P<pro2>it's|it is|they're|they are) for (?P<p2>[a-z][\w ]*?)|"
+    r"(?P<p3>[a-z][\w ]*?) (?:gets|should get|should have|is having|'s having) (?:it|them)|"
+    r"(?P<x1>the [a-z]+(?: [a-z]+)?) (?:goes|should go|belongs) there|"
+    r"it was (?P<x2>the [a-z]+(?: [a-z]+)?) (?P<pro>he|she) (?:asked (?:me )?for|wanted|meant))"
+    r"(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _restated37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): after a correction cue ("no", "oh dear, my mistake", "or no, wait",
+    "No, correction", "what am I saying"), the person or object corrected to said again in a
+    clause ("it should be Person B", "they're for Person B", "Person A gets it", "the bib goes
+    there", "it was the apple he asked me for") is ", no, <it>": one request before the cue
+    (one person for 'it was … he asked for', that person one the pronoun may be; a surface for
+    'goes there'; "there's no P here" only of a person said before whom the scene lacks)."""
+    m = _RESTATED37R.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    if m["gone"] and (
+        not re.search(rf"\b{re.escape(m['gone'])}\b", before, _F)
+        or any(
+            m["gone"].lower() in (h.name.lower(), *(a.lower() for a in h.aliases))
+            for h in lexicon.scene.humans
+        )
+    ):
+        return text
+    person = m["p1"] or m["p2"] or m["p3"]
+    if person is not None:
+        if not _only_person(person, lexicon) or not _ids(before, lexicon, "object"):
+            return text
+        if m["pro2"] and not _number_fits37r(m["pro2"], before, lexicon):
+            return text
+        said = person
+    elif m["x1"] is not None:
+        if not _whole_name(m["x1"], lexicon, "object") or not _ids(before, lexicon, "surface"):
+            return text
+        said = m["x1"]
+    else:
+        people = _ids(before, lexicon, "human")
+        if not _whole_name(m["x2"], lexicon, "object") or len(people) != 1:
+            return text
+        if not _may_be35t(next(iter(people)), m["pro"], lexicon):
+            return text
+        said = m["x2"]
+    return f"{before}, no, {said}{text[m.end() :]}"
+
+
+# "Chips for Person A, no, sorry, I meant to say the bottle." (a scene without chips)
+_UNKNOWN_CORRECTED37R = re.compile(
+    rf"^(?P<x>(?:the )?[a-z]+) (?P<to>for|to) (?P<p>[a-z][\w ]*?),\s*{_CUE37R}"
+    rf"(?:,?\s*{_CUE37R})*,?\s*(?:i (?:meant|mean)(?: to say)?,?\s*)?(?P<y>the [a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _unknown_corrected37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "Chips for Person A, no, sorry, I meant to say the bottle" in a scene
+    without chips is "The bottle for Person A": the object said first names nothing of the scene
+    (the grammar's corrections look for it there, and refuse), the one corrected to is one whole
+    object of it, the person one person."""
+    m = _UNKNOWN_CORRECTED37R.match(text)
+    if m is None or not _names_nothing(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        return text
+    word = m["x"].lower().removeprefix("the ")
+    if word in WORDS or word in VERBS or not _whole_name(m["y"], lexicon, "object"):
+        return text
+    y = m["y"][:1].upper() + m["y"][1:]
+    return f"{y} {m['to']} {m['p']}{m['end'] or '.'}"
+
+
+def _number_fits37r(pronoun: str, before: str, lexicon: Lexicon) -> bool:
+    """Whether 'it' / 'they' ``pronoun`` may stand for the objects ``before`` names: 'it' for one
+    object said by a name not ending in 's', 'they' for two or more or one said so ('the
+    chips')."""
+    said = [it.text for it in _names(before, lexicon) if it.refs[0].kind == "object"]
+    plural = len(said) > 1 or (len(said) == 1 and said[0].lower().endswith("s"))
+    return bool(said) and plural == pronoun.lower().startswith("they")
+
+
+# "Bottle to Person A and chips to Person B, no, the other way about."
+_WAY_ABOUT37R = re.compile(r"\bthe other way about\b", _F)
+
+
+def _way_about37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): "the other way about" is "the other way round"."""
+    return _WAY_ABOUT37R.sub("the other way round", text)
+
+
+# "Noah should get the globe, hang about, I mean Zoe."
+_HANG_ABOUT37R = re.compile(
+    r",\s*hang about,\s*(?=(?:i mean|i meant|no|sorry|make (?:that|it))\b)", _F
+)
+
+
+def _hang_about37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): ", hang about," before a correction ("I mean Zoe") is ", hang on,"."""
+    return _HANG_ABOUT37R.sub(", hang on, ", text)
+
+
+_STEPS37R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _something_for37r,
+    _as_long_as37r,
+    _any_arm37r,
+    _one_other37r,
+    _will_do_him37r,
+    _needs_on_it37r,
+    _who_which37r,
+    _wont_mind_if37r,
+    _got_coming37r,
+    _to_his_do37r,
+    _thats_n37r,
+    _the_one_item37r,
+    _n_things_each37r,
+    _every_last37r,
+    _only_one_got37r,
+    _pair_of37r,
+    _every_included37r,
+    _lesson_on37r,
+    _doesnt_only37r,
+    _nothing_besides37r,
+    _cleft_isnt37r,
+    _no_wait37r,
+    _had_fill37r,
+    _except_commas37r,
+    _only_for37r,
+    _none_of37r,
+    _leave_only37r,
+    _restated37r,
+    _unknown_corrected37r,
+    _way_about37r,
+    _hang_about37r,
+)
+
+
 _STEPS36R: tuple[Callable[[str, Lexicon], str], ...] = (
     _one_thing_listed36r,
     _whichever_of_them36r,
@@ -29108,6 +29766,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS36T,
     # session 33 (12t): blind17, blind23, blind18, causes17 and blind15's kinds
     *_STEPS33T,
+    # session 37 (12r): blind35's choices, counts, negation, exclusions and corrections
+    *_STEPS37R,
     # session 36 (12r): blind34's choices, counts, negation, exclusions and corrections
     *_STEPS36R,
     # session 35 (12r): blind33's choices, counts, negation, exclusions and corrections
