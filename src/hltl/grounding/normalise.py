@@ -29190,7 +29190,8 @@ _WANT_FRAME37 = re.compile(
     r"\b(?:wants|needs|fancies|could use|could do with|would love|would like|is after|'s after|"
     r"gets|is getting|'s getting|could have|can have|is having|'s having|(?:is|are|'s|'re) for|"
     r"(?:'s|has|is|'d|had) been (?:craving|wanting|after|on about|asking for)|craving|"
-    r"(?:was|is|'s) on about|(?:is|'s) (?:desperate|gasping|dying|parched) for|asked for)\b",
+    r"(?:was|is|'s) on about|(?:is|'s) (?:desperate|gasping|dying|parched|gagging) for|"
+    r"asked for)\b",
     _F,
 )
 # the speaker's doing or a pastime said as a time, not a thing done: 'after his meeting' says when
@@ -29451,7 +29452,8 @@ _BOTH_BEEN37 = re.compile(
 )
 # "…, and that's her sorted": the closer said of the one person ('them' of the people named)
 _THATS_HER37 = re.compile(
-    r"(?:,\s*|\s+)and that's (?P<pron>her|him|them|everyone|everybody) (?:sorted|done|set)"
+    r"(?:,\s*|\s+)and that's (?P<pron>her|him|them|everyone|everybody) (?:sorted|done|set|happy|"
+    r"settled|seen to)"
     r"(?: out)?(?P<end>\s*[.!]?)\s*$",
     _F,
 )
@@ -29515,7 +29517,8 @@ def _said_of_one37(text: str, m: re.Match[str], words: str, lexicon: Lexicon) ->
 _YOURS37 = re.compile(
     rf"(?:^|(?<=[.!?;])\s+)(?P<p>{_P37}),\s*(?:(?:that's|that is|here's|here is|this is) "
     rf"(?P<x>{_DET32} [a-z][a-z ]*?) for you|(?:yours is|yours'll be|yours will be) "
-    rf"(?P<y>{_DET32} [a-z][a-z ]*?))(?=\s*(?:[.!;]|$))",
+    rf"(?P<y>{_DET32} [a-z][a-z ]*?)|(?P<z>{_DET32} [a-z][a-z ]*?)(?:'s| is) yours)"
+    r"(?=\s*(?:[.!;]|$))",
     _F,
 )
 # "There's Person A, pass her the bottle", "Lena's run out of salt at her table, take her the
@@ -29523,7 +29526,7 @@ _YOURS37 = re.compile(
 _THERE_P37 = re.compile(
     rf"^(?:(?:right|ok|okay|so|look),\s*)?(?:(?:there's|there is|that's|that is) (?P<p>{_P37})"
     rf"(?: over there| there)?,|(?:see|look at) (?P<q>{_P37})(?: over there| there)?\?|(?P<r>"
-    rf"{_P37})(?:'s| is) the (?P<d>[a-z]+(?: [a-z]+)?) one,)\s*(?P<req>.+)$",
+    rf"{_P37})(?:'s| is) the (?P<d>[a-z]+(?: [a-z]+)??)(?P<one> one)?,)\s*(?P<req>.+)$",
     _F,
 )
 _RUN_OUT37 = re.compile(
@@ -29535,7 +29538,8 @@ _RUN_OUT37 = re.compile(
 # "Right, there's the bottle, Person A's waiting on it, …": the object shown, then who wants it
 _THERE_X37 = re.compile(
     rf"^(?:(?:right|ok|okay|so|look),\s*)?(?:there's|there is|here's|here is) (?P<x>{_DET32} "
-    rf"[a-z][a-z ]*?),\s*(?P<p>{_P37})(?P<w>'s| is) (?P<v>waiting on|waiting for|after|"
+    rf"[a-z][a-z ]*?),\s*(?P<p>{_P37})(?P<w>'s been|'s| is| has been) (?P<v>waiting on|waiting "
+    r"for|after|"
     r"asking for|wanting) (?P<pron>it|them)\b",
     _F,
 )
@@ -29580,7 +29584,7 @@ def _pronouns37(text: str, lexicon: Lexicon) -> str:
     as 'P asked for X'."""
 
     def yours(m: re.Match[str]) -> str:
-        x = m["x"] or m["y"]
+        x = m["x"] or m["y"] or m["z"]
         if not _only_person(m["p"], lexicon) or not _things31(x, lexicon):
             return m[0]
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
@@ -29591,8 +29595,13 @@ def _pronouns37(text: str, lexicon: Lexicon) -> str:
     m = _THERE_P37.match(text) or _RUN_OUT37.match(text)
     said = m.groupdict() if m is not None else {}
     p = said.get("p") or said.get("q") or said.get("r")
-    if said.get("d") is not None and not _asks_nothing29(said["d"], lexicon):
-        p = None  # "Bob's the tall one, …" describes Bob; "Bob's the red one" may select
+    if said.get("d") is not None and (
+        not _asks_nothing29(said["d"], lexicon)
+        if said.get("one")
+        else _ids(said["d"], lexicon) != _ids(p or "", lexicon)
+    ):
+        p = None  # "Bob's the tall one, …" describes Bob ("the red one" may select); "Emma's the
+        # visitor, …" names her again
     if m is not None and p is not None and _only_person(p, lexicon):
         x = said.get("x")
         if x is None or (_objects_only(x, lexicon) and _ids(x, lexicon) <= _ids(m["req"], lexicon)):
