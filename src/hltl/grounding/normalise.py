@@ -29837,6 +29837,14 @@ _AFTER_DOING37 = re.compile(
     rf"shift|stint|night) (?:of|at)) (?P<doing>{_DOING37})(?=\s*(?:[,.;!?]|$))",
     _F,
 )
+# after 'X is for P' only a doing said as one (a word in -ing, a game, a lesson …): a pastime's
+# name alone there says when (test_phrasing_s35r's "The bottle is for Person A after her
+# gymnastics." stays refused)
+_IS_FOR37 = re.compile(r"\b(?:is|are|'s|'re) for\b", _F)
+_PLAYED37 = re.compile(
+    r"(?:[a-z]{3,}ing|practice|game|lesson|class|session|match|training|workout|club|rehearsal)$",
+    _F,
+)
 # "After his shift, Bob needs the cup.": the same, fronted, before a want of the one person
 _AFTER_HIS37 = re.compile(
     rf"^(?:after|following) (?P<pron>his|her|their) (?P<doing>{_DOING37}),\s*", _F
@@ -29875,6 +29883,8 @@ def _after_doing37(text: str, lexicon: Lexicon) -> str:
         people = _ids(before, lexicon, "human")
         if len(people) != 1 or not _WANT_FRAME37.search(before):
             continue
+        if _IS_FOR37.search(before) and not _PLAYED37.search(doing):
+            continue  # "The bottle is for Person A after her gymnastics": a time (12r, s35r)
         if not _ids(before, lexicon, "object") or _ids(before, lexicon, "surface"):
             continue
         pron = (m["pron"] or "their").lower()
