@@ -29806,7 +29806,8 @@ _WANT_FRAME37 = re.compile(
     r"\b(?:wants|needs|fancies|could use|could do with|would love|would like|is after|'s after|"
     r"gets|is getting|'s getting|could have|can have|is having|'s having|(?:is|are|'s|'re) for|"
     r"(?:'s|has|is|'d|had) been (?:craving|wanting|after|on about|asking for)|craving|"
-    r"(?:was|is|'s) on about|(?:is|'s) (?:desperate|gasping|dying|parched) for|asked for)\b",
+    r"(?:was|is|'s) on about|(?:is|'s) (?:desperate|gasping|dying|parched|gagging) for|"
+    r"asked for)\b",
     _F,
 )
 # the speaker's doing or a pastime said as a time, not a thing done: 'after his meeting' says when
@@ -29822,11 +29823,31 @@ _EVENTS37 = frozenset(
 # for Person A after her padel game", "… craving since his gliding lesson", "…, after the wild
 # swimming": what made the person want it, their own doing (a word in -ing, or a game, lesson,
 # practice … of theirs) closing a want of one person (session 35's closed list, said generally)
+_DOING37 = (
+    r"(?:[a-z]+ ){0,2}?(?:[a-z]{3,}ing|(?:[a-z]+ )?(?:practice|game|lesson|class|session|match|"
+    r"training|workout|club|rehearsal)|swim|run|walk|ride|jog|hike|climb|row|paddle|gig|"
+    r"yoga|pilates|karate|judo|chess|darts|golf|tennis|football|netball|cricket|rugby|hockey|"
+    r"squash|badminton|choir|ballet|embroidery|needlework|patchwork|pottery|origami|gymnastics|"
+    r"aerobics|crochet|bingo|cribbage|kendo|crossfit|zumba|parkour|archery|fencing|physio|nap|"
+    r"massage|sauna)"
+)
 _AFTER_DOING37 = re.compile(
-    r"(?P<lead>,\s*|\s+)(?:after|since|following) (?:(?P<pron>his|her|their)|the) "
-    r"(?P<doing>(?:[a-z]+ ){0,2}?(?:[a-z]{3,}ing|[a-z]+ (?:practice|game|lesson|class|session|"
-    r"match|training|workout|club|rehearsal)))(?=\s*(?:[,.;!?]|$))",
+    r"(?P<lead>,\s*|\s+)(?:after|since|following) (?:(?P<pron>his|her|their)|the|(?P<a>a|an) "
+    r"(?:(?:whole|full|long|hard|busy|good) )?(?:hour|day|morning|afternoon|evening|week|session|"
+    rf"shift|stint|night) (?:of|at)) (?P<doing>{_DOING37})(?=\s*(?:[,.;!?]|$))",
     _F,
+)
+# after 'X is for P' only a doing said as one (a word in -ing, a game, a lesson …): a pastime's
+# name alone there says when (test_phrasing_s35r's "The bottle is for Person A after her
+# gymnastics." stays refused)
+_IS_FOR37 = re.compile(r"\b(?:is|are|'s|'re) for\b", _F)
+_PLAYED37 = re.compile(
+    r"(?:[a-z]{3,}ing|practice|game|lesson|class|session|match|training|workout|club|rehearsal)$",
+    _F,
+)
+# "After his shift, Bob needs the cup.": the same, fronted, before a want of the one person
+_AFTER_HIS37 = re.compile(
+    rf"^(?:after|following) (?P<pron>his|her|their) (?P<doing>{_DOING37}),\s*", _F
 )
 
 
@@ -29834,20 +29855,36 @@ def _after_doing37(text: str, lexicon: Lexicon) -> str:
     """Session 37: 'after his <doing>' above taken off when the doing names nothing and asks
     nothing (no event word, _EVENTS37), the sentence before it is a want (_WANT_FRAME37) of one
     person, objects and no surface, and the pronoun may be that person ('the' with a word in -ing
-    only)."""
+    only); said first ('After his shift, …'), the sentence after it."""
     if not re.search(r"\b(?:after|since|following)\b", text, _F):
         return text
+    m = _AFTER_HIS37.match(text)
+    if m is not None and _asks_nothing29(m["doing"], lexicon):
+        rest = text[m.end() :]
+        sent = re.split(r"[.;!?]\s+", rest)[0]
+        people = _ids(sent, lexicon, "human")
+        if (
+            m["doing"].split()[-1].lower() not in _EVENTS37
+            and len(people) == 1
+            and _WANT_FRAME37.search(sent)
+            and _ids(sent, lexicon, "object")
+            and not _ids(sent, lexicon, "surface")
+            and (m["pron"].lower() == "their" or _fit36(next(iter(people)), m["pron"], lexicon))
+        ):
+            return rest[0].upper() + rest[1:]
     for m in _AFTER_DOING37.finditer(text):
         doing = m["doing"]
         last = doing.split()[-1].lower()
         if last in _EVENTS37 or not _asks_nothing29(doing, lexicon):
             continue
-        if m["pron"] is None and not last.endswith("ing"):
+        if m["pron"] is None and m["a"] is None and not last.endswith("ing"):
             continue
         before = re.split(r"[.;!?]\s+", text[: m.start()])[-1]
         people = _ids(before, lexicon, "human")
         if len(people) != 1 or not _WANT_FRAME37.search(before):
             continue
+        if _IS_FOR37.search(before) and not _PLAYED37.search(doing):
+            continue  # "The bottle is for Person A after her gymnastics": a time (12r, s35r)
         if not _ids(before, lexicon, "object") or _ids(before, lexicon, "surface"):
             continue
         pron = (m["pron"] or "their").lower()
@@ -29870,7 +29907,9 @@ _HOUR_OF37 = re.compile(
 _IN_NEED37 = re.compile(
     rf"\b(?P<p>{_P37})(?:(?:'s| is) the one (?:who's|who is|that's|that is) in (?:dire |real |"
     r"urgent )?need of|(?:'s| is) in (?:dire |real |urgent )?need of|(?:'s| has) (?:got to|gotta) "
-    r"have) (?=(?:the|that|this|those|these|her|his|their) )",
+    r"have| (?:wouldn't|would not) say no to|(?:'s| has) been on at (?:me|us) (?:about|for)|"
+    r"(?:'s| is) on at (?:me|us) (?:about|for)| would kill for| could (?:really |just )?go for) "
+    r"(?=(?:the|that|this|those|these|her|his|their) )",
 )
 # "Emma would quite fancy the green cup": an adverb between 'would' and the want
 _WOULD_QUITE37 = re.compile(
@@ -30039,7 +30078,8 @@ _BOTH_BEEN37 = re.compile(
 )
 # "…, and that's her sorted": the closer said of the one person ('them' of the people named)
 _THATS_HER37 = re.compile(
-    r"(?:,\s*|\s+)and that's (?P<pron>her|him|them|everyone|everybody) (?:sorted|done|set)"
+    r"(?:,\s*|\s+)and that's (?P<pron>her|him|them|everyone|everybody) (?:sorted|done|set|happy|"
+    r"settled|seen to)"
     r"(?: out)?(?P<end>\s*[.!]?)\s*$",
     _F,
 )
@@ -30103,14 +30143,16 @@ def _said_of_one37(text: str, m: re.Match[str], words: str, lexicon: Lexicon) ->
 _YOURS37 = re.compile(
     rf"(?:^|(?<=[.!?;])\s+)(?P<p>{_P37}),\s*(?:(?:that's|that is|here's|here is|this is) "
     rf"(?P<x>{_DET32} [a-z][a-z ]*?) for you|(?:yours is|yours'll be|yours will be) "
-    rf"(?P<y>{_DET32} [a-z][a-z ]*?))(?=\s*(?:[.!;]|$))",
+    rf"(?P<y>{_DET32} [a-z][a-z ]*?)|(?P<z>{_DET32} [a-z][a-z ]*?)(?:'s| is) yours)"
+    r"(?=\s*(?:[.!;]|$))",
     _F,
 )
 # "There's Person A, pass her the bottle", "Lena's run out of salt at her table, take her the
 # salt": the person shown or said to lack something, then a request with a pronoun for them
 _THERE_P37 = re.compile(
-    rf"^(?:(?:right|ok|okay|so|look),\s*)?(?:there's|there is) (?P<p>{_P37})(?: over there| there)?"
-    r",\s*(?P<req>.+)$",
+    rf"^(?:(?:right|ok|okay|so|look),\s*)?(?:(?:there's|there is|that's|that is) (?P<p>{_P37})"
+    rf"(?: over there| there)?,|(?:see|look at) (?P<q>{_P37})(?: over there| there)?\?|(?P<r>"
+    rf"{_P37})(?:'s| is) the (?P<d>[a-z]+(?: [a-z]+)??)(?P<one> one)?,)\s*(?P<req>.+)$",
     _F,
 )
 _RUN_OUT37 = re.compile(
@@ -30122,7 +30164,8 @@ _RUN_OUT37 = re.compile(
 # "Right, there's the bottle, Person A's waiting on it, …": the object shown, then who wants it
 _THERE_X37 = re.compile(
     rf"^(?:(?:right|ok|okay|so|look),\s*)?(?:there's|there is|here's|here is) (?P<x>{_DET32} "
-    rf"[a-z][a-z ]*?),\s*(?P<p>{_P37})(?P<w>'s| is) (?P<v>waiting on|waiting for|after|"
+    rf"[a-z][a-z ]*?),\s*(?P<p>{_P37})(?P<w>'s been|'s| is| has been) (?P<v>waiting on|waiting "
+    r"for|after|"
     r"asking for|wanting) (?P<pron>it|them)\b",
     _F,
 )
@@ -30160,13 +30203,14 @@ def _to_person37(req: str, p: str, lexicon: Lexicon) -> str | None:
 
 def _pronouns37(text: str, lexicon: Lexicon) -> str:
     """Session 37: 'P, that's X for you' / 'P, yours is X' as 'X for P' (P one person, X objects
-    only); 'There's P, <request with her>' and 'P's run out of X, <request with her naming X>'
-    as the request to P; "There's X, P's waiting on it" as "P's waiting on X"; ', so off you go
-    now' closing after a want; 'then it's X for P' as 'then X for P'; 'P's here … as a visitor'
-    without the trade; 'P put in for X' as 'P asked for X'."""
+    only); 'There's P, <request with her>' (or 'That's P over there,', 'See P?', "P's the tall
+    one,") and 'P's run out of X, <request with her naming X>' as the request to P; "There's X,
+    P's waiting on it" as "P's waiting on X"; ', so off you go now' closing after a want; 'then
+    it's X for P' as 'then X for P'; 'P's here … as a visitor' without the trade; 'P put in for X'
+    as 'P asked for X'."""
 
     def yours(m: re.Match[str]) -> str:
-        x = m["x"] or m["y"]
+        x = m["x"] or m["y"] or m["z"]
         if not _only_person(m["p"], lexicon) or not _things31(x, lexicon):
             return m[0]
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
@@ -30175,10 +30219,19 @@ def _pronouns37(text: str, lexicon: Lexicon) -> str:
     if "you" in text.lower():
         text = _YOURS37.sub(yours, text)
     m = _THERE_P37.match(text) or _RUN_OUT37.match(text)
-    if m is not None and _only_person(m["p"], lexicon):
-        x = m.groupdict().get("x")
+    said = m.groupdict() if m is not None else {}
+    p = said.get("p") or said.get("q") or said.get("r")
+    if said.get("d") is not None and (
+        not _asks_nothing29(said["d"], lexicon)
+        if said.get("one")
+        else _ids(said["d"], lexicon) != _ids(p or "", lexicon)
+    ):
+        p = None  # "Bob's the tall one, …" describes Bob ("the red one" may select); "Emma's the
+        # visitor, …" names her again
+    if m is not None and p is not None and _only_person(p, lexicon):
+        x = said.get("x")
         if x is None or (_objects_only(x, lexicon) and _ids(x, lexicon) <= _ids(m["req"], lexicon)):
-            req = _to_person37(m["req"], m["p"], lexicon)
+            req = _to_person37(m["req"], p, lexicon)
             if req is not None and _names(req, lexicon):
                 text = req[0].upper() + req[1:]
     m = _THERE_X37.match(text)
@@ -30209,7 +30262,7 @@ def _pronouns37(text: str, lexicon: Lexicon) -> str:
 # -- splits, lower case and questions
 # "Cup first, onto the counter with it.": where it goes, 'with it' of the one object said before
 _WITH_IT37 = re.compile(
-    r"\b(?P<to>(?:on|onto|in|into|up on|over to|to) (?P<s>the [a-z]+(?: [a-z]+)?)) with "
+    rf"\b(?P<to>(?:on|onto|in|into|up on|over to|to) (?P<s>the [a-z]+(?: [a-z]+)?|{_P37})) with "
     r"(?P<pron>it|them)(?=\s*(?:[.!;]|$))",
     _F,
 )
