@@ -285,6 +285,10 @@ test_negation = CASES.test(
     # "Leave X, P only wants Y"
     ("Leave the hammer, Jess only wants the drill.", "drill>B", WORKSHOP),
     ("Leave the crisps, Bob just wants the bottle.", "bottle>B", FIG1),
+    ("Leave the drill alone, it's only the torch that Kofi needs.", "torch>A", WORKSHOP),
+    ("Leave the drill be, it's only the torch Jess wants, she's up a ladder.", "torch>B", WORKSHOP),
+    ("Leave the drill be, it's only the drill Jess wants.", None, WORKSHOP),
+    ("Leave the drill be, it's only the torch Person Q wants.", None, WORKSHOP),
     ("Leave the drill, Jess only wants the drill.", None, WORKSHOP),
     ("Leave the drill, Jess only wants the pear.", None, WORKSHOP),
     ("Leave the drill.", None, WORKSHOP),

@@ -28870,19 +28870,27 @@ def _none_of37r(text: str, _lexicon: Lexicon) -> str:
 
 # "Leave the drill, Kofi only wants the torch."
 _LEAVE_ONLY37R = re.compile(
-    r"^leave (?P<x>the [a-z]+(?: [a-z]+)?)(?: (?:be|alone|where it is))?,\s*(?P<p>[a-z][\w ]*?) "
-    r"(?P<o>only|just) (?P<v>wants|needs) (?P<y>the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.!]|$))",
+    r"^leave (?P<x>the [a-z]+(?: [a-z]+)??)(?: (?:be|alone|where it is))?,\s*(?:"
+    r"(?P<p>[a-z][\w ]*?) (?P<o>only|just) (?P<v>wants|needs) (?P<y>the [a-z]+(?: [a-z]+)?)|"
+    r"it(?:'s| is) (?P<o2>only|just) (?P<y2>the [a-z]+(?: [a-z]+)??) (?:that )?"
+    r"(?P<p2>[a-z][\w ]*?) (?P<v2>wants|needs))(?=\s*(?:[,.!]|$))",
     _F,
 )
 
 
 def _leave_only37r(text: str, lexicon: Lexicon) -> str:
-    """Session 37 (12r): "Leave the drill, Kofi only wants the torch" is "Kofi only wants the
-    torch, not the drill" (one person, two whole objects, each another)."""
+    """Session 37 (12r): "Leave the drill, Kofi only wants the torch" and "Leave the chips be,
+    it's only the bottle Person A wants" are "Kofi only wants the torch, not the drill" (one
+    person, two whole objects, each another)."""
     m = _LEAVE_ONLY37R.match(text)
-    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"], m["y"]):
+    if m is None:
         return text
-    return f"{m['p']} {m['o']} {m['v']} {m['y']}, not {m['x']}{text[m.end() :]}"
+    p, o, v, y = (
+        (m["p"], m["o"], m["v"], m["y"]) if m["p"] else (m["p2"], m["o2"], m["v2"], m["y2"])
+    )
+    if not _only_person(p, lexicon) or not _objects34r(lexicon, m["x"], y):
+        return text
+    return f"{p} {o.lower()} {v} {y}, not {m['x']}{text[m.end() :]}"
 
 
 # -- corrections: the corrected words said again in a clause ------------------------------------
