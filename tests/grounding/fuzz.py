@@ -68,7 +68,12 @@ plural ("the mugs") said with its count (the entry) or another one (refused). A 
 (session 36), remarks: a remark after an entry that names nothing of the scene and asks nothing
 (", the heating's off", ". It's for the bake sale."): as the entry, or refused; a delay after it
 (", after lunch", ", once the meeting's over"): refused; and, for an entry of one handover naming
-its one person, that person said not to want it (", Bob doesn't want it"): refused.
+its one person, that person said not to want it (", Bob doesn't want it"): refused. Session 37 added
+blind35's kinds to four families: corrections of the person ("…, hang about, I mean Carol"), wants
+said by a verb of need ("Bob is desperate for the apple.") and given up ("Bob has gone off the
+apple.": refused), "the pair of mugs" (as "both"), the speaker saying who they are (", I'm the
+relief cook today") and a remark about a person of the scene by a name (", Alice is new here"; the
+entry).
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -336,6 +341,12 @@ RECIPIENT_FIXES = (  # the handover to {q}
     ". Wait, {q}, not {p}.",
     ", sorry, I meant {q}",
     ". Sorry, I meant {q}.",
+    # (session 37; blind35's corrections: "hang about, I mean Zoe", "No, correction, they're for
+    # Person B", "what am I saying, … Person A gets it")
+    ", hang about, I mean {q}",
+    ". No, correction, it's for {q}.",
+    ", oh dear, it should be {q}",
+    ", what am I saying, {q} gets it",
 )
 REASONS = (", I mixed them up", ", my mistake", ", long day", ", I got the names muddled")
 UNDECIDED = (  # refused: which person is left open
@@ -344,6 +355,7 @@ UNDECIDED = (  # refused: which person is left open
     ", no, {q}, or was it {p}...",
     ", unless it was {q}, I'm not sure",
     ". Or {q}, I can't remember which.",
+    ", hang about, or was it {q}?",  # (session 37)
 )
 # a person's state (before or after a grounded entry with no choice): the entry, or refused
 STATES = (
@@ -381,6 +393,13 @@ WANT_FRAMES = (
     "It's the {o} {p} is after.",
     "The thing {p} needs is the {o}.",
     "What {p}'s been asking for all morning is the {o}.",
+    # (session 37; blind35's wants said by a verb of need or longing: "is gasping for that
+    # bottle", "'s going to need the work gloves", "'s been craving")
+    "{P} is desperate for the {o}.",
+    "{P}'s going to need the {o}.",
+    "{P} could really use the {o}.",
+    "{P} is in need of the {o}.",
+    "{P}'s been craving the {o}.",
 )
 TOLD = (
     "{P} wants the {o}, I'm told.",
@@ -396,6 +415,9 @@ NOT_WANTED = (  # refused: no want (negated, had already, past, or given up)
     "It's the {o} that {p} was hoping for, but not any more.",
     "I'm told {p} has the {o} already.",
     "{P} wanted the {o}, apparently, but not now.",
+    "{P} has gone off the {o}.",  # (session 37: a want given up, denied or done without)
+    "{P} won't be needing the {o}.",
+    "{P} could do without the {o}.",
 )
 APPOSITIONS = ("our oboist", "the new intern", "my neighbour", "our bassoonist", "a regular here")
 # words after a name that an apposition before them would part from it ("Alice, our oboist, too")
@@ -558,8 +580,17 @@ KIND_COUNTS = (
     "Could you bring {p} the {n} {cs}?",
     "Give {p} all {n} {cs}.",
 )
-BOTH = ("Give {p} both {cs}.", "Both {cs} to {p}, please.", "{P} gets both {cs}.")
+BOTH = (
+    "Give {p} both {cs}.",
+    "Both {cs} to {p}, please.",
+    "{P} gets both {cs}.",
+    # (session 37; blind35's "The pair of cups, the green and the white, …": "the pair of" is
+    # "both", and of three a careful person asks which two)
+    "Give {p} the pair of {cs}.",
+    "The pair of {cs} go to {p}.",
+)
 ENTRY_COUNTS = ("the {n} {cs}", "all {n} {cs}")  # an entry's "the <kinds>" said with a count
+ENTRY_BOTH = ("both {cs}", "the pair of {cs}")  # … and said as two
 ONE = ("the one {o}", "the only {o}", "the single {o}")
 SEVERAL = ("both {os}", "the two {os}", "all three {os}", "the 2 {os}")
 MASS = frozenset(["glue", "salt", "tape", "water", "juice", "milk", "rice", "soup", "sugar"])
@@ -584,6 +615,11 @@ REMARKS = (
     ". The heating's off.",
     ". It's for the bake sale.",
     ". We're a bit short-staffed today.",
+    # (session 37; blind35's speaker saying who they are: "I'm off to my shift as a shunter", "I'm
+    # the philatelist and …")
+    ", I'm the relief cook today",
+    ". I'm new on this shift.",
+    ", I'm a night porter by trade",
 )
 CONTRARY = (  # {p} the entry's one person as it says them ({P}: at a sentence's start)
     ", {p} doesn't want it",
@@ -600,7 +636,20 @@ TIMED = (
     ". Not until this afternoon, though.",
     ". But only once the meeting's over.",
 )
-REMARK_FORMS = ("remark", "time", "contrary")
+# (session 37; blind35's remarks about a person: "he's a roughneck on leave", "She's just back
+# from crabbing.", "Emma's only here for the afternoon as a visitor"): a remark about a person of
+# the scene said by a name, after a grounded entry with no pronoun for a person (a name said beside
+# a pronoun could change whom it means): the entry, or refused
+CONTEXT = (
+    ", {p}'s just back from the gym",
+    ", {p}'s had a long shift",
+    ", {p} is new here",
+    ", {p}'s a new starter",
+    ". {P}'s just back from the gym.",
+    ". {P} has been on the phone all morning.",
+    ". {P} is new on the team.",
+)
+REMARK_FORMS = ("remark", "time", "contrary", "context")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -1653,7 +1702,7 @@ def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         # scanner, the tape and the gloves" is those three, as a careful person reads it, so no
         # other count is said there)
         for agree in (True,) if ":" in text[m.end() :] else (True, False):
-            forms = (*ENTRY_COUNTS, "both {cs}") if (n == 2) is agree else ENTRY_COUNTS
+            forms = (*ENTRY_COUNTS, *ENTRY_BOTH) if (n == 2) is agree else ENTRY_COUNTS
             count = n if agree else _miscount(n, rng)
             form = _of_kind_said(count, forms, rng).format(n=_counted(count, rng), cs=cs)
             form = form[:1].upper() + form[1:] if m[1] == "The" else form
@@ -1665,9 +1714,11 @@ def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
 def remarks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
     """The remark variants of one entry: a remark naming nothing of the scene after it (REMARKS:
     as the entry, or refused; a refused entry stays refused with its readings), a delay after it
-    (TIMED: refused), and, for a grounded entry of one handover naming its one person by a name and
+    (TIMED: refused), for a grounded entry of one handover naming its one person by a name and
     no other person or object (and no pronoun for a person), that person said not to want it
-    (CONTRARY: refused). After a question only the ". " forms."""
+    (CONTRARY: refused), and, for a grounded entry with no pronoun for a person, a remark about a
+    person of the scene said by a name no other shares (CONTEXT: the entry, or refused). After a
+    question only the ". " forms."""
     text = entry.text.strip()
     question = text.endswith("?")
 
@@ -1687,6 +1738,11 @@ def remarks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     if one is not None and (forms := said(CONTRARY)):
         p = one[0]
         yield variant(rng.choice(forms).format(p=p, P=p[:1].upper() + p[1:]), None, (), "contrary")
+    names = [n for h in scene.humans if (n := _proper_name(scene, h.id)) is not None]
+    grounded = entry.want is not None and not _words(text) & _PRONOUNS
+    if grounded and names and (forms := said(CONTEXT)):
+        p = rng.choice(names)
+        yield variant(rng.choice(forms).format(p=p, P=p), entry.want, entry.readings, "context")
 
 
 def _one_id(name: str, scene: Scene) -> str:

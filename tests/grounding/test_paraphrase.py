@@ -198,45 +198,6 @@ KNOWN_MISSES = frozenset(
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         "Alice and Bob each get something: she's having the chips, he's having the bottle.",
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
-        "Sorry, sorry, I know you're busy, but the apple's meant for Person B, if that's alright.",
-        'The bottle for Person A, please and thank you, from a very tired steel fixer.',
-        "Oh, thank you, and, um, the bib for Lily, please, she's a messy little thing.",
-        "Honestly, the crisps are the thing Bob's been craving since his gliding lesson.",
-        'After a whole hour of crossfit, Person A is gasping for that bottle.',
-        "Person B's the one who's in need of the bottle, by the look of him.",
-        "Person A would like the bottle, if that's not too much to ask of you.",
-        "She's desperate for her bottle, Person A is, after the wild swimming.",
-        "Dana's got to have the spoon for her yoghurt, and Emma would quite fancy the green cup.",
-        "Tom's going to need the work gloves for unloading the pallets.",
-        'Alice was on about the crisps after her juggling, can you take them to her.',
-        "Bob's to have the bottle and Alice the crisps, they've both been down with the tunneller "
-        "all day.",
-        "Person A, that's the apple for you. Person B, yours is the bottle.",
-        "There's Person A, pass her the bottle, would you.",
-        "Start with Person B, he gets the chips, and then it's the bottle for Person A.",
-        "Emma's only here for the afternoon as a visitor, hand her the white cup.",
-        "Lena's run out of salt at her table, take her the salt.",
-        'Mrs Ortiz put in for the glue, and the ruler is what Noah asked for, so pass it to him.',
-        'Cup first, onto the counter with it. After that, Carol gets the apple.',
-        "Give Person A the bottle then give Person B the cup then that's all, I'm off to my shift "
-        "as a shunter.",
-        "Right, there's the bottle, Person A's waiting on it, so off you go now.",
-        "Marco's waiting on the knife. Mr Novak, the white plate. And the lemon can sit on the "
-        "worktop.",
-        "Teddy to Lily and the wipes on the high chair and that's her sorted.",
-        'crisps go up on the shelf out of bobs reach, hes had plenty',
-        'person b wants the chips after his bodyboarding',
-        "Bob wants the crispps, he's a roughneck on leave.",
-        "Stick the bottle on the sheelf, would you, I'm a french polisher and I need the room.",
-        'Person B gets the bottole after his sumo practice.',
-        'The chnips are for Person A after her padel game.',
-        "Would you mind taking the bottle to Alice? She's just back from crabbing.",
-        'Any chance Person B could have the cup after his powerlifting?',
-        'Could you do the apple for Person B before anything else, and the bottle for Person A '
-        'after?',
-        'Mind bringing the bottle over to Person A? Her airsoft game starts at four.',
-        "Would you stick the stapler in the box, I'm the philatelist and I need the room?",
-        "Could Ava have the teddy, do you think? She's tired from tap dancing.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -314,7 +275,7 @@ KNOWN_UNCLEAR = frozenset(
 # "blind35" written in session 36 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 36 (0 wrong), tuned on in session 37: asserted now,
 # the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind36"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -410,6 +371,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind34"].entries}) >= 3
     assert len(CORPORA["blind35"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind35"].entries}) >= 3
+    assert len(CORPORA["blind36"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind36"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -122,7 +122,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of
 # session 35; its one wrong reading fixed and tuned on in session 36), blind35 (written in
 # session 36 by another engineer and committed alone, never opened by the engineers who change
-# the grounder before its one measurement at the end of session 36; tuned on in session 37).
+# the grounder before its one measurement at the end of session 36; tuned on in session 37),
+# blind36 (written in session 37 by another engineer and committed alone, never opened by the
+# engineers who change the grounder before its one measurement at the end of session 37; tests do
+# not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -175,6 +178,7 @@ PARTS = (
     "blind33",
     "blind34",
     "blind35",
+    "blind36",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
