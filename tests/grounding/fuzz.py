@@ -1354,6 +1354,33 @@ def _in_list(text: str, at: re.Match[str]) -> bool:
     return bool(_LIST_BEFORE.search(text[: at.start()]) or _LIST_AFTER.match(text[at.end() :]))
 
 
+# a choice said before the words a repair moves ("one of the cup, ", "any one of the cup or ")
+_CHOICE_OPENED = re.compile(
+    r"(?i)\b(?:one|any|either)(?: one)? of (?:the )?[\w' -]+?"
+    r"(?:(?:,|,? or|,? and) (?:the )?[\w' -]+?)*(?:,|,? or|,? and)\s*$"
+)
+
+
+def _later_in_choice(
+    text: str, at: re.Match[str], scene: Scene, kind: Literal["object", "human"]
+) -> bool:
+    """Whether the words ``at`` matched are a later name of a choice ("the cup or the apple",
+    "one of the cup, the apple and …", "Alice or Bob"): a repair of them could replace that name
+    only, or the whole choice (session 37, 12s: refused naming both)."""
+    before = text[: at.start()]
+    if _CHOICE_OPENED.search(before):
+        return True
+    if not re.search(r"(?i)\bor\s*$", before):
+        return False
+    prev = re.sub(r"(?i),?\s*\bor\s*$", "", before)
+    try:
+        items = lex(prev, Lexicon.of(scene))
+    except GroundingError:
+        return False
+    last = next((it for it in reversed(items) if it.kind != "punct" or it.text != ","), None)
+    return last is not None and last.kind == "ent" and all(r.kind == kind for r in last.refs)
+
+
 def _repair(text: str, at: re.Match[str], rng: random.Random) -> str:
     """A form of REPAIRS for the words ``at`` matched: no bare filler in a list."""
     return rng.choice([f for f in REPAIRS if not (f in FILLERS and _in_list(text, at))])
@@ -1425,7 +1452,9 @@ def repairs(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
         if free and spots:
             at, xid = rng.choice(spots), rng.choice(free)
             x = "the " + _name(scene, xid)
-            yield variant(_inserted(text, at, _repair(text, at, rng), x), want, "object")
+            # a later name of a choice repaired: it, or the whole choice? (refused)
+            fixed = None if _later_in_choice(text, at, scene, "object") else want
+            yield variant(_inserted(text, at, _repair(text, at, rng), x), fixed, "object")
             yield variant(_inserted(text, at, rng.choice(UNDECIDED_REPAIRS), x), None, "undecided")
             if isinstance(want, Task) and not pronoun:
                 both = Group("and", (Task(want.kind, xid, want.target), want))
@@ -1438,7 +1467,8 @@ def repairs(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     others = [q for h in scene.humans if h.id not in met and (q := _proper_name(scene, h.id))]
     if said_at and others:
         at, q = rng.choice(said_at), rng.choice(others)
-        yield variant(_inserted(text, at, _repair(text, at, rng), q), want, "person")
+        fixed = None if _later_in_choice(text, at, scene, "human") else want
+        yield variant(_inserted(text, at, _repair(text, at, rng), q), fixed, "person")
     long = [m for m in said_at if " " in m[0]]
     if long:
         at = rng.choice(long)

@@ -78,7 +78,6 @@ KNOWN_MISSES = frozenset(
         # list after, 'one of the <description>', purposes ('to bang together', 'before
         # service'), comparatives ('the two smaller'), verbs the grammar lacks ('Tidy', 'Clear',
         # 'Load … up with'), 'one of the other two', "bring Grandad's X over to him" (no title)
-        "The little one could do with her sippy cup",
         "Mia wants the tape, she's sealing boxes, and Tom wants the scanner, he's checking the "
         "load",
         "Oh dear, Ava's dropped her block again. Pop the red block back to her, there's a love.",
@@ -123,43 +122,19 @@ KNOWN_MISSES = frozenset(
         # Jess'), exclusions and negation, corrections with remarks, typos in a remark
         "Jess needs some screws, give her the tin.",
         # blind21 (tuned on in session 23): refusals left (docs/grounding.md, "Session 23")
-        "The manager wants the stapler sitting on the desk, not hidden away in a drawer.",
-        "The little one wants her teddy, she won't settle without it.",
-        "Jess has forty shelf brackets to get up before close, so she needs the power drill.",
-        "See the blue mug? That's Bob's, give it to him.",
         "Zoe's done colouring her map and wants to check it against the globe. Put it in her "
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
-        "Give Person A the chips and Person B the bottle and the apple goes to Person A as well "
-        "so she's got two.",
-        "Put the spoon on the tray and the green cup on the tray and then once they're both "
-        "there the sponge goes in the sink.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
-        "Give Person A something to eat, but not the apple, she's allergic.",
-        "Could the middle-sized box go onto the pallet with the big one?",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
-        "Pardon? Speak up a touch, this hearing aid of mine keeps whistling. Oh, right you are. "
-        "Well then, let Alice have the bottle if you'd be so kind. Thank you, dear.",
-        'What Bob really needs after three hours of the Messiah is the crisps, poor man.',
-        "The doctor's after the white cup, and the visitor would like that banana, she's had no "
-        "breakfast.",
         "That bottle by the door, up on the shelf with it, there's a good chap.",
-        'Person A, she is very thirsty from walking, krap. That bottle, you bring for her, please.',
-        "That bottle's Person A's, so take it over, she'll want it back before the weigh-in.",
-        'Person B asked for the bottle and Person A for the chips. Sort them out for me, would '
-        'you?',
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        'Person A and Person B each one drink, bottle for one, cup for other, any way also can.',
         "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
-        "Give the bottle to whoever isn't Person A, I don't know the other one's name.",
         'knife on the worktop please, the guests want it by their bread',
-        "Could Bob have the crisps before we go on, he's the only tenor we've got?",
-        "Could Person A get her bottle, she's been out on the water all day?",
-        'Can Mr Novak have the salt, please, he says the soup needs it?',
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
         'be tuning this thing for another hour.',
@@ -204,10 +179,7 @@ KNOWN_MISSES = frozenset(
 KNOWN_UNCLEAR = frozenset(
     {
         # blind21 (tuned on in session 23)
-        "The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
         # blind22 (tuned on in session 24)
-        "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who "
-        "asked.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -14863,6 +14863,16 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
         ),
         out,
     )
+    # session 37 (lead): the same cue closing the repair's sentence, another sentence after it
+    # ("Give Person B the bottle, er, no, the apple, my mistake. Person B's going to need the
+    # chips."): said of the repair before it, not a correction of everything before the next
+    # sentence (12c's fuzz: it had dropped the apple)
+    out = _sub(
+        r"(,\s*no,[^,.!?;]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)\s*([.!])"
+        r"(?=\s+\S)",
+        r"\1\2",
+        out,
+    )
     m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
     if m is not None and m.start() > 0:
         before, after = out[: m.start()], out[m.end() :]
@@ -24497,6 +24507,612 @@ def _while_there36s(text: str, lexicon: Lexicon) -> str:
 _STEPS36S: tuple[Callable[[str, Lexicon], str], ...] = (_while_there36s,)
 
 
+# -- session 37 (engineer 12s): blind21 and blind22's kinds ---------------------------------------
+
+# the person who gets it described as the only one of a role, closing the request ("Could Bob
+# have the crisps, he's the only tenor we've got?"): a reason, as session 21's ('he's the best
+# tenor we've got'), which holds back every 'only' (it could narrow what is given)
+_ONLY_ROLE37S = re.compile(
+    r"\s*,\s*(?:(?:and|cos|because|as|since)\s+)?(?:he|she|they)(?:'s|\u2019s|'re| is| are) "
+    r"(?:the|our|my) only (?P<what>[a-z]+(?: [a-z]+)?)"
+    r"(?: (?:we've got|we have|we've|we got|here|left|around|on shift|today|tonight))?"
+    r"(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+# what would make 'the only …' pick or count rather than describe
+_NOT_A_ROLE37S = frozenset(
+    {"one", "ones", "thing", "things", "person", "people", "other", "choice", "option", "way"}
+)
+
+
+def _only_role37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing description above taken off when its words name nothing
+    in the scene and are a role ('tenor', 'driver on shift'), not 'one' / 'thing' / 'person'
+    (which could narrow what is given), the request before it names one person, and what is
+    left reads."""
+    m = _ONLY_ROLE37S.search(text)
+    if m is None or set(m["what"].lower().split()) & _NOT_A_ROLE37S:
+        return text
+    if not _names_nothing(m["what"], lexicon):
+        return text
+    rest = text[: m.start()]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    out = rest + m["end"].strip()
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a need of a thing, not a person, reported from the person asked for ("Can Mr Novak have the
+# salt, please, he says the soup needs it?"): why they want it
+_SAYS_NEEDS37S = re.compile(
+    r"\s*,\s*(?:(?:and|cos|because|as|since)\s+)?(?:he|she|they) (?:says|said|reckons|thinks) "
+    r"(?:that )?(?P<thing>(?:the|his|her|their|my|our) [a-z]+(?: [a-z]+)?) "
+    r"(?:needs|wants|could use|could do with|is missing|lacks) "
+    r"(?:it|them|some|some more|a bit|a bit more|more)(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+
+
+def _says_needs37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the reported need above taken off when the thing needing it names
+    nothing in the scene (the soup, not a person or an object of it), the request before it
+    names one person and an object, and what is left reads (as session 31's ', the soup needs
+    it' after a request)."""
+    m = _SAYS_NEEDS37S.search(text)
+    if m is None or not _names_nothing(m["thing"], lexicon):
+        return text
+    rest = text[: m.start()]
+    if len(_ids(rest, lexicon, "human")) != 1 or not _ids(rest, lexicon, "object"):
+        return text
+    out = rest + m["end"].strip()
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a size said with '-sized' ('the middle-sized box', 'the small-sized one'), or 'middle' / 'mid'
+# for the medium one
+_SIZED37S = re.compile(
+    r"\b(?P<size>small|medium|large|big|little|middle|mid)(?:[- ]sized?|-size)?"
+    r"(?P<noun> [a-z]+)\b",
+    _F,
+)
+
+
+def _sized37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'the middle-sized box' (blind21) is 'the medium box': a size word with
+    '-sized' is that size, and 'middle' / 'mid' (with or without '-sized') is 'medium', when the
+    scene has one object the size word and the noun after it name and the words as said name
+    nothing ('in the middle of the table' is kept: 'medium of' names nothing)."""
+    if not re.search(r"\b(?:middle|mid|sized?)\b|-size", text, _F):
+        return text
+
+    def sized(m: re.Match[str]) -> str:
+        size = m["size"].lower()
+        if size in ("middle", "mid"):
+            size = "medium"
+        elif m[0].lower() == f"{size}{m['noun'].lower()}":
+            return m[0]  # said as it is already
+        said = f"{size}{m['noun']}"
+        if _only(f"the {m[0]}", lexicon, "object") or not _only(f"the {said}", lexicon, "object"):
+            return m[0]
+        return said
+
+    return _SIZED37S.sub(sized, text)
+
+
+# 'once' the things just placed are there ("… and the green cup on the tray and then once
+# they're both there the sponge goes in the sink"): once that is done
+_ONCE_THERE37S = re.compile(
+    r"\bonce (?P<what>it's|it is|they're|they are)(?: (?P<both>both|all))? (?:there|in place|"
+    r"on there|in there)\b(?!,)"
+    r"(?= (?:the|put|place|give|hand|pass|bring|take|[a-z]+ (?:goes|go) ))",
+    _F,
+)
+
+
+def _once_there37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'once it's there' / 'once they're (both) there' before the next step,
+    said after placing: 'once that's done' (which the grammar reads as the order), when the text
+    before it names one surface (the 'there'), one object for 'it' or more for 'they', no
+    person, and what is left reads."""
+    m = _ONCE_THERE37S.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    objects = _ids(before, lexicon, "object")
+    many = m["what"].lower().startswith("they")
+    if (
+        len(_ids(before, lexicon, "surface")) != 1
+        or _ids(before, lexicon, "human")
+        or (len(objects) != 1 if not many else len(objects) < 2)
+        or (m["both"] is not None and not many)
+        or (m["both"] is not None and m["both"].lower() == "both" and len(objects) != 2)
+    ):
+        return text
+    out = f"{before}once that's done{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# what a person has been through, said in a want frame before 'is' ("What Bob really needs after
+# three hours of the Messiah is the crisps"): why they need it, a span already past, not when
+_ORDEAL37S = re.compile(
+    r"\b(?P<frame>what [A-Za-z][\w ]*? (?:really |actually |most )?(?:needs|wants|could use|"
+    r"could do with|would like)) after (?P<ordeal>(?:(?:a|an|one|two|three|four|five|six|seven|"
+    r"eight|nine|ten|twelve|\d+|several|a few|many) (?:hours?|minutes?|days?|weeks?|months?|years?|"
+    r"shifts?|laps?|miles?) of [a-z' -]+?|a (?:long|hard|busy|tough|rough) (?:day|shift|night|week|"
+    r"morning|afternoon|evening|run|walk)(?: of [a-z' -]+?)?|all that)) (?=is )",
+    _F,
+)
+
+
+def _ordeal37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the ordeal above taken off a want frame when it names nothing in the
+    scene, so session 18's 'What P really needs is X' reads it; 'after the show' (which could be
+    when) and 'after the crisps' (an order) are not this."""
+
+    def past(m: re.Match[str]) -> str:
+        # (the count of the span is no count of things: what it was of must hold none)
+        of = m["ordeal"].split(" of ", 1)[1] if " of " in m["ordeal"] else ""
+        if not _names_nothing(m["ordeal"], lexicon) or _KEEP_WORDS.search(of):
+            return m[0]
+        return f"{m['frame']} "
+
+    return _ORDEAL37S.sub(past, text)
+
+
+# a sentence of its own asking the hearer to see to what was just said ("… Sort them out for
+# me, would you?"): 'for me' is the favour asked ('do it for me'), not the speaker getting them
+_SORT_OUT37S = re.compile(
+    r"(?:(?<=[.!?;]) |^)(?:(?:could|can|would|will) you |please )?sort (?:it|them|that|this|"
+    r"those|these|them all|it all|that lot|everything) out(?: for (?:me|us))?"
+    r"(?:,? (?:would you|will you|could you|can you|please|thanks|cheers|ta))?\s*[.!?]?\s*$",
+    _F,
+)
+
+
+def _sort_out37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing sentence above taken off (session 26's `_phrasal26` had
+    made 'sort them out for me' 'get them for me', the speaker's own request) when the text
+    before it names a person and an object, asks nothing for the speaker ('me', 'I', 'my'), and
+    what is left reads."""
+    m = _SORT_OUT37S.search(text)
+    if m is None or m.start() == 0:
+        return text
+    before = text[: m.start()].rstrip()
+    if re.search(r"\b(?:me|my|mine|i|we|us|our)\b", before, _F):
+        return text
+    if not (_ids(before, lexicon, "human") and _ids(before, lexicon, "object")):
+        return text
+    return before if _reading(before, lexicon) is not None else text
+
+
+# a task a person has, said as why they need the object ("Jess has forty shelf brackets to get
+# up before close, so she needs the power drill."): their need
+_TASK_HAD37S = re.compile(
+    r"(?P<who>\b[A-Z][a-z]+(?: [A-Z][a-z]+)?) (?:has|has got|'s got|\u2019s got) "
+    r"(?P<task>[a-z0-9' -]+? to [a-z]+(?: [a-z' -]+?)?)(?P<when> (?:before|by) [a-z' -]+?)?, "
+    r"so (?P<pro>she|he)(?:'ll| will)? (?:needs?|wants?|could use|could do with) "
+    r"(?P<x>[^,.;!?]+)",
+    _F,
+)
+
+
+def _task_had37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the task above taken off, leaving 'P needs X', when P is one person
+    the he / she may be (a title, kin word or first name of the other sex rules them out), the
+    task and its deadline name nothing in the scene and hold no word that counts, chooses or
+    points back but the task's own count, X names objects only, and what is left reads (a
+    deadline is met by acting now)."""
+    m = _TASK_HAD37S.search(text)
+    if m is None or not _only_person(m["who"], lexicon) or not _objects_only(m["x"], lexicon):
+        return text
+    said = f"{m['task']}{m['when'] or ''}"
+    if re.search(r"\b(?:tomorrow|tonight|later|next|after|when|once|until|till)\b", said, _F):
+        return text  # a time the need may wait for
+    if not _names_nothing(said, lexicon) or _KEEP_WORDS.search(
+        re.sub(
+            r"^(?:\d+|[a-z]+ty|[a-z]+teen|two|three|four|five|six|seven|eight|nine|ten) ", "", said
+        )
+    ):
+        return text
+    who = next(iter(_ids(m["who"], lexicon, "human")))
+    sex = said_sex35s(who, lexicon)
+    if sex is not None and PRONOUN_SEX.get(m["pro"].lower()) != sex:
+        return text
+    out = f"{text[: m.start()]}{m['who']} needs {m['x']}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# where a person wants the object to stay, said with a participle of lying ("The manager wants
+# the stapler sitting on the desk"): on it
+_SITTING37S = re.compile(
+    r"\b(?P<want>wants|would like|'d like|likes|needs|prefers) (?P<x>the [a-z' -]+?) "
+    r"(?:sitting|sat|standing|stood|lying|kept|resting) (?P<on>on|in|by|next to) "
+    r"(?P<s>the [a-z' -]+?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+# a place the object is not to go, naming nothing of the scene, after where it goes ("…, not
+# hidden away in a drawer"): a contrast that changes nothing
+_NOT_THERE37S = re.compile(
+    r",\s*(?:and )?not (?:(?:hidden|tucked|shoved|stuck|put|left|lost|buried)(?: away)? )?"
+    r"(?:in|on|under|inside|into|in with) (?:a|an|some|the) (?P<w>[a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _sitting37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'P wants X sitting on S' is 'P wants X on S' (a want of where it is to
+    be, as 'wants X left on S' reads) when X is one object and S one surface of the scene; then a
+    closing ', not (hidden away) in a drawer' (above) is taken off when it names nothing in the
+    scene and the text before puts an object on a surface. What is left must read."""
+    out = text
+    m = _SITTING37S.search(out)
+    if m is not None and _only(m["x"], lexicon, "object") and _surface_only(m["s"], lexicon):
+        out = f"{out[: m.start()]}{m['want']} {m['x']} {m['on']} {m['s']}{out[m.end() :]}"
+    n = _NOT_THERE37S.search(out)
+    if n is not None and _names_nothing(n["w"], lexicon):
+        before = out[: n.start()]
+        if _ids(before, lexicon, "surface") and _ids(before, lexicon, "object"):
+            out = before + n["end"].strip()
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+# whose the object is, then it handed to them by a pronoun ("See the blue mug? That's Bob's, give
+# it to him.", "The blue mug is Bob's, give it to him."): handed to that owner
+_OWNER_THEN37S = re.compile(
+    r"(?P<x>\b(?:that|it|this|(?:the|that|this) [a-z' -]+?)) ?(?:'s|\u2019s| is) "
+    r"(?P<who>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s|\u2019s)\s*[,.;]\s*(?:so\s+)?"
+    r"(?:(?P<verb>give|hand|take|pass|bring) it (?:back |over |right back )?to (?P<pro>him|her)\b"
+    r"|(?P<over>take|bring|run|carry) it (?:over|across|round)(?= *(?:[,.;!?]|$)))",
+    _F,
+)
+
+
+def _owner_then37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the owner said, then the object handed to a him / her (above): '<verb>
+    it to <owner>' ('<verb> the X to <owner>' when the object was named there), when the owner
+    is one person the pronoun may be (a title, kin word or first name of the other sex rules
+    them out), a named object is one of the scene ('that' / 'it': the text before names one
+    object, not a choice), and what is left reads ("See the blue mug? Give it to Bob." reads the
+    pointing)."""
+    m = _OWNER_THEN37S.search(text)
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    who = next(iter(_ids(m["who"], lexicon, "human")))
+    sex = said_sex35s(who, lexicon)
+    if m["pro"] is not None and sex is not None and PRONOUN_SEX.get(m["pro"].lower()) != sex:
+        return text
+    x = m["x"]
+    named = " " in x.strip()
+    thing = "the " + x.strip().split(" ", 1)[1] if named else "it"
+    if named and not _only(thing, lexicon, "object"):
+        return text
+    if not named and len(_ids(text[: m.start()], lexicon, "object")) != 1:
+        return text  # 'that' / 'it' points back at one object said before it, or is not this
+    verb = m["verb"] or m["over"]
+    out = f"{text[: m.start()]}{verb} {thing} to {m['who']}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# the speaker not knowing a person's name, closing the request ("…, I don't know the other one's
+# name."): it asks nothing and names no one
+_NAME_UNKNOWN37S = re.compile(
+    r"\s*[,;]\s*(?:(?:and|but|as|because|cos|sorry)\s+)?i (?:don't|do not|dont|can't|cannot) "
+    r"(?:know|remember|recall) (?:his|her|their|the other (?:one|person|guy|lady|man|woman)'s)"
+    r" names?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _name_unknown37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing remark above taken off when the request before it names
+    someone and what is left reads ('whoever isn't Person A' says who without the name)."""
+    m = _NAME_UNKNOWN37S.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()]
+    if not _ids(rest, lexicon, "human") or not _ids(rest, lexicon, "object"):
+        return text
+    out = rest + m["end"].strip()
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a small child said as 'the little one' / 'the wee one' wanting something ("The little one wants
+# her teddy, …"): the one person of the scene called a child
+_LITTLE_ONE37S = re.compile(
+    r"\bthe (?:little|wee|youngest|smallest) one(?= (?:wants|needs|would like|'d like|is after|"
+    r"'s after|could do with|could use)\b)",
+    _F,
+)
+_CHILD_WORDS37S = frozenset({"toddler", "baby", "infant", "child", "kid", "little one", "tot"})
+
+
+def _little_one37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'the little one' above is the one person of the scene whose names say a
+    small child (toddler, baby, …), when no object of the scene is named by a size ('the little
+    one' could be the small box) and what is left reads."""
+    m = _LITTLE_ONE37S.search(text)
+    if m is None:
+        return text
+    if any(
+        w in ("small", "little", "smallest", "mini", "tiny")
+        for o in lexicon.scene.objects
+        for n in (o.id.replace("_", " "), *o.aliases)
+        for w in n.lower().split()
+    ):
+        return text
+    kids = [h for h in lexicon.scene.humans if {a.lower() for a in h.aliases} & _CHILD_WORDS37S]
+    if len(kids) != 1:
+        return text
+    name = next((a for a in (kids[0].name, *kids[0].aliases) if _only_person(a, lexicon)), None)
+    if name is None:
+        return text
+    out = f"{text[: m.start()]}{name}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# the speaker not having heard the robot, opening the text ("Pardon? Speak up a touch, this
+# hearing aid of mine keeps whistling. …"): talk about the talk, asking nothing of the scene
+_PARDON37S = re.compile(
+    r"^(?:(?:pardon|sorry|come again|what was that|eh|what's that|say again)\s*\?\s*)+"
+    r"(?:(?:speak up|say (?:that|it) again|a bit louder|louder)(?: a (?:bit|touch|little))?"
+    r"(?:,? please)?(?P<aside>,[^.!?]*)?[.!]\s*)?",
+    _F,
+)
+
+
+def _pardon37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the opening above taken off when its words (an aside after 'speak up'
+    too) name nothing in the scene, a request follows, and what is left reads."""
+    m = _PARDON37S.match(text)
+    if m is None or m.end() >= len(text) or not _names_nothing(m[0], lexicon):
+        return text
+    out = text[m.end() :].strip()
+    out = out[:1].upper() + out[1:]
+    return out if _reading(out, lexicon) is not None else text
+
+
+# how many things a he / she ends up with, closing the request ("… and the apple goes to Person A
+# as well so she's got two."): said of the one person the request gives that many
+_GOT_COUNT37S = re.compile(
+    r"(?:\s*,\s*|\s+)(?:so|and|which means|meaning)\s+(?P<pro>she|he)(?:'s| has| will have|'ll "
+    r"have)(?: got)? (?P<n>two|three|four|both)(?: (?:of them|things|items|now))?(?P<end>\s*[.!]?)"
+    r"\s*$",
+    _F,
+)
+_COUNTS37S = {"two": 2, "both": 2, "three": 3, "four": 4}
+
+
+def _got_count37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing count above taken off when the request before it reads
+    and gives exactly one person that many objects, one the pronoun may be (a title, kin word or
+    first name of the other sex rules them out): it points at them and adds nothing. No one, or
+    several, with that many: left (refused)."""
+    m = _GOT_COUNT37S.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()] + m["end"].strip()
+    node = _reading(rest, lexicon)
+    if node is None:
+        return text
+    got: dict[str, set[str]] = {}
+    for t in tasks(node):
+        if t.kind == "deliver":
+            got.setdefault(t.target, set()).add(t.obj)
+    n = _COUNTS37S[m["n"].lower()]
+    sex = PRONOUN_SEX.get(m["pro"].lower())
+    fits = [p for p, objs in got.items() if len(objs) == n]
+    if len(fits) != 1 or said_sex35s(fits[0], lexicon) not in (None, sex):
+        return text
+    return rest
+
+
+# an occasion said as a hyphenated noun in a deadline or purpose ("… before the weigh-in", "for
+# the warm-up"): its words as a plain noun phrase, as "before the race" reads
+_HYPHEN_TIME37S = re.compile(
+    r"\b(?P<lead>(?:before|by|for) (?:the|her|his|their|our|my) )(?P<a>[a-z]+)-(?P<b>[a-z]+)\b",
+    _F,
+)
+
+
+def _hyphen_time37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the hyphen above taken out when the word names nothing in the scene
+    and what is left reads ('the middle-sized box' is `_sized37s`'s)."""
+    if "-" not in text:
+        return text
+    out = _HYPHEN_TIME37S.sub(
+        lambda m: (
+            f"{m['lead']}{m['a']} {m['b']}"
+            if _names_nothing(f"{m['a']}-{m['b']}", lexicon)
+            and _names_nothing(f"{m['a']} {m['b']}", lexicon)
+            else m[0]
+        ),
+        text,
+    )
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a person said to be (or have been) out on the water: afloat, a place, not the drink ('water'
+# names the bottle in scenes with one): "…, she's been out on the water all day"
+_ON_THE_WATER37S = re.compile(
+    r"\b(?P<lead>(?:she|he|they|we|i)(?:'s|\u2019s|'ve| has| have| had|'d)? been out|(?:she|he|"
+    r"they|we|i)(?:'s|\u2019s| is| was| were|'re| are|'m| am) (?:still )?out) on the "
+    r"(?:water|sea|river)\b",
+    _F,
+)
+
+
+def _on_the_water37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): 'out on the water' above said as 'out afloat' (what the person has been
+    doing), when what is left reads."""
+    if "out on the" not in text.lower():
+        return text
+    out = _ON_THE_WATER37S.sub(lambda m: f"{m['lead']} afloat", text)
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a person said to have gone without a meal or sleep, closing the request ("…, and the visitor
+# would like that banana, she's had no breakfast."): why, a state; session 21's reasons hold
+# back every 'no' (it could say someone gets none)
+_HAD_NO37S = re.compile(
+    r"\s*,\s*(?:(?:and|as|because|cos|since|poor thing)\s+)?(?P<pro>she|he)(?:'s|\u2019s| has)"
+    r" (?:had|eaten) (?:no|nothing for) (?:breakfast|lunch|dinner|tea|supper|brunch|food|sleep|"
+    r"break|coffee)(?: (?:yet|today|all day|this morning|since [a-z]+))?(?P<end>\s*[.!?]?)\s*$",
+    _F,
+)
+
+
+def _had_no37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the closing state above taken off when the request before it reads
+    and every person it names that the he / she may be (a title, kin word or first name of the
+    other sex rules them out) gets something: whoever it is, the reading is the same."""
+    m = _HAD_NO37S.search(text)
+    if m is None:
+        return text
+    rest = text[: m.start()] + m["end"].strip()
+    node = _reading(rest, lexicon)
+    if node is None:
+        return text
+    sex = PRONOUN_SEX.get(m["pro"].lower())
+    named = {p for p in _ids(rest, lexicon, "human") if said_sex35s(p, lexicon) in (None, sex)}
+    given = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not named or not named <= given:
+        return text
+    return rest
+
+
+# 'something to eat / drink' with one of them left out ("Give Person A something to eat, but not
+# the apple, she's allergic."): the scene's snacks (drinks) but that one
+_TO_EAT37S = re.compile(
+    r"\bsomething (?P<what>to eat|to nibble|to snack on|to drink)\s*,?\s*(?:but |just |only )?not "
+    r"(?P<x>the [a-z' -]+?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _to_eat37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the phrase above is the one object of the kind left ('the chips'), or
+    a choice of those left ('one of the cup or the bottle'), when the object left out is one of
+    the scene's of that kind (KIND_CATEGORIES: snacks for eating, drinks for drinking), and what
+    is left reads."""
+    m = _TO_EAT37S.search(text)
+    if m is None or not _only(m["x"], lexicon, "object"):
+        return text
+    kind = KIND_CATEGORIES["drinks" if m["what"].lower() == "to drink" else "snacks"]
+    out_id = next(iter(_ids(m["x"], lexicon, "object")))
+    of_kind = [o for o in lexicon.scene.objects if o.category in kind]
+    if out_id not in {o.id for o in of_kind}:
+        return text
+    left = [o for o in of_kind if o.id != out_id]
+    names = [f"the {o.aliases[0] if o.aliases else o.id.replace('_', ' ')}" for o in left]
+    if not left or not all(_only(n, lexicon, "object") for n in names):
+        return text
+    said = names[0] if len(names) == 1 else "one of " + ", ".join(names[:-1]) + " or " + names[-1]
+    out = f"{text[: m.start()]}{said}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# two people, then two objects 'for one' and 'for (the) other' ("Person A and Person B each one
+# drink, bottle for one, cup for other, any way also can."): one each, either way round
+_ONE_OTHER37S = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?)(?: (?:each|both))?(?: (?:get|have|want|"
+    r"need|gets|has))?(?: one [a-z]+(?: each)?)?\s*[,:;]\s*(?P<x>(?:the )?[a-z' -]+?) for one\s*,?"
+    r"\s*(?:and )?(?P<y>(?:the )?[a-z' -]+?) for (?:the )?other(?: one)?"
+    r"(?:\s*,\s*(?:either way|any way|anyway|whichever way|either way round|any which way)"
+    r"(?: (?:is fine|is ok|is okay|also can|can|works|will do|round))?)?\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _one_other37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the shape above is 'Either P gets X and Q Y, or P gets Y and Q X' (the
+    grammar's choice of the two pairings), when P and Q are two people, X and Y two objects of
+    the scene (said by a name of one object each), and what is left reads."""
+    m = _ONE_OTHER37S.match(text.strip())
+    if m is None:
+        return text
+    p, q = m["p"].strip(), m["q"].strip()
+    x, y = (w.strip() for w in (m["x"], m["y"]))
+    x, y = (w if w.lower().startswith("the ") else f"the {w}" for w in (x, y))
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon):
+        return text
+    if not (_only(x, lexicon, "object") and _only(y, lexicon, "object")):
+        return text
+    if _ids(x, lexicon) == _ids(y, lexicon):
+        return text
+    out = f"Either {p} gets {x} and {q} {y}, or {p} gets {y} and {q} {x}."
+    return out if _reading(out, lexicon) is not None else text
+
+
+# the object fronted, then 'you <verb>' ("That bottle, you bring for her, please."): the order
+# said with the object first, as 'Bring that bottle for her'
+_FRONTED_YOU37S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?P<x>(?:that|this|the) [a-z' -]+?), you (?:can |could |please )?"
+    r"(?P<verb>bring|give|take|hand|pass|carry|put) (?P<rest>(?:for|to|over to|on|in|onto|into)"
+    r" [^,.;!?]+)",
+    _F,
+)
+# a person named, then a he / she saying their state ("Person A, she is very thirsty from
+# walking, …"): said of that person
+_NAMED_STATE37S = re.compile(
+    r"(?:^|(?<=[.!?] ))(?P<p>[A-Z][\w]*(?: [A-Z][\w]*)?), (?P<pro>she|he) (?P<be>is|was|'s)\b",
+    _F,
+)
+
+
+def _fronted_you37s(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12s): the fronted object above said as an order ('Bring that bottle for her')
+    when it is one object of the scene, and a person said before a he / she of their state (above)
+    as the state's subject when the pronoun may be them (a title, kin word or first name of the
+    other sex rules them out); taken when what is left reads."""
+    out = text
+    m = _FRONTED_YOU37S.search(out)
+    if m is not None and _only("the " + m["x"].split(" ", 1)[1], lexicon, "object"):
+        verb = m["verb"][:1].upper() + m["verb"][1:]
+        out = f"{out[: m.start()]}{verb} {m['x']} {m['rest']}{out[m.end() :]}"
+    n = _NAMED_STATE37S.search(out)
+    if n is not None and _only_person(n["p"], lexicon):
+        who = next(iter(_ids(n["p"], lexicon, "human")))
+        if said_sex35s(who, lexicon) in (None, PRONOUN_SEX.get(n["pro"].lower())):
+            be = "is" if n["be"] == "'s" else n["be"]
+            out = f"{out[: n.start()]}{n['p']} {be}{out[n.end() :]}"
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+_STEPS37S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _fronted_you37s,
+    _one_other37s,
+    _to_eat37s,
+    _had_no37s,
+    _on_the_water37s,
+    _hyphen_time37s,
+    _got_count37s,
+    _pardon37s,
+    _little_one37s,
+    _name_unknown37s,
+    _owner_then37s,
+    _sitting37s,
+    _task_had37s,
+    _sort_out37s,
+    _ordeal37s,
+    _only_role37s,
+    _says_needs37s,
+    _once_there37s,
+)
+# (first: the later rewrites look for the object's name as the scene says it)
+_STEPS37S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_sized37s,)
+
+
 _STEPS35S: tuple[Callable[[str, Lexicon], str], ...] = (
     _worked_on35s,
     _when_talked35s,
@@ -29778,6 +30394,8 @@ _STEPS37: tuple[Callable[[str, Lexicon], str], ...] = (
 _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 36 (12): an apostrophe dropped (asked of the text as said)
     *_STEPS36_FIRST,
+    # session 37 (12s): a size said with '-sized' (first: what follows looks for the name)
+    *_STEPS37S_FIRST,
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
@@ -29810,6 +30428,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS35S,
     # session 36 (12s): blind21's kinds
     *_STEPS36S,
+    # session 37 (12s): blind21 and blind22's kinds
+    *_STEPS37S,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,

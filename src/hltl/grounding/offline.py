@@ -117,6 +117,7 @@ def parse_instruction(
             _kind_fits35s(text, lexicon)
             _named_other_sex34s(text, node, lexicon)
             _use_said36s(text, node, lexicon)
+            _away_till37s(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
@@ -125,6 +126,7 @@ def parse_instruction(
                 for m in (
                     _more_readings29(text, refused, lexicon),
                     _more_readings33s(text, refused, lexicon),
+                    _more_readings37s(text, refused, lexicon),
                 )
                 if m
             )
@@ -335,6 +337,51 @@ _ONE_OF_THE33S = re.compile(
 _ONE_OF_THEM_GETS33S = re.compile(
     r"\bone of them (?:gets|wants|needs|can have|should get|is getting|is having)\b", re.I
 )
+
+
+def _more_readings37s(text: str, refused: GroundingError, lexicon: Lexicon) -> str:
+    """Session 37 (12s): a refusal of a request whose recipient is corrected and left open
+    ("The chips to Person A, or no, Person B, hmm, maybe Person A after all, I'm not sure.",
+    "The blue blanket to Mr Lee, no, to the other patient, no, wait, I've lost track of who
+    asked.": blind21/22's refusals without their readings) names the people the corrections go
+    between: each person named, and for 'the other <title>' everyone of that title. A person
+    named before a correction and one after it, and the speaker's doubt said ('not sure', 'lost
+    track', 'maybe'); '' when the refusal names them already."""
+    said = str(refused)
+    if not (_DOUBT.search(text) or re.search(r"\b(?:maybe|perhaps|or was it)\b", text, re.I)):
+        return ""  # nothing said leaves it open: the refusal is the grammar's alone
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return ""
+    marks = [
+        k
+        for k, x in enumerate(items)
+        if _is(x, "correct")
+        or (x.lemma == "not" and x.text.lower() == "no" and k > 0 and _is(items[k - 1], ","))
+    ]
+    if not marks:
+        return ""
+    people: list[str] = []
+    before = after = False
+    for k, x in enumerate(items):
+        if x.kind != "ent" or not all(r.kind == "human" for r in x.refs):
+            continue
+        ids = [r.id for r in x.refs]
+        if len(ids) > 1 and not (k > 0 and items[k - 1].text.lower() == "other"):
+            return ""  # a name of several people: _unclear_names says which
+        people += ids
+        before = before or k < marks[0]
+        after = after or k > marks[0]
+    people = list(dict.fromkeys(people))
+    if not (before and after) or len(people) < 2:
+        return ""
+    names = [person_name(p, lexicon) for p in sorted(people)]
+    if (all(p in said for p in sorted(people)) and _readings(refused)) or _unclear_names(
+        text, lexicon
+    ):
+        return ""  # (an object of several: its readings are what the refusal must name)
+    return f"the corrections leave open who gets it: it could be {' or '.join(names)}"
 
 
 def _more_readings33s(text: str, refused: GroundingError, lexicon: Lexicon) -> str:
@@ -551,6 +598,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _other_after_repair33s(text, lexicon)
         _them_after_choice33s(text, lexicon)
         _doer_said34s(text, lexicon)
+        _spoken_to37s(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -1230,6 +1278,65 @@ def _doer_said34s(text: str, lexicon: Lexicon) -> None:
                 )
 
 
+# words between a list of objects and its verb that leave the verb's number unsaid or say the
+# list is its subject ("the tape and the scanner should go", "… both go")
+_BEFORE_VERB37S = frozenset({"both", "all", "each"})
+
+
+def _spoken_to37s(text: str, lexicon: Lexicon) -> None:
+    """Session 37 (12s): 'Tom, the tape and the scanner go on the pallet.': a person's name set
+    off by a comma opening a sentence, then two or more objects and a plural 'go' / 'belong'
+    (or one after a modal or 'both'). The plural verb makes the objects its subject, so the
+    name is someone spoken to (the robots are not: is it that person's to do?); the grammar had
+    read the telegraphic 'Tom, the tape' (tape>B and the scanner on the pallet), which the verb's
+    number speaks against. Refused naming both readings. 'Tom, the tape; the scanner goes on
+    the pallet' (the singular 'goes' agrees with the scanner alone) and 'Tom, the tape and the
+    scanner.' (no verb) read as before."""
+    if "," not in text:
+        return
+    try:
+        items = [it for it in lex(text, lexicon) if not _is(it, "filler")]
+    except GroundingError:
+        return
+    sentence: list[Item] = []
+    for it in [*items, None]:
+        if it is not None and not (it.kind == "punct" and it.lemma in (".", "!", "?", ";", ":")):
+            sentence.append(it)
+            continue
+        said, sentence = sentence, []
+        if not (
+            len(said) > 4
+            and said[0].kind == "ent"
+            and len({r.id for r in said[0].refs}) == 1
+            and said[0].refs[0].kind == "human"
+            and _is(said[1], ",")
+        ):
+            continue
+        k, objects = 2, []
+        while k < len(said) and (_objects_only32s(said[k]) or _is(said[k], "det", "and", ",")):
+            if _objects_only32s(said[k]):
+                objects.append(said[k])
+            k += 1
+        if len(objects) < 2 or not any(_is(x, "and") for x in said[2:k]):
+            continue
+        while k < len(said) and (_is(said[k], "aux") or said[k].text.lower() in _BEFORE_VERB37S):
+            k += 1
+        if k >= len(said) or said[k].lemma not in ("verb:go", "verb:belong"):
+            continue
+        verb = said[k]
+        if verb.text.lower() not in ("go", "belong") and not _is(said[k - 1], "aux"):
+            continue  # 'goes', 'belongs': the verb agrees with the last object alone
+        who = said[0].refs[0].id
+        first = ", ".join(r.id for r in objects[0].refs)
+        rest = " and ".join(r.id for x in objects for r in x.refs)
+        raise GroundingError(
+            f"{said[0].text!r} before {_text(said[2 : k + 1]).strip()!r}: {said[0].text} may be "
+            f"spoken to (the {verb.text!r} has {rest} as its subject: is it for {who} to do?) or "
+            f"get {first} ({first}>{who}, the rest {verb.text} …): say who gets what, or say it "
+            "to the robots"
+        )
+
+
 def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
     """Session 33 (12s): 'Whichever you can reach first, the cup or the apple, hand them to
     Person A.': a 'them' whose nearest objects before it are a choice ('the cup or the apple')
@@ -1418,9 +1525,12 @@ _DEFERRED = re.compile(
 
 
 # the speaker saying they are unsure of what they ask
+# (session 37, 12s: not knowing a person's name is no doubt about what to do: "…, I don't know
+# the other one's name")
+_NAME37S = r" (?:his|her|their|the other (?:one|person|guy|lady|man|woman)'s) names?\b"
 _DOUBT = re.compile(
-    r"\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know|dunno|no idea|"
-    r"(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)|"
+    rf"\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know(?!{_NAME37S})|"
+    rf"dunno|no idea|(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)(?!{_NAME37S})|"
     # session 32: 'before I forget' is no doubt (the speaker remembers now)
     r"(?<!\bbefore )i forget|i forgot|"
     r"lost track)\b",
@@ -4179,3 +4289,61 @@ def _use_said36s(text: str, node: Node, lexicon: Lexicon) -> None:
                     f"it goes to {where}: either leave it with them (or hand it to them), or "
                     f"move it to {where} anyway; say which"
                 )
+
+
+# a person said to come (back) at a later time ("…, he's back at six", "…, Tom gets in at nine",
+# "…, she's due in after lunch"): away until then
+_NUMBERS37S = (
+    r"(?:\d{1,2}(?:[:.]\d\d)?(?:\s*[ap]\.?m\.?)?|one|two|three|four|five|six|seven|eight|nine|"
+    r"ten|eleven|twelve|noon|midday|midnight|half(?: past)? \w+|quarter (?:past|to) \w+)"
+)
+_AWAY_TILL37S = re.compile(
+    r"(?:^|[,;.!?]\s*|\s-\s)(?:(?:as|since|because|cos|and|but|so)\s+)?"
+    r"(?P<who>[A-Za-z][\w.]*(?: [A-Z]\w*)?)"
+    r"(?:(?:'s|\u2019s| is|'ll be|\u2019ll be| will be| should be| won't be| isn't)"
+    r" (?:only |not )?(?:back|in|here|due(?: back| in| here)?|arriving|coming(?: back| in)?)"
+    r"| (?:gets|comes|walks) (?:back|in|here)| (?:arrives|turns up|shows up|lands))"
+    rf"(?P<when> (?:(?:at|around|about|after|from|till|until|by) (?:{_NUMBERS37S}\b|"
+    r"lunch|dinner|tea|breakfast|the break)|in (?:the )?(?:morning|afternoon|evening|an hour|"
+    r"half an hour|a bit|a while|\w+ minutes|\w+ hours)|tonight|tomorrow|later|this "
+    r"(?:morning|afternoon|evening)|on \w+day))\b",
+    re.I,
+)
+
+
+def _away_till37s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 37 (12s): 'give bob the cup, he's back at six', 'tom needs the scanner, he's in
+    at nine': a remark that the person who gets something comes (back) at a later time says they
+    are away until then; the handover waits on their coming, an outside event (blind34's time
+    rule), or is to be done now for them to find (the remark had been taken off: cup>B). Refused
+    naming both. Said of someone who gets nothing ('give bob the cup, alice finishes at six',
+    '…, alice is back at six') it is the speaker's context, read as now; so is a time the
+    person is busy or done at ('he finishes at six', 'he's on at six': doing it now meets it),
+    and 'he's back' with no time (here again)."""
+    if not any(w in text.lower() for w in ("back", " in ", " here", "due", "arriv", " up", "land")):
+        return
+    given = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not given:
+        return
+    for m in _AWAY_TILL37S.finditer(text):
+        if m["when"].lower().startswith((" till", " until")) and not re.search(
+            r"\bnot\b|n't\b", m[0], re.I
+        ):
+            continue  # 'he's in till six' is here now, until then
+        who = m["who"].lower()
+        if who in ("i", "we", "you", "it", "that", "this", "there", "what", "which"):
+            continue
+        if who in ("he", "she", "they"):
+            sex = PRONOUN_SEX.get(who)
+            person = {p for p in given if said_sex35s(p, lexicon) in (None, sex)}
+        else:
+            person = people_named(m["who"], lexicon) & given
+        if not person:
+            continue
+        names = " or ".join(person_name(p, lexicon) for p in sorted(person))
+        raise GroundingError(
+            f"{m.group(0).strip(' ,;.!?-')!r} says {names} comes later ({m['when'].strip()}): "
+            "give it now, for "
+            f"them to find, or wait until they come? the cell acts now, so say the request when "
+            "it is to be done"
+        )

@@ -380,6 +380,8 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
             break
     bare = all(_objects(x) or _is(x, "det", "and", "or", ",", "filler") for x in head)
     if bare and any(_objects(x) for x in head):
+        if _heading37l(head, rest[stop + 1 :] if stop is not None else []):
+            return []
         if len(people) != 1:
             raise GroundingError(
                 f"who gets {_words_of(head)!r}? the remark before it names "
@@ -395,6 +397,16 @@ def _addressed(remark: list[Item], rest: list[Item]) -> list[Item]:
             f"{_words_of(sent)!r} does not say who gets what: say 'give <person> …'"
         )
     return []
+
+
+def _heading37l(head: list[Item], after: list[Item]) -> bool:
+    """Session 37 (lead): "Zoe is thirsty. Books. Red one to Zoe." — objects alone after a
+    remark, then a later sentence that names one of those objects again ('Red one': a book):
+    the objects alone are a heading the later sentence picks from, not what the remark's
+    person gets (it had read both books to Zoe, where "Books. Red one to Zoe." reads the red
+    book alone). The remark then only goes."""
+    said = {r.id for x in head if _objects(x) for r in x.refs}
+    return any(_objects(x) and said & {r.id for r in x.refs} for x in after)
 
 
 def _named_after32s(person: Item, head: list[Item], after: list[Item]) -> None:
@@ -1663,6 +1675,10 @@ def _both_of_two31r(items: list[Item], k: int, j: int) -> bool:
     )
 
 
+# the sounds of a speaker hesitating (no word of repair: "er", not "sorry")
+_HESITATIONS37S = frozenset({"er", "erm", "um", "umm", "uh", "uhm", "hmm", "ah"})
+
+
 def _one_of_list31r(items: list[Item], k: int, j: int) -> tuple[Item, int] | None:
     """Session 31 (12r): 'one of / any one of / either of the cup, the apple and the bottle' (a
     chooser with 'of', then a list of names of one object each): one of the listed objects, a
@@ -1686,6 +1702,18 @@ def _one_of_list31r(items: list[Item], k: int, j: int) -> tuple[Item, int] | Non
         m = n
         if _is(items[m], ","):
             m += 1
+            # session 37 (12s): 'one of the cup or the chips, er, the apple': a list said
+            # haltingly goes on past the hesitation, as it does without it (it had been read as
+            # the choice and the apple too; the lexer leaves 'er' as a second comma)
+            if m < len(items) and _is(items[m], ","):
+                m += 1
+            elif (
+                m + 1 < len(items)
+                and _is(items[m], "filler")
+                and items[m].text.lower() in _HESITATIONS37S
+                and _is(items[m + 1], ",")
+            ):
+                m += 2
         if m < len(items) and _is(items[m], "and", "or"):
             m += 1
         if m == n:
@@ -2166,6 +2194,7 @@ def _apply_correction(
     if not alike:
         raise GroundingError(f"cannot tell what {new.text!r} after {marker.text!r} corrects")
     k = alike[-1]  # the last name of the same kind is what the correction replaces
+    _choice_repaired37s(before, k, new, marker)
     first = k
     if k > start and len(before[k].refs) > 1 and _is(before[k - 1], "both"):
         # "Both mugs to Alice, sorry, just the blue one / the cup": what replaces the two takes
@@ -2173,6 +2202,55 @@ def _apply_correction(
         # 'the red mug and the blue mug …' then replaced the blue one alone)
         first = k - 1
     return [*before[:first], new, *before[k + 1 :], *after[r + 1 :]]
+
+
+def _choice_repaired37s(before: list[Item], k: int, new: Item, marker: Item) -> None:
+    """Session 37 (12s): a correction of a later name of a choice ('One of the cup or the chips,
+    er, I mean the apple for Person A', 'Give Bob the cup or the chips, sorry, the apple', 'the
+    cup to Alice or Bob, I mean Carol'): it could replace the last name only, the earlier ones
+    kept (the cup or the apple), or the whole choice, the speaker settling on one (the apple).
+    'One of …' had read the latter, a plain 'or' the former: refused, naming both. A correction
+    of a choice's first name ('the chips, er, the cup or the apple'), of a list with 'and', or
+    one that keeps the same whichever it replaces, reads as before."""
+    fixed = before[k]
+    earlier: list[str] = []
+    last: str
+    if (
+        fixed.quant == "some"
+        and len(fixed.refs) > 1
+        and any(w in f" {fixed.text.lower()} " for w in (",", " or ", " and "))
+    ):
+        # 'one of the cup, the chips' (phrasing._one_of_list31r): the choice said as one name
+        *head, tail = list(dict.fromkeys(r.id for r in fixed.refs))
+        earlier, last = head, tail
+    else:
+        m = _past_dets_back(before, k)
+        if not (m > 1 and _is(before[m - 1], "or")):
+            return
+        kinds = {r.kind for r in new.refs}
+        n = m - 1
+        while n > 0 and _is(before[n - 1], ","):
+            n -= 1
+        while (
+            n > 0 and (prev := before[n - 1]).kind == "ent" and {r.kind for r in prev.refs} <= kinds
+        ):
+            earlier[:0] = [r.id for r in prev.refs]
+            n = _past_dets_back(before, n - 1)
+            if not (n > 0 and _is(before[n - 1], ",", "or")):
+                break
+            n -= 1
+        if not earlier:
+            return
+        last = ", ".join(r.id for r in fixed.refs)
+    said = [r.id for r in new.refs]
+    if set(earlier) <= set(said):
+        return  # both readings are the same choice
+    raise GroundingError(
+        f"{marker.text!r} inside a choice of {', '.join([*earlier, last])}: {new.text!r} could "
+        f"replace {last} only ({', '.join(earlier)} kept: one of "
+        f"{', '.join(dict.fromkeys([*earlier, *said]))}) or the whole choice "
+        f"({', '.join(earlier)} dropped): say the whole request again"
+    )
 
 
 def _one_meant32l(pronoun: Item, marker: Item, moved: list[Item], taken: list[Item]) -> None:
