@@ -140,8 +140,6 @@ KNOWN_MISSES = frozenset(
         'be tuning this thing for another hour.',
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
         'for her.',
-        "Leave the chips be, it's only the bottle Person A wants, the dog's had enough treats "
-        'anyway.',
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
         'interval.',
         # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both

@@ -133,6 +133,20 @@ test_choices = CASES.test(
     ),
     ("A globe apiece for Noah and Zoe, I don't care who ends up with which.", None, CLASSROOM),
     ("A book apiece for Noah, I don't care who ends up with which.", None, CLASSROOM),
+    # "A K each for the <role>s"
+    (
+        "A blanket each for the patients.",
+        "(blanket_blue>B & blanket_grey>C) | (blanket_grey>B & blanket_blue>C)",
+        WARD,
+    ),
+    (
+        "A book apiece for the students.",
+        "(book_red>B & book_green>C) | (book_green>B & book_red>C)",
+        CLASSROOM,
+    ),
+    ("A jug each for the patients.", None, WARD),  # one jug
+    ("A blanket each for the nurses.", None, WARD),  # one nurse
+    ("A cup each for the visitors.", None, LAB),
     # "P can have a K, she won't mind if it's the A or the B"
     (
         "Ava can have a block, she won't mind if it's the green or the red.",
@@ -285,6 +299,10 @@ test_negation = CASES.test(
     # "Leave X, P only wants Y"
     ("Leave the hammer, Jess only wants the drill.", "drill>B", WORKSHOP),
     ("Leave the crisps, Bob just wants the bottle.", "bottle>B", FIG1),
+    ("Leave the drill alone, it's only the torch that Kofi needs.", "torch>A", WORKSHOP),
+    ("Leave the drill be, it's only the torch Jess wants, she's up a ladder.", "torch>B", WORKSHOP),
+    ("Leave the drill be, it's only the drill Jess wants.", None, WORKSHOP),
+    ("Leave the drill be, it's only the torch Person Q wants.", None, WORKSHOP),
     ("Leave the drill, Jess only wants the drill.", None, WORKSHOP),
     ("Leave the drill, Jess only wants the pear.", None, WORKSHOP),
     ("Leave the drill.", None, WORKSHOP),
@@ -324,6 +342,19 @@ test_corrections = CASES.test(
     ("Bib on the mat, or no, the teddy goes there.", "teddy@mat", NURSERY),
     ("Bib to Lily, or no, the teddy goes there.", None, NURSERY),  # 'there' not a person
     ("Bib on the mat, or no, the pear goes there.", None, NURSERY),
+    # "she wanted the Y", "it goes on the T", "it goes to Q" after a cue
+    ("Give Person A the cup, no, sorry, she wanted the apple.", "apple>A", SQ),
+    ("Give Mr Lee the jug, no, sorry, she wanted the magazine.", None, WARD),  # 'she' not Mr Lee
+    ("Give Person A the cup and Person B the chips, no, she wanted the apple.", None, SQ),
+    ("Give Person A the cup, sorry, she wants the apple too.", None, SQ),
+    ("Cup on the shelf, or no, it goes on the table.", "cup@table", CELL),
+    ("Cup on the shelf, or no, it goes on the floor.", None, CELL),
+    ("Cup and apple on the shelf, or no, it goes on the table.", None, CELL),
+    # ", or was it Q, yes, Q"
+    ("Give the apple to Person B, or was it Person A, yes, Person A.", "apple>A", SQ),
+    ("Give Sam the stapler, or was it the notepad, yes, the notepad.", "notebook>B", OFFICE),
+    ("Give the apple to Person B, or was it Person A, yes, Person B.", None, SQ),
+    ("Give Sam the stapler, or was it the pen, yes, the pen.", None, OFFICE),  # three pens
     # an object the scene lacks corrected to one it has
     ("Pear to Person A, no, sorry, I meant to say the bottle.", "bottle>A", T12),
     ("The pear for Person B, sorry, I mean the chips.", "chips>B", DUO),

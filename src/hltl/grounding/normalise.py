@@ -29486,19 +29486,27 @@ def _none_of37r(text: str, _lexicon: Lexicon) -> str:
 
 # "Leave the drill, Kofi only wants the torch."
 _LEAVE_ONLY37R = re.compile(
-    r"^leave (?P<x>the [a-z]+(?: [a-z]+)?)(?: (?:be|alone|where it is))?,\s*(?P<p>[a-z][\w ]*?) "
-    r"(?P<o>only|just) (?P<v>wants|needs) (?P<y>the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.!]|$))",
+    r"^leave (?P<x>the [a-z]+(?: [a-z]+)??)(?: (?:be|alone|where it is))?,\s*(?:"
+    r"(?P<p>[a-z][\w ]*?) (?P<o>only|just) (?P<v>wants|needs) (?P<y>the [a-z]+(?: [a-z]+)?)|"
+    r"it(?:'s| is) (?P<o2>only|just) (?P<y2>the [a-z]+(?: [a-z]+)??) (?:that )?"
+    r"(?P<p2>[a-z][\w ]*?) (?P<v2>wants|needs))(?=\s*(?:[,.!]|$))",
     _F,
 )
 
 
 def _leave_only37r(text: str, lexicon: Lexicon) -> str:
-    """Session 37 (12r): "Leave the drill, Kofi only wants the torch" is "Kofi only wants the
-    torch, not the drill" (one person, two whole objects, each another)."""
+    """Session 37 (12r): "Leave the drill, Kofi only wants the torch" and "Leave the chips be,
+    it's only the bottle Person A wants" are "Kofi only wants the torch, not the drill" (one
+    person, two whole objects, each another)."""
     m = _LEAVE_ONLY37R.match(text)
-    if m is None or not _only_person(m["p"], lexicon) or not _objects34r(lexicon, m["x"], m["y"]):
+    if m is None:
         return text
-    return f"{m['p']} {m['o']} {m['v']} {m['y']}, not {m['x']}{text[m.end() :]}"
+    p, o, v, y = (
+        (m["p"], m["o"], m["v"], m["y"]) if m["p"] else (m["p2"], m["o2"], m["v2"], m["y2"])
+    )
+    if not _only_person(p, lexicon) or not _objects34r(lexicon, m["x"], y):
+        return text
+    return f"{p} {o.lower()} {v} {y}, not {m['x']}{text[m.end() :]}"
 
 
 # -- corrections: the corrected words said again in a clause ------------------------------------
@@ -29515,7 +29523,10 @@ _RESTATED37R = re.compile(
     r"(?P<pro2>it's|it is|they're|they are) for (?P<p2>[a-z][\w ]*?)|"
     r"(?P<p3>[a-z][\w ]*?) (?:gets|should get|should have|is having|'s having) (?:it|them)|"
     r"(?P<x1>the [a-z]+(?: [a-z]+)?) (?:goes|should go|belongs) there|"
-    r"it was (?P<x2>the [a-z]+(?: [a-z]+)?) (?P<pro>he|she) (?:asked (?:me )?for|wanted|meant))"
+    r"it (?:goes|should go|belongs) (?:on|in|onto|into) (?P<s1>the [a-z]+(?: [a-z]+)?)|"
+    r"it was (?P<x2>the [a-z]+(?: [a-z]+)?) (?P<pro>he|she) (?:asked (?:me )?for|wanted|meant)|"
+    r"(?P<pro3>he|she) (?:wanted|wants|asked (?:me )?for|meant|needs|needed|was after) "
+    r"(?P<x3>the [a-z]+(?: [a-z]+)?))"
     r"(?=\s*(?:[,.!]|$))",
     _F,
 )
@@ -29523,11 +29534,13 @@ _RESTATED37R = re.compile(
 
 def _restated37r(text: str, lexicon: Lexicon) -> str:
     """Session 37 (12r): after a correction cue ("no", "oh dear, my mistake", "or no, wait",
-    "No, correction", "what am I saying"), the person or object corrected to said again in a
-    clause ("it should be Person B", "they're for Person B", "Person A gets it", "the bib goes
-    there", "it was the apple he asked me for") is ", no, <it>": one request before the cue
-    (one person for 'it was … he asked for', that person one the pronoun may be; a surface for
-    'goes there'; "there's no P here" only of a person said before whom the scene lacks)."""
+    "No, correction", "what am I saying"), the person, object or surface corrected to said again
+    in a clause ("it should be Person B", "they're for Person B", "Person A gets it", "the bib
+    goes there", "it goes on the table", "it was the apple he asked me for", "she wanted the
+    apple") is ", no, <it>": one request before the cue (one person for 'it was …
+    he asked for' and 'she wanted …', that person one the pronoun may be; a surface before for
+    'goes there', and one object for 'it goes on …'; "there's no P here" only of a person said
+    before whom the scene lacks)."""
     m = _RESTATED37R.search(text)
     if m is None:
         return text
@@ -29551,13 +29564,20 @@ def _restated37r(text: str, lexicon: Lexicon) -> str:
         if not _whole_name(m["x1"], lexicon, "object") or not _ids(before, lexicon, "surface"):
             return text
         said = m["x1"]
+    elif m["s1"] is not None:
+        if not _whole_name(m["s1"], lexicon, "surface") or not _ids(before, lexicon, "surface"):
+            return text
+        if len(_ids(before, lexicon, "object")) != 1:
+            return text
+        said = m["s1"]
     else:
         people = _ids(before, lexicon, "human")
-        if not _whole_name(m["x2"], lexicon, "object") or len(people) != 1:
+        x, pro = (m["x2"], m["pro"]) if m["x2"] else (m["x3"], m["pro3"])
+        if not _whole_name(x, lexicon, "object") or len(people) != 1:
             return text
-        if not _may_be35t(next(iter(people)), m["pro"], lexicon):
+        if not _may_be35t(next(iter(people)), pro, lexicon):
             return text
-        said = m["x2"]
+        said = x
     return f"{before}, no, {said}{text[m.end() :]}"
 
 
@@ -29592,6 +29612,40 @@ def _number_fits37r(pronoun: str, before: str, lexicon: Lexicon) -> bool:
     said = [it.text for it in _names(before, lexicon) if it.refs[0].kind == "object"]
     plural = len(said) > 1 or (len(said) == 1 and said[0].lower().endswith("s"))
     return bool(said) and plural == pronoun.lower().startswith("they")
+
+
+# "Give the apple to Person B, or was it Person A, yes, Person A."
+_OR_WAS_IT37R = re.compile(
+    r",\s*or was it (?P<a>[a-z][\w ]*?),\s*yes,\s*(?P<b>[a-z][\w ]*?)(?=\s*(?:[,.!]|$))", _F
+)
+
+
+def _or_was_it37r(text: str, _lexicon: Lexicon) -> str:
+    """Session 37 (12r): ", or was it Person A, yes, Person A" is the speaker asking themself and
+    answering: ", no, Person A" (the same words both times; else left)."""
+    m = _OR_WAS_IT37R.search(text)
+    if m is None or m["a"].lower() != m["b"].lower():
+        return text
+    return f"{text[: m.start()]}, no, {m['b']}{text[m.end() :]}"
+
+
+# "A blanket each for the patients."
+_EACH_FOR_ROLE37R = re.compile(
+    r"^(?:a|one) (?P<k>[a-z]+) (?:each|apiece) for the (?P<role>[a-z]+?)s(?=\s*(?:[,.!]|$))", _F
+)
+
+
+def _each_for_role37r(text: str, lexicon: Lexicon) -> str:
+    """Session 37 (12r): "A blanket each for the patients" is "Each patient gets a blanket" (two
+    or more people of the scene have that role; the grammar then checks the count)."""
+    m = _EACH_FOR_ROLE37R.match(text)
+    if m is None:
+        return text
+    role = m["role"].lower()
+    holders = [h for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)]
+    if len(holders) < 2:
+        return text
+    return f"Each {role} gets a {m['k']}{text[m.end() :]}"
 
 
 # "Bottle to Person A and chips to Person B, no, the other way about."
@@ -29644,6 +29698,8 @@ _STEPS37R: tuple[Callable[[str, Lexicon], str], ...] = (
     _leave_only37r,
     _restated37r,
     _unknown_corrected37r,
+    _or_was_it37r,
+    _each_for_role37r,
     _way_about37r,
     _hang_about37r,
 )
