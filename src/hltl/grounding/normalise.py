@@ -14846,6 +14846,11 @@ def _names_verb34l(after: str) -> bool:
     )
 
 
+# a cue closing a correction, said of it ('…, no, the apple, my mistake'): one list for the
+# three places _corrections19 takes it off
+_CLOSING_CUE = r"(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)"
+
+
 def _corrections19(text: str, lexicon: Lexicon) -> str:
     out = _sub(r"(?:^|(?<=[.!?]))\s*(?:sorry|so sorry|apologies)\s*[.!]+\s*", " ", text).strip()
     out = _sub(r"^(?:sorry|so sorry|apologies)\s*,\s*(?=[a-z])", "", out).strip()
@@ -14853,7 +14858,7 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
     # a cue after the correction ('…, my mistake, folks'): said of what came before it
     out = _sub(
         # session 34 (12s): the word of address with 'my' and no comma ('my mistake my friend')
-        r"(,\s*no,[^,]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)"
+        rf"(,\s*no,[^,]+?),\s*{_CLOSING_CUE}"
         r"(?:,\s*([a-z]+)|,?\s+my\s+([a-z]+))?"
         r"\s*([.!]?)$",
         lambda m: (
@@ -14868,7 +14873,7 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
     # chips."): said of the repair before it, not a correction of everything before the next
     # sentence (12c's fuzz: it had dropped the apple)
     out = _sub(
-        r"(,\s*no,[^,.!?;]+?),\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)\s*([.!])"
+        rf"(,\s*no,[^,.!?;]+?),\s*{_CLOSING_CUE}\s*([.!])"
         r"(?=\s+\S)",
         r"\1\2",
         out,
@@ -14913,7 +14918,7 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
                 after = f"{instead.group(1)} {instead.group(2)} the {obj} instead{instead.group(3)}"
             out = f"{before}, no, {after}"
             out = _sub(
-                r",\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\s*([a-z]+))?"
+                rf",\s*{_CLOSING_CUE}(?:,\s*([a-z]+))?"
                 r"\s*([.!]?)$",
                 lambda m: m.group(0) if _repairs_to32l(m.group(1), lexicon) else m.group(2),
                 out,
@@ -25040,9 +25045,7 @@ def _one_other37s(text: str, lexicon: Lexicon) -> str:
     p, q = m["p"].strip(), m["q"].strip()
     x, y = (w.strip() for w in (m["x"], m["y"]))
     x, y = (w if w.lower().startswith("the ") else f"the {w}" for w in (x, y))
-    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
-        return text
-    if _ids(p, lexicon) == _ids(q, lexicon):
+    if not _persons34r(lexicon, p, q):
         return text
     if not (_only(x, lexicon, "object") and _only(y, lexicon, "object")):
         return text
