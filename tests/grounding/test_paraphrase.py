@@ -173,6 +173,84 @@ KNOWN_MISSES = frozenset(
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         "Alice and Bob each get something: she's having the chips, he's having the bottle.",
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
+        # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
+        "Morning, love. If it's no bother, the blue mug up on the shelf, please, the caterer "
+        'wants a tidy counter.',
+        'I hate to nag, but Person B is after the cup before his aqua aerobics, so if you '
+        'could, ta ever so.',
+        'On behalf of our lacemaking circle, kindly pass Person A the chips; most grateful.',
+        "Carol needs the red mug, she's got her steel drum practice and wants a brew first.",
+        'What Person A needs, being a sheep shearer with a dry throat, is the cup, and Person '
+        'B fancies the apple.',
+        "Person B's after the chips; the pony club tired him out.",
+        'Person A is gasping for the bottle after the three-legged race, and Person B would '
+        'love the chips.',
+        "Person A could murder the chips after speedcubing all day, and the bottle's wanted by "
+        'Person B.',
+        "Person A's asked for it twice now, the bottle, I mean, before her swimming teacher "
+        'gets here.',
+        "Omar's done with the white cup, he's off to judge the dog show, so it can go in the sink.",
+        'Mr Lee was asking after his magazine, the one with the basket weaver on the cover; '
+        'take it to him.',
+        "Right, the bottle, to Person A, and then you're done for the day, off you go.",
+        "Scissors for Noah first, and once he's got them the glue stick goes to Zoe, with the "
+        'ruler on the desk after that.',
+        "Alice isn't fussy, any old mug will do her, she's just in from the barbershop night.",
+        "Alice and Bob are back from the highland games: one thing each for them, I don't care "
+        'who has what.',
+        'Give Person B something, the apple, the cup or the chips, any one of those will do '
+        'him before his arm wrestling.',
+        "Person A's heading to her ikebana class, so whichever's nearer, the bottle or the "
+        'chips, she can have.',
+        "Any bottle you've got, to Person A.",
+        "Sam needs something to write with for the costumier's order, any of the pens will do.",
+        'One of the patients should have the magazine, either will do.',
+        'Each student gets a book for the quiet reading, no matter which one goes to who.',
+        'Ava or Grandad, one of them, gets the teddy.',
+        'All the food, the chips and the apple, to Person B.',
+        "Only the one bottle, and it's for Person A, she's a lighting tech on the late shift.",
+        "Person A's taking the pair, the bottle and the chips, on her shift with the crossing "
+        'patrol.',
+        'Put all three pens in the box so the sound tech stops walking off with them.',
+        'Ava wants to build a tower, so both blocks, the red and the green, go to her.',
+        "The apple's Person B's, not Person A's, she's gone off fruit since the ikebana class.",
+        "Person B doesn't need the bottle any more, just the cup.",
+        "Person A's had enough to drink at the barbershop night, so the chips, not the bottle.",
+        'Never mind the chips; the bottle for Person B.',
+        "Person A shouldn't get the chips; they're for Person B.",
+        "The banana isn't for Omar, it's Emma who's asked for it.",
+        'Priya hates the black pen, so any of the others will do her.',
+        "Mrs Khan says the blue blanket's too thin, so not that one, the grey one for her.",
+        'Leave the large box out of it; the other two boxes go on the pallet.',
+        "Bottle to Alice, hang about, no, Bob, he's the one back from the kendama comp.",
+        "Cup to Person A, er, my brain's fried from speedcubing, I mean the apple.",
+        "The chips to Person A, scratch that, it's the cup she's after.",
+        "Give Person B the chips, oh, correction, he's wanting the bottle for his hula hoop class.",
+        "Bottle to Person A, actually, she's fine, it's Person B who's just finished the "
+        'three-legged race.',
+        "Hand the bottle to, oh, what's she called, Person A, that's it, Person A.",
+        "Person A gets the chips, no, the bottle, we're out of chips.",
+        "Sponge in the sink, no sorry, Emma says on the tray, that's where it lives.",
+        "Thermometer to Mr Lee, no, hang on, Ruth's the one taking temperatures on this ward, "
+        'so her.',
+        'Packing tape for Mia, or wait, not the tape, she said the scanner.',
+        'Drill goes on the bench, or actually, the locker would be better.',
+        'carols back from the glass blowers so the red mug to her and the cup to bob',
+        'person b can have the apple cheers hes a stone waller and works up an appetite',
+        'chips for person a please shes back from her jenga tournament',
+        'bottle to person b when youre free hes been out with the tree fellers all day',
+        'omars on a diet for the toe wrestling so a banana to him and pop the bowl on the tray',
+        'mr novak wants a lemon for his water like every time',
+        'noah wants the scissors for the set designers cardboard props',
+        'Person A could do with the bottple after rehearsing with the brass band.',
+        'Cjhips to Person B please, the set designer promised him some.',
+        'Bottle to Perzson A, her theremin practice makes her thirsty.',
+        'Could you put the red mug on the counter? The shoe repairer likes his tea there.',
+        'How about Person B gets the cup and Person A the apple, seeing as she asked first?',
+        "Could Person B have the bottle? He's just back from his theremin lesson.",
+        'Can Person B have the bottle, and what about the chips for Person A, is that alright?',
+        "Could the medium box go on the pallet? The lollipop man's van collects from there.",
+        "Would you put the bib on the high chair, ready for Lily's tea after the dog show?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -246,8 +324,10 @@ KNOWN_UNCLEAR = frozenset(
 # session 35 (1 wrong, fixed), tuned on in session 36: asserted now, the rest in KNOWN_MISSES;
 # "blind35" written in session 36 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 36 (0 wrong), tuned on in session 37: asserted now,
-# the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind36"})
+# the rest in KNOWN_MISSES; "blind36" written in session 37 by another engineer and committed alone,
+# reviewed by a second one, measured once at the end of session 37 (0 wrong), tuned on in session
+# 38: asserted now, the rest in KNOWN_MISSES)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -124,8 +124,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 36 by another engineer and committed alone, never opened by the engineers who change
 # the grounder before its one measurement at the end of session 36; tuned on in session 37),
 # blind36 (written in session 37 by another engineer and committed alone, never opened by the
-# engineers who change the grounder before its one measurement at the end of session 37; tests do
-# not assert it).
+# engineers who change the grounder before its one measurement at the end of session 37; tuned on in
+# session 38).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
