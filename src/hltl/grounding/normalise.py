@@ -29876,7 +29876,7 @@ def _no_matter38r(text: str, _lexicon: Lexicon) -> str:
     """Session 38 (12r): after "each student gets a book" (a thing of a kind for each of several
     people), "no matter which one goes to who" says what 'each' already leaves open: taken off
     (as session 37's "I don't care who ends up with which" after 'apiece')."""
-    if "matter" not in text.lower():
+    if "matter" not in text.lower() and "regardless" not in text.lower():
         return text
     m = _NO_MATTER38R.match(text)
     return text if m is None else f"{m['head']}{m['end'] or '.'}"
