@@ -195,33 +195,6 @@ KNOWN_MISSES = frozenset(
         "Right, the bottle, to Person A, and then you're done for the day, off you go.",
         "Scissors for Noah first, and once he's got them the glue stick goes to Zoe, with the "
         'ruler on the desk after that.',
-        "Alice isn't fussy, any old mug will do her, she's just in from the barbershop night.",
-        "Alice and Bob are back from the highland games: one thing each for them, I don't care "
-        'who has what.',
-        'Give Person B something, the apple, the cup or the chips, any one of those will do '
-        'him before his arm wrestling.',
-        "Person A's heading to her ikebana class, so whichever's nearer, the bottle or the "
-        'chips, she can have.',
-        "Any bottle you've got, to Person A.",
-        "Sam needs something to write with for the costumier's order, any of the pens will do.",
-        'One of the patients should have the magazine, either will do.',
-        'Each student gets a book for the quiet reading, no matter which one goes to who.',
-        'Ava or Grandad, one of them, gets the teddy.',
-        'All the food, the chips and the apple, to Person B.',
-        "Only the one bottle, and it's for Person A, she's a lighting tech on the late shift.",
-        "Person A's taking the pair, the bottle and the chips, on her shift with the crossing "
-        'patrol.',
-        'Put all three pens in the box so the sound tech stops walking off with them.',
-        'Ava wants to build a tower, so both blocks, the red and the green, go to her.',
-        "The apple's Person B's, not Person A's, she's gone off fruit since the ikebana class.",
-        "Person B doesn't need the bottle any more, just the cup.",
-        "Person A's had enough to drink at the barbershop night, so the chips, not the bottle.",
-        'Never mind the chips; the bottle for Person B.',
-        "Person A shouldn't get the chips; they're for Person B.",
-        "The banana isn't for Omar, it's Emma who's asked for it.",
-        'Priya hates the black pen, so any of the others will do her.',
-        "Mrs Khan says the blue blanket's too thin, so not that one, the grey one for her.",
-        'Leave the large box out of it; the other two boxes go on the pallet.',
         "Bottle to Alice, hang about, no, Bob, he's the one back from the kendama comp.",
         "Cup to Person A, er, my brain's fried from speedcubing, I mean the apple.",
         "The chips to Person A, scratch that, it's the cup she's after.",
