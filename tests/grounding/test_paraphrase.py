@@ -171,7 +171,6 @@ KNOWN_MISSES = frozenset(
         'Both of the spanners, large and small, go away in the locker tonight.',
         # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
-        "Alice and Bob each get something: she's having the chips, he's having the bottle.",
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Morning, love. If it's no bother, the blue mug up on the shelf, please, the caterer "

@@ -4,9 +4,12 @@ its kind in other words and scenes, and near forms that must stay refused."""
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from hltl.grounding import normalise
+from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -18,10 +21,12 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_reads,
+    assert_refused,
 )
 
-# the example scene session 32's tests load with one bottle and Person A
-from tests.grounding.test_phrasing_s32r import T12
+# the example scenes session 32's tests load (bottle, chips, cup, apple; people A and B; …)
+from tests.grounding.test_phrasing_s32r import SQ, T12, TWO
 
 CASES = PhrasingCases()
 
@@ -276,6 +281,97 @@ test_negation = CASES.test(
     ("Leave the red pen out; the other two boxes go in the box.", None, OFFICE),
     ("Leave the white plate out; the other plates go on the rack.", None, KITCHEN),  # one left
 )
+
+
+# -- follow-ups: a list after 'something' / 'all the stuff'; two pronouns each of one person -----
+
+
+test_follow_ups = CASES.test(
+    # the list says what 'something' / 'all the stuff' is (list_says38r refuses the grammar's
+    # reading, every object, so the rewrites read the list)
+    ("Give Alice something, the cup or the apple.", "cup>A | apple>A", CELL),
+    (
+        "Bring Emma something, the spoon, the bowl or the sponge.",
+        "spoon>C | bowl>C | sponge>C",
+        LAB,
+    ),
+    (
+        "All the stuff, the knife, the lemon and the salt, to Marco.",
+        "knife>A & lemon>A & salt>A",
+        KITCHEN,
+    ),
+    ("Give Alice something, the cup or the pear.", None, CELL),
+    ("All the stuff, the knife and the pear, to Marco.", None, KITCHEN),
+    # "P and Q each get something: she's having X, he's having Y": each pronoun one of the two
+    (
+        "Alice and Bob each get something: he's having the crisps, she's having the bottle.",
+        "chips>B & bottle>A",
+        TWO,
+    ),
+    (
+        "Lily and Grandad each get something: she's having the teddy, he's having the bib.",
+        "teddy>A & bib>B",
+        NURSERY,
+    ),
+    (
+        "Noah and Zoe both get something: he's getting the ruler, she's getting the globe.",
+        "ruler>B & globe>C",
+        CLASSROOM,
+    ),
+    (
+        "Alice and Bob each get something: she's having the crisps, she's having the bottle.",
+        None,
+        TWO,
+    ),
+    # 'Lena' in no list: she may be 'he' too
+    (
+        "Marco and Lena each get something: she's having the lemon, he's having the knife.",
+        None,
+        KITCHEN,
+    ),
+    (
+        "Person A and Person B each get something: she's having the cup, he's having the apple.",
+        None,
+        SQ,
+    ),
+    (
+        "Alice and Bob each get something: she's having the crisps, he's having the crisps.",
+        None,
+        TWO,
+    ),
+)
+
+
+def test_every_object_listed_after_all_the_stuff_reads_as_before() -> None:
+    """A list that names every object of the scene says what 'all the stuff' is too: read as
+    before (list_says38r refuses only a list of fewer)."""
+    assert_reads(
+        "All the stuff, the knife, the lemon, the salt, the tongs, the white plate and the blue "
+        "plate, to Marco.",
+        "knife>A & lemon>A & salt>A & tongs>A & plate_white>A & plate_blue>A",
+        KITCHEN,
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "reading"),
+    [
+        ("Bob's the red one, hand him the cup.", CELL, "mug_red>B"),
+        ("Mrs Khan's the grey one, give her the magazine.", WARD, "blanket_grey>C"),
+        ("Jess is the large one, pass her the torch.", WORKSHOP, "spanner_large>B"),
+    ],
+)
+def test_a_person_said_to_be_the_adj_one_names_both_readings(
+    text: str, scene: Scene, reading: str
+) -> None:
+    """ "Bob's the red one, hand him the cup" (one object called red) may say who Bob is or whose
+    the red mug is: refused naming the reading that hands it over too (it had read that one)."""
+    assert_refused(text, scene, match=re.escape(reading))
+
+
+def test_a_person_said_to_be_an_adj_one_no_object_is_called_by_reads() -> None:
+    """'the tall one' calls no object of the scene: who Bob is, read as before."""
+    assert_reads("Bob's the tall one, hand him the cup.", "cup>B", CELL)
 
 
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:

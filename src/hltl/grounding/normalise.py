@@ -30260,6 +30260,111 @@ def _leave_out38r(text: str, lexicon: Lexicon) -> str:
     return f"All the {m['ks']} but the {adj} one {m['rest']}"
 
 
+# "Alice and Bob each get something: she's having the chips, he's having the bottle."
+_EACH_PRONOUNS38R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?) (?:each|both) (?:get|have|are getting|"
+    r"are having) (?:something|one thing|a thing)(?: each)?\s*[:;,]\s*"
+    r"(?P<a>she|he)(?:'s| is) (?:having|getting|to have|taking) (?P<x>the [a-z]+(?: [a-z]+)?),\s*"
+    r"(?:and )?(?P<b>she|he)(?:'s| is) (?:having|getting|to have|taking) "
+    r"(?P<y>the [a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _each_pronouns38r(text: str, lexicon: Lexicon) -> str:
+    """Session 38 (12r): "Alice and Bob each get something: she's having the chips, he's having
+    the bottle" is "Alice gets the chips and Bob gets the bottle" when 'she' and 'he' each can be
+    only one of the two (the other ruled out by `_may_be35t`: a title, a first name of one sex, a
+    word of kin) and is that one for certain or no one else in the scene may be it (session 36's
+    `_named_by_sex36t`, which reads a pronoun so, one at a time); 'she' and 'she', or names that
+    rule nobody out, stay refused."""
+    if " each " not in text.lower() and " both " not in text.lower():
+        return text
+    m = _EACH_PRONOUNS38R.match(text)
+    if m is None or m["a"].lower() == m["b"].lower():
+        return text
+    if not _persons34r(lexicon, m["p"], m["q"]) or not _objects34r(lexicon, m["x"], m["y"]):
+        return text
+    named = {next(iter(_ids(m[w], lexicon, "human"))): m[w] for w in ("p", "q")}
+    picked: list[str] = []
+    for pronoun in (m["a"], m["b"]):
+        may = [pid for pid in named if _may_be35t(pid, pronoun, lexicon)]
+        if len(may) != 1:
+            return text
+        (pid,) = may
+        others = [h.id for h in lexicon.scene.humans if h.id != pid]
+        if not _sure36t(pid, pronoun, lexicon) and any(
+            _may_be35t(o, pronoun, lexicon) for o in others
+        ):
+            return text
+        picked.append(named[pid])
+    if picked[0] == picked[1]:
+        return text
+    return f"{picked[0]} gets {m['x']} and {picked[1]} gets {m['y']}{m['end'] or '.'}"
+
+
+# Session 38 (12r): a list said after 'something' or 'all the stuff' that says what it is
+_LIST_SAYS38R = re.compile(
+    r"\b(?P<word>something|anything|a thing|all (?:the|of the|this|that|my) (?:stuff|things|lot)),"
+    r"\s*(?P<list>(?:the [a-z]+(?: [a-z]+)?(?:,\s*|,?\s+and\s+))*the [a-z]+(?: [a-z]+)?,?\s*"
+    r"(?:or|and) the [a-z]+(?: [a-z]+)?)\b",
+    _F,
+)
+
+
+def list_says38r(text: str, lexicon: Lexicon) -> None:
+    """Session 38 (12r): "Give Alice something, the cup or the apple" had read as any object or
+    the cup or the apple (a choice of every object), and "All the stuff, the knife, the lemon and
+    the salt, to Marco" as every object: the list after 'something' / 'all the stuff' says what it
+    is. Refused here, when the list names objects of the scene and not every one of them, so the
+    rewrites read the list alone (`_something_listed38r`, `_all_the_word38r`)."""
+    lowered = text.lower()
+    if "thing" not in lowered and "stuff" not in lowered and " lot," not in lowered:
+        return
+    m = _LIST_SAYS38R.search(text)
+    if m is None:
+        return
+    listed = _ids(m["list"], lexicon, "object")
+    if not listed or listed == {o.id for o in lexicon.scene.objects}:
+        return
+    raise GroundingError(f"{m[0]!r}: the list says what {m['word']!r} is; say {m['list']!r} alone")
+
+
+# "Bob's the red one, hand him the cup."
+_DESCRIBED_ONE38R = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is) the (?P<adj>[a-z]+) one\s*[,;:]\s*(?P<rest>\S.*)$", _F
+)
+
+
+def described_one38r(text: str, lexicon: Lexicon) -> None:
+    """Session 38 (12r): "Bob's the red one, hand him the cup" where one object of the scene is
+    called red ('the red mug') may say who Bob is (the one in red; then only the cup) or whose the
+    red mug is ("Bob's is the red one"; then it is handed over too, as session 33 allots "The drill
+    is Jess's, …" beside another part): refused naming both readings (it had read the second).
+    Where no object is called by the word ('the tall one'), nothing is said of an object."""
+    if " one" not in text.lower():
+        return
+    m = _DESCRIBED_ONE38R.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return
+    adj = m["adj"].lower()
+    called = [
+        (o.id, a)
+        for o in lexicon.scene.objects
+        for a in o.aliases
+        if a.lower().split()[0] == adj and len(a.split()) > 1
+    ]
+    if len({oid for oid, _a in called}) != 1:
+        return
+    (pid,) = _ids(m["p"], lexicon, "human")
+    oid, alias = called[0]
+    raise GroundingError(
+        f"{m['p']}'s the {m['adj']} one could say who {m['p']} is (then only: {m['rest']!r}) or "
+        f"that the {alias} ({oid}) is {m['p']}'s, to be handed over too ({oid}>{pid}): say "
+        f"'give {m['p']} the {alias}' if it is to go, or leave the description out"
+    )
+
+
 _STEPS38R: tuple[Callable[[str, Lexicon], str], ...] = (
     _any_old38r,
     _something_listed38r,
@@ -30285,6 +30390,7 @@ _STEPS38R: tuple[Callable[[str, Lexicon], str], ...] = (
     _hates_others38r,
     _too_thin38r,
     _leave_out38r,
+    _each_pronouns38r,
 )
 
 

@@ -33,7 +33,9 @@ from hltl.grounding.normalise import (
     canonical,
     canonical19,
     count_said30,
+    described_one38r,
     hearer_named,
+    list_says38r,
     miscounted35l,
     one_person,
     order_colons,
@@ -599,6 +601,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _them_after_choice33s(text, lexicon)
         _doer_said34s(text, lexicon)
         _spoken_to37s(text, lexicon)
+        described_one38r(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -611,6 +614,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
     try:
         node = _read(text, scene, lexicon)
         if normalise:
+            list_says38r(text, lexicon)
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
             _said_against33s(text, node, lexicon)
