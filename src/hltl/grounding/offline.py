@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
+from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
@@ -33,9 +34,7 @@ from hltl.grounding.normalise import (
     canonical,
     canonical19,
     count_said30,
-    described_one38r,
     hearer_named,
-    list_says38r,
     miscounted35l,
     one_person,
     order_colons,
