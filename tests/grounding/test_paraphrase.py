@@ -39,7 +39,6 @@ KNOWN_MISSES = frozenset(
         # blind3: steps after the 'or' of an 'either' could belong to it or come after it
         "Either put the cup on the shelf, or give it to Bob and then give Carol the apple",
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
-        "Give Alice something to drink: the cup or the bottle",
         # blind4: "<objects> will do for <person>"
         # blind5 (tuned on in session 7): a surface name used as the verb
         "Shelf the bottle please",
@@ -126,12 +125,10 @@ KNOWN_MISSES = frozenset(
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
-        "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         'knife on the worktop please, the guests want it by their bread',

@@ -342,6 +342,49 @@ test_follow_ups = CASES.test(
 )
 
 
+# -- the same kinds in older parts ----------------------------------------------------------------
+
+
+test_older_parts = CASES.test(
+    # "something to drink / to eat: A or B" (the kind must fit each: session 35's _kind_fits35s)
+    ("Bring Emma something to eat: the banana or the sponge.", None, LAB),  # a sponge is no food
+    ("Give Bob something to drink, the cup or the bottle.", "cup>B | bottle>B", CELL),
+    ("Give Bob something to eat: the apple or the crisps.", "apple>B | chips>B", CELL),
+    ("Give Bob something to eat: the apple or the pear.", None, CELL),
+    # "(Just) the one item each for P and Q: she has X, he has Y"
+    (
+        "One thing each for Lily and Grandad: he gets the bib, she gets the teddy.",
+        "bib>B & teddy>A",
+        NURSERY,
+    ),
+    ("One thing each for Lily and Grandad: she gets the bib, she gets the teddy.", None, NURSERY),
+    ("One thing each for Lily and Ava: she gets the bib, he gets the teddy.", None, NURSERY),
+    # "Either of them can have X, P or Q(, whoever's nearer to the door)"
+    (
+        "Either one can have the magazine, Mr Lee or Mrs Khan, whoever's closer to the window.",
+        "magazine>B | magazine>C",
+        WARD,
+    ),
+    (
+        "Either of them should have the globe, Noah or Zoe, whoever's free.",
+        "globe>B | globe>C",
+        CLASSROOM,
+    ),
+    (
+        "Either of them can take the torch, Kofi or Jess, whoever's nearer to the van.",
+        "torch>A | torch>B",
+        WORKSHOP,
+    ),
+    (
+        "Either of them can have the magazine, Mr Lee or Mrs Khan, whoever's nearer to the jug.",
+        None,
+        WARD,
+    ),
+    ("Either of them can have the magazine, Mr Lee or Person Q.", None, WARD),
+    ("Either of them can have the pear, Mr Lee or Mrs Khan.", None, WARD),
+)
+
+
 def test_every_object_listed_after_all_the_stuff_reads_as_before() -> None:
     """A list that names every object of the scene says what 'all the stuff' is too: read as
     before (list_says38r refuses only a list of fewer)."""

@@ -63,7 +63,8 @@ def _any_old38r(text: str, lexicon: Lexicon) -> str:
 
 # "Give Person B something, the apple, the cup or the chips, …": what 'something' is, said after it
 _SOMETHING_LISTED38R = re.compile(
-    r"\b(?:something|anything|a thing),\s*(?P<list>(?:the [a-z]+(?: [a-z]+)?,\s*)*"
+    r"\b(?:something|anything|a thing)(?: nice)?(?: to (?:eat|drink|nibble))?\s*[,:]\s*"
+    r"(?P<list>(?:the [a-z]+(?: [a-z]+)?,\s*)*"
     r"the [a-z]+(?: [a-z]+)?,?\s*or the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!?]|$))",
     _F,
 )
@@ -77,11 +78,12 @@ _WILL_DO_FOR38R = re.compile(
 
 
 def _something_listed38r(text: str, lexicon: Lexicon) -> str:
-    """Session 38 (12r): "something, the apple, the cup or the chips" is "the apple, the cup or
-    the chips" (the list says which things the 'something' is: each one whole name of another
-    object, the last joined by 'or'; else left, as before), and "any one of those" after such a
-    list is "any of those", which says the choice again."""
-    if "," not in text:
+    """Session 38 (12r): "something, the apple, the cup or the chips" (or "something to drink:
+    …") is "the apple, the cup or the chips" (the list says which things the 'something' is: each
+    one whole name of another object, the last joined by 'or'; else left, as before; session 35's
+    `_kind_fits35s` refuses a list that 'to eat' / 'to drink' does not fit), and "any one of
+    those" after such a list is "any of those", which says the choice again."""
+    if "," not in text and ":" not in text:
         return text
 
     def listed(m: re.Match[str]) -> str:
@@ -619,13 +621,15 @@ def _leave_out38r(text: str, lexicon: Lexicon) -> str:
     return f"All the {m['ks']} but the {adj} one {m['rest']}"
 
 
+# what each pronoun is said to have: "she's having", "he has", "she's getting"
+_HAVING38R = r"(?:(?:'s| is) (?:having|getting|to have|taking)| (?:has|gets|takes))"
 # "Alice and Bob each get something: she's having the chips, he's having the bottle."
 _EACH_PRONOUNS38R = re.compile(
-    r"^(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?) (?:each|both) (?:get|have|are getting|"
-    r"are having) (?:something|one thing|a thing)(?: each)?\s*[:;,]\s*"
-    r"(?P<a>she|he)(?:'s| is) (?:having|getting|to have|taking) (?P<x>the [a-z]+(?: [a-z]+)?),\s*"
-    r"(?:and )?(?P<b>she|he)(?:'s| is) (?:having|getting|to have|taking) "
-    r"(?P<y>the [a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    r"^(?:(?P<p>[A-Za-z][\w ]*?) and (?P<q>[A-Za-z][\w ]*?) (?:each|both) (?:get|have|are "
+    r"getting|are having) (?:something|one thing|a thing)(?: each)?|(?:just )?(?:the )?one "
+    r"(?:item|thing) each for (?P<p2>[A-Za-z][\w ]*?) and (?P<q2>[A-Za-z][\w ]*?))\s*[:;,]\s*"
+    rf"(?P<a>she|he){_HAVING38R} (?P<x>the [a-z]+(?: [a-z]+)?),\s*"
+    rf"(?:and )?(?P<b>she|he){_HAVING38R} (?P<y>the [a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -642,9 +646,10 @@ def _each_pronouns38r(text: str, lexicon: Lexicon) -> str:
     m = _EACH_PRONOUNS38R.match(text)
     if m is None or m["a"].lower() == m["b"].lower():
         return text
-    if not _persons34r(lexicon, m["p"], m["q"]) or not _objects34r(lexicon, m["x"], m["y"]):
+    p, q = (m["p"], m["q"]) if m["p"] else (m["p2"], m["q2"])
+    if not _persons34r(lexicon, p, q) or not _objects34r(lexicon, m["x"], m["y"]):
         return text
-    named = {next(iter(_ids(m[w], lexicon, "human"))): m[w] for w in ("p", "q")}
+    named = {next(iter(_ids(w, lexicon, "human"))): w for w in (p, q)}
     picked: list[str] = []
     for pronoun in (m["a"], m["b"]):
         may = [pid for pid in named if _may_be35t(pid, pronoun, lexicon)]
@@ -660,6 +665,32 @@ def _each_pronouns38r(text: str, lexicon: Lexicon) -> str:
     if picked[0] == picked[1]:
         return text
     return f"{picked[0]} gets {m['x']} and {picked[1]} gets {m['y']}{m['end'] or '.'}"
+
+
+# "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door."
+_EITHER_NAMED38R = re.compile(
+    r"^either (?:of them|one of them|one) (?P<v>can have|gets|should get|should have|can take)"
+    r" (?P<x>the [a-z]+(?: [a-z]+)?),\s*(?P<p>[A-Za-z][\w ]*?) or (?P<q>[A-Za-z][\w ]*?)"
+    r"(?:,\s*(?P<who>whoever|whichever)(?:'s| is) (?P<adj>nearer|closer|nearest|closest|free|"
+    r"freer|handier)(?P<to> (?:to|by|at) the [a-z]+(?: [a-z]+)?)?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _either_named38r(text: str, lexicon: Lexicon) -> str:
+    """Session 38 (12r): "Either of them can have the bottle, Person A or Person B, whoever's
+    nearer to the door" is "Person A or Person B can have the bottle, whoever's nearer": who 'them'
+    are, said after the object (two people, each another; the object one whole name; where they
+    are nearer to names nothing of the scene)."""
+    if text[:6].lower() != "either":
+        return text
+    m = _EITHER_NAMED38R.match(text)
+    if m is None or not _persons34r(lexicon, m["p"], m["q"]) or not _objects34r(lexicon, m["x"]):
+        return text
+    if m["to"] and not _names_nothing(m["to"], lexicon):
+        return text
+    tail = f", whoever's {m['adj']}" if m["who"] else ""
+    return f"{m['p']} or {m['q']} {m['v']} {m['x']}{tail}{m['end'] or '.'}"
 
 
 # Session 38 (12r): a list said after 'something' or 'all the stuff' that says what it is
@@ -750,4 +781,5 @@ _STEPS38R: tuple[Callable[[str, Lexicon], str], ...] = (
     _too_thin38r,
     _leave_out38r,
     _each_pronouns38r,
+    _either_named38r,
 )
