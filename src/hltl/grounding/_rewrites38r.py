@@ -1,10 +1,4 @@
-"""The normaliser's rewrites of session 38 (engineer 12r): blind36's choices, counts, negation and
-exclusions, and two checks the grammar calls (`list_says38r`, `described_one38r`).
-
-Each rewrite takes the text and the scene's lexicon and returns the text rewritten, or the text
-unchanged when it does not apply; normalise.py runs them in `_STEPS19`'s order
-(docs/grounding.md, "Session 38 (engineer 12r)").
-"""
+"""Session-38 rewrites (12r): choices, counts, negation, exclusions; docs/grounding.md."""
 
 from __future__ import annotations
 
