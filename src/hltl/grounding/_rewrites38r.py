@@ -1,4 +1,4 @@
-"""Session-38 rewrites (12r): choices, counts, negation, exclusions; docs/grounding.md."""
+"""The normaliser's rewrites of session 38, engineer 12r (docs/grounding.md)."""
 
 from __future__ import annotations
 
