@@ -39,11 +39,13 @@ test_run_on = CASES.test(
         DEPOT,
     ),
     ("emmas on a diet for the fun run so a banana to her", "banana>C", LAB),
-    # a pronoun that cannot be the one person; two people before it; a clause joined by 'when',
-    # 'that'; punctuation written (the remark rules' own); the state naming something of the
-    # scene; the request after 'so' naming another person the pronoun may be
+    # a pronoun that cannot be the one person; two people before it; a remark that negates or
+    # names more; a clause joined by 'when'; the state naming something of the scene; the request
+    # after 'so' naming another person the pronoun may be
     ("crisps for bob please shes back from her darts match", None, TWO),
     ("crisps for bob and alice please hes back from his darts match", None, TWO),
+    ("crisps for bob please hes not back from his darts match", None, TWO),
+    ("crisps for bob please hes back from his darts match and wants the bottle too", None, TWO),
     ("give bob the crisps when hes back from his darts match", None, TWO),
     ("bobs back from the shelf so the red mug to him", None, CELL),
     ("carols back from the allotment so the red mug to her and the cup to alice", None, CELL),

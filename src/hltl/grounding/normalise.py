@@ -30483,14 +30483,22 @@ def _doer38(words: str, lexicon: Lexicon) -> bool:
 def _run_on38(text: str, lexicon: Lexicon) -> str:
     """Session 38: in a text with no comma, colon or semicolon, ', ' put before a he's / she's
     (and a courtesy word before it) run on after a request that names one person the pronoun may
-    be, and closing it (naming nothing after it): what the writer left out, so that the remark
-    rules see the remark as a part of its own. Not after a word that joins the clause to the one
-    before ('when', 'that', 'so' …)."""
-    if re.search(r"[,;:]", text):
-        return text
+    be, and closing it (naming nothing after it, and asking nothing but the person's own and 'all
+    day'): what the writer left out, so that the remark rules see the remark as a part of its own.
+    Not after a word that joins the clause to the one before ('when', 'that', 'so' …)."""
+    if re.search(r"[,;:]", text) or _BACK_FROM36.search(text):
+        return text  # "… thx hes the one back from surfing": session 36's, read as it is
     m = _RUN_ON38.search(text)
     if m is None:
         return text
+    said = re.sub(
+        r"\b(?:his|her|their|all (?:day|morning|afternoon|evening|night|week))\b",
+        " ",
+        text[m.end() :],
+        flags=_F,
+    )
+    if _ASKS29.search(said):
+        return text  # "give the bottle to bob he's not here": the remark says more than a state
     before = text[: m.start()]
     words = before.split()
     if not words or words[-1].lower() in _JOINS38 or words[-1].lower() in VERBS:
