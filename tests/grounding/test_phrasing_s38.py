@@ -174,8 +174,9 @@ test_splits = CASES.test(
         "stapler>B ; pen_red@box",
         OFFICE,
     ),
-    # nothing asked before it; the X a person; the S an object
+    # nothing asked before it, or more asked after it; the X a person; the S an object
     ("And then you're done for the day.", None, CELL),
+    ("Give Bob the cup, and then you're done for the day, then give Carol the apple.", None, CELL),
     ("Give Sam the stapler, with Priya in the box afterwards.", None, OFFICE),
     ("Give Sam the stapler, with the red pen in the black pen afterwards.", None, OFFICE),
 )

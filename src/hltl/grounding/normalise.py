@@ -30807,10 +30807,15 @@ _WITH_AFTER38 = re.compile(
 
 
 def _splits38(text: str, lexicon: Lexicon) -> str:
-    """Session 38: ', and then you're done (for the day)' closing a request taken off; ', with X
+    """Session 38: ', and then you're done (for the day)' closing a request taken off (nothing
+    named after it: "…, and then you're done, then give Carol the apple" stays refused); ', with X
     on S after that' closing as ', then X on S' (X objects, S a surface)."""
     m = _DONE_FOR38.search(text)
-    if m is not None and _names(text[: m.start()], lexicon):
+    if (
+        m is not None
+        and _names(text[: m.start()], lexicon)
+        and not _names(text[m.end() :], lexicon)
+    ):
         text = text[: m.start()] + text[m.end() :]
     m = _WITH_AFTER38.search(text)
     if (
