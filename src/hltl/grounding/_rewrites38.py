@@ -11,6 +11,7 @@ from hltl.grounding._normalise1 import (
     _names,
     _names_nothing,
     _only_person,
+    _reasons21,
     _surface_only,
 )
 from hltl.grounding._normalise2 import (
@@ -72,8 +73,9 @@ def _run_on38(text: str, lexicon: Lexicon) -> str:
     """Session 38: in a text with no comma, colon or semicolon, ', ' put before a he's / she's
     (and a courtesy word before it) run on after a request that names one person the pronoun may
     be, and closing it (naming nothing after it, and asking nothing but the person's own and 'all
-    day'): what the writer left out, so that the remark rules see the remark as a part of its own.
-    Not after a word that joins the clause to the one before ('when', 'that', 'so' …)."""
+    day'): what the writer left out, so that the remark rules see the remark as a part of its own
+    (session 21's reasons, which run before this, asked again here). Not after a word that joins
+    the clause to the one before ('when', 'that', 'so' …)."""
     if re.search(r"[,;:]", text) or _BACK_FROM36.search(text):
         return text  # "… thx hes the one back from surfing": session 36's, read as it is
     m = _RUN_ON38.search(text)
@@ -96,8 +98,9 @@ def _run_on38(text: str, lexicon: Lexicon) -> str:
         return text  # what follows names more: a request run on, not a remark closing one
     if not _fit36(next(iter(people)), m["pron"], lexicon):
         return text
-    courtesy = f", {m['c']}" if m["c"] else ""
-    return f"{before}{courtesy}, {m['pron']}{m['v']} {text[m.end() :]}"
+    # the courtesy word goes, as session 19's fillers take it off; session 21's reasons (run
+    # before this) are asked again of the text with its comma
+    return _reasons21(f"{before}, {m['pron']}{m['v']} {text[m.end() :]}", lexicon)
 
 
 # "carols back from the glass blowers so the red mug to her and the cup to bob", "omars on a diet
@@ -515,6 +518,8 @@ def _questions38(text: str, lexicon: Lexicon) -> str:
 
 
 _STEPS38: tuple[Callable[[str, Lexicon], str], ...] = (
+    # first: the commas a text written without them leaves out, for the rules after it
+    _run_on38,
     _courtesies38,
     _wants38,
     _after_doing38,
@@ -525,6 +530,3 @@ _STEPS38: tuple[Callable[[str, Lexicon], str], ...] = (
     _questions38,
     _fronted38,
 )
-# before every other rewrite but the apostrophes and sizes said: the commas a text written without
-# them leaves out, for the remark rules of every session to see
-_STEPS38_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_run_on38,)

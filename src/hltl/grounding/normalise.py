@@ -522,7 +522,7 @@ from hltl.grounding._normalise5 import (
 from hltl.grounding._normalise5 import (
     said_together36l as said_together36l,
 )
-from hltl.grounding._rewrites38 import _STEPS38, _STEPS38_FIRST
+from hltl.grounding._rewrites38 import _STEPS38
 from hltl.grounding._rewrites38r import _STEPS38R
 from hltl.grounding._rewrites38s import _STEPS38S
 from hltl.grounding.lexicon import (
@@ -831,8 +831,6 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS36_FIRST,
     # session 37 (12s): a size said with '-sized' (first: what follows looks for the name)
     *_STEPS37S_FIRST,
-    # session 38 (12): the commas a text written without them leaves out (first)
-    *_STEPS38_FIRST,
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
