@@ -170,27 +170,6 @@ KNOWN_MISSES = frozenset(
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
-        "Morning, love. If it's no bother, the blue mug up on the shelf, please, the caterer "
-        'wants a tidy counter.',
-        'I hate to nag, but Person B is after the cup before his aqua aerobics, so if you '
-        'could, ta ever so.',
-        'On behalf of our lacemaking circle, kindly pass Person A the chips; most grateful.',
-        "Carol needs the red mug, she's got her steel drum practice and wants a brew first.",
-        'What Person A needs, being a sheep shearer with a dry throat, is the cup, and Person '
-        'B fancies the apple.',
-        "Person B's after the chips; the pony club tired him out.",
-        'Person A is gasping for the bottle after the three-legged race, and Person B would '
-        'love the chips.',
-        "Person A could murder the chips after speedcubing all day, and the bottle's wanted by "
-        'Person B.',
-        "Person A's asked for it twice now, the bottle, I mean, before her swimming teacher "
-        'gets here.',
-        "Omar's done with the white cup, he's off to judge the dog show, so it can go in the sink.",
-        'Mr Lee was asking after his magazine, the one with the basket weaver on the cover; '
-        'take it to him.',
-        "Right, the bottle, to Person A, and then you're done for the day, off you go.",
-        "Scissors for Noah first, and once he's got them the glue stick goes to Zoe, with the "
-        'ruler on the desk after that.',
         "Bottle to Alice, hang about, no, Bob, he's the one back from the kendama comp.",
         "Cup to Person A, er, my brain's fried from speedcubing, I mean the apple.",
         "The chips to Person A, scratch that, it's the cup she's after.",
@@ -204,22 +183,7 @@ KNOWN_MISSES = frozenset(
         'so her.',
         'Packing tape for Mia, or wait, not the tape, she said the scanner.',
         'Drill goes on the bench, or actually, the locker would be better.',
-        'carols back from the glass blowers so the red mug to her and the cup to bob',
-        'person b can have the apple cheers hes a stone waller and works up an appetite',
-        'chips for person a please shes back from her jenga tournament',
-        'bottle to person b when youre free hes been out with the tree fellers all day',
-        'omars on a diet for the toe wrestling so a banana to him and pop the bowl on the tray',
-        'mr novak wants a lemon for his water like every time',
-        'noah wants the scissors for the set designers cardboard props',
-        'Person A could do with the bottple after rehearsing with the brass band.',
-        'Cjhips to Person B please, the set designer promised him some.',
-        'Bottle to Perzson A, her theremin practice makes her thirsty.',
-        'Could you put the red mug on the counter? The shoe repairer likes his tea there.',
-        'How about Person B gets the cup and Person A the apple, seeing as she asked first?',
-        "Could Person B have the bottle? He's just back from his theremin lesson.",
         'Can Person B have the bottle, and what about the chips for Person A, is that alright?',
-        "Could the medium box go on the pallet? The lollipop man's van collects from there.",
-        "Would you put the bib on the high chair, ready for Lily's tea after the dog show?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

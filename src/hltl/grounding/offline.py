@@ -1745,7 +1745,8 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
     bare = _things_blanked36l(text, lexicon)
     for human in lexicon.scene.humans:
         for name in (human.name, *human.aliases):
-            found = re.search(rf"\b{re.escape(name)}\b", bare, re.I)
+            # session 38 (12): or said with its apostrophe dropped ('carols back from …')
+            found = re.search(rf"\b{re.escape(name)}(?:s(?= ))?\b", bare, re.I)
             if found is None:
                 continue
             # a first name said alone (a title, a role, a label say no sex here)
