@@ -1,0 +1,9 @@
+"""The normaliser's rewrites of session 38, engineer 12s (docs/grounding.md)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from hltl.grounding.lexicon import Lexicon
+
+_STEPS38S: tuple[Callable[[str, Lexicon], str], ...] = ()
