@@ -296,7 +296,7 @@ KNOWN_UNCLEAR = frozenset(
 # the rest in KNOWN_MISSES; "blind36" written in session 37 by another engineer and committed alone,
 # reviewed by a second one, measured once at the end of session 37 (0 wrong), tuned on in session
 # 38: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind37"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -394,6 +394,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind35"].entries}) >= 3
     assert len(CORPORA["blind36"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind36"].entries}) >= 3
+    assert len(CORPORA["blind37"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind37"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted
