@@ -30,10 +30,11 @@ from hltl.grounding.tree import tasks
 # starter": a clause whose subject is one person of the scene (a name of theirs, or he / she when
 # it may be one person the request names and no other it names) and whose words say something
 # about them — a state, a pastime, where they have been — closing the instruction. It is taken
-# off when what is left reads and names an object, and no word of it could change who gets what
-# or when (_ABOUT_HELD38S): no scene name or adjective, no verb of giving, putting, wanting or
-# needing (light 'has', 'had', 'got' allowed; a word of VERBS used as a noun after a determiner,
-# "a long shift", too), no negation, no count or choice, no pointing word, no correction, no time
+# off when what is left reads and names something of the scene, and no word of it could change
+# who gets what or when (_ABOUT_HELD38S): no scene name or adjective, no verb of giving, putting,
+# wanting or needing (light 'has', 'had', 'got' allowed; a word of VERBS used as a noun after a
+# determiner, "a long shift", too), no negation, no count or choice, no pointing word, no
+# correction, no time
 # that could put the request off ('back at six', 'in a bit', 'later'; a stretch gone by, 'all
 # day', 'for hours', is allowed), no leaving, being away or being done ('off home', 'gone', 'in
 # the loo', 'due', 'she's fine', 'he's had enough'), no other person (him / her only of the
@@ -103,10 +104,14 @@ _ABOUT_END38S = re.compile(
     r"\s+)?(?P<said>[^,;:.!?—–]+?)\s*[.!]?\s*$",
     _F,
 )
+# … or opening it, a sentence (or a part before a semicolon) of its own ("Carol's just back from
+# choir. Give Alice the cup."); with a pronoun for a person after it the name may be whom it means,
+# and it is left (earlier rules read "Carol's just back from choir, so give her the cup")
+_ABOUT_START38S = re.compile(r"^(?P<said>[^,;:.!?—–]+?)\s*(?:[.!]|;)\s+(?P<rest>\S.*)$", _F)
 # a cue or a hesitation just before the remark: the remark may be what it corrects to
 _CUED38S = re.compile(
     r"\b(?:no|nope|sorry|actually|wait|hang|hold|mean|meant|oops|whoops|er|erm|um|uh|rather|"
-    r"instead|correction|scratch|or|and|but|so|then|also|plus)\b",
+    r"instead|correction|scratch|or)\b",
     _F,
 )
 _DETERMINED38S = frozenset(
@@ -156,14 +161,14 @@ def _about_of38s(said: str, lexicon: Lexicon) -> tuple[str, str] | None:
 
 def _about_them38s(text: str, lexicon: Lexicon) -> str:
     """Session 38 (12s): remarks about one person of the scene closing the instruction taken off
-    (above), one by one from the end, while what is left names an object and reads; a need
+    (above), one by one from the end, while what is left names something and reads; a need
     said only of someone who gets something there."""
     out = text
     needy: set[str] = set()
     while (m := _ABOUT_END38S.search(out)) is not None:
         said = _about_of38s(m["said"], lexicon)
         before = out[: m.start()].rstrip()
-        if said is None or not _ids(before, lexicon, "object"):
+        if said is None or not _names(before, lexicon):
             break
         last = re.split(r"[,;:.!?—–]\s|\s-\s", before.rstrip(" .!?"))[-1]
         if _CUED38S.search(last) and not _names(last, lexicon):
@@ -183,6 +188,14 @@ def _about_them38s(text: str, lexicon: Lexicon) -> str:
         if _NEEDY38S.search(m["said"]):
             needy.add(who)
         out = before if before[-1:] in (".", "!", "?") else before + "."
+    m = _ABOUT_START38S.match(out)
+    if m is not None and (said := _about_of38s(m["said"], lexicon)) is not None and said[1]:
+        rest = m["rest"]
+        mentioned = re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", rest, _F)
+        if _names(rest, lexicon) and mentioned is None:
+            if _NEEDY38S.search(m["said"]):
+                needy.add(said[1])
+            out = rest[:1].upper() + rest[1:]
     if out == text:
         return text
     read = _reading(out, lexicon)
