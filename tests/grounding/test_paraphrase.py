@@ -234,6 +234,7 @@ KNOWN_MISSES = frozenset(
         'Bottle to Perzson A, her theremin practice makes her thirsty.',
         'Could you put the red mug on the counter? The shoe repairer likes his tea there.',
         'How about Person B gets the cup and Person A the apple, seeing as she asked first?',
+        "Could Person B have the bottle? He's just back from his theremin lesson.",
         'Can Person B have the bottle, and what about the chips for Person A, is that alright?',
         "Could the medium box go on the pallet? The lollipop man's van collects from there.",
         "Would you put the bib on the high chair, ready for Lily's tea after the dog show?",

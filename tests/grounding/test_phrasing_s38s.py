@@ -117,7 +117,7 @@ test_corrections = CASES.test(
     ("Tom gets the gloves, no, the tape, we're out of gloves.", "tape>B", DEPOT),
     ("Marco gets the cake, no, the lemon, we're out of cake.", "lemon>A", KITCHEN),
     # a name searched for
-    ("Give the pills to, er, what's her name again, Mrs Khan.", "pills>C", WARD),
+    ("Give the pills to, er, what's she called again, Mrs Khan.", "pills>C", WARD),
     ("Hand the glue to, oh, what's she called, Zoe, that's it, Zoe.", "glue>C", CLASSROOM),
     # the speaker's state between a hesitation and the cue
     ("Bottle to Person A, um, my head's fried from knitting, I mean the chips.", "chips>A", F41),
@@ -145,7 +145,7 @@ test_corrections_refused = CASES.test(
     ),
     ("Lemon to Marco, actually, he's fine, it's Lena who's not been served.", None, KITCHEN),
     ("Tom gets the gloves, no, the tape, we're out of boxes.", None, DEPOT),
-    ("Hand the drill to, um, what's her name, Kofi, that's it, Jess.", None, WORKSHOP),
+    ("Hand the drill to, um, what's she called, Kofi, that's it, Jess.", None, WORKSHOP),
     ("Give Zoe the scissors for her and the glue.", None, CLASSROOM),
     ("Bottle to Person A, um, my head's fried from the chips, I mean the cup.", None, F41),
     ("Give Zoe the scissors for his papier-mache volcano.", None, CLASSROOM),

@@ -26,9 +26,9 @@ from hltl.grounding.tree import tasks
 
 # -- session 38 (engineer 12s): a remark about a person of the scene, by kind ---------------------
 #
-# "…, Carol's just back from choir", "… . He's been on his feet all day.", "…, Bob's a new
-# starter": a clause whose subject is one person of the scene (a name of theirs, or he / she when
-# it may be one person the request names and no other it names) and whose words say something
+# "…, Carol's just back from choir", "…? The intern is new on the team.", "…, Bob's a new
+# starter": a clause whose subject is one person of the scene (a name or a role of theirs; a he /
+# she of such a remark is left to the earlier rules, _about_them37 …) and whose words say something
 # about them — a state, a pastime, where they have been — closing the instruction. It is taken
 # off when what is left reads and names something of the scene, and no word of it could change
 # who gets what or when (_ABOUT_HELD38S): no scene name or adjective, no verb of giving, putting,
@@ -79,7 +79,8 @@ _ABOUT_HELD38S = re.compile(
     rf"\b(?:{_HELD_WORDS38S}|this|that|these|those|"
     r"off|away|out|gone|leaving|left|leave|going|goes|go|went|heading|headed|due|expected|coming|"
     r"comes|arriving|arrives|way|home|loo|toilet|bathroom|asleep|sleeping|napping|fine|sorted|set|"
-    rf"good|okay|ok|alright|happy|done|finished|covered|served|full|enough|over|through)\b"
+    rf"good|okay|ok|alright|happy|done|finished|covered|served|full|fill|plenty|enough|over|"
+    rf"through)\b"
     rf"{_HELD_MORE38S}",
     _F,
 )
@@ -108,6 +109,12 @@ _ABOUT_END38S = re.compile(
 # choir. Give Alice the cup."); with a pronoun for a person after it the name may be whom it means,
 # and it is left (earlier rules read "Carol's just back from choir, so give her the cup")
 _ABOUT_START38S = re.compile(r"^(?P<said>[^,;:.!?—–]+?)\s*(?:[.!]|;)\s+(?P<rest>\S.*)$", _F)
+# a correction's cue anywhere before the remark
+_CUE_ANY38S = re.compile(
+    r"\b(?:no|sorry|actually|wait|hang on|hold on|hang about|scratch that|i mean|i meant|"
+    r"correction|rather|instead|oops|whoops|my mistake)\b",
+    _F,
+)
 # a cue or a hesitation just before the remark: the remark may be what it corrects to
 _CUED38S = re.compile(
     r"\b(?:no|nope|sorry|actually|wait|hang|hold|mean|meant|oops|whoops|er|erm|um|uh|rather|"
@@ -120,9 +127,9 @@ _DETERMINED38S = frozenset(
 )
 
 
-def _about_of38s(said: str, lexicon: Lexicon) -> tuple[str, str] | None:
-    """The subject of remark ``said`` and the person it is (``""`` for he / she), or None where
-    ``said`` is no remark about one person of the scene that asks nothing (above)."""
+def _about_of38s(said: str, lexicon: Lexicon) -> str | None:
+    """The person remark ``said`` is about, by a name or a role of theirs, or None where ``said``
+    is no remark about one person of the scene that asks nothing (above)."""
     words = said.strip().split()
     for k in range(min(4, len(words)), 0, -1):
         head = " ".join(words[:k])
@@ -130,13 +137,9 @@ def _about_of38s(said: str, lexicon: Lexicon) -> tuple[str, str] | None:
         rest = said.strip()[len(subject) :]
         if not _ABOUT_VERB38S.match(rest):
             continue
-        if subject.lower() in ("he", "she"):
-            who = ""
-        elif _only_person(subject, lexicon):
+        if _only_person(subject, lexicon):
             who = next(iter(_ids(subject, lexicon, "human")))
-        else:
-            continue
-        break
+            break
     else:
         return None
     plain = _GONE_BY38S.sub(" ", rest)
@@ -152,11 +155,9 @@ def _about_of38s(said: str, lexicon: Lexicon) -> tuple[str, str] | None:
     sexes = {PRONOUN_SEX[w] for w in re.findall(r"\b(?:he|him|his|she|her)\b", rest.lower())}
     if len(sexes) > 1:
         return None
-    if who == "" and not sexes <= {PRONOUN_SEX[subject.lower()]}:
+    if sexes and not _fit36(who, "he" if sexes == {"m"} else "she", lexicon):
         return None
-    if who and sexes and not _fit36(who, "he" if sexes == {"m"} else "she", lexicon):
-        return None
-    return subject, who
+    return who
 
 
 def _about_them38s(text: str, lexicon: Lexicon) -> str:
@@ -166,35 +167,28 @@ def _about_them38s(text: str, lexicon: Lexicon) -> str:
     out = text
     needy: set[str] = set()
     while (m := _ABOUT_END38S.search(out)) is not None:
-        said = _about_of38s(m["said"], lexicon)
+        who = _about_of38s(m["said"], lexicon)
         before = out[: m.start()].rstrip()
-        if said is None or not _names(before, lexicon):
+        if who is None or not _names(before, lexicon):
             break
         last = re.split(r"[,;:.!?—–]\s|\s-\s", before.rstrip(" .!?"))[-1]
         if _CUED38S.search(last) and not _names(last, lexicon):
             break  # "Give Alice the apple, sorry, Carol's been waiting": what 'sorry' corrects
-        subject, who = said
-        mentioned = re.findall(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", before, _F)
-        if who and mentioned:
+        if re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", before, _F):
             break  # "Give her the cup, Carol's back from choir": the name may be whom 'her' means
-        if not who:
-            sex = PRONOUN_SEX[subject.lower()]
-            if not {PRONOUN_SEX.get(w.lower()) for w in mentioned} <= {sex}:
-                break
-            fit = [p for p in _ids(before, lexicon, "human") if _fit36(p, subject, lexicon)]
-            if len(fit) != 1:
-                break
-            who = fit[0]
+        cue = list(_CUE_ANY38S.finditer(before))
+        if cue and who in _ids(before[: cue[-1].start()], lexicon, "human"):
+            break  # "…, scratch that, Mrs Khan does, Mr Lee won the bet": why, of whom taken back
         if _NEEDY38S.search(m["said"]):
             needy.add(who)
         out = before if before[-1:] in (".", "!", "?") else before + "."
     m = _ABOUT_START38S.match(out)
-    if m is not None and (said := _about_of38s(m["said"], lexicon)) is not None and said[1]:
+    if m is not None and (who := _about_of38s(m["said"], lexicon)) is not None:
         rest = m["rest"]
         mentioned = re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", rest, _F)
         if _names(rest, lexicon) and mentioned is None:
             if _NEEDY38S.search(m["said"]):
-                needy.add(said[1])
+                needy.add(who)
             out = rest[:1].upper() + rest[1:]
     if out == text:
         return text
@@ -215,26 +209,37 @@ _CUE38S = (
     r"correction|oh,? correction|i mean|my mistake)"
 )
 # "…, or actually, the locker would be better", "…, or wait, …": 'or' before a cue is the cue's
-_OR_CUE38S = re.compile(r",\s*or,?\s+(?P<cue>actually|wait|no|sorry|hang on|hold on)\s*,", _F)
+# ('or no' is session 37's)
+_OR_CUE38S = re.compile(r",\s*or,?\s+(?P<cue>actually|wait|hang on|hold on)\s*,", _F)
 # "…, wait, not the tape, …": the object taken back said again, negated
-_NOT_TAKEN38S = re.compile(rf"(?P<cue>\b{_CUE38S}\s*,\s*)not (?P<x>the [a-z][a-z ]*?)\s*,\s*", _F)
+# (the cues the session-33 rules do not read this after: 'no', 'sorry', 'scratch that' … they do)
+_NOT_TAKEN38S = re.compile(
+    r"(?P<cue>(?<!\bno )\b(?:wait|hang on|hold on|hang about|actually)\s*,\s*)not "
+    r"(?P<x>the [a-z][a-z ]*?)\s*,\s*",
+    _F,
+)
 # "…, no sorry, Emma says on the tray", "…, she said the scanner": whose word the correction is
 _SAID_SO38S = re.compile(
     rf"(?P<cue>\b{_CUE38S}\s*,\s*)(?P<who>he|she|{_P38S}) (?:said|says|reckons|told me)\s+"
     r"(?P<x>(?:(?:on|in|onto|into) )?the [a-z][a-z ]*?)(?=\s*(?:[,.!]|$))",
     _F,
 )
-# "…, scratch that, it's the cup she's after": the cleft of a want after a cue
+# "…, scratch that, it's the cup she's after": the cleft of a want after a cue ('it's the X he
+# wants / needs' after 'no', 'hang on' … is session 36's: here only after the cues it leaves)
 _CLEFT_WANT38S = re.compile(
     rf"(?P<cue>\b{_CUE38S}\s*,\s*)it(?:'s| is) (?P<x>the [a-z][a-z ]*?) (?:(?P<p>he|she)(?:'s| is) "
     r"(?:after|wanting|asking for)|(?P<q>he|she) (?:wants|needs|asked for))(?P<end>\s*[.!]?)\s*$",
     _F,
 )
+_CLEFT_CUE38S = re.compile(r"\b(?:scratch that|correction|my mistake)\s*,\s*$", _F)
 # "…, no, Bob, he's the one back from the kendama comp", "…, Ruth's the one taking temperatures
-# on this ward, so her": the corrected person said to be the one
+# on this ward, so her": the corrected person said to be the one (he / she after the name said
+# alone, a name only with ', so him / her' after it), with what they are doing or have been
+# doing, or where they are back from ("no, Bob's the one who is allergic" gives him nothing)
 _THE_ONE38S = re.compile(
     rf"(?P<head>\b{_CUE38S}\b[^.;!?]*?),\s*(?:(?P<pron>he|she)|(?P<p>{_P38S}))(?:'s| is) the one"
-    r"(?: (?:who|that)(?:'s| is| has))? (?P<what>[^,.;!?]+?)(?:,\s*so (?P<so>him|her))?"
+    r" (?P<what>(?:(?:who|that)(?:'s| is| has) )?(?:just )?(?:(?:back|in|home) from|been|[a-z]+ing)"
+    r"\b[^,.;!?]*?)(?:,\s*so (?P<so>him|her))?"
     r"(?P<end>\s*[.!]?)\s*$",
     _F,
 )
@@ -260,9 +265,10 @@ _OUT_OF38S = re.compile(
     _F,
 )
 # "Hand the bottle to, oh, what's she called, Person A, that's it, Person A.": a name searched for
+# ('what's her name, …' is session 36's)
 _NAME_SEARCH38S = re.compile(
-    r"\b(?P<to>to|for),\s*(?:(?:oh|er|erm|um|uh|ah)\s*,?\s*)?what(?:'s| is) (?:(?P<pron>he|she) "
-    r"called|(?P<pos>his|her) name)(?: again)?\s*[,?]\s*(?P<p>" + _P38S + r")(?:\s*,\s*(?:that's "
+    r"\b(?P<to>to|for),\s*(?:(?:oh|er|erm|um|uh|ah)\s*,?\s*)?what(?:'s| is) (?P<pron>he|she) "
+    r"called(?: again)?\s*[,?]\s*(?P<p>" + _P38S + r")(?:\s*,\s*(?:that's "
     r"it|that's the one|that's right|yes|yeah)(?:\s*,\s*(?P<again>" + _P38S + r"))?)?"
     r"(?=\s*(?:[.!]|$))",
     _F,
@@ -315,7 +321,7 @@ def _corrections38s(text: str, lexicon: Lexicon) -> str:
         ):
             out = out[: m.start()] + m["cue"] + m["x"] + out[m.end() :]
     m = _CLEFT_WANT38S.search(out)
-    if m is not None and _things31(m["x"], lexicon):
+    if m is not None and _things31(m["x"], lexicon) and (m["p"] or _CLEFT_CUE38S.search(m["cue"])):
         pron = m["p"] or m["q"]
         out = f"{out[: m.start()]}{m['cue']}{pron} wants {m['x']}{m['end']}"
     m = _THE_ONE38S.search(out)
@@ -333,7 +339,8 @@ def _corrections38s(text: str, lexicon: Lexicon) -> str:
         elif (
             (who := _one_of38s(m["p"], lexicon)) is not None
             and not last
-            and (not m["so"] or _fit36(who, m["so"], lexicon))
+            and m["so"]
+            and _fit36(who, m["so"], lexicon)
         ):
             out = f"{out[: m.start()]}{head}, {m['p']}{m['end']}"
     m = _FINE38S.search(out)
@@ -351,12 +358,13 @@ def _corrections38s(text: str, lexicon: Lexicon) -> str:
         else:  # an object the scene does not hold, taken back: the new one in its place
             out = f"{out[: m.start()]}{m['new']}{m['end']}"
     m = _NAME_SEARCH38S.search(out)
-    if m is not None and (who := _one_of38s(m["p"], lexicon)) is not None:
-        pron = m["pron"] or m["pos"]
-        if _fit36(who, pron, lexicon) and (
-            not m["again"] or _one_of38s(m["again"], lexicon) == who
-        ):
-            out = f"{out[: m.start()]}{m['to']} {m['p']}{out[m.end() :]}"
+    if (
+        m is not None
+        and (who := _one_of38s(m["p"], lexicon)) is not None
+        and _fit36(who, m["pron"], lexicon)
+        and (not m["again"] or _one_of38s(m["again"], lexicon) == who)
+    ):
+        out = f"{out[: m.start()]}{m['to']} {m['p']}{out[m.end() :]}"
     m = _SLIP38S.search(out)
     if m is not None and _idle38s(m["what"], lexicon):
         words = re.findall(r"[a-z']+", m["what"].lower())
@@ -374,12 +382,16 @@ _FOR_THEIRS38S = re.compile(
 )
 
 
+# (a purpose named by its words alone; 'for her lesson on volcanoes' is an earlier rule's)
+_PLACE_WORD38S = re.compile(r"\b(?:on|about|with|at|in|of|from|to|for|by|into|onto)\b", _F)
+
+
 def _for_theirs38s(text: str, lexicon: Lexicon) -> str:
     """Session 38 (12s): 'for his / her <doing>' closing the instruction taken off (above) when
     its words are idle (_idle38s, no verb of VERBS), the pronoun may be a person named before it,
     and what is left names an object and reads."""
     m = _FOR_THEIRS38S.search(text)
-    if m is None or not _idle38s(m["what"], lexicon):
+    if m is None or not _idle38s(m["what"], lexicon) or _PLACE_WORD38S.search(m["what"]):
         return text
     if any(w in VERBS for w in re.findall(r"[a-z']+", m["what"].lower())):
         return text
