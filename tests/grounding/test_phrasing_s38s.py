@@ -48,9 +48,6 @@ test_about_them = CASES.test(
     ("Thermometer to Mr Lee, the nurse has been on her feet for hours.", "thermometer>B", WARD),
     # her / his of the remark's person ('her' could not be Bob, whom the request names)
     ("Give Bob the cup, Carol's on her break.", "cup>B", CELL),
-    # opening the instruction, a sentence (or a part before a semicolon) of its own
-    ("Carol's just back from choir. Give Alice the cup.", "cup>A", CELL),
-    ("Omar's just back from the dentist; put the sponge in the sink.", "sponge@sink", LAB),
     # two remarks
     (
         "The apple for Alice please. Carol has been on the phone all morning. Bob's just back "
@@ -72,8 +69,6 @@ test_about_them_refused = CASES.test(
     ("Give Noah the ruler, Zoe's the one with the red book.", None, CLASSROOM),
     ("Hand Tom the scanner, Mia's at the pallet.", None, DEPOT),
     ("Give her the stapler, Priya has been in meetings all day.", None, OFFICE),
-    ("Carol's just back from choir with the apple. Give Alice the cup.", None, CELL),
-    ("Omar's not back from the dentist; put the sponge in the sink.", None, LAB),
     ("Give Bob the cup, she's tired.", None, CELL),
     ("Give Bob the cup, Carol's on his break.", None, CELL),
     ("Give Person B the bottle, Person A as well", None, CELL),

@@ -105,10 +105,6 @@ _ABOUT_END38S = re.compile(
     r"\s+)?(?P<said>[^,;:.!?—–]+?)\s*[.!]?\s*$",
     _F,
 )
-# … or opening it, a sentence (or a part before a semicolon) of its own ("Carol's just back from
-# choir. Give Alice the cup."); with a pronoun for a person after it the name may be whom it means,
-# and it is left (earlier rules read "Carol's just back from choir, so give her the cup")
-_ABOUT_START38S = re.compile(r"^(?P<said>[^,;:.!?—–]+?)\s*(?:[.!]|;)\s+(?P<rest>\S.*)$", _F)
 # a correction's cue anywhere before the remark
 _CUE_ANY38S = re.compile(
     r"\b(?:no|sorry|actually|wait|hang on|hold on|hang about|scratch that|i mean|i meant|"
@@ -182,14 +178,6 @@ def _about_them38s(text: str, lexicon: Lexicon) -> str:
         if _NEEDY38S.search(m["said"]):
             needy.add(who)
         out = before if before[-1:] in (".", "!", "?") else before + "."
-    m = _ABOUT_START38S.match(out)
-    if m is not None and (who := _about_of38s(m["said"], lexicon)) is not None:
-        rest = m["rest"]
-        mentioned = re.search(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", rest, _F)
-        if _names(rest, lexicon) and mentioned is None:
-            if _NEEDY38S.search(m["said"]):
-                needy.add(who)
-            out = rest[:1].upper() + rest[1:]
     if out == text:
         return text
     read = _reading(out, lexicon)
