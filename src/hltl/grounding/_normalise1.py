@@ -1,6 +1,4 @@
-"""Rewrites of the normaliser, part 1 of 5 (normalise.py: the docstring, the
-step order and parse_instruction). The rules are cut from one module in dependency order so
-each file stays under the tools' 1 MiB limit; see docs/grounding.md."""
+"""The normaliser's rules of sessions 10-37, part 1 of 5 (docs/grounding.md: where they live)."""
 
 from __future__ import annotations
 

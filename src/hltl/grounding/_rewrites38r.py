@@ -1,9 +1,4 @@
-"""The normaliser's rewrites of session 38 (engineer 12r): blind36's choices, counts, negation and
-exclusions.
-
-Each rewrite takes the text and the scene's lexicon and returns the text rewritten, or the text
-unchanged when it does not apply; normalise.py runs them in `_STEPS19`'s order.
-"""
+"""The normaliser's rewrites of session 38, engineer 12r (docs/grounding.md)."""
 
 from __future__ import annotations
 
