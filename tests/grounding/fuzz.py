@@ -73,7 +73,14 @@ blind35's kinds to four families: corrections of the person ("…, hang about, I
 said by a verb of need ("Bob is desperate for the apple.") and given up ("Bob has gone off the
 apple.": refused), "the pair of mugs" (as "both"), the speaker saying who they are (", I'm the
 relief cook today") and a remark about a person of the scene by a name (", Alice is new here"; the
-entry).
+entry). Session 38 added blind36's kinds to five families: a remark about the entry's one person by
+a pronoun (", she's just back from her pottery class"; the entry) and about a person by a name
+before the entry ("Bob's had a long shift, so …"; the entry), a thing given up for the entry's own
+("Bob doesn't need the cup any more, just the apple."; the entry's handover), more wants said by a
+verb ("could do with", "would love", "'s after") and given up ("doesn't need … any more"), one of a
+kind for a person ("Give Bob any of the mugs, whichever's nearer."; a choice of each), another
+person set against the one named ("Alice shouldn't get the apple; Bob should.") and the person
+corrected with who wants it (", actually, it's Carol who asked for it").
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -347,6 +354,10 @@ RECIPIENT_FIXES = (  # the handover to {q}
     ". No, correction, it's for {q}.",
     ", oh dear, it should be {q}",
     ", what am I saying, {q} gets it",
+    # (session 38; blind36's corrections restating who wants it: "actually, … it's Person B who's
+    # just finished …", "oh, correction, he's wanting the bottle")
+    ", actually, it's {q} who asked for it",
+    ". Oh, correction, {q} is the one who wants it.",
 )
 REASONS = (", I mixed them up", ", my mistake", ", long day", ", I got the names muddled")
 UNDECIDED = (  # refused: which person is left open
@@ -400,6 +411,12 @@ WANT_FRAMES = (
     "{P} could really use the {o}.",
     "{P} is in need of the {o}.",
     "{P}'s been craving the {o}.",
+    # (session 38; blind36's "could do with the bottple", "would love the chips", "'s after the
+    # chips", "could murder the chips")
+    "{P} could do with the {o}.",
+    "{P} would love the {o}.",
+    "{P}'s after the {o}.",
+    "{P} could murder the {o}.",
 )
 TOLD = (
     "{P} wants the {o}, I'm told.",
@@ -418,11 +435,23 @@ NOT_WANTED = (  # refused: no want (negated, had already, past, or given up)
     "{P} has gone off the {o}.",  # (session 37: a want given up, denied or done without)
     "{P} won't be needing the {o}.",
     "{P} could do without the {o}.",
+    "{P} doesn't need the {o} any more.",  # (session 38: blind36's "doesn't need … any more")
+    "{P}'s had enough of the {o}.",
 )
 APPOSITIONS = ("our oboist", "the new intern", "my neighbour", "our bassoonist", "a regular here")
 # words after a name that an apposition before them would part from it ("Alice, our oboist, too")
 _HELD = frozenset(["too", "rather", "instead", "either", "first", "last", "as", "then", "only"])
-FRAME_FORMS = ("frame", "told", "not wanted", "frame tail", "apposition")
+# (session 38; blind36's "Person B doesn't need the bottle any more, just the cup.", "so the chips,
+# not the bottle", "she's gone off fruit"): for an entry's one handover of a one-of-a-kind object,
+# another one-of-a-kind object {x} given up for it (INSTEAD): the entry's handover, or refused
+INSTEAD = (
+    "{P} doesn't need the {x} any more, just the {o}.",
+    "Not the {x} for {p}, the {o}.",
+    "{P} has gone off the {x}, so the {o} instead.",
+    "{P}'s had enough of the {x}, so the {o}, please.",
+    "The {o} for {p}, not the {x}.",
+)
+FRAME_FORMS = ("frame", "told", "not wanted", "frame tail", "apposition", "instead")
 # repairs (session 32; blind30 had "Give the bottle to Person, er, Person A, the only one here."
 # and "Notebook to Sam, no, to Priya, Sam's got one.", and the lead found "The magazine, er, the
 # jug, for Mr Lee." read as both): an object or a person of an entry said after another one and a
@@ -541,6 +570,11 @@ CONTRASTS = (  # {q} another person of the scene: the handover to {p}
     "It's {p} who gets the {o}, not {q}.",
     "{P}, not {q}, is the one to have the {o}.",
     "The {o} {be} for {p}, not for {q}.",
+    # (session 38; blind36's "Person A shouldn't get the chips; they're for Person B.", "The banana
+    # isn't for Omar, it's Emma who's asked for it.")
+    "{q} shouldn't get the {o}; {p} should.",
+    "Not {q}, it's {p} who gets the {o}.",
+    "The {o} {be} not for {q}, it's {p} who asked for {it}.",
 )
 NOT_CLEFTS = (  # refused: no recipient named
     "It's not {p} who gets the {o}.",
@@ -594,7 +628,17 @@ ENTRY_BOTH = ("both {cs}", "the pair of {cs}")  # … and said as two
 ONE = ("the one {o}", "the only {o}", "the single {o}")
 SEVERAL = ("both {os}", "the two {os}", "all three {os}", "the 2 {os}")
 MASS = frozenset(["glue", "salt", "tape", "water", "juice", "milk", "rice", "soup", "sugar"])
-COUNT_FORMS = ("kind", "kind miscounted", "one", "several", "entry", "entry miscounted")
+# (session 38; blind36's "any old mug will do her", "any of the pens will do", "either will do",
+# "whichever's nearer"): one of a kind the scene has several of for a person, any one (ANY_OF): a
+# choice of each of the kind to that person, or refused
+ANY_OF = (
+    "Give {p} any of the {cs}, whichever's nearer.",
+    "{P} can have one of the {cs}, any will do.",
+    "Any {c} will do for {p}.",
+    "One of the {cs} for {p}, doesn't matter which.",
+    "{P} isn't fussy, any {c} will do.",
+)
+COUNT_FORMS = ("kind", "kind miscounted", "one", "several", "entry", "entry miscounted", "any")
 # remarks (session 36; blind34 had "she's frozen, the heating's off on this side", "rough poker
 # night" and "the whole lot's for the same van" among its refusals): a remark after an entry that
 # names no object, person or surface of the scene and carries no request, negation, time or
@@ -649,7 +693,35 @@ CONTEXT = (
     ". {P} has been on the phone all morning.",
     ". {P} is new on the team.",
 )
-REMARK_FORMS = ("remark", "time", "contrary", "context")
+# (session 38; blind36's "carols back from the glass blowers so the red mug to her …"): the same
+# remarks said before the entry, joined by "so" or a sentence of their own: the entry, or refused
+CONTEXT_BEFORE = (
+    "{P}'s just back from the gym, so ",
+    "{P}'s had a long shift, so ",
+    "{P} is new here, so ",
+    "{P} has been on the phone all morning. ",
+)
+# (session 38; blind36's remarks about the person by a pronoun: "shes back from her jenga
+# tournament", "the pony club tired him out", "hes been out with the tree fellers all day"): after
+# an entry of one handover naming its one person by a name and no other person or object (and no
+# pronoun for a person), a remark about a person by a pronoun (PRONOUN_SETS fill {s} "she's", {h}
+# "she's"/"they've", {pos} "her", {obj} "her"; {S}, {H}, {Pos} at a sentence's start): the entry,
+# or refused (whomever the pronoun means, the remark asks for nothing)
+ABOUT = (
+    ", {s} just back from {pos} pottery class",
+    ", {h} been out on the allotment all day",
+    ", the choir practice wore {obj} out",
+    "; {pos} shift was a long one",
+    ". {S} just back from {pos} pottery class.",
+    ". {H} been on {pos} feet all morning.",
+    ". The quiz night tired {obj} out.",
+)
+PRONOUN_SETS = (
+    {"s": "he's", "h": "he's", "pos": "his", "obj": "him"},
+    {"s": "she's", "h": "she's", "pos": "her", "obj": "her"},
+    {"s": "they're", "h": "they've", "pos": "their", "obj": "them"},
+)
+REMARK_FORMS = ("remark", "time", "contrary", "context", "about", "context before")
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -1296,8 +1368,10 @@ def frames(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
     refused). For a grounded entry: a want frame after it for a person and a one-of-a-kind object
     it does not name (the entry's reading and that handover). For an entry saying a person by a
     name with a word after it: an apposition between commas after the name (as the entry, or
-    refused with its readings). Only forms naming nothing of the scene but their object and
-    person are said."""
+    refused with its readings). For an entry of one handover of a one-of-a-kind object to a
+    person (session 38): another one-of-a-kind object it does not name given up for its own
+    (INSTEAD: the handover). Only forms naming nothing of the scene but their object and person
+    are said."""
     text = entry.text.strip()
     want = entry.want
 
@@ -1347,6 +1421,19 @@ def frames(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         said = f"{text[: m.end()]}, {apposition},{text[m.end() :]}"
         must = "same" if want is not None else "refuse"
         yield Variant(part, entry.scene, said, want, must, "frames", entry.readings, "apposition")
+    # (session 38) another one-of-a-kind object the entry does not name given up for its own
+    if (
+        isinstance(want, Task)
+        and want.kind == "deliver"
+        and want.target is not None
+        and want.obj in unique
+    ):
+        given_up = [x for x in unique if x != want.obj and x not in _objects_named(text, scene)]
+        instead = [f for f in INSTEAD if fits(f)]
+        if given_up and instead:
+            x = _name(scene, rng.choice(given_up))
+            said = say(rng.choice(instead).replace("{x}", x), want.obj, want.target)
+            yield Variant(part, entry.scene, said, want, "same", "frames", (), "instead")
 
 
 def _in_list(text: str, at: re.Match[str]) -> bool:
@@ -1537,7 +1624,11 @@ def _has_order(node: Node) -> bool:
 def _agreed(o: str) -> dict[str, str]:
     """The verb forms that agree with the object named ``o`` ("the chips are", "the cup is")."""
     plural = o.endswith("s") and not o.endswith("ss")
-    return {"be": "are" if plural else "is", "go": "go" if plural else "goes"}
+    return {
+        "be": "are" if plural else "is",
+        "go": "go" if plural else "goes",
+        "it": "them" if plural else "it",
+    }
 
 
 def _surface_name(scene: Scene, sid: str) -> str | None:
@@ -1670,7 +1761,8 @@ def _the_once(text: str, name: str) -> re.Match[str] | None:
 def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
     """The count variants of one entry. For a scene with a kind it has several objects of, a
     request of every one of the kind for a person with the count (KIND_COUNTS, BOTH for two:
-    every one to that person) or another count (BOTH for three or more: refused). For a grounded
+    every one to that person) or another count (BOTH for three or more: refused), and (session
+    38) one of the kind, any one (ANY_OF: a choice of each to that person). For a grounded
     entry with no choice in it naming its one one-of-a-kind object once as "the <name>", that
     object said as the only one (ONE: the entry) or as several (SEVERAL: refused); naming a kind
     in the plural once as "the <kinds>" (every one of the kind) and nothing else of that kind, that
@@ -1697,6 +1789,12 @@ def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         form = _of_kind_said(n, forms, rng)
         said = form.format(p=p, P=p[:1].upper() + p[1:], n=_counted(n, rng), cs=cs)
         yield variant(said, every if agree else None, "kind" if agree else "kind miscounted")
+        # (session 38) one of a kind, any one
+        cs, (c, ids) = rng.choice(sorted(plurals.items()))
+        hid = rng.choice(scene.humans).id
+        p = _name(scene, hid)
+        said = rng.choice(ANY_OF).format(p=p, P=p[:1].upper() + p[1:], c=c, cs=cs)
+        yield variant(said, Group("or", tuple(Task("deliver", i, hid) for i in ids)), "any")
     if want is None or _has_choice(want):
         return
     named = _objects_named(text, scene)
@@ -1747,8 +1845,11 @@ def remarks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     (TIMED: refused), for a grounded entry of one handover naming its one person by a name and
     no other person or object (and no pronoun for a person), that person said not to want it
     (CONTRARY: refused), and, for a grounded entry with no pronoun for a person, a remark about a
-    person of the scene said by a name no other shares (CONTEXT: the entry, or refused). After a
-    question only the ". " forms."""
+    person of the scene said by a name no other shares (CONTEXT: the entry, or refused); session
+    38: for an entry of one handover naming its one person (as CONTRARY), a remark about a person
+    by a pronoun after it (ABOUT: the entry, or refused), and, for a grounded entry with no
+    pronoun for a person that takes nothing back, a remark about a person by a name before it
+    (CONTEXT_BEFORE: the entry, or refused). After a question only the ". " forms."""
     text = entry.text.strip()
     question = text.endswith("?")
 
@@ -1773,6 +1874,24 @@ def remarks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     if grounded and names and (forms := said(CONTEXT)):
         p = rng.choice(names)
         yield variant(rng.choice(forms).format(p=p, P=p), entry.want, entry.readings, "context")
+    # (session 38)
+    about = [
+        f
+        for f in ABOUT
+        if (not question or f.startswith(". ")) and _names_nothing(re.sub(r"\{\w+\}", "", f), scene)
+    ]
+    if one is not None and about:
+        fill = rng.choice(PRONOUN_SETS)
+        big = {k[:1].upper() + k[1:]: w[:1].upper() + w[1:] for k, w in fill.items()}
+        yield variant(rng.choice(about).format(**fill, **big), entry.want, (), "about")
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
+    before = [f for f in CONTEXT_BEFORE if _names_nothing(f.replace("{P}", ""), scene)]
+    if grounded and names and before and not takes_back:
+        p = rng.choice(names)
+        said_before = _after(rng.choice(before).format(P=p), text, scene)
+        yield Variant(
+            part, entry.scene, said_before, entry.want, "same", "remarks", (), "context before"
+        )
 
 
 def _one_id(name: str, scene: Scene) -> str:

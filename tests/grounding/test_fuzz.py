@@ -29,8 +29,10 @@ another: refused), the remark family of session 36 (a remark naming nothing of t
 entry: the entry; a delay after it, or the one person it hands its one object to said not to want
 it: refused; session 37: a remark about a person of the scene by a name: the entry), the forms
 session 37 added to four families from blind35's kinds (corrections, wants said by a verb of need,
-"the pair of", the speaker saying who they are), and the wrappers and take-backs of a seed
-unchanged by them."""
+"the pair of", the speaker saying who they are), the forms session 38 added to five families from
+blind36's kinds (a remark about a person by a pronoun or before the entry, a thing given up for
+another, one of a kind "any", another person set against the one named), and the wrappers and
+take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -899,6 +901,20 @@ def _said_by(forms: tuple[str, ...], text: str, scene: Scene) -> Task:
     return said.pop()
 
 
+def _said_instead(text: str, scene: Scene) -> tuple[str, str]:
+    """The object and person of the INSTEAD form ``text`` says, its given-up object {x} another
+    one-of-a-kind object of ``scene``."""
+    for form in fuzz.INSTEAD:
+        out = re.escape(form)
+        for key, group in (("o", "o"), ("p", "p"), ("P", "p"), ("x", "x")):
+            out = out.replace(re.escape("{" + key + "}"), f"(?P<{group}>.+?)")
+        if m := re.fullmatch(out, text):
+            x, o = _one_object(m["x"], scene), _one_object(m["o"], scene)
+            assert x != o and {x, o} <= set(fuzz._unique_objects(scene)), text
+            return m["o"], m["p"]
+    raise AssertionError(f"{text!r} says none of {fuzz.INSTEAD}")
+
+
 def _without_apposition(text: str) -> str:
     """``text`` with the one apposition said after a name taken out."""
     said = "|".join(re.escape(a) for a in fuzz.APPOSITIONS)
@@ -912,7 +928,7 @@ def test_an_entry_of_one_handover_gets_every_frame(seed: int) -> None:
     entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
     made = _frames(entry, CELL, seed)
     assert [v.form for v in made] == list(fuzz.FRAME_FORMS)
-    frame, told, not_wanted, tail, apposition = made
+    frame, told, not_wanted, tail, apposition, instead = made
     for v in made:
         assert v.family == "frames" and (v.must == "refuse") is (v.want is None)
     # the entry's handover said again: as a want (the handover) or not wanted (refused)
@@ -929,6 +945,9 @@ def test_an_entry_of_one_handover_gets_every_frame(seed: int) -> None:
     assert apposition.want == entry.want and apposition.must == "same"
     assert _without_apposition(apposition.text) == entry.text
     assert apposition.text.startswith("Give Bob, ")
+    # (session 38) another object given up for the entry's: the entry
+    assert instead.want == entry.want and instead.must == "same"
+    assert _said_instead(instead.text, CELL) == ("apple", "Bob")
 
 
 @pytest.mark.parametrize(
@@ -1010,6 +1029,9 @@ def test_over_the_corpus_each_frame_variant_names_what_it_says() -> None:
         if v.form in said:
             task = _said_by(said[v.form], v.text, scene)
             assert v.want is None or v.want == task
+        elif v.form == "instead":
+            o, p = _said_instead(v.text, scene)
+            assert v.want == Task("deliver", _one_object(o, scene), _one_person(p, scene))
         elif v.form == "frame tail":
             assert v.added is not None and isinstance(v.want, Group)
             assert v.added not in tasks(v.want.children[0])
@@ -1484,6 +1506,7 @@ def _filled(forms: tuple[str, ...], text: str) -> dict[str, str]:
             *((k, ".+?") for k in ("o", "p", "P", "q", "x", "s")),
             ("be", "is|are"),
             ("go", "goes|go"),
+            ("it", "it|them"),
         ):
             group = "p" if key == "P" else key
             out = out.replace(re.escape("{" + key + "}"), f"(?P<{group}>{said})", 1)
@@ -1495,7 +1518,7 @@ def _filled(forms: tuple[str, ...], text: str) -> dict[str, str]:
 def _agrees(said: dict[str, str]) -> None:
     """The verb forms said agree with the object ("the crisps are", "the cup goes")."""
     agreed = fuzz._agreed(said["o"])
-    for key in ("be", "go"):
+    for key in ("be", "go", "it"):
         assert said.get(key) in (None, agreed[key]), said
 
 
@@ -1570,8 +1593,8 @@ def test_a_placement_says_its_surface_in_a_cleft(seed: int) -> None:
 
 
 def test_the_verb_agrees_with_the_object() -> None:
-    assert fuzz._agreed("crisps") == {"be": "are", "go": "go"}
-    assert fuzz._agreed("cup") == fuzz._agreed("glass") == {"be": "is", "go": "goes"}
+    assert fuzz._agreed("crisps") == {"be": "are", "go": "go", "it": "them"}
+    assert fuzz._agreed("cup") == fuzz._agreed("glass") == {"be": "is", "go": "goes", "it": "it"}
     entry = _entry("cell", "Give Bob the crisps.", "chips>B")
     for seed in range(40):
         for v in _clefts(entry, CELL, seed):
@@ -1685,11 +1708,33 @@ def _count_said(text: str) -> int:
     return int(m["n"]) if m["n"].isdigit() else fuzz.NUMBERS.index(m["n"].lower())
 
 
+def _check_any(v: fuzz.Variant, scene: Scene) -> None:
+    """``v`` says one of ANY_OF of a kind of ``scene``'s several, for one person: a choice of
+    each of the kind to that person (session 38)."""
+    assert v.form == "any" and v.family == "counts" and v.must == "same"
+    plurals = fuzz._plurals(scene)
+    for form in fuzz.ANY_OF:
+        out = re.escape(form)
+        for key, group in (("p", "p"), ("P", "p"), ("c", "c"), ("cs", "cs")):
+            out = out.replace(re.escape("{" + key + "}"), f"(?P<{group}>.+?)")
+        if m := re.fullmatch(out, v.text):
+            said = m.groupdict()
+            break
+    else:
+        raise AssertionError(f"{v.text!r} says none of {fuzz.ANY_OF}")
+    (ids,) = [
+        kind[1] for cs, kind in plurals.items() if said.get("cs") == cs or said.get("c") == kind[0]
+    ]
+    whom = _one_person(said["p"], scene)
+    assert v.want == Group("or", tuple(Task("deliver", i, whom) for i in ids)), v.text
+
+
 @pytest.mark.parametrize("seed", range(40))
 def test_a_kind_of_several_is_said_with_its_count_or_another(seed: int) -> None:
     for scene, n in ((CELL, 2), (_three_mugs(), 3)):
-        entry = _entry("cell", "Give her the cup.", None)  # refused: only the kind's variant
-        (v,) = _counts(entry, scene, seed)
+        entry = _entry("cell", "Give her the cup.", None)  # refused: only the kind's variants
+        v, any_one = _counts(entry, scene, seed)
+        _check_any(any_one, scene)
         p = _one_person(_count_filled(v.text, "mugs")["p"], scene)
         assert "all two" not in v.text and "all 2 " not in v.text
         if v.form == "kind":  # every mug to that person, said with their number
@@ -1730,8 +1775,8 @@ def test_the_pair_of_is_said_as_both_of_a_kind_and_of_an_entry() -> None:
 @pytest.mark.parametrize("seed", range(30))
 def test_a_one_of_a_kind_object_is_said_as_the_one_or_as_several(seed: int) -> None:
     entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
-    kind, one, several = _counts(entry, CELL, seed)
-    assert kind.form in ("kind", "kind miscounted")
+    kind, any_one, one, several = _counts(entry, CELL, seed)
+    assert kind.form in ("kind", "kind miscounted") and any_one.form == "any"
     assert (one.form, several.form) == ("one", "several")
     said = [f.format(o="apple") for f in fuzz.ONE]
     assert one.text in [f"Give Bob {s}, please." for s in said] and one.want == entry.want
@@ -1776,9 +1821,9 @@ def test_a_count_is_only_made_where_it_says_what_it_must(
     made = set()
     for seed in range(20):
         variants = _counts(entry, CELL, seed)
-        assert variants[0].form in ("kind", "kind miscounted")
-        made |= {v.form for v in variants[1:]}
-        for v in variants[1:]:
+        assert variants[0].form in ("kind", "kind miscounted") and variants[1].form == "any"
+        made |= {v.form for v in variants[2:]}
+        for v in variants[2:]:
             if text.startswith("The "):
                 assert v.text.startswith(("The ", "Both ", "All ")), v.text
     assert made == forms
@@ -1829,9 +1874,11 @@ def test_over_the_corpus_each_count_variant_names_what_it_says() -> None:
     kinds = dict.fromkeys(fuzz.COUNT_FORMS, 0)
     for v, scene in fuzz.generated(PARTS, seed=35, every=1, families=("counts",)):
         assert v.family == "counts" and (v.must == "refuse") is (v.want is None)
-        assert v.must == ("same" if v.form in ("kind", "one", "entry") else "refuse")
+        assert v.must == ("same" if v.form in ("kind", "one", "entry", "any") else "refuse")
         kinds[v.form] += 1
-        if v.form.startswith("kind"):
+        if v.form == "any":
+            _check_any(v, scene)
+        elif v.form.startswith("kind"):
             plurals = fuzz._plurals(scene)
             cs = next(c for c in plurals if re.search(rf"\b{c}\b", v.text))
             _one_person(_count_filled(v.text, cs)["p"], scene)
@@ -1857,6 +1904,25 @@ def _remarks_filled(forms: tuple[str, ...], scene: Scene) -> list[str]:
     return sorted({f.format(p=n, P=n[:1].upper() + n[1:]) for f in forms for n in names})
 
 
+def _about_filled() -> tuple[str, ...]:
+    """ABOUT's forms filled by every pronoun set (session 38)."""
+    return tuple(
+        f.format(**fill, **{k[:1].upper() + k[1:]: w[:1].upper() + w[1:] for k, w in fill.items()})
+        for f in fuzz.ABOUT
+        for fill in fuzz.PRONOUN_SETS
+    )
+
+
+def _before_said(text: str, entry: str, scene: Scene) -> str:
+    """The CONTEXT_BEFORE form (its {P} filled) ``text`` says before ``entry`` (its first letter
+    in lower case after "so", unless a name); fails where there is none."""
+    for form in _remarks_filled(fuzz.CONTEXT_BEFORE, scene):
+        lowered = entry[:1].lower() + entry[1:]
+        if text in (form + entry, form + lowered) and text.startswith(form):
+            return form
+    raise AssertionError(f"{text!r} is not one of {fuzz.CONTEXT_BEFORE} and {entry!r}")
+
+
 def _remark_said(forms: tuple[str, ...], text: str, entry: str, scene: Scene) -> str:
     """The form of ``forms`` (its {p}/{P} filled) ``text`` says after ``entry``, whose closing "."
     or "!" goes (a question keeps its "?"); fails where there is none."""
@@ -1870,9 +1936,10 @@ def _remark_said(forms: tuple[str, ...], text: str, entry: str, scene: Scene) ->
 @pytest.mark.parametrize("seed", range(30))
 def test_an_entry_of_one_handover_gets_a_remark_a_delay_and_a_contrary_remark(seed: int) -> None:
     entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
-    remark, timed, contrary, context = _remarks(entry, CELL, seed)
-    assert [v.form for v in (remark, timed, contrary, context)] == list(fuzz.REMARK_FORMS)
-    assert all(v.family == "remarks" for v in (remark, timed, contrary, context))
+    made = _remarks(entry, CELL, seed)
+    remark, timed, contrary, context, about, before = made
+    assert [v.form for v in made] == list(fuzz.REMARK_FORMS)
+    assert all(v.family == "remarks" for v in made)
     # a remark naming nothing: the entry
     assert remark.want == entry.want and remark.must == "same"
     _remark_said(fuzz.REMARKS, remark.text, entry.text, CELL)
@@ -1886,6 +1953,14 @@ def test_an_entry_of_one_handover_gets_a_remark_a_delay_and_a_contrary_remark(se
     assert context.want == entry.want and context.must == "same" and context.readings == ()
     said = _remark_said(fuzz.CONTEXT, context.text, entry.text, CELL)
     assert len(_people_named(said, CELL)) == 1, said
+    # (session 38) a remark about a person by a pronoun after the entry, or by a name before it:
+    # the entry
+    for v in (about, before):
+        assert v.want == entry.want and v.must == "same" and v.readings == ()
+    said = _remark_said(_about_filled(), about.text, entry.text, CELL)
+    assert not _people_named(said, CELL) and not fuzz._objects_named(said, CELL), said
+    said = _before_said(before.text, entry.text, CELL)
+    assert len(_people_named(said, CELL)) == 1, said
 
 
 @pytest.mark.parametrize("seed", range(20))
@@ -1894,6 +1969,11 @@ def test_after_a_question_a_remark_is_a_sentence(seed: int) -> None:
     made = _remarks(entry, CELL, seed)
     assert [v.form for v in made] == list(fuzz.REMARK_FORMS)
     for v in made:
+        if v.form == "context before":  # (said before it: the question as it is)
+            assert v.text.endswith(", so could you give Carol the bottle?") or v.text.endswith(
+                ". Could you give Carol the bottle?"
+            )
+            continue
         assert v.text.startswith("Could you give Carol the bottle? ")
         assert v.text[len("Could you give Carol the bottle? ")].isupper()
 
@@ -1915,7 +1995,7 @@ def test_a_contrary_remark_is_only_made_of_an_entry_naming_its_one_person(
     entry = _entry("cell", text, want)
     for seed in range(20):
         made = [v.form for v in _remarks(entry, CELL, seed)]
-        assert made == ["remark", "time"] + ([] if "him" in text else ["context"])
+        assert made == ["remark", "time"] + ([] if "him" in text else ["context", "context before"])
 
 
 def test_a_refused_entry_stays_refused_with_its_readings_and_gets_no_contrary_remark() -> None:
@@ -1989,14 +2069,18 @@ def test_over_the_corpus_each_remark_variant_names_what_it_says() -> None:
     kinds = dict.fromkeys(fuzz.REMARK_FORMS, 0)
     for v, scene in fuzz.generated(PARTS, seed=36, every=2, families=("remarks",)):
         assert v.family == "remarks" and (v.must == "refuse") is (v.want is None)
-        assert v.must == "refuse" or v.form in ("remark", "context")
-        assert v.form != "context" or v.want is not None
+        assert v.must == "refuse" or v.form in ("remark", "context", "about", "context before")
+        assert v.form not in ("context", "about", "context before") or v.want is not None
         kinds[v.form] += 1
+        if v.form == "context before":  # (session 38) a name before the entry
+            assert any(v.text.startswith(f) for f in _remarks_filled(fuzz.CONTEXT_BEFORE, scene))
+            continue
         forms = {
             "remark": fuzz.REMARKS,
             "time": fuzz.TIMED,
             "contrary": fuzz.CONTRARY,
             "context": fuzz.CONTEXT,
+            "about": _about_filled(),
         }[v.form]
         said = [f for f in _remarks_filled(forms, scene) if v.text.endswith(f.lstrip("."))]
         assert said, v.text
@@ -2039,3 +2123,97 @@ def test_every_form_of_a_family_is_said(family: str, form: str, forms: tuple[str
                     said.add(f)
     fitting = {f for f in forms if fuzz._names_nothing(re.sub(r"\{\w\}", "", f), CELL)}
     assert said == fitting and len(fitting) >= len(forms) - 2, set(forms) - said
+
+
+# -- session 38: blind36's kinds in five families -------------------------------------------------
+
+
+def _form_of(forms: tuple[str, ...], text: str, keys: tuple[str, ...]) -> str | None:
+    """The form of ``forms`` that ``text`` says whole, its ``keys`` filled by anything."""
+    for form in forms:
+        out = re.escape(form)
+        for key in keys:
+            out = out.replace(re.escape("{" + key + "}"), ".+?")
+        if re.fullmatch(out, text):
+            return form
+    return None
+
+
+def test_every_form_of_blind36s_kinds_is_said() -> None:
+    """Each form session 38 adds (a thing given up for another, one of a kind "any", another
+    person set against the one named, a remark about the person by each pronoun, a remark about a
+    person before the entry) is said over a few seeds after an entry of one handover."""
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    said: dict[str, set[str]] = {"instead": set(), "any": set(), "contrast": set()}
+    about, before, pronouns = set(), set(), set()
+    for seed in range(300):
+        rng = random.Random(seed)
+        made = [
+            *fuzz.frames("t", entry, CELL, rng),
+            *fuzz.counts("t", entry, CELL, rng),
+            *fuzz.clefts("t", entry, CELL, rng),
+        ]
+        for v in made:
+            if v.form == "instead":
+                said["instead"].add(_form_of(fuzz.INSTEAD, v.text, ("o", "p", "P", "x")) or "")
+            elif v.form == "any":
+                said["any"].add(_form_of(fuzz.ANY_OF, v.text, ("p", "P", "c", "cs")) or "")
+            elif v.form == "contrast":
+                keys = ("o", "p", "P", "q", "be", "it")
+                said["contrast"].add(_form_of(fuzz.CONTRASTS, v.text, keys) or "")
+        for v in _remarks(entry, CELL, seed):
+            if v.form == "about":
+                rest = v.text[len("Give Bob the apple, please") :]
+                for fill in fuzz.PRONOUN_SETS:
+                    big = {k[:1].upper() + k[1:]: w[:1].upper() + w[1:] for k, w in fill.items()}
+                    for f in fuzz.ABOUT:
+                        if f.format(**fill, **big) == rest:
+                            about.add(f)
+                            pronouns.add(fill["pos"])
+            elif v.form == "context before":
+                before.add(_before_said(v.text, entry.text, CELL))
+    assert said["instead"] == set(fuzz.INSTEAD)
+    assert said["any"] == set(fuzz.ANY_OF)
+    assert said["contrast"] == set(fuzz.CONTRASTS)
+    assert about == set(fuzz.ABOUT) and pronouns == {"his", "her", "their"}
+    assert {b.split("'")[0].split(" is")[0].split(" has")[0] for b in before} == {
+        "Alice",
+        "Bob",
+        "Carol",
+    }
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Bob the apple or the cup.", "apple>B | cup>B"),  # a choice
+        ("Give Alice the red mug.", "mug_red>A"),  # a mug of two: "the mug" says neither
+        ("Put the cup on the shelf.", "cup@shelf"),  # no person
+        ("Give Bob the cup and Alice the apple.", "cup>B & apple>A"),  # two handovers
+    ],
+)
+def test_nothing_is_given_up_for_an_entry_that_is_not_one_handover_of_a_one_of_a_kind_object(
+    text: str, want: str
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(30):
+        assert "instead" not in [v.form for v in _frames(entry, CELL, seed)]
+
+
+def test_the_given_up_object_is_not_one_the_entry_names() -> None:
+    entry = _entry("cell", "Give Bob the apple, not the cup.", "apple>B")
+    for seed in range(60):
+        for v in _frames(entry, CELL, seed):
+            if v.form == "instead":
+                assert "cup" not in v.text and v.want == entry.want, v.text
+
+
+def test_no_remark_goes_before_an_entry_that_takes_back_or_says_a_pronoun() -> None:
+    """(Nor a remark by a pronoun after an entry that says one: whom would it mean?)"""
+    for text, want, after in (
+        ("Scratch that, give Bob the apple.", "apple>B", True),
+        ("Bob wants the apple, give it to him.", "apple>B", False),
+    ):
+        for seed in range(30):
+            forms = [v.form for v in _remarks(_entry("cell", text, want), CELL, seed)]
+            assert "context before" not in forms and ("about" in forms) is after, (text, forms)

@@ -39,7 +39,6 @@ KNOWN_MISSES = frozenset(
         # blind3: steps after the 'or' of an 'either' could belong to it or come after it
         "Either put the cup on the shelf, or give it to Bob and then give Carol the apple",
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
-        "Give Alice something to drink: the cup or the bottle",
         # blind4: "<objects> will do for <person>"
         # blind5 (tuned on in session 7): a surface name used as the verb
         "Shelf the bottle please",
@@ -126,12 +125,10 @@ KNOWN_MISSES = frozenset(
         "hands.",
         "Grandad's got Lily on his knee with a messy face, hand him the wipes.",
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
-        "Just the one item each for Alice and Bob: she has the bottle, he has the crisps.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        "Either of them can have the bottle, Person A or Person B, whoever's nearer to the door.",
         'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         'knife on the worktop please, the guests want it by their bread',
@@ -171,7 +168,6 @@ KNOWN_MISSES = frozenset(
         'Both of the spanners, large and small, go away in the locker tonight.',
         # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
-        "Alice and Bob each get something: she's having the chips, he's having the bottle.",
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Morning, love. If it's no bother, the blue mug up on the shelf, please, the caterer "
@@ -195,33 +191,6 @@ KNOWN_MISSES = frozenset(
         "Right, the bottle, to Person A, and then you're done for the day, off you go.",
         "Scissors for Noah first, and once he's got them the glue stick goes to Zoe, with the "
         'ruler on the desk after that.',
-        "Alice isn't fussy, any old mug will do her, she's just in from the barbershop night.",
-        "Alice and Bob are back from the highland games: one thing each for them, I don't care "
-        'who has what.',
-        'Give Person B something, the apple, the cup or the chips, any one of those will do '
-        'him before his arm wrestling.',
-        "Person A's heading to her ikebana class, so whichever's nearer, the bottle or the "
-        'chips, she can have.',
-        "Any bottle you've got, to Person A.",
-        "Sam needs something to write with for the costumier's order, any of the pens will do.",
-        'One of the patients should have the magazine, either will do.',
-        'Each student gets a book for the quiet reading, no matter which one goes to who.',
-        'Ava or Grandad, one of them, gets the teddy.',
-        'All the food, the chips and the apple, to Person B.',
-        "Only the one bottle, and it's for Person A, she's a lighting tech on the late shift.",
-        "Person A's taking the pair, the bottle and the chips, on her shift with the crossing "
-        'patrol.',
-        'Put all three pens in the box so the sound tech stops walking off with them.',
-        'Ava wants to build a tower, so both blocks, the red and the green, go to her.',
-        "The apple's Person B's, not Person A's, she's gone off fruit since the ikebana class.",
-        "Person B doesn't need the bottle any more, just the cup.",
-        "Person A's had enough to drink at the barbershop night, so the chips, not the bottle.",
-        'Never mind the chips; the bottle for Person B.',
-        "Person A shouldn't get the chips; they're for Person B.",
-        "The banana isn't for Omar, it's Emma who's asked for it.",
-        'Priya hates the black pen, so any of the others will do her.',
-        "Mrs Khan says the blue blanket's too thin, so not that one, the grey one for her.",
-        'Leave the large box out of it; the other two boxes go on the pallet.',
         'carols back from the glass blowers so the red mug to her and the cup to bob',
         'person b can have the apple cheers hes a stone waller and works up an appetite',
         'chips for person a please shes back from her jenga tournament',
@@ -314,7 +283,7 @@ KNOWN_UNCLEAR = frozenset(
 # the rest in KNOWN_MISSES; "blind36" written in session 37 by another engineer and committed alone,
 # reviewed by a second one, measured once at the end of session 37 (0 wrong), tuned on in session
 # 38: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind37"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -412,6 +381,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind35"].entries}) >= 3
     assert len(CORPORA["blind36"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind36"].entries}) >= 3
+    assert len(CORPORA["blind37"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind37"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

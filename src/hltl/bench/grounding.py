@@ -125,7 +125,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # the grounder before its one measurement at the end of session 36; tuned on in session 37),
 # blind36 (written in session 37 by another engineer and committed alone, never opened by the
 # engineers who change the grounder before its one measurement at the end of session 37; tuned on in
-# session 38).
+# session 38), blind37 (written in session 38 by another engineer and committed alone, never
+# opened by the engineers who change the grounder before its one measurement at the end of session
+# 38; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -179,6 +181,7 @@ PARTS = (
     "blind34",
     "blind35",
     "blind36",
+    "blind37",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

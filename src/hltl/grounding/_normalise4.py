@@ -6839,7 +6839,7 @@ def _one_other37r(text: str, lexicon: Lexicon) -> str:
 # "Sam's only signing for the key cutter, so any pen at all will do him."
 _WILL_DO_HIM37R = re.compile(
     r"^(?P<p>[a-z][\w ]*?)(?:'s| is) (?:only|just) [a-z]+ing\b(?P<why>[^,]*),\s*so "
-    r"(?P<x>any [a-z]+)(?: at all)? will do (?P<pro>him|her)(?P<end>\s*[.!]?)$",
+    r"(?P<x>any [a-z]+)(?: at all)? will do (?:for )?(?P<pro>him|her)(?P<end>\s*[.!]?)$",
     _F,
 )
 

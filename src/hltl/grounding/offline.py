@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
+from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
@@ -599,6 +600,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _them_after_choice33s(text, lexicon)
         _doer_said34s(text, lexicon)
         _spoken_to37s(text, lexicon)
+        described_one38r(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -611,6 +613,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
     try:
         node = _read(text, scene, lexicon)
         if normalise:
+            list_says38r(text, lexicon)
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
             _said_against33s(text, node, lexicon)
