@@ -170,19 +170,6 @@ KNOWN_MISSES = frozenset(
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
-        "Bottle to Alice, hang about, no, Bob, he's the one back from the kendama comp.",
-        "Cup to Person A, er, my brain's fried from speedcubing, I mean the apple.",
-        "The chips to Person A, scratch that, it's the cup she's after.",
-        "Give Person B the chips, oh, correction, he's wanting the bottle for his hula hoop class.",
-        "Bottle to Person A, actually, she's fine, it's Person B who's just finished the "
-        'three-legged race.',
-        "Hand the bottle to, oh, what's she called, Person A, that's it, Person A.",
-        "Person A gets the chips, no, the bottle, we're out of chips.",
-        "Sponge in the sink, no sorry, Emma says on the tray, that's where it lives.",
-        "Thermometer to Mr Lee, no, hang on, Ruth's the one taking temperatures on this ward, "
-        'so her.',
-        'Packing tape for Mia, or wait, not the tape, she said the scanner.',
-        'Drill goes on the bench, or actually, the locker would be better.',
         'Can Person B have the bottle, and what about the chips for Person A, is that alright?',
     }
 )

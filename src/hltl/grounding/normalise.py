@@ -524,7 +524,7 @@ from hltl.grounding._normalise5 import (
 )
 from hltl.grounding._rewrites38 import _STEPS38
 from hltl.grounding._rewrites38r import _STEPS38R
-from hltl.grounding._rewrites38s import _STEPS38S
+from hltl.grounding._rewrites38s import _STEPS38S, _STEPS38S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -831,6 +831,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS36_FIRST,
     # session 37 (12s): a size said with '-sized' (first: what follows looks for the name)
     *_STEPS37S_FIRST,
+    # session 38 (12s): a remark about a person of the scene closing the instruction
+    *_STEPS38S_FIRST,
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
@@ -867,7 +869,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS36S,
     # session 37 (12s): blind21 and blind22's kinds
     *_STEPS37S,
-    # session 38 (12s): remarks about a person of the scene; blind36's corrections
+    # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 29 (12r)
     _no_words29r,
