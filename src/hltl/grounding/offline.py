@@ -4353,10 +4353,10 @@ def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
         if not said:
             continue
         t = said[0]
-        put, who = f"{t.obj}@{placed[t.obj]}", person_name(t.target, lexicon)
+        put, name = f"{t.obj}@{placed[t.obj]}", person_name(t.target, lexicon)
         raise GroundingError(
             f"{m.group(0).strip(' ,;.')!r} after putting the {t.obj} on the {placed[t.obj]}: is "
-            f"that why it goes there ({put}), or is {who} to be handed it too "
+            f"that why it goes there ({put}), or is {name} to be handed it too "
             f"({put} & {t.obj}>{t.target})? say which"
         )
 
