@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
+from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
@@ -119,6 +120,8 @@ def parse_instruction(
             _named_other_sex34s(text, node, lexicon)
             _use_said36s(text, node, lexicon)
             _away_till37s(text, node, lexicon)
+            _placed_wanted38l(text, node, lexicon)
+            _had_already38l(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
@@ -4313,6 +4316,81 @@ _AWAY_TILL37S = re.compile(
     r"(?:morning|afternoon|evening)|on \w+day))\b",
     re.I,
 )
+
+
+# "put the lemon on the worktop, chef wants it": a want of the placed thing said after the placement
+_PLACED_WANTED38L = re.compile(
+    r"[,;.]\s*(?:(?:and|cos|because|since|as)\s+)?(?P<who>(?:the\s+)?[A-Za-z][\w]*(?:\s+[A-Z][\w]*)?)"
+    r"\s+(?:wants|needs|is after|'s after|would like|could use|has asked for)\s+(?:it|them)\b",
+    re.I,
+)
+# a verb that asks for a handover in words: then the handover is said, not only wanted
+_HANDOVER_SAID38L = re.compile(
+    r"\b(?:give|gives|hand|hands|pass|passes|bring|brings|take|takes|deliver|fetch|send|carry|"
+    r"let)\b",
+    re.I,
+)
+
+
+def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 38 (lead): "Put the lemon on the worktop, chef wants it (for the fish)." had read as
+    the placement and a handover of the lemon to the chef. A want of the placed thing said after
+    the placement, with no verb of handing anywhere, is the reason for the placement (it waits
+    there for them) or a second request to hand it over: refused naming both readings."""
+    if not any(w in text.lower() for w in ("want", "need", "after", "like", "use", "asked")):
+        return
+    placed = {t.obj: t.target for t in tasks(node) if t.kind == "place"}
+    both = [t for t in tasks(node) if t.kind == "deliver" and t.obj in placed]
+    if not both or _HANDOVER_SAID38L.search(text):
+        return
+    for m in _PLACED_WANTED38L.finditer(text):
+        who = (
+            people_named(m["who"], lexicon)
+            if m["who"].lower() not in ("he", "she", "they")
+            else None
+        )
+        said = [t for t in both if who is None or t.target in who]
+        if not said:
+            continue
+        t = said[0]
+        put, name = f"{t.obj}@{placed[t.obj]}", person_name(t.target, lexicon)
+        raise GroundingError(
+            f"{m.group(0).strip(' ,;.')!r} after putting the {t.obj} on the {placed[t.obj]}: is "
+            f"that why it goes there ({put}), or is {name} to be handed it too "
+            f"({put} & {t.obj}>{t.target})? say which"
+        )
+
+
+# "he's just had his tablets", "Bob has already had the apple": what someone has had is done
+_HAD_ALREADY38L = re.compile(
+    r"(?:'s|\bhas|\bhave|'ve)\s+(?:(?:just|already|only|recently)\s+)?had\s+"
+    r"(?:(?:the|his|her|their|its|my|your|our|a|an|some)\s+)?(?P<what>[^,;.!?]+?)\s*(?=[,;.!?]|$)",
+    re.I,
+)
+# 'once/after P has had X, …': the having is the first step of an order, not a remark
+_HAD_WHEN38L = re.compile(r"\b(?:once|after|when|until|till|before|as soon as|by the time)\b", re.I)
+
+
+def _had_already38l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 38 (lead): "The jug for Mr Lee, he's just had his tablets." had read as the jug and
+    the tablets to Mr Lee (found by 12r): 'has had X' says X was had already, a remark, never a
+    request to hand it over. A reading that hands over the thing so said (the words after 'had'
+    are its name alone) is refused; 'once/after P has had X' orders steps and is left alone."""
+    if "had" not in text.lower():
+        return
+    given = {t.obj for t in tasks(node) if t.kind == "deliver"}
+    if not given:
+        return
+    for m in _HAD_ALREADY38L.finditer(text):
+        clause = re.split(r"[,;.!?]", text[: m.start()])[-1]
+        if _HAD_WHEN38L.search(clause) or not _only(m["what"], lexicon, "object"):
+            continue
+        had = _ids(m["what"], lexicon, "object") & given
+        if had:
+            raise GroundingError(
+                f"{m.group(0).strip()!r} is about the {', '.join(sorted(had))} had already: a "
+                "remark, not something to hand over; say the request without it"
+            )
 
 
 def _away_till37s(text: str, node: Node, lexicon: Lexicon) -> None:
