@@ -129,16 +129,16 @@ KNOWN_MISSES = frozenset(
         "That bottle by the door, up on the shelf with it, there's a good chap.",
         "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
         "I'm off to put my feet up.",
-        'Any of the pens will do for Sam, as long as it writes on chalk-stripe.',
+        "Any of the pens will do for Sam, as long as it writes on chalk-stripe.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
-        'knife on the worktop please, the guests want it by their bread',
+        "knife on the worktop please, the guests want it by their bread",
         # blind23 (tuned on in session 25): refusals left (docs/grounding.md, "Session 25")
         "Sorry to be a pest, but could you pop the red mug on the counter for me, cheers, I'll "
-        'be tuning this thing for another hour.',
+        "be tuning this thing for another hour.",
         "Person B's been on about the chips all morning and Person A's parched, so the bottle's "
-        'for her.',
+        "for her.",
         "Crisps up on the shelf, or rather, no, straight into Alice's hands, she's on after the "
-        'interval.',
+        "interval.",
         # 'N items, both give P' stays refused (test_phrasing_s28s's near form "Two items, both
         # give Alice."; session 33, 12t)
         "Two items, both give Alice lah.",
@@ -155,22 +155,22 @@ KNOWN_MISSES = frozenset(
         "the apple.",
         "Any book not yet on the bookshelf wants shelving.",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
-        'Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer '
-        'says.',
-        'Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.',
-        'Tom needs the glovrs, the pallets are splintery.',
+        "Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer "
+        "says.",
+        "Crisps on the shelf, please. Scratch that, the milkman says Bob wants them.",
+        "Tom needs the glovrs, the pallets are splintery.",
         # blind29 (tuned on in session 31): refusals left at its one measurement (docs/grounding.md)
         "That bottle? Person A's. She left it here when she nipped out to the draper's.",
         # a time after the request puts it off (test_phrasing_s34's "Give Carol the apple after
         # her walk."; session 35, 12r)
-        'A single bottle will do for Person A after her orienteering.',
+        "A single bottle will do for Person A after her orienteering.",
         # blind30 (tuned on in session 32): refusals left at its one measurement (docs/grounding.md)
-        'Both of the spanners, large and small, go away in the locker tonight.',
+        "Both of the spanners, large and small, go away in the locker tonight.",
         # blind33 (tuned on in session 35): every refusal at its one measurement reads (session 35)
         # blind34 (tuned on in session 36): refusals left at its one measurement (docs/grounding.md)
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
-        'Can Person B have the bottle, and what about the chips for Person A, is that alright?',
+        "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
