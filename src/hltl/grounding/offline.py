@@ -4324,7 +4324,8 @@ _PLACED_WANTED38L = re.compile(
     r"\s+(?:wants|needs|is after|'s after|would like|could use|has asked for)\s+(?:it|them)\b",
     re.I,
 )
-# a verb that asks for a handover in words: then the handover is said, not only wanted
+# a verb that asks for a handover in words: then the handover is said, not only wanted (not the
+# lexicon's VERB_CLASS 'give' + 'bring': 'bring' also holds verbs said of placing, 'pop', 'move')
 _HANDOVER_SAID38L = re.compile(
     r"\b(?:give|gives|hand|hands|pass|passes|bring|brings|take|takes|deliver|fetch|send|carry|"
     r"let)\b",
