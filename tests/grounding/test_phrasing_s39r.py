@@ -8,7 +8,8 @@ import re
 
 import pytest
 
-from hltl.grounding import normalise
+from hltl.bench.grounding import show_tree
+from hltl.grounding import normalise, offline
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -20,7 +21,9 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_reads,
     assert_refused,
+    tree,
 )
 
 # the example scenes session 32's tests load (bottle, chips, cup, apple; people A and B; …)
@@ -137,6 +140,29 @@ test_whichever_again = CASES.test(
     # no choice before it, a pronoun of another person: refused
     ("Tom can have the tape or the gloves, she'll take whichever's nearer.", None, DEPOT),
 )
+
+
+def test_a_choice_said_again_is_not_both() -> None:
+    """'Lena can have either plate, pass her whichever' had read as both plates to Lena (the
+    grammar took 'whichever' for one more thing to hand over): one plate, either."""
+    assert_reads(
+        "Lena can have either plate, pass her whichever.", "plate_white>B | plate_blue>B", KITCHEN
+    )
+    assert_reads(
+        "Zoe can have either book, hand her whichever.", "book_red>C | book_green>C", CLASSROOM
+    )
+    assert_refused("Marco can have either plate, pass her whichever.", KITCHEN)
+
+
+def test_a_choice_said_again_reads_both_without_the_check(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Without `whichever_again_says39r` the grammar's own reading (both plates) stands."""
+    monkeypatch.setattr(offline, "whichever_again_says39r", lambda _text, _lexicon: None)
+    got = tree("Lena can have either plate, pass her whichever.", KITCHEN)
+    assert got is not None
+    assert "&" in show_tree(got)
+
 
 test_whichever_of = CASES.test(
     # "whichever of the two you like, A or B": A or B

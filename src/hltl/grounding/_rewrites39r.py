@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import (
     _F,
@@ -252,6 +253,19 @@ def _whichever_again39r(text: str, lexicon: Lexicon) -> str:
     if len(who) != 1 or not _may_be35t(next(iter(who)), pronoun, lexicon):
         return text
     return f"{head}, {m['rest']}{m['end']}"
+
+
+def whichever_again_says39r(text: str, _lexicon: Lexicon) -> None:
+    """Session 39 (12r): "Lena can have either plate, pass her whichever" had read as both plates
+    to Lena (the grammar took 'whichever' for one more of the choice, handed over as well): a
+    choice said again after it is offered gives nothing more. Refused here, so the rewrites read it
+    as "…, whichever" (`_whichever_again39r`, where the pronoun may be the one person named)."""
+    if "whichever" not in text.lower():
+        return
+    m = _WHICHEVER_AGAIN39R.search(text)
+    if m is None or not re.search(r"\b(?:or|either|any)\b", text[: m.start()], _F):
+        return
+    raise GroundingError(f"{m[0].strip(' ,')!r} says the choice again: say 'whichever' alone")
 
 
 # "The chips can go to whichever of the two you like, Person A or Person B"
