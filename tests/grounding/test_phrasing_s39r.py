@@ -152,13 +152,19 @@ def test_a_choice_said_again_is_not_both() -> None:
         "Zoe can have either book, hand her whichever.", "book_red>C | book_green>C", CLASSROOM
     )
     assert_refused("Marco can have either plate, pass her whichever.", KITCHEN)
+    # one thing read by the grammar: as before
+    assert_reads(
+        "Tom won't mind if it's the tape or the gloves, just bring him whichever's closer.",
+        "tape>B | gloves>B",
+        DEPOT,
+    )
 
 
 def test_a_choice_said_again_reads_both_without_the_check(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """Without `whichever_again_says39r` the grammar's own reading (both plates) stands."""
-    monkeypatch.setattr(offline, "whichever_again_says39r", lambda _text, _lexicon: None)
+    monkeypatch.setattr(offline, "whichever_again_says39r", lambda _text, _node, _lexicon: None)
     got = tree("Lena can have either plate, pass her whichever.", KITCHEN)
     assert got is not None
     assert "&" in show_tree(got)

@@ -14,12 +14,14 @@ from hltl.grounding._normalise1 import (
     _only,
     _only_kind,
     _only_person,
+    _reading,
     _said,
 )
 from hltl.grounding._normalise3 import _whole_name
 from hltl.grounding._normalise4 import _may_be35t, _objects34r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.phrasing import starting_on
+from hltl.grounding.tree import Node, Task, tasks
 
 # -- negation and exclusion frames ----------------------------------------------------------------
 
@@ -252,20 +254,38 @@ def _whichever_again39r(text: str, lexicon: Lexicon) -> str:
     pronoun = m["obj"] or m["subj"]
     if len(who) != 1 or not _may_be35t(next(iter(who)), pronoun, lexicon):
         return text
-    return f"{head}, {m['rest']}{m['end']}"
+    out = f"{head}, {m['rest']}{m['end']}"
+    # the choice before it must read as it is said ("P won't mind if it's X or Y, …" is read by
+    # session 36's `_mind_if36r`, with its pronoun, after this rule)
+    return out if _reading(out, lexicon) is not None else text
 
 
-def whichever_again_says39r(text: str, _lexicon: Lexicon) -> None:
+def whichever_again_says39r(text: str, node: Node, _lexicon: Lexicon) -> None:
     """Session 39 (12r): "Lena can have either plate, pass her whichever" had read as both plates
     to Lena (the grammar took 'whichever' for one more of the choice, handed over as well): a
-    choice said again after it is offered gives nothing more. Refused here, so the rewrites read it
-    as "…, whichever" (`_whichever_again39r`, where the pronoun may be the one person named)."""
+    choice said again after it is offered gives nothing more. Where the grammar's reading hands one
+    person two things together, it is refused here, so the rewrites read it as "…, whichever"
+    (`_whichever_again39r`, where the pronoun may be the one person named); a reading of one thing
+    ("…, just bring him whichever's closer": the bottle or the chips) stands."""
     if "whichever" not in text.lower():
         return
     m = _WHICHEVER_AGAIN39R.search(text)
     if m is None or not re.search(r"\b(?:or|either|any)\b", text[: m.start()], _F):
         return
-    raise GroundingError(f"{m[0].strip(' ,')!r} says the choice again: say 'whichever' alone")
+    if _two_together39r(node):
+        raise GroundingError(f"{m[0].strip(' ,')!r} says the choice again: say 'whichever' alone")
+
+
+def _two_together39r(node: Node) -> bool:
+    """Whether ``node`` hands one person two things together (in an 'and' or a sequence)."""
+    if isinstance(node, Task):
+        return False
+    if node.op != "or":
+        said = [t for t in tasks(node) if t.kind == "deliver"]
+        for t in said:
+            if any(u.target == t.target and u.obj != t.obj for u in said):
+                return True
+    return any(_two_together39r(child) for child in node.children)
 
 
 # "The chips can go to whichever of the two you like, Person A or Person B"

@@ -618,7 +618,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         node = _read(text, scene, lexicon)
         if normalise:
             list_says38r(text, lexicon)
-            whichever_again_says39r(text, lexicon)
+            whichever_again_says39r(text, node, lexicon)
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
             _said_against33s(text, node, lexicon)
