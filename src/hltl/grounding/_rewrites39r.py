@@ -104,17 +104,18 @@ _CLEFT39R = re.compile(
 
 def _owner39r(text: str, lexicon: Lexicon) -> str:
     """Session 39 (12r): who a thing is for said as a contrast of two people: "X's not P's, it
-    belongs to Q" / "…, it's Q's" is "X is for Q, not P", and the cleft "It's not P who wants X,
-    it's Q" is "P doesn't want X, Q does" (P and Q two people, each named whole, X an object:
-    the contrast says who gets it; "X is Q's" said alone stays refused, as it may only say
-    whose it is)."""
+    belongs to Q" / "…, it's Q's" is "X isn't for P, it's for Q" (as session 36's
+    `_isnt_hers36r` reads "X isn't P's, it's Q's"; session 29's `_not_for_but29s` then reads
+    it), and the cleft "It's not P who wants X, it's Q" is "P doesn't want X, Q does" (P and Q
+    two people, each named whole, X an object: the contrast says who gets it; "X is Q's" said
+    alone stays refused, as it may only say whose it is)."""
     if "'s" not in text and " is" not in text.lower():
         return text
     m = _OWNER39R.match(text)
     if m is not None:
         q = m["q"] or m["q2"]
         if _whole_name(m["what"], lexicon, "object") and _two39r(m["p"], q, lexicon):
-            return f"{m['what']} is for {q}, not {m['p']}{m['end']}{text[m.end() :]}"
+            return f"{m['what']} isn't for {m['p']}, it's for {q}{m['end']}{text[m.end() :]}"
     m = _CLEFT39R.match(text)
     if (
         m is not None
