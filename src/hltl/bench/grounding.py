@@ -127,7 +127,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineers who change the grounder before its one measurement at the end of session 37; tuned on in
 # session 38), blind37 (written in session 38 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of session
-# 38; tests do not assert it).
+# 38; its one wrong reading fixed and tuned on in session 39).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
