@@ -18,7 +18,7 @@ from hltl.grounding._normalise1 import (
     _said,
 )
 from hltl.grounding._normalise3 import _whole_name
-from hltl.grounding._normalise4 import _may_be35t, _objects34r
+from hltl.grounding._normalise4 import _ISNT_HERS36R, _may_be35t, _objects34r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.phrasing import starting_on
 from hltl.grounding.tree import Node, Task, tasks
@@ -112,7 +112,8 @@ def _owner39r(text: str, lexicon: Lexicon) -> str:
     if "'s" not in text and " is" not in text.lower():
         return text
     m = _OWNER39R.match(text)
-    if m is not None:
+    # "X isn't P's, it's Q's (, take it to her)" is session 36's (`_isnt_hers36r`)
+    if m is not None and _ISNT_HERS36R.match(text) is None:
         q = m["q"] or m["q2"]
         if _whole_name(m["what"], lexicon, "object") and _two39r(m["p"], q, lexicon):
             return f"{m['what']} isn't for {m['p']}, it's for {q}{m['end']}{text[m.end() :]}"
@@ -137,9 +138,9 @@ def _two39r(p: str, q: str, lexicon: Lexicon) -> bool:
 
 # "…; leave the red one where it is", "…, and leave the stapler alone"
 _LEAVE39R = re.compile(
-    r"(?:\s*[,;]\s*(?:and |but |just )?|\s+and )(?:leave|don't touch|don't move|do not touch|"
-    r"do not move) (?P<what>the [a-z]+(?: [a-z]+)?)(?: (?:where (?:it is|they are)|alone|be|"
-    r"as (?:it|they) (?:is|are)))?(?P<end>\s*[.!]?)$",
+    r"(?:\s*[,;]\s*(?:and |but |just )?|\s+and )(?:leave (?P<left>the [a-z]+(?: [a-z]+)?) "
+    r"(?:where (?:it is|they are)|alone|be|as (?:it|they) (?:is|are))|(?:don't|do not) (?:touch|"
+    r"move) (?P<what>the [a-z]+(?: [a-z]+)?))(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -148,14 +149,20 @@ def _left_be39r(text: str, lexicon: Lexicon) -> str:
     """Session 39 (12r): "…; leave the red one where it is" (or alone, be; "don't touch / move
     X") after a request says what is NOT to be moved: no task, taken off, when what it names
     (an object named whole, or "the <adj> one" of a kind the request names) is another object
-    than any the request names; else left (and refused)."""
+    than any the request names, and the request is one sentence with no correction in it; else
+    left (and refused). A bare "leave X" stays refused (session 31: it may say where to leave
+    it)."""
     if "leave" not in text.lower() and "touch" not in text.lower() and "move" not in text.lower():
         return text
     m = _LEAVE39R.search(text)
     if m is None or m.start() == 0:
         return text
     head = text[: m.start()]
-    what = _one_of39r(m["what"], head, lexicon)
+    if re.search(
+        r"[.!?]|\b(?:no|hang on|hold on|wait|sorry|actually|i mean|instead|rather)\b", head, _F
+    ):
+        return text  # a correction before it: what is left may be what it takes back (session 34)
+    what = _one_of39r(m["left"] or m["what"], head, lexicon)
     if what is None:
         return text
     left = _ids(what, lexicon, "object")
