@@ -139,8 +139,8 @@ def _two39r(p: str, q: str, lexicon: Lexicon) -> bool:
 # "…; leave the red one where it is", "…, and leave the stapler alone"
 _LEAVE39R = re.compile(
     r"(?:\s*[,;]\s*(?:and |but |just )?|\s+and )(?:leave (?P<left>the [a-z]+(?: [a-z]+)?) "
-    r"(?:where (?:it is|they are)|alone|be|as (?:it|they) (?:is|are))|(?:don't|do not) (?:touch|"
-    r"move) (?P<what>the [a-z]+(?: [a-z]+)?))(?P<end>\s*[.!]?)$",
+    r"(?P<how>where (?:it is|they are)|alone|be|as (?:it|they) (?:is|are))|(?:don't|do not) "
+    r"(?:touch|move) (?P<what>the [a-z]+(?: [a-z]+)?))(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -158,6 +158,8 @@ def _left_be39r(text: str, lexicon: Lexicon) -> str:
     if m is None or m.start() == 0:
         return text
     head = text[: m.start()]
+    if m["how"] in ("be", "alone") and _whole_name(m["left"], lexicon, "object"):
+        return text  # "…, and leave the bottle be": session 35's `_leave_be35r`
     if re.search(
         r"[.!?]|\b(?:no|hang on|hold on|wait|sorry|actually|i mean|instead|rather)\b", head, _F
     ):
