@@ -90,6 +90,12 @@ _NAMED_TIME39S = re.compile(
     r"breakfast|supper)(?: [a-z]+)?\b",
     _F,
 )
+# 'was a long one', 'has been a rough one': of the subject itself, no object picked out
+_A_LONG_ONE39S = re.compile(
+    r"\b(?:a|such a|another) (?:long|short|hard|busy|rough|tough|late|early|quiet|slow|mad|good|"
+    r"bad|big|hectic) one\b",
+    _F,
+)
 # held of every remark: negation, counts and choices, pointing words, what is whose, the speaker
 # and the hearer, corrections, a time joined to the request, wanting, needing, asking, giving
 _HELD_WORDS39S = (
@@ -196,7 +202,7 @@ def _subject39s(said: str, lexicon: Lexicon) -> tuple[str, str, str] | None:
             # (the subject's own words are asked of as the rest's are: 'the other one')
             m = _POSS39S.match(subject)
             if m is not None:
-                return "poss", m["pron"], f"{m['what']} {rest}"
+                return "poss", m["pron"], said
             if _THING39S.match(subject):
                 return "thing", "", said
     return None
@@ -209,6 +215,7 @@ def _plain39s(kind: str, rest: str, who: str | None, lexicon: Lexicon) -> bool:
     plain = _TO_DO39S.sub(lambda m: f"{m['got']} {m['what']}", plain)
     plain = _SINCE39S.sub(" ", plain.strip())
     plain = _NAMED_TIME39S.sub(" ", plain)
+    plain = _A_LONG_ONE39S.sub(" ", plain)
     if kind in ("we", "thing"):
         plain = _CLOCK39S.sub(" ", plain)
     m = _DISLIKE39S.search(plain)
@@ -385,18 +392,26 @@ def _remark_first39s(text: str, lexicon: Lexicon) -> str:
 # -- what a remark about a person must not be read past (offline.py calls this on the reading) ----
 #
 # The follow-ups of session 38: older rules took these remarks off and read the request, but each
-# may change who gets what. A remark closing the instruction about a person of the scene (by a
-# name, or by he / she) that says they are leaving, away, back later, fine or done ("Give Bob the
-# cup, Bob's off home.", "Hand Tom the scanner, Mia's back in a bit.", "Lena gets the salt,
-# Marco's off to the market."); one that says someone who gets nothing needs something ("Give
-# Alice the apple, Bob's parched."); a he / she that may be more than one person the request
-# names ("Give Person A the apple and Person B the cup, he's a stone waller.").
+# may change who gets what. A remark closing the instruction about a person of the scene said by a
+# name (no correction before it: "…, make it Person B, A's gone on break" says why) that they are
+# leaving, away, back later, fine or done ("Give Bob the cup, Bob's off home.", "Hand Tom the
+# scanner, Mia's back in a bit.", "Lena gets the salt, Marco's off to the market."; by he / she the
+# tuned parts read "…, he's off to watch the football" as the handover before they go, and that is
+# kept); by a name or a he / she that means one person, that they are asleep ("Give Mr Lee the
+# magazine, he's asleep.": no one to hand it to), or that someone who gets nothing needs something
+# ("Give Alice the apple, Bob's parched.": a hint to give them something too).
 _GOING39S_SAID = re.compile(
-    r"(?:'s|\bis|\bwas|'re|\bare)\s+(?:just\s+|only\s+)?(?:(?:off|away|gone|going|leaving|heading|"
-    r"fine|ok|okay|alright|sorted|done|due|coming|asleep|sleeping|napping|"
-    r"dozing)\b|out\b(?! of)|all (?:right|set|done)\b)|"
-    r"\bback (?:in|at|after|soon|later|tomorrow|on|by|for)\b|\bhad (?:enough|(?:his|her|their) "
+    r"(?:'s|\bis|\bwas|'re|\bare)\s+(?:just\s+|only\s+)?(?:off(?: to| home| out| now| soon| for|"
+    r" in)?\s*$|off (?:to|home|out)\b|(?:away|gone (?:home|out|off)|leaving|heading (?:off|home|"
+    r"out)|fine|ok|okay|alright|sorted|done|finished)\b(?! with)|out\b(?! of)|all (?:right|set|"
+    r"done)\b)|"
+    r"\bback (?:in|at|after|soon|later|tomorrow|on|by)\b|\bhad (?:enough|(?:his|her|their) "
     r"fill)\s*$",
+    _F,
+)
+_ASLEEP39S = re.compile(
+    r"(?:'s|\bis)\s+(?:fast |sound |still |just )?(?:asleep|sleeping|napping|"
+    r"dozing|having a nap)\b",
     _F,
 )
 
@@ -412,9 +427,9 @@ def _shown39s(node: Node) -> str:
 
 
 def remark_said39s(text: str, node: Node, lexicon: Lexicon) -> None:
-    """Session 39 (12s): refuse a reading past a closing remark about a person of the scene that
-    says they are leaving, away, back later, fine or done, that says someone who gets nothing
-    needs something, or whose he / she may be more than one person the request names (above),
+    """Session 39 (12s): refuse a reading past a closing remark about a person of the scene (above)
+    that says, by a name, that they are leaving, away, back later, fine or done, or, by a name or
+    a he / she of one person, that they are asleep or that they need something and get nothing;
     naming what was read."""
     out = text
     got = {t.target for t in tasks(node)}
@@ -426,24 +441,25 @@ def remark_said39s(text: str, node: Node, lexicon: Lexicon) -> None:
         if found is None or found[0] not in ("person", "pron") or not _names(before, lexicon):
             return
         kind, head, rest = found
+        if _CUE_ANY38S.search(before):
+            return  # a remark after a correction may say why it was made
         if kind == "pron":
             fit = [p for p in sorted(_people39s(before, lexicon)) if _fit36(p, head, lexicon)]
-            if len(fit) >= 2:
-                names = " or ".join(person_name(p, lexicon) for p in fit)
-                raise GroundingError(
-                    f"{head!r} in {said!r} could mean {names}: say whom the remark is about "
-                    f"(read: {read})"
-                )
             if len(fit) != 1:
                 return
             who = fit[0]
         else:
             who = next(iter(_ids(head, lexicon, "human")))
         name = person_name(who, lexicon)
-        if _GOING39S_SAID.search(rest):
+        if kind == "person" and _GOING39S_SAID.search(rest):
             raise GroundingError(
                 f"{said!r} says {name} is leaving, away, back later, fine or done: is {read} "
-                "what is to be done? say the request without it, or who gets what"
+                "still what is to be done? say the request without it, or who gets what"
+            )
+        if _ASLEEP39S.search(rest) and who in got:
+            raise GroundingError(
+                f"{said!r} says {name} is asleep: hand it over ({read}), or leave it by them? say "
+                "where it goes"
             )
         if _NEEDY38S.search(rest) and who not in got:
             raise GroundingError(
