@@ -197,4 +197,5 @@ test_said_read = PhrasingCases().test(
     ("Give Mrs Khan the jug, she's thirsty.", "jug>C", WARD),
     ("Give Tom the scanner, he's off on his round.", "scanner>B", DEPOT),
     ("Scanner to Mia, no, make it Tom, Mia's gone on break.", "scanner>B", DEPOT),
+    ("The salt is going to Lena, Marco's had his fill.", "salt>B", KITCHEN),
 )

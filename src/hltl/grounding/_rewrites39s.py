@@ -397,7 +397,8 @@ def _remark_first39s(text: str, lexicon: Lexicon) -> str:
 # leaving, away, back later, fine or done ("Give Bob the cup, Bob's off home.", "Hand Tom the
 # scanner, Mia's back in a bit.", "Lena gets the salt, Marco's off to the market."; by he / she the
 # tuned parts read "…, he's off to watch the football" as the handover before they go, and that is
-# kept); by a name or a he / she that means one person, that they are asleep ("Give Mr Lee the
+# kept; "The chips are going to Person A, Person B's had his fill." is read, blind35); by a name or
+# a he / she that means one person, that they are asleep ("Give Mr Lee the
 # magazine, he's asleep.": no one to hand it to), or that someone who gets nothing needs something
 # ("Give Alice the apple, Bob's parched.": a hint to give them something too).
 _GOING39S_SAID = re.compile(
@@ -405,8 +406,7 @@ _GOING39S_SAID = re.compile(
     r" in)?\s*$|off (?:to|home|out)\b|(?:away|gone (?:home|out|off)|leaving|heading (?:off|home|"
     r"out)|fine|ok|okay|alright|sorted|done|finished)\b(?! with)|out\b(?! of)|all (?:right|set|"
     r"done)\b)|"
-    r"\bback (?:in|at|after|soon|later|tomorrow|on|by)\b|\bhad (?:enough|(?:his|her|their) "
-    r"fill)\s*$",
+    r"\bback (?:in|at|after|soon|later|tomorrow|on|by)\b",
     _F,
 )
 _ASLEEP39S = re.compile(
