@@ -160,13 +160,9 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 # -- what a remark about a person must not be read past (offline.remark_said39s) ----------------
 
 SAID: list[tuple[str, Scene]] = [
-    # a person said by a name to be leaving, away, back later or fine (by he / she the tuned
-    # parts read "…, he's off to watch the football" as a handover before they go), or asleep
+    # the one who gets it, said again by name to be leaving or fine; asleep
     ("Give Bob the cup, Bob's off home.", CELL),
     ("Give Bob the cup, Bob's fine.", CELL),
-    ("Hand Tom the scanner, Mia's back in a bit.", DEPOT),
-    ("Lena gets the salt, Marco's off to the market.", KITCHEN),
-    ("Give Bob the cup, Carol's off to the shops.", CELL),
     ("Give Mr Lee the magazine, he's asleep.", WARD),
     # a need of someone who gets nothing
     ("Give Alice the apple, Bob's parched.", CELL),
@@ -198,4 +194,7 @@ test_said_read = PhrasingCases().test(
     ("Give Tom the scanner, he's off on his round.", "scanner>B", DEPOT),
     ("Scanner to Mia, no, make it Tom, Mia's gone on break.", "scanner>B", DEPOT),
     ("The salt is going to Lena, Marco's had his fill.", "salt>B", KITCHEN),
+    # of someone who gets nothing, leaving or back later is said now (sessions 8 and 37)
+    ("Lena gets the salt, Marco's off to the market.", "salt>B", KITCHEN),
+    ("Hand Tom the scanner, Mia's back in a bit.", "scanner>B", DEPOT),
 )

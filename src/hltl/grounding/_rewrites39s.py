@@ -7,8 +7,9 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _adjectives, _ids, _names, _only_person, _reading
-from hltl.grounding._normalise4 import _fit36
+from hltl.grounding._normalise4 import _fit36, _gather35r
 from hltl.grounding._normalise5 import _BACK_FROM37, _BOTH_BEEN37, _HERS_AT37, _SHE_IS_A37
+from hltl.grounding._rewrites38 import _LEFT_THEM38
 from hltl.grounding._rewrites38s import (
     _ABOUT_VERB38S,
     _CUE_ANY38S,
@@ -106,6 +107,7 @@ _HELD_WORDS39S = (
     r"which|what|who|whom|whose|where|why|how|me|my|mine|i|i'm|you|your|yours|"
     r"drink|drinks|snack|snacks|"
     r"actually|sorry|oops|whoops|mean|meant|mistake|scratch|wait|hang|hold|instead|rather|"
+    r"wrong|right|backwards|muddled|mixed|confused|"
     r"correction|change|changed|forget|cancel|ignore|scrap|swap|switch|"
     r"before|once|when|whenever|while|until|till|by|then|next|first|last|finally|already|still|"
     r"yet|too|also|only|"
@@ -136,10 +138,11 @@ _CLOCK39S = re.compile(
 )
 
 
-# words of VERBS a remark may say: light ones, and of a thing or the speaker's side, going ("the
-# lights have gone out", "we're going to the fete")
-_LIGHT39S = frozenset({"has", "had", "have", "got", "having"})
-_GOING39S = frozenset({"go", "goes", "going", "gone", "went"})
+# words of VERBS a remark may say: light ones, and of a thing or the speaker's side, going and
+# having ("the lights have gone out", "we're having a picnic"; "Sam's having a biscuit" may be a
+# want of his)
+_LIGHT39S = frozenset({"has", "had", "have", "got"})
+_GOING39S = frozenset({"go", "goes", "going", "gone", "went", "having"})
 
 
 def _held39s(kind: str) -> re.Pattern[str]:
@@ -256,6 +259,8 @@ def _remark39s(text: str, lexicon: Lexicon) -> str:
     end, while what is left names something; then what is left must read, each person a remark
     is about by a pronoun get something there, no one get what a remark says they dislike, and
     a need be said only of someone who gets something."""
+    if _gather35r(text, lexicon) != text:
+        return text  # session 35's (12r) 'gather up X and drop them in S' reads its remark
     out = text
     about: set[str] = set()  # people a pronoun of a remark means: they must get something
     needy: set[str] = set()
@@ -294,10 +299,18 @@ def _remark39s(text: str, lexicon: Lexicon) -> str:
                     break
                 fit = sorted(people) if len(people) >= 2 and not said_of else []
             else:
+                if kind in ("pron", "poss") and m["sep"].strip() == "":
+                    ok = False  # a he / she sentence of its own: sessions 37 and 38 (12) read it
+                    break
                 if kind == "pron" and any(
-                    p.search(f", {said}") for p in (_SHE_IS_A37, _BACK_FROM37, _HERS_AT37)
+                    p.search(f"{e} {said}")
+                    for p in (_SHE_IS_A37, _BACK_FROM37, _HERS_AT37)
+                    for e in (",", ".")
                 ):
                     ok = False  # session 37's
+                    break
+                if kind in ("poss", "thing") and _LEFT_THEM38.search(f", {said}"):
+                    ok = False  # session 38's (12): 'her physio makes her thirsty'
                     break
                 said_of |= {head.lower()} if kind in ("pron", "poss") and head != "their" else set()
                 if head == "their":
@@ -371,8 +384,14 @@ def _remark_first39s(text: str, lexicon: Lexicon) -> str:
     if _PRONOUNS39S.search(rest) and kind != "person":
         return text
     who = next(iter(_ids(head, lexicon, "human"))) if kind == "person" else ""
-    if kind == "person" and not all(
-        _fit36(who, w, lexicon) for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", rest, _F)
+    named = _people39s(m["req"], lexicon)
+    if kind == "person" and (
+        not named  # (the lead's session-37 rule: the remark's person gets the objects after it)
+        or who in named
+        or not all(
+            _fit36(who, w, lexicon)
+            for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", rest, _F)
+        )
     ):
         return text
     if not _plain39s(kind, rest, who, lexicon):
@@ -392,21 +411,21 @@ def _remark_first39s(text: str, lexicon: Lexicon) -> str:
 # -- what a remark about a person must not be read past (offline.py calls this on the reading) ----
 #
 # The follow-ups of session 38: older rules took these remarks off and read the request, but each
-# may change who gets what. A remark closing the instruction about a person of the scene said by a
-# name (no correction before it: "…, make it Person B, A's gone on break" says why) that they are
-# leaving, away, back later, fine or done ("Give Bob the cup, Bob's off home.", "Hand Tom the
-# scanner, Mia's back in a bit.", "Lena gets the salt, Marco's off to the market."; by he / she the
-# tuned parts read "…, he's off to watch the football" as the handover before they go, and that is
-# kept; "The chips are going to Person A, Person B's had his fill." is read, blind35); by a name or
-# a he / she that means one person, that they are asleep ("Give Mr Lee the
-# magazine, he's asleep.": no one to hand it to), or that someone who gets nothing needs something
-# ("Give Alice the apple, Bob's parched.": a hint to give them something too).
+# may change who gets what. A closing remark about the person who gets something, said again by
+# their name (no correction before it), that they are leaving, away, fine or done ("Give Bob the
+# cup, Bob's off home.", "Give Bob the cup, Bob's fine."): is it still to be handed over? By he /
+# she the tuned parts read "…, he's off to watch the football" as the handover before they go
+# (blind21); of someone who gets nothing, session 8 reads "Give Bob the cup, Carol is leaving
+# soon" and session 37 "give bob the cup, alice is back at six" as said now, and "The chips are
+# going to Person A, Person B's had his fill." is read (blind35): those are kept. By a name or a
+# he / she that means one person: that the one who gets it is asleep ("Give Mr Lee the magazine,
+# he's asleep.": no one to hand it to), or that someone who gets nothing needs something ("Give
+# Alice the apple, Bob's parched.": a hint to give them something too).
 _GOING39S_SAID = re.compile(
     r"(?:'s|\bis|\bwas|'re|\bare)\s+(?:just\s+|only\s+)?(?:off(?: to| home| out| now| soon| for|"
     r" in)?\s*$|off (?:to|home|out)\b|(?:away|gone (?:home|out|off)|leaving|heading (?:off|home|"
     r"out)|fine|ok|okay|alright|sorted|done|finished)\b(?! with)|out\b(?! of)|all (?:right|set|"
-    r"done)\b)|"
-    r"\bback (?:in|at|after|soon|later|tomorrow|on|by)\b",
+    r"done)\b)",
     _F,
 )
 _ASLEEP39S = re.compile(
@@ -428,9 +447,9 @@ def _shown39s(node: Node) -> str:
 
 def remark_said39s(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 39 (12s): refuse a reading past a closing remark about a person of the scene (above)
-    that says, by a name, that they are leaving, away, back later, fine or done, or, by a name or
-    a he / she of one person, that they are asleep or that they need something and get nothing;
-    naming what was read."""
+    that says, by the name of one who gets something, that they are leaving, away, fine or done,
+    or, by a name or a he / she of one person, that the one who gets something is asleep or that
+    someone who gets nothing needs something; naming what was read."""
     out = text
     got = {t.target for t in tasks(node)}
     read = _shown39s(node)
@@ -451,9 +470,9 @@ def remark_said39s(text: str, node: Node, lexicon: Lexicon) -> None:
         else:
             who = next(iter(_ids(head, lexicon, "human")))
         name = person_name(who, lexicon)
-        if kind == "person" and _GOING39S_SAID.search(rest):
+        if kind == "person" and who in got and _GOING39S_SAID.search(rest):
             raise GroundingError(
-                f"{said!r} says {name} is leaving, away, back later, fine or done: is {read} "
+                f"{said!r} says {name} is leaving, away, fine or done: is {read} "
                 "still what is to be done? say the request without it, or who gets what"
             )
         if _ASLEEP39S.search(rest) and who in got:
