@@ -4,6 +4,341 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person
+from hltl.grounding._normalise2 import _things31
+from hltl.grounding._normalise4 import _fit36
+from hltl.grounding._rewrites38 import _inert38
+from hltl.grounding.lexicon import VERBS, Lexicon
 
-_STEPS39: tuple[Callable[[str, Lexicon], str], ...] = ()
+# -- session 39 (engineer 12): blind37's refusals by kind in the sections of politeness, wants,
+# pronouns and ellipsis, splits and run-ons, lower case, typos and questions. As session 38's:
+# each rule a closed pattern checked against the scene, the rest of the sentence read by the same
+# grammar; a closing remark beside the request is engineer 12s's (CONTRACTS.md).
+
+# -- wants said by an idiom before 'a' / 'an' / 'some' and a name of the scene's objects ("Person
+# A could murder an apple", "Bob could kill for some chips", "Zoe has her heart set on a ruler",
+# "Noah's put his name down for the globe"): the idiom is 'wants'
+_WANT_IDIOM39 = re.compile(
+    r"(?:\s+could (?:really |happily |easily |just |so )?(?:murder|kill for)|(?:\s+has|'s)(?: got)?"
+    r" (?:his|her|their) hearts? (?:set|fixed) on|(?:\s+has|'s)? put (?:his|her|their) names? "
+    r"down for)(?= (?P<det>a|an|some|the|that|this|those|these) (?P<x>[a-z]+(?: [a-z]+)?)\b)",
+    _F,
+)
+
+
+def _want_idioms39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: the want idioms above said 'wants' when one person is said before them in
+    their clause and what follows them (up to a mark or 'and') is objects of the scene only
+    (a drink, a bite: session 30's states, left to them)."""
+    for m in list(_WANT_IDIOM39.finditer(text))[::-1]:
+        before = re.split(r"[,.;!?]\s*|\s+(?:and|but|so)\s+", text[: m.start()])[-1]
+        what = re.split(r"[,.;!?]|\s+(?:and|but|so|while|after|since)\s+", text[m.end() :])[0]
+        if not _only_person(before, lexicon) or not _things31(what, lexicon):
+            continue
+        text = text[: m.start()] + " wants" + text[m.end() :]
+    return text
+
+
+# "Carol's after a brew, so …", "Tom is after a snack": a want of a kind the scene has no name
+# for, the person's state (session 30's 'could murder a drink' is 'is thirsty')
+_AFTER_KIND39 = re.compile(
+    r"(?:\s+is|'s) (?:after|wanting|on the lookout for) (?:a|an|some) (?:(?P<drink>drink|brew|"
+    r"cuppa|cup of tea|coffee|cold drink|drop of something)|(?P<food>snack|bite|nibble|bite to "
+    r"eat|sandwich|sarnie|butty))\b",
+    _F,
+)
+
+
+def _after_kind39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: 'P is after a brew' (above) is 'P is thirsty' ('a snack': hungry), when the
+    words said for it name nothing of the scene and one person is said before it."""
+    for m in list(_AFTER_KIND39.finditer(text))[::-1]:
+        said = m[0].split()[-1]
+        if _names(said, lexicon):
+            continue  # a scene with a coffee: what is wanted is named
+        before = re.split(r"[,.;!?]\s*|\s+(?:and|but|so)\s+", text[: m.start()])[-1]
+        if not _only_person(before, lexicon):
+            continue
+        state = "thirsty" if m["drink"] else "hungry"
+        text = text[: m.start()] + f" is {state}" + text[m.end() :]
+    return text
+
+
+# "Person A needs a drink, and the bottle's the only one going": the one thing of the kind there
+# is, so it is what the person needs
+_ONLY_ONE39 = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?) (?:needs|wants|could do with|could use|is after|'s after|fancies) "
+    r"(?:a|an|some) [a-z]+,?\s+(?:and|but|so)?\s*(?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?)"
+    r"(?:'s| is) the only (?:one|thing|drink|snack|one of those|one we've got)(?: (?:going|left|"
+    r"there is|we've got|we have|to hand|around|about))?(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _only_one39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: 'P needs a <kind>, and the X's the only one going' (above) is 'P needs the X'
+    (P one person, X objects of the scene only)."""
+    if "only" not in text.lower():
+        return text
+    m = _ONLY_ONE39.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _things31(m["x"], lexicon):
+        return text
+    return f"{m['p']} needs {m['x']}{m['end'].strip()}"
+
+
+# -- courtesy
+# "Thanks, pet, could …", "Cheers, pet, and could …": thanks and a word of address opening a
+# request
+_THANKS_ADDRESS39 = re.compile(
+    r"^(?:ta|thanks|thank you|cheers)\s*,?\s+(?:pet|petal|love|hen|duck|chuck|flower|pal|mate|"
+    r"lad|lass|bonny lad|bonny lass|sunshine|dear|darling|sweetheart|me duck|my love)\s*,\s*"
+    r"(?:and\s+)?(?=\S)",
+    _F,
+)
+
+
+def _courtesy39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: thanks and a word of address (above) opening a request, taken off when what
+    is left names something."""
+    m = _THANKS_ADDRESS39.match(text)
+    if m is None:
+        return text
+    rest = text[m.end() :]
+    if not _names(rest, lexicon):
+        return text
+    return rest[0].upper() + rest[1:]
+
+
+# -- questions: 'at all' in a question asking whether something can be done ("Is it at all
+# possible to …", "Is it at all feasible to …")
+_AT_ALL39 = re.compile(
+    r"^(?P<q>is it|would it be|could it be|will it be) at all (?=possible\b)", _F
+)
+
+
+def _at_all39(text: str, _lexicon: Lexicon) -> str:
+    """Session 39: 'at all' taken out of 'Is it at all possible to …' (the question is the
+    same)."""
+    return _AT_ALL39.sub(lambda m: f"{m['q']} ", text) if " at all " in text.lower() else text
+
+
+# -- an object 'is to' go somewhere, said with "'s": "The blue mug's to go on the counter", "The
+# cup's to be given to Bob"
+_IS_TO39 = re.compile(r"(?P<x>\b[a-z]+)'s to (?=(?:go|be|end up|sit|stay|get)\b)", _F)
+
+
+def _is_to39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: "X's to go …" is 'X is to go …' when X names something of the scene."""
+    if "'s to " not in text.lower():
+        return text
+    return _IS_TO39.sub(
+        lambda m: f"{m['x']} is to " if _names(m["x"], lexicon) else m[0],
+        text,
+    )
+
+
+# -- order: 'start off with' / 'kick off with' (start with); "so sort him out first" after a want
+# of one person (serve them what they want); "Once both are sorted," / "once shes sorted"
+_START_OFF39 = re.compile(r"^(?:start|kick) off (?=with\b)", _F)
+_SORT_OUT39 = re.compile(
+    r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is) (?:after|wanting|waiting for|waiting on) (?P<x>(?:the|"
+    r"that|this) [a-z]+(?: [a-z]+)?),\s*so (?:sort (?P<p1>him|her) out|see to (?P<p2>him|her))"
+    r"(?P<first> first)?(?=\s*(?:[.;!]|$))",
+    _F,
+)
+_ONCE_SORTED39 = re.compile(
+    r"\bonce (?:(?P<both>(?:both|both of them|they)(?: are|'re| have been)?|theyre)|"
+    r"(?P<pron>he|she)(?:'s|s| is| has been)) (?:sorted|sorted out|seen to|served|looked after|"
+    r"done|taken care of|dealt with)\b",
+    _F,
+)
+
+
+def _order39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: 'Start off with' opening said 'Start with'; "P's after X, so sort him out
+    (first)" said "P's after X, so give it to him (first)" (P one person the pronoun may be, X
+    objects of the scene only); 'once both are sorted' / 'once she's sorted' (the task before
+    done) said 'once that's done' when something is asked before it: of one person the pronoun
+    may be, or of two tasks at least ('both')."""
+    text = _START_OFF39.sub("Start ", text)
+    m = _SORT_OUT39.match(text)
+    if m is not None and _only_person(m["p"], lexicon) and _things31(m["x"], lexicon):
+        pron = m["p1"] or m["p2"]
+        pid = next(iter(_ids(m["p"], lexicon, "human")))
+        if _fit36(pid, pron, lexicon):
+            text = f"{text[: m.end('x')]}, so give it to {pron}{m['first'] or ''}{text[m.end() :]}"
+    m = _ONCE_SORTED39.search(text)
+    if m is not None:
+        before = text[: m.start()]
+        people = _ids(before, lexicon, "human")
+        if not _ids(before, lexicon, "object"):
+            return text
+        if m["pron"] is not None:
+            if len(people) != 1 or not _fit36(next(iter(people)), m["pron"], lexicon):
+                return text
+        elif len(_ids(before, lexicon, "object")) < 2:
+            return text
+        text = f"{before}once that's done{text[m.end() :]}"
+    return text
+
+
+# -- pronouns and ellipsis
+# "As for Person A, the cup", "As for Mr Novak, he's had his eye on the lemon": the person said
+# first, then what is for them
+_AS_FOR39 = re.compile(
+    r"(?:^|(?<=[.;!?]\s))as for (?P<p>[A-Za-z][\w ]*?),\s*(?:(?P<pron>he|she)(?=(?:'s| is| has| "
+    r"wants| needs| would)\b)|(?=(?:the|that|this|those|these) ))",
+    _F,
+)
+# "The crisps? Alice's.", "The bottle? That's Bob's.": whose each thing is, said as an answer
+_WHOSE39 = re.compile(
+    r"(?P<x>(?:^|(?<=[.;!?]\s))(?:[Tt]he|[Tt]hat|[Tt]his) [a-z]+(?: [a-z]+)?)\?\s+"
+    r"(?:[Tt]hat's |[Tt]hat is |[Ii]t's |[Ii]t is )?(?P<p>[A-Z][\w ]*?)'s(?=\s*(?:[.;!,]|$))",
+)
+# "The bottle's Person A's, if you would": whose it is, said as a request by the courtesy after it
+_WHOSE_PLEASE39 = re.compile(
+    r"^(?P<x>(?:[Tt]he|[Tt]hat|[Tt]his) [a-z]+(?: [a-z]+)?)(?:'s| is) (?P<p>[A-Z][\w ]*?)'s,"
+    r"\s*(?P<c>if you (?:would|could|will|please|don't mind|wouldn't mind)|please)\b",
+)
+
+
+def _pronouns39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: 'As for P, he …' said 'P …' and 'As for P, the X' said 'P, the X' (P one
+    person the pronoun may be); 'The X? P's.' and 'The X? That's P's.' said 'The X to P.' (X
+    objects of the scene only, P one person); "The X's P's, if you would" said 'The X to P, if
+    you would' (the courtesy makes whose it is a request to hand it over)."""
+    low = text.lower()
+    if "as for " in low:
+        m = _AS_FOR39.search(text)
+        if m is not None and _only_person(m["p"], lexicon):
+            pid = next(iter(_ids(m["p"], lexicon, "human")))
+            if m["pron"] is None:
+                name = m["p"][0].upper() + m["p"][1:]
+                text = f"{text[: m.start()]}{name}, {text[m.end() :]}"
+            elif _fit36(pid, m["pron"], lexicon):
+                name = m["p"][0].upper() + m["p"][1:]
+                text = f"{text[: m.start()]}{name}{text[m.end() :]}"
+    if "?" in text:
+
+        def answered(m: re.Match[str]) -> str:
+            if _objects_only(m["x"], lexicon) and _only_person(m["p"], lexicon):
+                return f"{m['x']} to {m['p']}"
+            return m[0]
+
+        text = _WHOSE39.sub(answered, text)
+    m = _WHOSE_PLEASE39.match(text)
+    if m is not None and _objects_only(m["x"], lexicon) and _only_person(m["p"], lexicon):
+        text = f"{m['x']} to {m['p']}, {text[m.start('c') :]}"
+    return text
+
+
+# -- lower case: a person's name with 's' run on, its apostrophe left out ("toms after the
+# gloves", "priyas back"), in a text that writes no apostrophe
+_NAME_S39 = re.compile(r"\b(?P<n>[a-z]{2,})s\b(?= [a-z])")
+
+
+def _name_s39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: "<name>s" is "<name>'s" (is, has, or whose) where the name is one person's of
+    the scene and the word with 's' names nothing nor is a verb of the grammar, in a text written
+    in lower case without apostrophes."""
+    if "'" in text or "’" in text or text != text.lower():
+        return text
+
+    def mended(m: re.Match[str]) -> str:
+        word = m[0]
+        if word in VERBS or not _only_person(m["n"], lexicon):
+            return word
+        if not _ids(word, lexicon) <= _ids(m["n"], lexicon, "human"):
+            return word  # a name of its own ('chips'), or of someone else
+        return f"{m['n']}'s"
+
+    return _NAME_S39.sub(mended, text)
+
+
+# -- an 'after' closing a want that says what the person has been doing, not when to act: 'after
+# all that hay bale stacking', 'after a go on the coconut shy' (session 38 took 'after <doing>'
+# and 'after the <race>')
+_AFTER_ALL39 = re.compile(
+    r"\s+after (?:all (?:that|this|the|those)|(?:a|another|his|her|their) (?:go|turn|spin|ride|"
+    r"stint|round) (?:on|at|in) the) (?P<what>[a-z-]+(?: [a-z-]+){0,3})(?=\s*(?:[,.;!?]|$))|"
+    # "Bob's dying for a drink after the raft race, …": session 38's races, after a want of a kind
+    r"\s+after the (?P<race>(?:[a-z]+-)*[a-z]+(?: [a-z]+)? (?:race|relay|marathon|tournament|"
+    r"contest|competition|heats|final|derby|regatta|gala|triathlon|fun run|sports day))"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+_WANTED39 = re.compile(
+    r"\b(?:wants|needs|fancies|could use|could do with|would love|would like|is after|'s after|"
+    r"could murder|asking for|asked for|been after|on about|(?:is|'s) (?:desperate|gasping|dying|"
+    r"parched|gagging|thirsty|hungry|starving|famished|peckish) for|craving|(?:is|'s) (?:thirsty|"
+    r"hungry|starving|parched|famished|peckish|knackered|shattered|exhausted|worn out))\b",
+    _F,
+)
+
+
+def _after_all39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: 'after all that <doing>' and 'after a go on the <thing>' (above) taken off a
+    want or a state of one person in the same clause (no surface in it), its words naming nothing
+    and asking nothing: what tired them, said of the past ('after all that' cannot say when to
+    act)."""
+    if " after " not in text.lower():
+        return text
+    for m in _AFTER_ALL39.finditer(text):
+        # what was done said as a noun ('all that hay bale stacking', 'a go on the slide'): no
+        # word of it is a verb of the grammar
+        what = " ".join("x" if w.lower() in VERBS else w for w in (m["what"] or m["race"]).split())
+        if not _inert38(what, lexicon):
+            continue
+        before = re.split(r"[.;!?]\s+|,\s*", text[: m.start()])[-1]
+        if len(_ids(before, lexicon, "human")) != 1 or not _WANTED39.search(before):
+            continue
+        if _ids(before, lexicon, "surface"):
+            continue
+        return text[: m.start()] + text[m.end() :]
+    return text
+
+
+# "… since she got in from the duck race", "… since he came back": how long the want has lasted,
+# said by the person's coming in
+_SINCE_CAME39 = re.compile(
+    r",?\s+(?:ever )?since (?P<pron>he|she|they) (?:got|came|arrived|walked|wandered|rolled) "
+    r"(?:in|back|here|home|over|round)(?: (?:from|off) (?P<what>(?:the|his|her|their|a|an) "
+    r"[a-z-]+(?: [a-z-]+){0,3}))?(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _since_came39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: 'since she got in (from X)' (above) taken off a want of one person the pronoun
+    may be ('they' always), in the same clause with an object and no surface; X naming nothing
+    and asking nothing."""
+    if "since" not in text.lower():
+        return text
+    m = _SINCE_CAME39.search(text)
+    if m is None or (m["what"] is not None and not _inert38(m["what"], lexicon)):
+        return text
+    before = re.split(r"[.;!?]\s+|,\s*", text[: m.start()])[-1]
+    people = _ids(before, lexicon, "human")
+    if len(people) != 1 or not _WANTED39.search(before) or not _ids(before, lexicon, "object"):
+        return text
+    if _ids(before, lexicon, "surface"):
+        return text
+    if m["pron"].lower() != "they" and not _fit36(next(iter(people)), m["pron"], lexicon):
+        return text
+    return text[: m.start()] + text[m.end() :]
+
+
+_STEPS39: tuple[Callable[[str, Lexicon], str], ...] = (
+    _name_s39,
+    _courtesy39,
+    _at_all39,
+    _is_to39,
+    _want_idioms39,
+    _after_all39,
+    _since_came39,
+    _after_kind39,
+    _only_one39,
+    _order39,
+    _pronouns39,
+)

@@ -1,0 +1,217 @@
+"""Session-39 phrasings of issue 12 (engineer 12): blind37's refusals by kind in its sections of
+politeness, wants, pronouns and ellipsis, sentence splits, lower case, typos and questions
+(docs/grounding.md, "Session 39 (engineer 12)"). Each rule with sentences it reads (which fail
+with the rules taken out) and near sentences that must stay refused."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from hltl.grounding import _normalise1, _normalise2, _normalise4, normalise
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    LAB,
+    NURSERY,
+    OFFICE,
+    WARD,
+    WORKSHOP,
+    PhrasingCases,
+    assert_reads,
+)
+from tests.grounding.test_phrasing_s33t import TWO
+
+CASES = PhrasingCases()
+
+# -- wants said by an idiom before 'a' / 'an' / 'some' (could murder, could kill for, heart set
+# on, put one's name down for); 'P is after a brew' (thirsty); 'P needs a <kind>, and the X's the
+# only one going' -----------------------------------------------------------------------------
+
+test_wants = CASES.test(
+    ("Dana could murder a banana.", "banana>A", LAB),
+    ("Mr Novak could kill for a lemon, he says.", "lemon>C", KITCHEN),
+    ("Zoe has her heart set on a ruler.", "ruler>C", CLASSROOM),
+    ("Noah's put his name down for the globe.", "globe>B", CLASSROOM),
+    (
+        "Tom put his name down for some tape, and Mia wants the scanner.",
+        "tape>B & scanner>A",
+        DEPOT,
+    ),
+    ("Ruth's after a cuppa, so she'll be wanting the water jug.", "jug>A", WARD),
+    ("Omar is after a snack, so pass him the banana.", "banana>B", LAB),
+    ("Jess needs a drink, and the flashlight's the only one going.", None, WORKSHOP),
+    ("Mrs Khan needs a read, and the magazine's the only one left.", "magazine>C", WARD),
+    ("Sam wants a pen, and the red pen is the only one we've got.", "pen_red>B", OFFICE),
+    # two people; a person after the idiom (no object); the idiom before a kind the scene has no
+    # name for, with nothing after it; the only one naming two objects
+    ("Dana and Omar could murder a banana.", None, LAB),
+    ("Zoe has her heart set on Noah.", None, CLASSROOM),
+    ("Ruth's after a cuppa.", None, WARD),
+    ("Sam wants a pen, and the red pen and the blue pen are the only ones going.", None, OFFICE),
+)
+
+# -- an 'after' closing a want or state of one person that says what they have been doing: 'after
+# all that <doing>', 'after a go on the <thing>' -------------------------------------------------
+
+test_after_all = CASES.test(
+    ("Noah could use the ruler after all that long division.", "ruler>B", CLASSROOM),
+    ("Tom wants the gloves after all that shrink wrapping.", "gloves>B", DEPOT),
+    ("Ava could do with the beaker after a go on the slide.", "beaker>C", NURSERY),
+    ("Mr Lee needs the blanket_blue after a turn on the exercise bike.", None, WARD),
+    ("Mr Lee needs the blue blanket after a turn on the exercise bike.", "blanket_blue>B", WARD),
+    # an order, not a want; a surface in the clause; two people; what was done names something
+    ("Give Noah the ruler after all that long division.", None, CLASSROOM),
+    ("Tom wants the gloves on the belt after all that shrink wrapping.", None, DEPOT),
+    ("Ava and Lily want the beaker after a go on the slide.", None, NURSERY),
+)
+
+# -- courtesy: thanks and a word of address opening a request; 'at all' in 'Is it at all possible
+# to …' --------------------------------------------------------------------------------------------
+
+test_courtesy = CASES.test(
+    ("Thanks, pet, could Zoe have the glue stick?", "glue>C", CLASSROOM),
+    ("Cheers, pet, and could Mr Lee have his magazine?", "magazine>B", WARD),
+    ("Is it at all possible to put the stapler in the box?", "stapler@box", OFFICE),
+    ("Is it at all possible to hand Marco the knife?", "knife>A", KITCHEN),
+    # thanks and an address with nothing asked after it; 'at all' in a question of whether it
+    # was done
+    ("Thanks, pet, and that's all.", None, CLASSROOM),
+    ("Is it at all likely that the stapler is in the box?", None, OFFICE),
+)
+
+# -- an object 'is to' go somewhere, said with "'s" --------------------------------------------
+
+test_is_to = CASES.test(
+    ("The sponge's to go in the sink.", "sponge@sink", LAB),
+    ("The knife's to be given to Marco.", "knife>A", KITCHEN),
+    ("The grey blanket's to go to Mrs Khan, she's cold.", "blanket_grey>C", WARD),
+    # no scene name before it
+    ("The kettle's to go on the rack.", None, KITCHEN),
+)
+
+# -- order: 'Start off with', "P's after X, so sort him out first", 'once both are sorted', 'once
+# she's sorted' ------------------------------------------------------------------------------
+
+test_order = CASES.test(
+    (
+        "Start off with the glue for Zoe. Once that's done, Noah can have the ruler.",
+        "glue>C ; ruler>B",
+        CLASSROOM,
+    ),
+    (
+        "Kick off with the knife for Marco, then give Lena the lemon.",
+        "knife>A ; lemon>B",
+        KITCHEN,
+    ),
+    (
+        "Mrs Khan's after the magazine, so sort her out first. Then the jug can go on the trolley.",
+        "magazine>C ; jug@trolley",
+        WARD,
+    ),
+    ("Omar is waiting for the spoon, so see to him first.", "spoon>B", LAB),
+    (
+        "The tape goes on the belt and the gloves to Tom. Once both are sorted, the scanner's for "
+        "Mia.",
+        "(tape@conveyor & gloves>B) ; scanner>A",
+        DEPOT,
+    ),
+    (
+        "the knife goes to marco first and once hes sorted the lemon to lena",
+        "knife>A ; lemon>B",
+        KITCHEN,
+    ),
+    # the pronoun the other sex; two people before 'sort'; 'once she's sorted' with no one before
+    # it; 'once both are sorted' after one task
+    ("Mrs Khan's after the magazine, so sort him out first.", None, WARD),
+    ("Mrs Khan and Ruth are after the magazine, so sort her out first.", None, WARD),
+    ("once shes sorted the lemon to lena", None, KITCHEN),
+    ("The tape goes on the belt. Once both are sorted, the scanner's for Mia.", None, DEPOT),
+)
+
+# -- pronouns and ellipsis: 'As for P, he …' / 'As for P, the X'; 'The X? P's.' / 'The X? That's
+# P's.'; "The X's P's, if you would" ---------------------------------------------------------------
+
+test_pronouns = CASES.test(
+    ("Marco wants the knife. As for Lena, the lemon.", "knife>A & lemon>B", KITCHEN),
+    (
+        "The tape's wanted by Tom. As for Mia, she's had her eye on the scanner.",
+        "tape>B & scanner>A",
+        DEPOT,
+    ),
+    ("The globe? Noah's. The glue stick? That's Zoe's.", "globe>B & glue>C", CLASSROOM),
+    ("The sponge's Omar's, if you would.", "sponge>B", LAB),
+    ("The stapler's Sam's, if you wouldn't mind.", "stapler>B", OFFICE),
+    # the pronoun the other sex; 'as for' a thing; whose it is with no courtesy after it (whose,
+    # or to hand over); the answer a thing
+    ("The tape's wanted by Tom. As for Mia, he's had his eye on the scanner.", None, DEPOT),
+    ("As for the knife, the lemon.", None, KITCHEN),
+    ("The sponge's Omar's.", None, LAB),
+    ("The globe? The shelf's.", None, CLASSROOM),
+)
+
+# -- lower case: a name with 's' run on, its apostrophe left out --------------------------------
+
+test_lower = CASES.test(
+    ("glue stick to zoe and noahs after the ruler", "glue>C & ruler>B", CLASSROOM),
+    ("knife over to marco and lenas after the lemon", "knife>A & lemon>B", KITCHEN),
+    # a text that writes its apostrophes; a name of no one in the scene
+    ("glue stick to zoe and noahs' after the ruler", None, CLASSROOM),
+    ("glue stick to zoe and bobs after the ruler", None, CLASSROOM),
+)
+
+
+# -- old rules said more widely: session 37's 'after his <doing>' with 'ever since'; 'bonny' a
+# word of address (session 14's closing stretch) ------------------------------------------------
+
+EVER = PhrasingCases()
+test_ever_since = EVER.test(
+    ("Omar's been craving the banana ever since the egg judging.", "banana>B", LAB),
+    ("Mrs Khan has been wanting the magazine ever since her physio.", "magazine>C", WARD),
+    # the doing naming a thing of the scene; two people
+    ("Omar's been craving the banana ever since the spoon judging.", None, LAB),
+    ("Omar and Dana have been craving the banana ever since the egg judging.", None, LAB),
+)
+BONNY = PhrasingCases()
+test_bonny = BONNY.test(
+    ("Pass Marco the knife, bonny lad.", "knife>A", KITCHEN),
+    ("If you'd be so kind, hand Zoe the globe, bonny lass.", "globe>C", CLASSROOM),
+    # 'bonny' naming a thing of the scene ('the bonny one')
+    ("Pass Marco the knife, bonny one.", None, KITCHEN),
+)
+
+
+def test_ever_since_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:
+    old = _normalise4._AFTER_DOING37.pattern.replace("(?:ever )?since", "since")
+    EVER.refused_with(_normalise4, "_AFTER_DOING37", re.compile(old, re.I), monkeypatch)
+
+
+def test_bonny_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:
+    BONNY.refused_with(_normalise1, "_ADDRESS", _normalise1._ADDRESS - {"bonny"}, monkeypatch)
+
+
+def test_dyou_think() -> None:
+    # session 33's 'Do you think P could …?' said with "D'you" (its pattern had read "d'you you")
+    assert_reads("D'you think Jess could get the hammer?", "hammer>B", WORKSHOP)
+    assert_reads("D'ya reckon Lena can have the lemon?", "lemon>B", KITCHEN)
+
+
+def test_dyou_think_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:
+    old = _normalise2.re.compile(
+        r"(?:^|(?<=[.!?]\s))(?:do|d'you|don't) you (?:think|reckon|suppose) (?:that )?(?P<p>[A-Z]"
+        r"[^,.;!?]*?) (?P<m>could|can|might) (?=(?:have|get|take|use)\b)",
+        _normalise2._F,
+    )
+    cases = PhrasingCases()
+    cases.read.append(("D'you think Jess could get the hammer?", "hammer>B", WORKSHOP))
+    cases.refused_with(_normalise2, "_THINK_COULD33", old, monkeypatch)
+
+
+def test_refused_without_the_rules(monkeypatch: pytest.MonkeyPatch) -> None:
+    CASES.refused_without(normalise._STEPS39, monkeypatch)
+
+
+_ = (CELL, TWO)
