@@ -9,7 +9,9 @@ import re
 
 import pytest
 
-from hltl.grounding import _normalise1, _normalise2, _normalise4, normalise
+from hltl.errors import GroundingError
+from hltl.grounding import _normalise1, _normalise2, _normalise4, normalise, offline
+from hltl.grounding.offline import parse_instruction
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -22,6 +24,7 @@ from tests.grounding.helpers import (
     WORKSHOP,
     PhrasingCases,
     assert_reads,
+    assert_refused,
 )
 from tests.grounding.test_phrasing_s33t import TWO
 
@@ -191,6 +194,38 @@ def test_ever_since_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:
 
 def test_bonny_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:
     BONNY.refused_with(_normalise1, "_ADDRESS", _normalise1._ADDRESS - {"bonny"}, monkeypatch)
+
+
+def test_doubt_which() -> None:
+    # a choice the speaker cannot say the answer to: refused naming both readings
+    assert_refused(
+        "Zoe wants the ruler or the glue stick, I can't remember which.",
+        CLASSROOM,
+        match=r"ruler.*glue",
+    )
+    assert_refused("Give Marco the knife or the tongs, not sure which.", KITCHEN, match="tongs")
+    # a choice left to the robot reads as one
+    assert_reads("Zoe wants the ruler or the glue stick, whichever.", "ruler>C | glue>C", CLASSROOM)
+
+
+def test_usual() -> None:
+    # 'her usual': each object of the scene named as a reading
+    assert_refused("Mrs Khan asked for her usual.", WARD, match=r"jug.*magazine")
+    assert_refused("tom wants his usual please", DEPOT, match=r"box_small.*box_large")
+
+
+def test_readings_named_before(monkeypatch: pytest.MonkeyPatch) -> None:
+    # without the checks the refusals named no reading
+    monkeypatch.setattr(offline, "doubt_which39", lambda _t, _l: None)
+    monkeypatch.setattr(offline, "usual39", lambda _t, _l: None)
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(
+            "Zoe wants the ruler or the glue stick, I can't remember which.", CLASSROOM
+        )
+    assert "ruler" not in str(refused.value)
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction("Mrs Khan asked for her usual.", WARD)
+    assert "magazine" not in str(refused.value)
 
 
 def test_dyou_think() -> None:

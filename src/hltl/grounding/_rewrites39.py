@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person
 from hltl.grounding._normalise2 import _things31
@@ -327,6 +328,67 @@ def _since_came39(text: str, lexicon: Lexicon) -> str:
     if m["pron"].lower() != "they" and not _fit36(next(iter(people)), m["pron"], lexicon):
         return text
     return text[: m.start()] + text[m.end() :]
+
+
+# -- refusals that name their readings (checks offline.py makes before reading)
+# "Person B wants the cup or the apple, I can't remember which": a choice the speaker does not
+# know the answer to, not one left to the robot
+_DOUBT_WHICH39 = re.compile(
+    r"(?P<a>\b(?:the|a|an) [a-z]+(?: [a-z]+)?) or (?P<b>(?:the|a|an) [a-z]+(?: [a-z]+)?)"
+    r"(?:,|\.|;|\s*-)?\s*(?:but |and )?(?:I (?:can't|cannot|can not|don't|do not|didn't|"
+    r"couldn't) (?:remember|recall|know|say)|I forget|I've forgotten|I'm not sure|not sure|no idea|"
+    r"dunno)(?: now| exactly| offhand)? which\b",
+    _F,
+)
+
+
+def doubt_which39(text: str, lexicon: Lexicon) -> None:
+    """Session 39: a choice between two objects (or people) followed by the speaker saying they
+    do not know which ('I can't remember which', 'not sure which') is no choice left to the
+    robot: refused naming both readings (it had been refused on 'I', naming none)."""
+    if "which" not in text.lower():
+        return
+    m = _DOUBT_WHICH39.search(text)
+    if m is None:
+        return
+    a, b = _ids(m["a"], lexicon), _ids(m["b"], lexicon)
+    if len(a) != 1 or len(b) != 1 or a == b:
+        return
+    (x,), (y,) = a, b
+    raise GroundingError(
+        f"{m[0]!r}: the speaker does not know which is meant, {m['a']} ({x}) or {m['b']} ({y}); "
+        "say which"
+    )
+
+
+# "Person A asked for her usual": what the person usually has, which the scene does not say
+_USUAL39 = re.compile(
+    r"\b(?P<whose>his|her|their|[A-Za-z]+'s) (?:usual|regular|normal)(?: one)?"
+    r"(?=\s*(?:,?\s*(?:please|thanks|ta|cheers))?\s*[.!?]?\s*$)",
+    _F,
+)
+
+
+def usual39(text: str, lexicon: Lexicon) -> None:
+    """Session 39: 'P asked for her usual' (what the person usually has) in a sentence that names
+    one person and no object: the scene does not say what that is, so refused naming each object
+    it could be (it had been refused on 'usual', naming none)."""
+    if "usual" not in text.lower() and "regular" not in text.lower():
+        return
+    m = _USUAL39.search(text)
+    if m is None:
+        return
+    before = text[: m.start()]
+    if len(_ids(before, lexicon, "human")) != 1 or _ids(text, lexicon, "object"):
+        return
+    if _ids(text, lexicon, "surface"):
+        return
+    objects = ", ".join(
+        f"the {o.aliases[0] if o.aliases else o.id} ({o.id})" for o in lexicon.scene.objects
+    )
+    raise GroundingError(
+        f"{m[0]!r}: the scene does not say what that is; it could be any of {objects}: name it"
+    )
 
 
 _STEPS39: tuple[Callable[[str, Lexicon], str], ...] = (

@@ -12,6 +12,7 @@ from typing import Literal, cast
 from hltl.errors import GroundingError
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
+from hltl.grounding._rewrites39 import doubt_which39, usual39
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
@@ -604,6 +605,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _doer_said34s(text, lexicon)
         _spoken_to37s(text, lexicon)
         described_one38r(text, lexicon)
+        doubt_which39(text, lexicon)
+        usual39(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
