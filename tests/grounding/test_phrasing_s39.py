@@ -167,6 +167,52 @@ test_lower = CASES.test(
 )
 
 
+# -- a text with no marks, in lower case: ', ' put back before a remark run on (he's, she's,
+# we're) and before a clause said again without its verb ----------------------------------------
+
+test_run_on = CASES.test(
+    ("tape for tom please hes at bay four", "tape>B", DEPOT),
+    ("put the stapler in the box please were off to the pub quiz", "stapler@box", OFFICE),
+    (
+        "zoe could do with the ruler shes only just back from netball and shes shattered",
+        "ruler>C",
+        CLASSROOM,
+    ),
+    ("marco gets the knife for his prep lena the lemon", "knife>A & lemon>B", KITCHEN),
+    ("marco gets the knife lena the lemon shes on her break", "knife>A & lemon>B", KITCHEN),
+    # the pronoun the other sex; the remark naming a thing of the scene, or negating; two people
+    # before it; the gapped clause a thing, or a surface
+    ("tape for tom please shes at bay four", None, DEPOT),
+    ("tape for tom please hes at the pallet", None, DEPOT),
+    ("tape for tom please hes not at bay four", None, DEPOT),
+    ("tape for tom and mia please hes at bay four", None, DEPOT),
+    ("marco gets the knife for his prep lemon the salt", None, KITCHEN),
+    ("marco gets the knife for his prep lena the rack", None, KITCHEN),
+)
+
+# -- questions: 'P's been stood there for ages after his <doing>.' before the request; ', do you
+# reckon,' between a question and a remark ------------------------------------------------------
+
+test_questions = CASES.test(
+    (
+        "Noah's been stood there for ages after his spelling test. Pass him the ruler, would you.",
+        "ruler>B",
+        CLASSROOM,
+    ),
+    (
+        "Could Zoe have the globe, do you reckon, she wants it for her project?",
+        "globe>C",
+        CLASSROOM,
+    ),
+    # the pronoun the other sex
+    (
+        "Noah's been stood there for ages after her spelling test. Pass him the ruler, would you.",
+        None,
+        CLASSROOM,
+    ),
+    ("Could Zoe have the globe, do you reckon, he wants it for his project?", None, CLASSROOM),
+)
+
 # -- old rules said more widely: session 37's 'after his <doing>' with 'ever since'; 'bonny' a
 # word of address (session 14's closing stretch) ------------------------------------------------
 
@@ -185,6 +231,22 @@ test_bonny = BONNY.test(
     # 'bonny' naming a thing of the scene ('the bonny one')
     ("Pass Marco the knife, bonny one.", None, KITCHEN),
 )
+
+
+BEFORE = PhrasingCases()
+test_before_asked = BEFORE.test(
+    # session 32's closing 'before …' after a request said as a question
+    ("Could Mrs Khan have the jug before she heads off to her physio?", "jug>C", WARD),
+    ("Could Omar have the spoon before he nips off to his lecture?", "spoon>B", LAB),
+    # the pronoun the other sex; a surface in it
+    ("Could Mrs Khan have the jug before he heads off to his physio?", None, WARD),
+    ("Could Mrs Khan have the jug before the trolley goes?", None, WARD),
+)
+
+
+def test_before_asked_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:
+    old = _normalise2._BEFORE32.pattern.replace("[.!?]?", "[.!]?")
+    BEFORE.refused_with(_normalise2, "_BEFORE32", re.compile(old, re.I), monkeypatch)
 
 
 def test_ever_since_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -2178,7 +2178,7 @@ def _each_wants32(text: str, lexicon: Lexicon) -> str:
 # times)
 _BEFORE32 = re.compile(
     r",?\s+before (?P<what>(?:(?P<pron>he|she|they) |(?:the|our|my|some) [a-z]+s? )?"
-    r"[a-z][a-z' ]*?)(?P<end>\s*[.!]?)\s*$",
+    r"[a-z][a-z' ]*?)(?P<end>\s*[.!?]?)\s*$",
     _F,
 )
 _BACK_POINTERS32 = re.compile(r"\b(?:he|she|they|his|her|their|it|them)\b", _F)

@@ -6,10 +6,10 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person, _reasons21
 from hltl.grounding._normalise2 import _things31
 from hltl.grounding._normalise4 import _fit36
-from hltl.grounding._rewrites38 import _inert38
+from hltl.grounding._rewrites38 import _JOINS38, _inert38
 from hltl.grounding.lexicon import VERBS, Lexicon
 
 # -- session 39 (engineer 12): blind37's refusals by kind in the sections of politeness, wants,
@@ -330,6 +330,113 @@ def _since_came39(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + text[m.end() :]
 
 
+# -- a text written without punctuation, in lower case: the marks the writer left out put back
+# before a remark run on after the request (he's / she's / we're / I'm, a courtesy word before it
+# or not: "salt for mr novak please hes at table six", "stick the bottle on the shelf please were
+# off to the fair") and before a clause said again without its verb ("person a gets the apple for
+# her lunch person b the chips"), so that the rules for remarks and gapped clauses see them
+_REMARK_START39 = re.compile(
+    r"(?<=[a-z])\s+(?:(?P<c>please|cheers|thanks|thx|ta)\s+)?(?P<s>(?P<pron>he|she)(?:s|'s| is| "
+    r"has)|(?P<we>we're|were|we are|we've|weve|i'm|im|i am|i've|ive))\s+(?=[a-z])"
+)
+# a number after a word for a place that numbers its spots is a label, not a count
+_LABEL39 = re.compile(
+    r"\b(?:table|bed|room|seat|bay|booth|desk|gate|platform|pitch|stall|cubicle|ward|aisle) "
+    r"(?:[0-9]+|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\b"
+)
+_GAPPED39 = re.compile(
+    r"(?<=[a-z])\s+(?=(?P<rest>(?P<p>[a-z]+(?: [a-z]+)?) (?:the|his|her) [a-z]))"
+)
+
+
+def _run_on39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: in a text with no mark at all, in lower case: ', ' put before a clause said
+    again without its verb after 'P gets X …' (the word before it no verb, no joining word, the
+    clause a person of the scene and objects only), and before a remark (above) that closes the
+    text naming nothing and asking nothing but its own pronouns, 'all day' and a numbered place
+    ('table six'); a he / she remark only where the person of the clause before it may be the
+    pronoun. The courtesy word before a remark goes (as session 38's _run_on38)."""
+    if re.search(r"[,;:.!?]", text) or text != text.lower():
+        return text
+    out = text
+    if re.match(r"^[a-z]+(?: [a-z]+)? (?:gets|has|can have|wants|needs) (?:the|his|her) ", out):
+        for m in _GAPPED39.finditer(out):
+            words = out[: m.start()].split()
+            if words[-1] in _JOINS38 or words[-1] in VERBS or words[-1] in ("to", "for", "the"):
+                continue
+            clause = re.split(r"\s+(?:he|she)(?:s|'s| is)\s", m["rest"])[0]
+            if not _only_person(m["p"], lexicon):
+                continue
+            named = _ids(clause, lexicon)
+            if not named - _ids(m["p"], lexicon) <= _ids(clause, lexicon, "object"):
+                continue
+            if not _ids(out[: m.start()], lexicon, "object"):
+                continue
+            out = f"{out[: m.start()]}, {out[m.end() :]}"
+            break
+    m = _REMARK_START39.search(out)
+    if m is not None:
+        before, after = out[: m.start()], out[m.end() :]
+        said = _LABEL39.sub("x", after)
+        said = re.sub(
+            r"\b(?:he|she|hes|shes|his|her|we|were|our|i|im|my|all (?:day|morning|afternoon|"
+            r"evening|night|week))\b|\bonly just\b",
+            " ",
+            said,
+        )
+        words = before.split()
+        if (
+            words
+            and words[-1] not in _JOINS38
+            and words[-1] not in VERBS
+            and _ids(before, lexicon, "object")
+            and not _names(after, lexicon)
+            and (not said.split() or _inert38(said, lexicon))
+        ):
+            ok = True
+            if m["pron"] is not None:
+                people = _ids(before.split(",")[-1], lexicon, "human")
+                ok = len(people) == 1 and _fit36(next(iter(people)), m["pron"], lexicon)
+            if ok:
+                subj = "we're" if m["s"] in ("were", "we're") else m["s"]
+                after = re.sub(r"\bonly just\b", "just", after)
+                # session 21's reasons (run before this) asked again of the text with its comma
+                out = _reasons21(f"{before}, {subj} {after}", lexicon)
+    return out
+
+
+# "Bob's been stood there for ages after his pickled egg stall.": how long the person has waited,
+# and after what of theirs, a sentence of its own before the request
+_WAITED_AFTER39 = re.compile(
+    r"^(?P<s>(?P<p>[A-Z][\w ]*?)(?:'s| has| is)(?: been)? (?:stood|standing|waiting|sat|sitting|"
+    r"queuing|queueing|hanging about|hanging around)(?: there| here| about| around)?(?: for "
+    r"(?:ages|a while|hours|an age|a good while|a bit))?) after (?P<pron>his|her|their) "
+    r"(?P<what>[a-z-]+(?: [a-z-]+){0,3})(?=[.!]\s+\S)",
+    _F,
+)
+# "Can P have X, do you reckon, she wants it for …?": the hearer asked to judge, between the
+# question and a remark that closes it
+_TAG_BETWEEN39 = re.compile(
+    r",\s*(?:do you|d'you|d'ya) (?:think|reckon|suppose),\s*(?=(?:he|she|they)(?:'s| is| wants| "
+    r"needs| has)\b)",
+    _F,
+)
+
+
+def _questions39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: 'after his <doing>' taken off a sentence saying how long one person has waited
+    (above) when the doing names nothing and asks nothing and the pronoun may be them;
+    ', do you reckon,' between a question and a remark said ', ' (session 38's closing tag)."""
+    m = _WAITED_AFTER39.match(text)
+    if m is not None and _only_person(m["p"], lexicon) and _inert38(m["what"], lexicon):
+        pid = next(iter(_ids(m["p"], lexicon, "human")))
+        if m["pron"].lower() == "their" or _fit36(pid, m["pron"], lexicon):
+            text = m["s"] + text[m.end() :]
+    if "?" in text:
+        text = _TAG_BETWEEN39.sub(", ", text)
+    return text
+
+
 # -- refusals that name their readings (checks offline.py makes before reading)
 # "Person B wants the cup or the apple, I can't remember which": a choice the speaker does not
 # know the answer to, not one left to the robot
@@ -392,6 +499,9 @@ def usual39(text: str, lexicon: Lexicon) -> None:
 
 
 _STEPS39: tuple[Callable[[str, Lexicon], str], ...] = (
+    # first: the marks a text written without them leaves out, for the rules after it
+    _run_on39,
+    _questions39,
     _name_s39,
     _courtesy39,
     _at_all39,
