@@ -360,19 +360,19 @@ def _run_on39(text: str, lexicon: Lexicon) -> str:
         return text
     out = text
     if re.match(r"^[a-z]+(?: [a-z]+)? (?:gets|has|can have|wants|needs) (?:the|his|her) ", out):
-        for m in _GAPPED39.finditer(out):
-            words = out[: m.start()].split()
+        for g in _GAPPED39.finditer(out):
+            words = out[: g.start()].split()
             if words[-1] in _JOINS38 or words[-1] in VERBS or words[-1] in ("to", "for", "the"):
                 continue
-            clause = re.split(r"\s+(?:he|she)(?:s|'s| is)\s", m["rest"])[0]
-            if not _only_person(m["p"], lexicon):
+            clause = re.split(r"\s+(?:he|she)(?:s|'s| is)\s", g["rest"])[0]
+            if not _only_person(g["p"], lexicon):
                 continue
             named = _ids(clause, lexicon)
-            if not named - _ids(m["p"], lexicon) <= _ids(clause, lexicon, "object"):
+            if not named - _ids(g["p"], lexicon) <= _ids(clause, lexicon, "object"):
                 continue
-            if not _ids(out[: m.start()], lexicon, "object"):
+            if not _ids(out[: g.start()], lexicon, "object"):
                 continue
-            out = f"{out[: m.start()]}, {out[m.end() :]}"
+            out = f"{out[: g.start()]}, {out[g.end() :]}"
             break
     m = _REMARK_START39.search(out)
     if m is not None:
