@@ -106,7 +106,7 @@ test_order = CASES.test(
         CLASSROOM,
     ),
     (
-        "Kick off with the knife for Marco, then give Lena the lemon.",
+        "Begin out with the knife for Marco, he's off soon, then give Lena the lemon.",
         "knife>A ; lemon>B",
         KITCHEN,
     ),
