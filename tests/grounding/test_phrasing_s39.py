@@ -70,6 +70,7 @@ test_after_all = CASES.test(
     ("Give Noah the ruler after all that long division.", None, CLASSROOM),
     ("Tom wants the gloves on the belt after all that shrink wrapping.", None, DEPOT),
     ("Ava and Lily want the beaker after a go on the slide.", None, NURSERY),
+    ("Tom wants the gloves after all that pallet wrapping.", None, DEPOT),
 )
 
 # -- courtesy: thanks and a word of address opening a request; 'at all' in 'Is it at all possible
