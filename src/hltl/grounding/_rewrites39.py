@@ -139,8 +139,9 @@ def _is_to39(text: str, lexicon: Lexicon) -> str:
     )
 
 
-# -- order: 'start off with' / 'begin out with' (start with; 'kick off with' is session 35's); "so sort him out first" after a want
-# of one person (serve them what they want); "Once both are sorted," / "once shes sorted"
+# -- order: 'start off with' / 'begin out with' (start with; 'kick off with' is session 35's); "so
+# sort him out first" after a want of one person (serve them what they want); "Once both are
+# sorted," / "once shes sorted"
 _START_OFF39 = re.compile(r"^(?:start|begin) (?:off|out) (?=with\b)", _F)
 _SORT_OUT39 = re.compile(
     r"^(?P<p>[A-Za-z][\w ]*?)(?:'s| is) (?:after|wanting|waiting for|waiting on) (?P<x>(?:the|"
