@@ -187,6 +187,7 @@ test_run_on = CASES.test(
     ("tape for tom please hes at the pallet", None, DEPOT),
     ("tape for tom please hes not at bay four", None, DEPOT),
     ("tape for tom and mia please hes at bay four", None, DEPOT),
+    ("give bob the cup and the crisps were stale", None, CELL),
     ("marco gets the knife for his prep lemon the salt", None, KITCHEN),
     ("marco gets the knife for his prep lena the rack", None, KITCHEN),
 )

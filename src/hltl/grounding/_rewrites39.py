@@ -394,7 +394,9 @@ def _run_on39(text: str, lexicon: Lexicon) -> str:
             and not _names(after, lexicon)
             and (not said.split() or _inert38(said, lexicon))
         ):
-            ok = True
+            # 'were' / 'we are' may be said of what was just named ("… and the crisps were
+            # stale"): the speaker's only after a courtesy word
+            ok = m["c"] is not None or m["s"] not in ("were", "we are")
             if m["pron"] is not None:
                 people = _ids(before.split(",")[-1], lexicon, "human")
                 ok = len(people) == 1 and _fit36(next(iter(people)), m["pron"], lexicon)
