@@ -10,7 +10,7 @@ import re
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _normalise1, _normalise2, _normalise4, normalise, offline
+from hltl.grounding import _normalise1, _normalise2, _normalise4, _rewrites39, normalise
 from hltl.grounding.offline import parse_instruction
 from tests.grounding.helpers import (
     CELL,
@@ -280,8 +280,8 @@ def test_usual() -> None:
 
 def test_readings_named_before(monkeypatch: pytest.MonkeyPatch) -> None:
     # without the checks the refusals named no reading
-    monkeypatch.setattr(offline, "doubt_which39", lambda _t, _l: None)
-    monkeypatch.setattr(offline, "usual39", lambda _t, _l: None)
+    monkeypatch.setattr(_rewrites39, "doubt_which39", lambda _t, _l: None)
+    monkeypatch.setattr(_rewrites39, "usual39", lambda _t, _l: None)
     with pytest.raises(GroundingError) as refused:
         parse_instruction(
             "Zoe wants the ruler or the glue stick, I can't remember which.", CLASSROOM

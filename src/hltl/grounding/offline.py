@@ -10,9 +10,9 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
+from hltl.grounding import _rewrites39
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
-from hltl.grounding._rewrites39 import doubt_which39, usual39
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
@@ -605,8 +605,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _doer_said34s(text, lexicon)
         _spoken_to37s(text, lexicon)
         described_one38r(text, lexicon)
-        doubt_which39(text, lexicon)
-        usual39(text, lexicon)
+        _rewrites39.doubt_which39(text, lexicon)
+        _rewrites39.usual39(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
