@@ -177,10 +177,7 @@ KNOWN_MISSES = frozenset(
         "Person A's got her heart set on the chips and Person B's eyeing up the bottle, "
         "they've both been at the ferret racing.",
         "Kofi's in need of the torch, the lights have gone out in the back.",
-        "The crisps? Alice's. The bottle? That's Bob's, he won it on the hook a duck.",
         "Bottle. Person A. Chop chop, her decoupage glue's drying.",
-        'Mr Lee was asking after his magazine, he does the puzzles in it every afternoon; '
-        'could you take it over?',
         "Carol can have a mug, red or blue, she'll take whichever's closest to hand.",
         'Alice is happy with either the bottle or the crisps after her spinning wheel demo, '
         'hand her whichever.',
@@ -238,8 +235,6 @@ KNOWN_MISSES = frozenset(
         "The scanner's for Tom, oh no, I've muddled them, Mia's the one needing it for the "
         'stock count.',
         'Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.',
-        'stapler back on the desk please priya is tired of hunting for it',
-        "Spohge in the sink please, Omar's got potato print paint all over it.",
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
     }
 )

@@ -157,6 +157,25 @@ test_pronouns = CASES.test(
     ("The globe? The shelf's.", None, CLASSROOM),
 )
 
+# -- a remark that says 'it' of the one object the request names: what the person did with it or
+# what is on it (he / she the one person named, or a person of the scene after a placement) -----
+
+test_it_remark = CASES.test(
+    ("The magazine to Mrs Khan, she does the crossword in it every morning.", "magazine>C", WARD),
+    ("Bowl in the sink please, Dana's got soup all over it.", "bowl@sink", LAB),
+    ("The tape to Tom, he won it in the raffle.", "tape>B", DEPOT),
+    ("Knife on the rack, Marco's got fish scales on it.", "knife@rack", KITCHEN),
+    ("stapler in the box please sam is sick of tripping over it", "stapler@box", OFFICE),
+    # the pronoun the other sex; two objects; the remark naming a thing or putting; a person
+    # named after a handover to another, or a remark naming a thing after a placement
+    ("Give Tom the tape, she won it in the raffle.", None, DEPOT),
+    ("Give Tom the tape and the gloves, he won it in the raffle.", None, DEPOT),
+    ("Knife on the rack, Marco's got lemon on it.", None, KITCHEN),
+    ("Give Noah the ruler, he'll put glue on it.", None, CLASSROOM),
+    ("Knife to Lena, Marco's got fish scales on it.", None, KITCHEN),
+    ("stapler in the box please sam has the red pen", None, OFFICE),
+)
+
 # -- lower case: a name with 's' run on, its apostrophe left out --------------------------------
 
 test_lower = CASES.test(

@@ -8,7 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person, _reasons21
 from hltl.grounding._normalise2 import _things31
-from hltl.grounding._normalise4 import _fit36
+from hltl.grounding._normalise4 import _WANT_FRAME37, _fit36
 from hltl.grounding._rewrites38 import _JOINS38, _inert38
 from hltl.grounding.lexicon import VERBS, Lexicon
 
@@ -31,12 +31,15 @@ _WANT_IDIOM39 = re.compile(
 def _want_idioms39(text: str, lexicon: Lexicon) -> str:
     """Session 39: the want idioms above said 'wants' when one person is said before them in
     their clause and what follows them (up to a mark or 'and') is objects of the scene only
-    (a drink, a bite: session 30's states, left to them)."""
+    (a drink, a bite: session 30's states, left to them), and no her / him / them after it may
+    hand that person something else (as session 33's _idioms33)."""
     for m in list(_WANT_IDIOM39.finditer(text))[::-1]:
         before = re.split(r"[,.;!?]\s*|\s+(?:and|but|so)\s+", text[: m.start()])[-1]
         what = re.split(r"[,.;!?]|\s+(?:and|but|so|while|after|since)\s+", text[m.end() :])[0]
         if not _only_person(before, lexicon) or not _things31(what, lexicon):
             continue
+        if re.search(r"\b(?:her|him|them)\b", text[m.end() :], _F):
+            continue  # "Bob has his heart set on the crisps, hand him the cup" (as _idioms33)
         text = text[: m.start()] + " wants" + text[m.end() :]
     return text
 
@@ -61,6 +64,11 @@ def _after_kind39(text: str, lexicon: Lexicon) -> str:
         before = re.split(r"[,.;!?]\s*|\s+(?:and|but|so)\s+", text[: m.start()])[-1]
         if not _only_person(before, lexicon):
             continue
+        pid = next(iter(_ids(before, lexicon, "human")))
+        after = text[m.end() :]
+        prons = re.findall(r"\b(?:he|him|she|her|they|them)\b", after, _F)
+        if not any(_fit36(pid, p, lexicon) for p in prons) and pid not in _ids(after, lexicon):
+            continue  # "Hello, Alice is after a drink. Give Bob the cup.": not said of her want
         state = "thirsty" if m["drink"] else "hungry"
         text = text[: m.start()] + f" is {state}" + text[m.end() :]
     return text
@@ -345,6 +353,10 @@ _LABEL39 = re.compile(
     r"\b(?:table|bed|room|seat|bay|booth|desk|gate|platform|pitch|stall|cubicle|ward|aisle) "
     r"(?:[0-9]+|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\b"
 )
+# "… please priya is tired of hunting for it": a remark whose subject is a person of the scene
+_NAMED_REMARK39 = re.compile(
+    r"(?<=[a-z])\s+(?:(?:please|cheers|thanks|thx|ta)\s+)?(?P<n>[a-z]+) (?P<v>is|was|has) (?=[a-z])"
+)
 _GAPPED39 = re.compile(
     r"(?<=[a-z])\s+(?=(?P<rest>(?P<p>[a-z]+(?: [a-z]+)?) (?:the|his|her) [a-z]))"
 )
@@ -375,6 +387,14 @@ def _run_on39(text: str, lexicon: Lexicon) -> str:
                 continue
             out = f"{out[: g.start()]}, {out[g.end() :]}"
             break
+    n = _NAMED_REMARK39.search(out)
+    if n is not None and _only_person(n["n"], lexicon):
+        before = out[: n.start()]
+        if _ids(before, lexicon, "object") and not _ids(before, lexicon, "human"):
+            said = f"{before}, {n['n']} {n['v']} {out[n.end() :]}"
+            plain = _it_remark39(said, lexicon)
+            if plain != said:
+                return plain  # "stapler back on the desk please priya is tired of hunting for it"
     m = _REMARK_START39.search(out)
     if m is not None:
         before, after = out[: m.start()], out[m.end() :]
@@ -437,6 +457,56 @@ def _questions39(text: str, lexicon: Lexicon) -> str:
             text = m["s"] + text[m.end() :]
     if "?" in text:
         text = _TAG_BETWEEN39.sub(", ", text)
+    return text
+
+
+# -- a remark that says 'it' of the one object the request names, after it in its sentence: "The
+# bottle to Bob, he won it on the hook a duck", "… his magazine, he does the puzzles in it every
+# afternoon; …", "Sponge in the sink please, Omar's got paint all over it": what the person did
+# with it, or what is on it
+_IT_REMARK39 = re.compile(
+    r",\s*(?P<part>(?P<subj>he|she|[A-Za-z]+)(?:'s|s)?\b[^,;.!?]*?\b(?:in|on|over|for|at|off|"
+    r"about|into|onto|from|of|won|"
+    r"found|made|bought) it\b[^,;.!?]*?)(?=\s*(?:[;.!?]|$))",
+    _F,
+)
+_WAITING39 = re.compile(r"\bwaiting (?:for|on)\b", _F)
+_IT_MASK39 = re.compile(
+    r"\b(?:it|he|she|his|her|all over|every (?:day|morning|afternoon|evening|night|week|time)|"
+    r"'s got|has got|got|'s|has|does|did|was|is|had)\b",
+    _F,
+)
+
+
+def _it_remark39(text: str, lexicon: Lexicon) -> str:
+    """Session 39: a comma part closing a sentence (or before its ';') whose subject is he / she
+    or one person of the scene and which says 'it' after a preposition ('in it', 'all over it',
+    'for it') or a verb of getting ('won it', 'made it'), taken off when the sentence before it
+    names exactly one object (what 'it' is), the rest of the part names nothing and asks nothing
+    (a habit, 'every afternoon', and 'all over' apart) and no want is said in it; he / she must
+    be able to be the one person the sentence names, and a person named as the subject is only
+    taken off a request naming no person (a placement: "Priya is tired of hunting for it" after
+    "Stapler back on the desk")."""
+    if " it" not in text.lower():
+        return text
+    for m in _IT_REMARK39.finditer(text):
+        part = m["part"]
+        if _WANTED39.search(part) or _WANT_FRAME37.search(part) or _WAITING39.search(part):
+            continue
+        said = _IT_MASK39.sub(" ", part[len(m["subj"]) :])
+        if said.split() and not _inert38(said, lexicon):
+            continue
+        sentence = re.split(r"[.;!?]\s+", text[: m.start()])[-1]
+        if len(_ids(sentence, lexicon, "object")) != 1:
+            continue
+        people = _ids(sentence, lexicon, "human")
+        subj = m["subj"].lower()
+        if subj in ("he", "she"):
+            if len(people) != 1 or not _fit36(next(iter(people)), subj, lexicon):
+                continue
+        elif people or not _only_person(m["subj"], lexicon):
+            continue
+        return text[: m.start()] + text[m.end() :]
     return text
 
 
@@ -516,4 +586,6 @@ _STEPS39: tuple[Callable[[str, Lexicon], str], ...] = (
     _only_one39,
     _order39,
     _pronouns39,
+    # last: 'it' in the remark is what the (rewritten) request names
+    _it_remark39,
 )
