@@ -173,29 +173,6 @@ KNOWN_MISSES = frozenset(
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
         "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
-        "If you'd be so kind, pass Jess the hammer, bonny lad.",
-        "Carol's after a brew, so she'll be wanting the blue mug.",
-        "Bob's dying for a drink after the raft race, he needs that bottle.",
-        'Person A could murder an apple after all that hay bale stacking.',
-        "Person B's been craving the bottle ever since the scarecrow judging.",
-        "Person A needs a drink, and the bottle's the only one going.",
-        "Emma's been asking for a banana since she got in from the duck race.",
-        "Bob's been stood there for ages after his pickled egg stall. Hand him the bottle, "
-        'would you.',
-        "The crisps? Alice's. The bottle? That's Bob's, he won it on the hook a duck.",
-        "Person B put his name down for the apple. As for Person A, the cup, she's thirsty "
-        'from the corn dolly weaving.',
-        "The bottle's Person A's, if you would, she's been at the shin kicking.",
-        'Mr Lee was asking after his magazine, he does the puzzles in it every afternoon; '
-        'could you take it over?',
-        "The white plate's wanted by Lena. As for Mr Novak, he's had his eye on the lemon "
-        "since the cookery demo, so that's his.",
-        "Bob's after the bottle, so sort him out first. Then the crisps can go up on the shelf "
-        "out of the terrier's reach.",
-        "Start off with the bottle for Person B, he's got a bed push to get to. Once that's "
-        'done, Person A can have the chips.',
-        'The bib goes on the high chair and the wipes to Grandad. Once both are sorted, the '
-        "teddy's for Ava.",
         'Alice is happy with either the bottle or the crisps after her spinning wheel demo, '
         'hand her whichever.',
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
@@ -222,23 +199,7 @@ KNOWN_MISSES = frozenset(
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         'about, so give it her.',
         'Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.',
-        'bob could use the crisps after a go on the coconut shy',
-        'stick the bottle up on the shelf please were off to the donkey derby',
-        'person a gets the apple for her packed lunch person b the chips hes at the steam fair',
-        'person b could do with the bottle hes only just back from zorbing and hes knackered',
-        'the chips go to person a first and once shes sorted the apple to person b',
-        'stapler back on the desk please priya is tired of hunting for it',
-        'barcode scanner over to mia and toms after the work gloves',
-        'salt for mr novak please hes at table six',
-        "The blue mug's to go on the counetr, it's for the cake sale.",
-        "Spohge in the sink please, Omar's got potato print paint all over it.",
-        'Can Person A have the cup, do you reckon, she wants it for her dandelion tea?',
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
-        "D'you think Person A could get the chips, she's been at the village fete since dawn?",
-        'Any chance Person A could have the bottle before she heads back to her stall at the '
-        'farmers market?',
-        'Is it at all possible to get the small box down onto the pallet before the van hire '
-        'place shuts?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -247,8 +208,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind21 (tuned on in session 23)
         # blind22 (tuned on in session 24)
         # blind37 (tuned on in session 39)
-        'person a asked for her usual',
-        "Person B wants the cup or the applpe, I can't remember which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

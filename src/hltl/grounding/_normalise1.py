@@ -2630,6 +2630,8 @@ _ADDRESS = frozenset(
         *("thx", "ty", "much", "so", "very", "a", "lot", "again", "sweet", "awesome", "perfect"),
         *("grand", "super", "fab", "smashing", "amazing", "cool", "that's", "it", "the", "best"),
         *("bless", "ya", "always", "as", "mate's", "yeah", "right", "ok", "okay"),
+        # session 39 (12): "…, bonny lad", "…, bonny lass"
+        "bonny",
     }
 )
 

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
+from hltl.grounding import _rewrites39
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding._rewrites39r import whichever_again_says39r
@@ -607,6 +608,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _doer_said34s(text, lexicon)
         _spoken_to37s(text, lexicon)
         described_one38r(text, lexicon)
+        _rewrites39.doubt_which39(text, lexicon)
+        _rewrites39.usual39(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
