@@ -80,7 +80,13 @@ before the entry ("Bob's had a long shift, so …"; the entry), a thing given up
 verb ("could do with", "would love", "'s after") and given up ("doesn't need … any more"), one of a
 kind for a person ("Give Bob any of the mugs, whichever's nearer."; a choice of each), another
 person set against the one named ("Alice shouldn't get the apple; Bob should.") and the person
-corrected with who wants it (", actually, it's Carol who asked for it").
+corrected with who wants it (", actually, it's Carol who asked for it"). Session 39 added blind37's
+closing remarks, said by subjects and in places blind37 did not use (`remarks39`, its own
+generator): a pronoun before the request ("She's had a morning of it at the allotments, so …"),
+"his/her X" or a name's possessive after it (", his knee's playing up again"), "we" and the place
+before or after it (", we've got the inspectors in", "The back door's jammed. …"), a sentence
+between two of the request's, and a "who" clause after a name ("Give Bob, who's new here, the
+apple."): the entry, or refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small

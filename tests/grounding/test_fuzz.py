@@ -31,8 +31,10 @@ it: refused; session 37: a remark about a person of the scene by a name: the ent
 session 37 added to four families from blind35's kinds (corrections, wants said by a verb of need,
 "the pair of", the speaker saying who they are), the forms session 38 added to five families from
 blind36's kinds (a remark about a person by a pronoun or before the entry, a thing given up for
-another, one of a kind "any", another person set against the one named), and the wrappers and
-take-backs of a seed unchanged by them."""
+another, one of a kind "any", another person set against the one named), the remarks session 39
+added from blind37's kind (by a pronoun before, a possessive after, "we" and the place before or
+after, a sentence between two, a "who" clause after a name: the entry; a seed's earlier remarks
+unchanged), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
