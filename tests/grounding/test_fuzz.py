@@ -2070,6 +2070,8 @@ def test_a_remark_is_judged_by_what_the_grounder_reads(
 def test_over_the_corpus_each_remark_variant_names_what_it_says() -> None:
     kinds = dict.fromkeys(fuzz.REMARK_FORMS, 0)
     for v, scene in fuzz.generated(PARTS, seed=36, every=2, families=("remarks",)):
+        if v.form in fuzz.REMARK_FORMS39:  # (session 39's: the test of them below)
+            continue
         assert v.family == "remarks" and (v.must == "refuse") is (v.want is None)
         assert v.must == "refuse" or v.form in ("remark", "context", "about", "context before")
         assert v.form not in ("context", "about", "context before") or v.want is not None
