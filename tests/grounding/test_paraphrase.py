@@ -171,6 +171,110 @@ KNOWN_MISSES = frozenset(
         # blind35 (tuned on in session 37): refusals left at its one measurement (docs/grounding.md)
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
+        # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
+        "Do us a favour and put the small box on the belt, Mia's got a car boot sale to get to.",
+        "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
+        "If you'd be so kind, pass Jess the hammer, bonny lad.",
+        "Carol's after a brew, so she'll be wanting the blue mug.",
+        "Bob's dying for a drink after the raft race, he needs that bottle.",
+        'Person A could murder an apple after all that hay bale stacking.',
+        "Person B's been craving the bottle ever since the scarecrow judging.",
+        "Person A's got her heart set on the chips and Person B's eyeing up the bottle, "
+        "they've both been at the ferret racing.",
+        "Person A needs a drink, and the bottle's the only one going.",
+        "Emma's been asking for a banana since she got in from the duck race.",
+        "Kofi's in need of the torch, the lights have gone out in the back.",
+        "Bob's been stood there for ages after his pickled egg stall. Hand him the bottle, "
+        'would you.',
+        "The crisps? Alice's. The bottle? That's Bob's, he won it on the hook a duck.",
+        "Person B put his name down for the apple. As for Person A, the cup, she's thirsty "
+        'from the corn dolly weaving.',
+        "The bottle's Person A's, if you would, she's been at the shin kicking.",
+        "Bottle. Person A. Chop chop, her decoupage glue's drying.",
+        'Mr Lee was asking after his magazine, he does the puzzles in it every afternoon; '
+        'could you take it over?',
+        "The white plate's wanted by Lena. As for Mr Novak, he's had his eye on the lemon "
+        "since the cookery demo, so that's his.",
+        "Bob's after the bottle, so sort him out first. Then the crisps can go up on the shelf "
+        "out of the terrier's reach.",
+        "Start off with the bottle for Person B, he's got a bed push to get to. Once that's "
+        'done, Person A can have the chips.',
+        'The bib goes on the high chair and the wipes to Grandad. Once both are sorted, the '
+        "teddy's for Ava.",
+        "Carol can have a mug, red or blue, she'll take whichever's closest to hand.",
+        'Alice is happy with either the bottle or the crisps after her spinning wheel demo, '
+        'hand her whichever.',
+        'They each get a bite before the giant veg show: Person A the apple, Person B the chips.',
+        "Person B can make do with the cup or the bottle, whichever you reach first, he's late "
+        'for the cake stall.',
+        "One apiece for the pair of them, they've both been up ladders with the bunting: the "
+        'bottle for Person A, the chips to Person B.',
+        "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
+        'The chips can go to whichever of the two you like, Person A or Person B, they both '
+        'put in a shift on the cake stall.',
+        "Sam's labelling jam jars for the fete, give him any pen as long as it's not the one "
+        'on the desk.',
+        "Lily's building a castle like the one at the fete, she can have either block, she's "
+        'not fussy.',
+        'The pair of mugs can go up on the shelf, the open garden lot will be here soon.',
+        "Alice is taking both things to the gundog scurry, so that's the bottle and the crisps "
+        'to her.',
+        "Person A's picnic for the vintage tractor rally wants three things: the bottle, the "
+        'cup and the apple, all to her.',
+        "One bottle, just the one, for Person A, she's helping at the plant sale.",
+        "One bottle for Person A, that's all she asked for.",
+        "Pop the pair of cups in the sink, Emma's washing up after her sugarcraft session.",
+        "All three of the pens into the box, Priya's had enough of the doodling.",
+        "Stick all three of the boxes on the belt, we've the van hire place shutting at noon.",
+        'Stand both of the blocks up on the high chair so Lily can see them from her paddling '
+        'pool.',
+        'Alice is after the blue mug; leave the red one where it is.',
+        "Alice doesn't want the bottle, she's had her fill at the cream tea; the crisps are "
+        'for her.',
+        'Bob wants something, but not the crisps.',
+        "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
+        "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
+        "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
+        "It's not Person B who wants the bottle, it's Person A.",
+        "The bottle's for Person A and for no one else, she's earned it at the fun run.",
+        "Don't hang on to the bottle, give it to Person A.",
+        "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
+        "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
+        'blanket.',
+        "Noah isn't allowed the scissors after what happened with the bunting, so the glue "
+        'stick goes to him.',
+        "Kofi's not after the drill, it's the torch he wants for the loft hatch.",
+        "The bottle goes to Bob, sorry, I keep saying Bob, it's for Alice.",
+        "Crisps for Alice, ah, hold up, it was the bottle she asked for, she's parched from "
+        'the carnival float.',
+        "Hand the cup to Person A, scratch that, it should go to Person B, it's his turn.",
+        "Chips for Person A, or rather the apple, her running club's put her off crisps.",
+        "Chips to Person A, oops, my muddle, they're for Person B, he's only just back from "
+        'the sheep racing.',
+        "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
+        'about, so give it her.',
+        "Omar's having the spoon, oh, no, my mistake, the bowl's what he asked for.",
+        'Thermometer to Ruth, or no, on the locker.',
+        "The scanner's for Tom, oh no, I've muddled them, Mia's the one needing it for the "
+        'stock count.',
+        'Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.',
+        'bob could use the crisps after a go on the coconut shy',
+        'stick the bottle up on the shelf please were off to the donkey derby',
+        'person a gets the apple for her packed lunch person b the chips hes at the steam fair',
+        'person b could do with the bottle hes only just back from zorbing and hes knackered',
+        'the chips go to person a first and once shes sorted the apple to person b',
+        'stapler back on the desk please priya is tired of hunting for it',
+        'barcode scanner over to mia and toms after the work gloves',
+        'salt for mr novak please hes at table six',
+        "The blue mug's to go on the counetr, it's for the cake sale.",
+        "Spohge in the sink please, Omar's got potato print paint all over it.",
+        'Can Person A have the cup, do you reckon, she wants it for her dandelion tea?',
+        "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
+        "D'you think Person A could get the chips, she's been at the village fete since dawn?",
+        'Any chance Person A could have the bottle before she heads back to her stall at the '
+        'farmers market?',
+        'Is it at all possible to get the small box down onto the pallet before the van hire '
+        'place shuts?',
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -178,6 +282,10 @@ KNOWN_UNCLEAR = frozenset(
     {
         # blind21 (tuned on in session 23)
         # blind22 (tuned on in session 24)
+        # blind37 (tuned on in session 39)
+        "Whichever student's nearer can have the book.",
+        'person a asked for her usual',
+        "Person B wants the cup or the applpe, I can't remember which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -246,8 +354,10 @@ KNOWN_UNCLEAR = frozenset(
 # one, measured once at the end of session 36 (0 wrong), tuned on in session 37: asserted now,
 # the rest in KNOWN_MISSES; "blind36" written in session 37 by another engineer and committed alone,
 # reviewed by a second one, measured once at the end of session 37 (0 wrong), tuned on in session
-# 38: asserted now, the rest in KNOWN_MISSES)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind37"})
+# 38: asserted now, the rest in KNOWN_MISSES; "blind37" written in session 38 by another engineer
+# and committed alone, reviewed by a second one, measured once at the end of session 38 (1 wrong,
+# fixed), tuned on in session 39: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind38"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -347,6 +457,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind36"].entries}) >= 3
     assert len(CORPORA["blind37"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind37"].entries}) >= 3
+    assert len(CORPORA["blind38"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind38"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

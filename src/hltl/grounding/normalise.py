@@ -525,6 +525,9 @@ from hltl.grounding._normalise5 import (
 from hltl.grounding._rewrites38 import _STEPS38
 from hltl.grounding._rewrites38r import _STEPS38R
 from hltl.grounding._rewrites38s import _STEPS38S, _STEPS38S_FIRST
+from hltl.grounding._rewrites39 import _STEPS39
+from hltl.grounding._rewrites39r import _STEPS39R
+from hltl.grounding._rewrites39s import _STEPS39S, _STEPS39S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -833,6 +836,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S_FIRST,
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
+    # session 39 (12s)
+    *_STEPS39S_FIRST,
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
     *_STEPS33S,
     # session 34 (12t): blind17, blind19, blind20, blind23, causes18 and causes15's kinds
@@ -845,6 +850,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33T,
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
+    # session 39 (12r)
+    *_STEPS39R,
     # session 37 (12r): blind35's choices, counts, negation, exclusions and corrections
     *_STEPS37R,
     # session 36 (12r): blind34's choices, counts, negation, exclusions and corrections
@@ -871,6 +878,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S,
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
+    # session 39 (12s)
+    *_STEPS39S,
     # session 29 (12r)
     _no_words29r,
     _cue_reason29r,
@@ -944,6 +953,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _since28,
     # session 38 (12): blind36's kinds
     *_STEPS38,
+    # session 39 (12)
+    *_STEPS39,
     # session 37 (12): blind35's kinds
     *_STEPS37,
     # session 36 (12): blind34's kinds
