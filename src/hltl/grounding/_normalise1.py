@@ -92,8 +92,8 @@ def _ids(text: str, lexicon: Lexicon, kind: str | None = None) -> set[str]:
 def _rx(pattern: str) -> re.Pattern[str]:
     """``pattern`` compiled (case-insensitive) once: re's own cache keeps 512 patterns, fewer than
     the rewrites build over a scene's names, and recompiling them was a third of a rewrite's
-    time."""
-    return re.compile(pattern, _F)
+    time (the pattern the gate compiled when it gated it, where it did: gate.compiled)."""
+    return re.compiled(pattern, _F)
 
 
 def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) -> str:
