@@ -4328,9 +4328,11 @@ _PLACED_WANTED38L = re.compile(
 # lexicon's VERB_CLASS 'give' + 'bring': 'bring' also holds verbs said of placing, 'pop', 'move')
 _HANDOVER_SAID38L = re.compile(
     r"\b(?:give|gives|hand|hands|pass|passes|bring|brings|take|takes|deliver|fetch|send|carry|"
-    r"let)\b",
+    r"let(?!'s|\u2019s|\s+(?:me|us)\b))\b",
     re.I,
 )
+# ('let' hands over in "let Bob have it", not in an opener: "let's get you sorted", "let me think"
+# (session 39, lead: 12c's fuzz))
 
 
 def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
