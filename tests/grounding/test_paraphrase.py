@@ -172,25 +172,20 @@ KNOWN_MISSES = frozenset(
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
-        "Do us a favour and put the small box on the belt, Mia's got a car boot sale to get to.",
         "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
         "If you'd be so kind, pass Jess the hammer, bonny lad.",
         "Carol's after a brew, so she'll be wanting the blue mug.",
         "Bob's dying for a drink after the raft race, he needs that bottle.",
         'Person A could murder an apple after all that hay bale stacking.',
         "Person B's been craving the bottle ever since the scarecrow judging.",
-        "Person A's got her heart set on the chips and Person B's eyeing up the bottle, "
-        "they've both been at the ferret racing.",
         "Person A needs a drink, and the bottle's the only one going.",
         "Emma's been asking for a banana since she got in from the duck race.",
-        "Kofi's in need of the torch, the lights have gone out in the back.",
         "Bob's been stood there for ages after his pickled egg stall. Hand him the bottle, "
         'would you.',
         "The crisps? Alice's. The bottle? That's Bob's, he won it on the hook a duck.",
         "Person B put his name down for the apple. As for Person A, the cup, she's thirsty "
         'from the corn dolly weaving.',
         "The bottle's Person A's, if you would, she's been at the shin kicking.",
-        "Bottle. Person A. Chop chop, her decoupage glue's drying.",
         'Mr Lee was asking after his magazine, he does the puzzles in it every afternoon; '
         'could you take it over?',
         "The white plate's wanted by Lena. As for Mr Novak, he's had his eye on the lemon "
@@ -216,16 +211,13 @@ KNOWN_MISSES = frozenset(
         'on the desk.',
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         'not fussy.',
-        'The pair of mugs can go up on the shelf, the open garden lot will be here soon.',
         "Alice is taking both things to the gundog scurry, so that's the bottle and the crisps "
         'to her.',
         "Person A's picnic for the vintage tractor rally wants three things: the bottle, the "
         'cup and the apple, all to her.',
         "One bottle, just the one, for Person A, she's helping at the plant sale.",
         "One bottle for Person A, that's all she asked for.",
-        "Pop the pair of cups in the sink, Emma's washing up after her sugarcraft session.",
         "All three of the pens into the box, Priya's had enough of the doodling.",
-        "Stick all three of the boxes on the belt, we've the van hire place shutting at noon.",
         'Stand both of the blocks up on the high chair so Lily can see them from her paddling '
         'pool.',
         'Alice is after the blue mug; leave the red one where it is.',
@@ -244,19 +236,8 @@ KNOWN_MISSES = frozenset(
         "Noah isn't allowed the scissors after what happened with the bunting, so the glue "
         'stick goes to him.',
         "Kofi's not after the drill, it's the torch he wants for the loft hatch.",
-        "The bottle goes to Bob, sorry, I keep saying Bob, it's for Alice.",
-        "Crisps for Alice, ah, hold up, it was the bottle she asked for, she's parched from "
-        'the carnival float.',
-        "Hand the cup to Person A, scratch that, it should go to Person B, it's his turn.",
-        "Chips for Person A, or rather the apple, her running club's put her off crisps.",
-        "Chips to Person A, oops, my muddle, they're for Person B, he's only just back from "
-        'the sheep racing.',
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         'about, so give it her.',
-        "Omar's having the spoon, oh, no, my mistake, the bowl's what he asked for.",
-        'Thermometer to Ruth, or no, on the locker.',
-        "The scanner's for Tom, oh no, I've muddled them, Mia's the one needing it for the "
-        'stock count.',
         'Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.',
         'bob could use the crisps after a go on the coconut shy',
         'stick the bottle up on the shelf please were off to the donkey derby',

@@ -12,6 +12,7 @@ from typing import Literal, cast
 from hltl.errors import GroundingError
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
+from hltl.grounding._rewrites39s import remark_said39s
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
@@ -122,6 +123,7 @@ def parse_instruction(
             _away_till37s(text, node, lexicon)
             _placed_wanted38l(text, node, lexicon)
             _had_already38l(text, node, lexicon)
+            remark_said39s(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
