@@ -22,7 +22,9 @@ CASES = PhrasingCases()
 test_a_bare_object_after_a_negated_want_keeps_its_person = CASES.test(
     # a remark's person before 'P doesn't need X, just Y': never the one who gets Y
     ("Ruth is cold. Mr Lee doesn't need the jug, just the magazine.", None, WARD),
-    ("Jess is busy. Kofi doesn't need the drill, just the torch.", None, WORKSHOP),
+    ("Jess is cold. Kofi doesn't need the drill, just the torch.", None, WORKSHOP),
+    # a remark taken off (session 39, 12s): the rest is read alone, for Kofi, never for Jess
+    ("Jess is busy. Kofi doesn't need the drill, just the torch.", "torch>A", WORKSHOP),
     ("Carol is freezing. Bob doesn't need the cup, just the apple.", None, CELL),
     # said alone, or with a verb or person of its own after the comma: read as before
     ("Kofi doesn't need the drill, just the torch.", "torch>A", WORKSHOP),
