@@ -6,7 +6,10 @@ negated clause was dropped with its person, and the remark's person took the bar
 "Lily is sleepy. Ava doesn't want the bib, pass her the beaker." read the beaker to Lily: the
 remark's person stood in for a 'her' that may be Ava, named in the request before it.
 "Let's get going. Put the lemon on the worktop, chef wants it." read a handover too: the opener's
-'let' was taken for a verb of handing, so session 38's placed-then-wanted check did not run."""
+'let' was taken for a verb of handing, so session 38's placed-then-wanted check did not run; and
+"…, chef wants it. Also, give Lena the salt." skipped it too, for a 'give' said of another thing.
+"Bob wants the red mug, leave the blue one where it is, no, Alice gets it." read the blue mug to
+Alice: the correction's 'it' was taken for the thing said to be left."""
 
 from __future__ import annotations
 
@@ -15,7 +18,16 @@ import pytest
 from hltl.errors import GroundingError
 from hltl.grounding import offline
 from hltl.world.scene import Scene
-from tests.grounding.helpers import CELL, KITCHEN, LAB, NURSERY, WARD, WORKSHOP, PhrasingCases
+from tests.grounding.helpers import (
+    CELL,
+    KITCHEN,
+    LAB,
+    NURSERY,
+    WARD,
+    WORKSHOP,
+    PhrasingCases,
+    assert_case,
+)
 
 CASES = PhrasingCases()
 
@@ -66,3 +78,44 @@ def test_the_refusals_say_what_was_unclear(text: str, scene: Scene, names: tuple
         offline.parse_instruction(text, scene)
     said = str(refused.value)
     assert all(n in said for n in names), said
+
+
+test_a_thing_said_to_be_left_is_not_moved = CASES.test(
+    # "leave the blue one where it is", then a correction whose 'it' was taken for it: refused
+    ("Bob wants the red mug, leave the blue one where it is, no, Alice gets it.", None, CELL),
+    (
+        "Bob wants the red mug, mind, leave the blue one where it is, what am I saying, Carol "
+        "gets it.",
+        None,
+        CELL,
+    ),
+    (
+        "Ruth wants the grey blanket, leave the blue one where it is, sorry, Mr Lee gets it.",
+        None,
+        WARD,
+    ),
+    # the thing left stays where it is, and nothing moves it: read as before
+    ("Bob wants the red mug, leave the blue one where it is.", "mug_red>B", CELL),
+    ("Bob wants the red mug, leave the blue one alone.", "mug_red>B", CELL),
+    ("Ruth wants the grey blanket, leave the blue one where it is.", "blanket_grey>A", WARD),
+    # 'don't leave X where it is' asks to move it
+    ("Don't leave the apple where it is, give it to Bob.", "apple>B", CELL),
+)
+
+test_a_handover_of_another_thing_says_nothing_of_the_placed_one = CASES.test(
+    # 'give' said of another thing in another sentence: the want after the placement is refused
+    ("Put the cup on the shelf, Bob wants it. Also, give Alice the apple.", None, CELL),
+    ("Put the spoon in the sink, Omar wants it. Then give Emma the bowl.", None, LAB),
+    # 'give' said of the placed thing (by name or 'it'): read as before
+    ("Put the cup on the shelf. Then give Bob the cup, he wants it.", "cup@shelf ; cup>B", CELL),
+    ("Put the cup on the shelf, then give it to Bob, he wants it.", "cup@shelf ; cup>B", CELL),
+)
+
+
+def test_without_the_left_check_the_left_thing_moves(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(offline, "_left_moved39l", lambda text, node, lexicon: None)
+    assert_case(
+        "Bob wants the red mug, leave the blue one where it is, no, Alice gets it.",
+        "mug_red>B & mug_blue>A",
+        CELL,
+    )
