@@ -196,46 +196,29 @@ KNOWN_MISSES = frozenset(
         'done, Person A can have the chips.',
         'The bib goes on the high chair and the wipes to Grandad. Once both are sorted, the '
         "teddy's for Ava.",
-        "Carol can have a mug, red or blue, she'll take whichever's closest to hand.",
         'Alice is happy with either the bottle or the crisps after her spinning wheel demo, '
         'hand her whichever.',
-        'They each get a bite before the giant veg show: Person A the apple, Person B the chips.',
-        "Person B can make do with the cup or the bottle, whichever you reach first, he's late "
-        'for the cake stall.',
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
         'bottle for Person A, the chips to Person B.',
         "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
         'The chips can go to whichever of the two you like, Person A or Person B, they both '
         'put in a shift on the cake stall.',
-        "Sam's labelling jam jars for the fete, give him any pen as long as it's not the one "
-        'on the desk.',
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         'not fussy.',
-        "Alice is taking both things to the gundog scurry, so that's the bottle and the crisps "
-        'to her.',
-        "Person A's picnic for the vintage tractor rally wants three things: the bottle, the "
-        'cup and the apple, all to her.',
-        "One bottle, just the one, for Person A, she's helping at the plant sale.",
-        "One bottle for Person A, that's all she asked for.",
         "All three of the pens into the box, Priya's had enough of the doodling.",
         'Stand both of the blocks up on the high chair so Lily can see them from her paddling '
         'pool.',
-        'Alice is after the blue mug; leave the red one where it is.',
         "Alice doesn't want the bottle, she's had her fill at the cream tea; the crisps are "
         'for her.',
-        'Bob wants something, but not the crisps.',
         "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
         "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
         "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
-        "It's not Person B who wants the bottle, it's Person A.",
         "The bottle's for Person A and for no one else, she's earned it at the fun run.",
-        "Don't hang on to the bottle, give it to Person A.",
         "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
         "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
         'blanket.',
         "Noah isn't allowed the scissors after what happened with the bunting, so the glue "
         'stick goes to him.',
-        "Kofi's not after the drill, it's the torch he wants for the loft hatch.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         'about, so give it her.',
         'Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.',
@@ -264,7 +247,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind21 (tuned on in session 23)
         # blind22 (tuned on in session 24)
         # blind37 (tuned on in session 39)
-        "Whichever student's nearer can have the book.",
         'person a asked for her usual',
         "Person B wants the cup or the applpe, I can't remember which.",
     }

@@ -12,6 +12,7 @@ from typing import Literal, cast
 from hltl.errors import GroundingError
 from hltl.grounding._normalise1 import _adjectives, _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
+from hltl.grounding._rewrites39r import whichever_again_says39r
 from hltl.grounding._rewrites39s import remark_said39s
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
@@ -620,6 +621,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         node = _read(text, scene, lexicon)
         if normalise:
             list_says38r(text, lexicon)
+            whichever_again_says39r(text, node, lexicon)
             _not_before_itself(text, node, scene, lexicon)
             _two_sexes_one_person(text, lexicon)
             _said_against33s(text, node, lexicon)
