@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
-from hltl.grounding._normalise1 import _adjectives, _ids, _only
+from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding._rewrites39r import whichever_again_says39r
 from hltl.grounding._rewrites39s import remark_said39s
@@ -4465,6 +4465,9 @@ def _left_moved39l(text: str, node: Node, lexicon: Lexicon) -> None:
     a thing said to be left where it is contradicts the instruction: refused."""
     if "leave" not in text.lower():
         return
+    # why here: the import line above is shared with other engineers' session-39 lines
+    from hltl.grounding._normalise1 import _adjectives
+
     for m in _LEFT39L.finditer(text):
         if text[: m.start()].lower().rstrip().endswith(("don't", "don\u2019t", "do not", "never")):
             continue  # "Don't leave the bottle where it is; hand it to Person A."
