@@ -4465,9 +4465,6 @@ def _left_moved39l(text: str, node: Node, lexicon: Lexicon) -> None:
     a thing said to be left where it is contradicts the instruction: refused."""
     if "leave" not in text.lower():
         return
-    # why here: the import line above is shared with other engineers' session-39 lines
-    from hltl.grounding._normalise1 import _adjectives
-
     for m in _LEFT39L.finditer(text):
         if text[: m.start()].lower().rstrip().endswith(("don't", "don\u2019t", "do not", "never")):
             continue  # "Don't leave the bottle where it is; hand it to Person A."
@@ -4475,8 +4472,14 @@ def _left_moved39l(text: str, node: Node, lexicon: Lexicon) -> None:
         left = _ids(what, lexicon, "object")
         one = re.fullmatch(r"(?:the|that|this)\s+(?P<adj>[a-z]+)\s+ones?", what, re.I)
         if not left and one is not None:
-            kinds = _adjectives(lexicon).get(one["adj"].lower(), frozenset())
-            left = {i for k in kinds for i in _ids(f"the {one['adj']} {k}", lexicon, "object")}
+            # 'the green one': the objects with a two-word name opening with that word
+            adj = one["adj"].lower()
+            left = {
+                o.id
+                for o in lexicon.scene.objects
+                for a in o.aliases
+                if a.lower().split()[0] == adj and len(a.split()) == 2
+            }
         moved = sorted({t.obj for t in tasks(node) if t.obj in left})
         if moved:
             raise GroundingError(
