@@ -605,6 +605,15 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
             return text  # "Mr Lee is cold, give her …": not him
         if not _kin_fits36s(next(iter(person)), body, lexicon):
             return text  # "Grandad's here, she'll need her bib": not him
+        first = re.search(r"\b(?:him|her|he|she)\b", body, _F)
+        if first is not None and any(
+            _fits(other, body, lexicon) and _kin_fits36s(other, body, lexicon)
+            for other in _ids(body[: first.start()], lexicon, "human") - person
+        ):
+            # "Lily is freezing. Ava doesn't want the wipes, give her the teddy.": 'her' may be
+            # Ava, named in the request before it, not only the remark's person (session 39,
+            # lead: 12c's fuzz)
+            return text
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
