@@ -2054,8 +2054,14 @@ def remarks39(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iter
     if cuts and (forms := fitting(tuple(middle), True)):
         at = rng.choice(cuts)
         p = rng.choice(names) if names else ""
-        said = f"{text[:at]} {rng.choice(forms).format(P=p)}{text[at:]}"
-        yield variant(said, entry.want, entry.readings, "middle")
+        form = rng.choice(forms)
+        said = f"{text[:at]} {form.format(P=p)}{text[at:]}"
+        # a remark about a person before a sentence naming no person of its own could give that
+        # sentence its person ("Give Bob the chips. Alice's bus was late. The apple too.": Bob's,
+        # or Alice's?), so it is not made (the draws stay as they were)
+        after = _SENTENCE_END39.split(text[at:].lstrip(), maxsplit=1)[0]
+        if "{P}" not in form or _named(after, scene, "human"):
+            yield variant(said, entry.want, entry.readings, "middle")
     inside = [m for m in _people_said(text, scene) if re.match(r" [A-Za-z]", text[m.end() :])]
     if grounded and inside and (forms := [f for f in WHO if _names_nothing(f, scene)]):
         m = rng.choice(inside)

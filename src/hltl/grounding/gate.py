@@ -153,8 +153,11 @@ def _gate(pattern: str, flags: int, *, build: bool = True) -> _Gate:
         if build and not flags & _RE_ONLY:
             if len(_BUILT) > 16384:
                 _BUILT.clear()
-            # an error re raises where it compiles the pattern: raised there, as it was
-            with contextlib.suppress(re.error):
+            # an error re raises where it compiles the pattern: raised there, as it was; and
+            # where re's private code generator is not what this Python's re has (_from_parse
+            # follows the re._compiler.compile of CPython 3.11, the version used here), re.compile
+            # builds the pattern as before
+            with contextlib.suppress(re.error, AttributeError, TypeError, ValueError):
                 _BUILT[key] = _from_parse(pattern, int(flags), parsed)
     if len(_GATES) > 16384:
         _GATES.clear()
