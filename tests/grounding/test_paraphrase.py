@@ -216,7 +216,6 @@ KNOWN_MISSES = frozenset(
         "The bottle? Person A, for the seed swap. The chips? Same.",
         "Bottle's hers, Person A's, she's the organ builder.",
         "Sam left his notepad here, take it back to him.",
-        "The apple is for Alice. Crisps, Bob. The red mug can be left on the counter.",
         "the bottle goes to Bob and Alice gets the crisps they're both off to the angler's "
         "meeting after",
         "Person A's having the cup and Person B the apple and the chips go to Person B too.",
@@ -269,11 +268,9 @@ KNOWN_MISSES = frozenset(
         "Pesrson B wants the bottle for the charcoal burning demo.",
         "The banaana on the tray for the moth trap volunteers.",
         "Could the notwbook go to Priya for her tin whistle notes?",
-        "Could you stand the cup on the counter for the bellfounder?",
         "Can Person B have the cup and the apple for his model boat outing?",
         "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
         "Could you hang the tongs on the plate rack, Marco's done with them?",
-        "Would the teacher be able to borrow the red book?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -5525,7 +5525,8 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
         out,
     )
     out = _sub(
-        rf"^(?:would|could|will|is|are) {_P} (?:be )?able to (?:have|get|take|receive) {_X}"
+        rf"^(?:would|could|will|is|are) {_P} (?:be )?able to (?:have|get|take|receive|borrow) "
+        rf"{_X}"
         r"(?: from you)?(?:,? do you (?:think|reckon))?\s*\?$",
         asked,
         out,
