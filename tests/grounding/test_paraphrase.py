@@ -202,25 +202,16 @@ KNOWN_MISSES = frozenset(
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
         # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
         "Go on then, pass Person A the chips, she's earned them after the boccia.",
-        "Dana, bless her, wants the banana, so could you be a dear and take it over? Thanks.",
-        "Kofi sends his thanks in advance: could you pass him the power drill, please?",
         "Carol's after a red mug for her ham radio night, and Bob could do with the apple.",
-        "Person A could really murder that bottle right now.",
-        "Person B would love the chips, if there's any going.",
-        "Person B's crying out for the chips after a day's fly fishing.",
         "Person B needs the chips for the drive to pinochle night, Person A the bottle.",
         "Omar needs the sponge to clean up after the moth trap.",
         "The crisps, Alice. She asked first.",
         "Person B wants the chips for the bar billiards league. The apple too.",
         "Person B's been flying his drone all morning and asked for the chips, so hand him them.",
-        "The bottle? Person A, for the seed swap. The chips? Same.",
         "Bottle's hers, Person A's, she's the organ builder.",
-        "Sam left his notepad here, take it back to him.",
         "the bottle goes to Bob and Alice gets the crisps they're both off to the angler's "
         "meeting after",
         "Person A's having the cup and Person B the apple and the chips go to Person B too.",
-        "Start with the apple to Person B; next the bottle to Person A; finish with the cup to "
-        "Person B.",
         "give Person A the bottle she's been on about it all morning",
         "Give Ruth the thermometer she's doing the rounds and Mrs Khan the magazine",
         "Alice needs supplies for her upcycling class: both the bottle and the crisps, please.",
@@ -280,7 +271,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind22 (tuned on in session 24)
         # blind37 (tuned on in session 39)
         # blind38 (tuned on in session 40)
-        "One of them's after the apple, can't recall who.",
         "Person B. The bottle. Or the chips. Whatever he said, I wasn't listening.",
         "Give Person B the chips, no, the other thing, or maybe not, I'm not sure now.",
     }

@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _objects_only, _only
+from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only, _only_person
+from hltl.grounding._normalise4 import _fit36
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -66,8 +67,123 @@ def _left_on40(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- courtesy: 'P, bless her,' between a person and what is said of them ("Dana, bless her, wants
+# the banana", "Grandad, bless him, could do with the wipes"); 'bless her' closing a request was
+# read before (session 14's closers)
+_BLESS40 = re.compile(
+    r"(?P<p>\b[A-Z][\w]*(?: [A-Z][\w]*)?),\s*(?:god |bless )?bless (?P<pron>her|him|them|'em)"
+    r"(?: (?:heart|cotton socks|little heart|soul))?,\s*",
+)
+
+
+def _bless40(text: str, lexicon: Lexicon) -> str:
+    """Session 40: ', bless her,' after one person of the scene the pronoun may be, taken off."""
+    if "bless" not in text.lower():
+        return text
+    for m in list(_BLESS40.finditer(text))[::-1]:
+        who = _ids(m["p"], lexicon, "human")
+        if not _only_person(m["p"], lexicon) or (
+            m["pron"].lower() in ("her", "him") and not _fit36(next(iter(who)), m["pron"], lexicon)
+        ):
+            continue
+        text = f"{text[: m.end('p')]} {text[m.end() :]}"
+    return text
+
+
+# -- courtesy: thanks a person of the scene sends before their own request ("Kofi sends his thanks
+# in advance: could you pass him the power drill?", "Ruth sends her regards, …"): what the grammar
+# reads as 'P says thanks: …' (the request is theirs, its him / her them)
+_SENDS_THANKS40 = re.compile(
+    r"^(?P<p>[A-Z][\w]*(?: [A-Z][\w]*)?) (?:sends|passes on|gives|offers) (?P<pron>his|her|their) "
+    r"(?:thanks|regards|best|best wishes|love|compliments)(?: in advance| already| ahead of time)?"
+    r"(?P<mark>\s*[:—–,]\s*)",
+)
+
+
+def _sends_thanks40(text: str, lexicon: Lexicon) -> str:
+    """Session 40: 'P sends his thanks (in advance):' opening a request is 'P says thanks:' (one
+    person of the scene whom the pronoun may be)."""
+    m = _SENDS_THANKS40.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    pid = next(iter(_ids(m["p"], lexicon, "human")))
+    if m["pron"] != "their" and not _fit36(pid, m["pron"], lexicon):
+        return text
+    return f"{m['p']} says thanks: {text[m.end() :]}"
+
+
+# -- an availability said as a condition after a want or request ("Person B would love the chips,
+# if there's any going", "…, if there are some spare", "…, if there's one left"): the scene has
+# the object, so it asks nothing more; taken off when it closes the instruction
+_ANY_GOING40 = re.compile(
+    r",?\s*(?:but )?(?:only )?if (?:there's|there is|there are|there're|there be) (?:any|some|one|"
+    r"enough)(?: of (?:it|them|those|that))?(?: (?:going|left|spare|to spare|left over|about|"
+    r"around|handy|free|going spare))?(?P<end>\s*[.!?]*\s*)$",
+    _F,
+)
+
+
+def _any_going40(text: str, lexicon: Lexicon) -> str:
+    """Session 40: the availability above taken off a request or want that names objects and
+    one person (an 'if' of anything else stays a condition, refused)."""
+    if " if " not in text.lower():
+        return text
+    m = _ANY_GOING40.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    if not _ids(before, lexicon, "object") or len(_ids(before, lexicon, "human")) != 1:
+        return text
+    return before + (m["end"].strip() or ".")
+
+
+# -- order: 'finish with X' / 'end with X' / 'round off with X' opening the last step ("Start
+# with the apple to Person B; next the bottle to Person A; finish with the cup to Person B"):
+# 'finally X' (session 19's 'to finish,' and 'start with' are read so)
+_FINISH_WITH40 = re.compile(
+    r"(?:^|(?<=[.;!?])\s*|(?<=,)\s*|\band\s+|\bthen\s+)(?:and )?(?:then )?(?:finish|end|finish off|"
+    r"finish up|round off|round things off|wind up|wrap up|close) with (?=the |a |an |[A-Z])",
+    _F,
+)
+
+
+def _finish_with40(text: str, _lexicon: Lexicon) -> str:
+    """Session 40: 'finish with' (above) before the last step is 'finally'."""
+    if " with " not in text.lower():
+        return text
+    return _FINISH_WITH40.sub(lambda m: m.group(0)[: -len(m.group(0).lstrip())] + "finally ", text)
+
+
+# -- ellipsis: 'Same.' answering a question of the form 'The X? P.' ("The bottle? Person A. The
+# chips? Same.", "The ruler? Noah. And the glue? The same."): the person of the answer before
+_SAME40 = re.compile(
+    r"(?P<q1>\b(?:the|a|an) [a-z][a-z ]*?\?)\s*(?P<p>[A-Z][\w]*(?: [A-Z][\w]*)?)"
+    r"(?P<mid>(?:,[^.?!]*)?[.!]\s+(?:and |what about |how about )?(?:the|a|an) [a-z][a-z ]*?\?\s*)"
+    r"(?P<same>(?:the )?same(?: again| here| person| one| for (?:it|that|them|those))?|ditto)"
+    r"(?=\s*[.!]*\s*$)",
+    _F,
+)
+
+
+def _same40(text: str, lexicon: Lexicon) -> str:
+    """Session 40: the 'Same' above said as that one person of the scene."""
+    if "same" not in text.lower() and "ditto" not in text.lower():
+        return text
+    m = _SAME40.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return f"{text[: m.start('same')]}{m['p']}{text[m.end('same') :]}"
+
+
 # the normaliser's rewrites (wired into normalise._STEPS19)
-_STEPS40: tuple[Callable[[str, Lexicon], str], ...] = (_left_on40,)
+_STEPS40: tuple[Callable[[str, Lexicon], str], ...] = (
+    _left_on40,
+    _bless40,
+    _sends_thanks40,
+    _any_going40,
+    _finish_with40,
+    _same40,
+)
 # refusals asked of the text before it is read (offline._parse, after the session-39 ones)
 REFUSE40: tuple[Callable[[str, Lexicon], None], ...] = (posture_state40,)
 # checks of the whole instruction's reading (offline.parse_instruction, after remark_said39s)
