@@ -271,7 +271,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind22 (tuned on in session 24)
         # blind37 (tuned on in session 39)
         # blind38 (tuned on in session 40)
-        "Person B. The bottle. Or the chips. Whatever he said, I wasn't listening.",
         "Give Person B the chips, no, the other thing, or maybe not, I'm not sure now.",
     }
 )

@@ -10,6 +10,7 @@ from collections.abc import Iterator
 
 import pytest
 
+from hltl.errors import GroundingError
 from hltl.grounding import (
     _normalise1,
     _normalise5,
@@ -20,7 +21,8 @@ from hltl.grounding import (
     offline,
 )
 from hltl.grounding.lexicon import VERB_CLASS, VERBS
-from hltl.world.scene import load_scene
+from hltl.grounding.offline import parse_instruction
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -222,8 +224,7 @@ test_any_going = KINDS.test(
 # order: 'finish with X' for the last step
 test_finish_with = KINDS.test(
     (
-        "Start with the ruler to Noah, then the glue to Zoe, and finish with the globe on the "
-        "shelf.",
+        "Start with the ruler to Noah. Then the glue to Zoe. Finish with the globe on the shelf.",
         "ruler>B ; glue>C ; globe@shelf",
         CLASSROOM,
     ),
@@ -311,3 +312,37 @@ def test_left_his_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 def test_one_of_them_after(text: str) -> None:
     scene = load_scene(ROOT / "examples/scenes/4-2.yaml")
     assert_refused(text, scene, match="'one of them' could mean Person A or Person B")
+
+
+# -- an afterthought 'Or the Y.' as a sentence of its own after a request: refused naming each
+# object (the grammar read both) -------------------------------------------------------------
+
+test_or_after = PhrasingCases().test(
+    ("Give Person B the bottle. Or the chips.", None, CELL),
+    ("Person B. The bottle. Or the chips.", None, CELL),
+    ("Put the cup on the shelf. Or the red mug.", None, CELL),
+    ("Hand Noah the ruler. Or perhaps the glue stick!", None, CLASSROOM),
+    # said in one sentence: a choice; a person after 'or' (two deliveries of one object)
+    ("Give Person B the bottle or the chips.", "bottle>B | chips>B", CELL),
+    ("Give Noah the ruler or the glue stick.", "ruler>B | glue>B", CLASSROOM),
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "ids"),
+    [
+        ("Give Person B the bottle. Or the chips.", CELL, ("bottle", "chips")),
+        ("Hand Noah the ruler. Or the glue stick.", CLASSROOM, ("ruler", "glue")),
+    ],
+)
+def test_or_after_names_each_object(text: str, scene: Scene, ids: tuple[str, ...]) -> None:
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, scene)
+    assert all(i in str(refused.value) for i in ids)
+
+
+def test_or_after_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the refusal the afterthought was read as both objects."""
+    kept = tuple(r for r in offline._REFUSALS40 if r is not _rewrites40.or_after40)
+    monkeypatch.setattr(offline, "_REFUSALS40", kept)
+    assert_reads("Give Person B the bottle. Or the chips.", "bottle>B & chips>B", CELL)

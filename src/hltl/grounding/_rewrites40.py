@@ -42,6 +42,36 @@ def posture_state40(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# -- an afterthought 'Or the Y.' said as a sentence of its own after a request for X ("Give Person
+# B the bottle. Or the chips.", "Person B. The bottle. Or the chips."): the Y instead, or either
+# one, or both? (the grammar read both). Refused naming each object, unless 'instead', 'either',
+# 'whichever', 'too' … say which (then the sentence does not end at the objects)
+_OR_AFTER40 = re.compile(
+    r"or (?:maybe |perhaps |possibly )?(?P<y>(?:the|a|an|some) [a-z][a-z ]*?)\s*[.!?]*", _F
+)
+
+
+def or_after40(text: str, lexicon: Lexicon) -> None:
+    """Session 40: refuse the afterthought above when the sentence names objects only and the
+    text before it names an object."""
+    if " or " not in text.lower():
+        return
+    sentences = re.split(r"(?<=[.!?;])\s+", text.strip())
+    for k in range(1, len(sentences)):
+        m = _OR_AFTER40.fullmatch(sentences[k])
+        if m is None or not _objects_only(m["y"], lexicon):
+            continue
+        before = sorted(_ids(" ".join(sentences[:k]), lexicon, "object"))
+        after = sorted(_ids(m["y"], lexicon, "object"))
+        if not before:
+            continue
+        raise GroundingError(
+            f"'or {m['y']}' said after the request could mean {' or '.join(after)} instead of "
+            f"{' and '.join(before)}, either one, or both: say 'instead', 'either … or …' or "
+            "'too'"
+        )
+
+
 # -- 'X can be left on S' ("The red mug can be left on the counter", "the spanners should be left
 # in the locker"): the passive of 'leave X on S' (a placing verb; 'left' is no verb of the
 # lexicon, being also a side and what remains), asked with a modal or 'to be' at a sentence start
@@ -141,17 +171,19 @@ def _any_going40(text: str, lexicon: Lexicon) -> str:
 # with the apple to Person B; next the bottle to Person A; finish with the cup to Person B"):
 # 'finally X' (session 19's 'to finish,' and 'start with' are read so)
 _FINISH_WITH40 = re.compile(
-    r"(?:^|(?<=[.;!?])\s*|(?<=,)\s*|\band\s+|\bthen\s+)(?:and )?(?:then )?(?:finish|end|finish off|"
-    r"finish up|round off|round things off|wind up|wrap up|close) with (?=the |a |an |[A-Z])",
+    r"(?P<pre>(?:^|(?<=[.;!?])\s*))(?:finish|end|"
+    r"finish off|finish up|round off|round things off|wind up|wrap up|close) with "
+    r"(?=the |a |an |[A-Z])",
     _F,
 )
 
 
 def _finish_with40(text: str, _lexicon: Lexicon) -> str:
-    """Session 40: 'finish with' (above) before the last step is 'finally'."""
+    """Session 40: 'finish with' (above) opening the last step's sentence is 'finally' (after
+    'and' it is left to session 35's 'lead off with … and finish off with …')."""
     if " with " not in text.lower():
         return text
-    return _FINISH_WITH40.sub(lambda m: m.group(0)[: -len(m.group(0).lstrip())] + "finally ", text)
+    return _FINISH_WITH40.sub(r"\g<pre>finally ", text)
 
 
 # -- ellipsis: 'Same.' answering a question of the form 'The X? P.' ("The bottle? Person A. The
@@ -185,6 +217,6 @@ _STEPS40: tuple[Callable[[str, Lexicon], str], ...] = (
     _same40,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-39 ones)
-REFUSE40: tuple[Callable[[str, Lexicon], None], ...] = (posture_state40,)
+REFUSE40: tuple[Callable[[str, Lexicon], None], ...] = (posture_state40, or_after40)
 # checks of the whole instruction's reading (offline.parse_instruction, after remark_said39s)
 CHECK40: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
