@@ -173,33 +173,107 @@ KNOWN_MISSES = frozenset(
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
         "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
-        'Alice is happy with either the bottle or the crisps after her spinning wheel demo, '
-        'hand her whichever.',
+        "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
+        "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
-        'bottle for Person A, the chips to Person B.',
+        "bottle for Person A, the chips to Person B.",
         "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
-        'The chips can go to whichever of the two you like, Person A or Person B, they both '
-        'put in a shift on the cake stall.',
+        "The chips can go to whichever of the two you like, Person A or Person B, they both "
+        "put in a shift on the cake stall.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
-        'not fussy.',
+        "not fussy.",
         "All three of the pens into the box, Priya's had enough of the doodling.",
-        'Stand both of the blocks up on the high chair so Lily can see them from her paddling '
-        'pool.',
+        "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
+        "pool.",
         "Alice doesn't want the bottle, she's had her fill at the cream tea; the crisps are "
-        'for her.',
+        "for her.",
         "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
         "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
         "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
         "The bottle's for Person A and for no one else, she's earned it at the fun run.",
         "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
         "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
-        'blanket.',
+        "blanket.",
         "Noah isn't allowed the scissors after what happened with the bunting, so the glue "
-        'stick goes to him.',
+        "stick goes to him.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
-        'about, so give it her.',
-        'Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.',
+        "about, so give it her.",
+        "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
+        # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
+        "Go on then, pass Person A the chips, she's earned them after the boccia.",
+        "Dana, bless her, wants the banana, so could you be a dear and take it over? Thanks.",
+        "Kofi sends his thanks in advance: could you pass him the power drill, please?",
+        "Carol's after a red mug for her ham radio night, and Bob could do with the apple.",
+        "Person A could really murder that bottle right now.",
+        "Person B would love the chips, if there's any going.",
+        "Person B's crying out for the chips after a day's fly fishing.",
+        "Person B needs the chips for the drive to pinochle night, Person A the bottle.",
+        "Omar needs the sponge to clean up after the moth trap.",
+        "The crisps, Alice. She asked first.",
+        "Person B wants the chips for the bar billiards league. The apple too.",
+        "Person B's been flying his drone all morning and asked for the chips, so hand him them.",
+        "The bottle? Person A, for the seed swap. The chips? Same.",
+        "Bottle's hers, Person A's, she's the organ builder.",
+        "Sam left his notepad here, take it back to him.",
+        "The apple is for Alice. Crisps, Bob. The red mug can be left on the counter.",
+        "the bottle goes to Bob and Alice gets the crisps they're both off to the angler's "
+        "meeting after",
+        "Person A's having the cup and Person B the apple and the chips go to Person B too.",
+        "Start with the apple to Person B; next the bottle to Person A; finish with the cup to "
+        "Person B.",
+        "give Person A the bottle she's been on about it all morning",
+        "Give Ruth the thermometer she's doing the rounds and Mrs Khan the magazine",
+        "Alice needs supplies for her upcycling class: both the bottle and the crisps, please.",
+        "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
+        "crisps.",
+        "Person B's not fussy after his am-dram rehearsal, he'll take any one of the four.",
+        "The apple can go to whoever's nearest, Person A or Person B.",
+        "Give Person A one of the drinks, the cup or the bottle, she doesn't mind.",
+        "Person B's fine with either, the bottle or the chips, he's got beadwork to get back to.",
+        "One of them, doesn't matter which, should get the bottle.",
+        "Omar can take whichever cup's going, green or white.",
+        "Each of the spanners back in the locker, the organ builder's borrowing the bench.",
+        "The two mugs go up on the shelf, we're clearing the counter for the seed swap.",
+        "The tin whistle session's just finished, so both of them get a drink: the cup to "
+        "Person A, the bottle to Person B.",
+        "Give the pair of them one each: bottle to Person B, chips to Person A.",
+        "Person A's taking both items to the repair cafe, so hand them over.",
+        "We've only got the one bottle, and it's Person A's, she's just back from bar billiards.",
+        "There's a single bottle, and Person A's the one who needs it, she's soaked from the "
+        "lifeboat drill.",
+        "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
+        "pinochle.",
+        "Alice says no bottle for her; it's the crisps she's after, for the topiary judging.",
+        "Bob's gone off crisps since the bar billiards, it's the bottle he wants.",
+        "Person B gets the chips, leave the bottle where it is, he's got his own.",
+        "The bottle's not for Person A, it's Person B's.",
+        "No need to ask, the bottle's for Person A.",
+        "Priya's pen is neither the black one nor the red one, it's the other one, pass it over.",
+        "Leave the knife, just give Marco the tongs.",
+        "The glue stick's not for Noah, Zoe's the one who asked.",
+        "Don't put the teddy on the mat, put the bib on it.",
+        "Crisps for Bob, no, sorry, wrong name, they're for Alice.",
+        "Person A's having the apple, hang on, no, she'd rather the cup, she's hot from the "
+        "boccia.",
+        "Person A gets the bottle, um, no, correction, it's Person B's, he's the drone pilot.",
+        "Hand Person A the, oh, what's it called, the bottle, for her choral warm-up.",
+        "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
+        "The chips are for Person A, no, my mistake, Person B put his name on them at the seed "
+        "swap.",
+        "Tape to Mia, sorry, I'm all over the place, it's for Tom.",
+        "The white plate to Mr Novak, no wait, he asked for the blue one for his topiary cake.",
+        "pop the crisps up on the shelf, the wasps are after them",
+        "give person b the apple and the chips, he won the egg and spoon race",
+        "The applie goes on the shelf for now.",
+        "Pesrson B wants the bottle for the charcoal burning demo.",
+        "The banaana on the tray for the moth trap volunteers.",
+        "Could the notwbook go to Priya for her tin whistle notes?",
+        "Could you stand the cup on the counter for the bellfounder?",
+        "Can Person B have the cup and the apple for his model boat outing?",
+        "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
+        "Could you hang the tongs on the plate rack, Marco's done with them?",
+        "Would the teacher be able to borrow the red book?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -208,6 +282,10 @@ KNOWN_UNCLEAR = frozenset(
         # blind21 (tuned on in session 23)
         # blind22 (tuned on in session 24)
         # blind37 (tuned on in session 39)
+        # blind38 (tuned on in session 40)
+        "One of them's after the apple, can't recall who.",
+        "Person B. The bottle. Or the chips. Whatever he said, I wasn't listening.",
+        "Give Person B the chips, no, the other thing, or maybe not, I'm not sure now.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -278,8 +356,11 @@ KNOWN_UNCLEAR = frozenset(
 # reviewed by a second one, measured once at the end of session 37 (0 wrong), tuned on in session
 # 38: asserted now, the rest in KNOWN_MISSES; "blind37" written in session 38 by another engineer
 # and committed alone, reviewed by a second one, measured once at the end of session 38 (1 wrong,
-# fixed), tuned on in session 39: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind38"})
+# fixed), tuned on in session 39: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
+# "blind38" written in session 39 by another engineer and committed alone, reviewed by a second
+# one, measured once at the end of session 39 (0 wrong), tuned on in session 40: asserted now, the
+# rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

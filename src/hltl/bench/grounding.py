@@ -129,7 +129,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of session
 # 38; its one wrong reading fixed and tuned on in session 39), blind38 (written in session 39 by
 # another engineer and committed alone, never opened by the engineers who change the grounder before
-# its one measurement at the end of session 39; tests do not assert it).
+# its one measurement at the end of session 39; tuned on in session 40).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites39
+from hltl.grounding import _rewrites39, _rewrites40, _rewrites40r, _rewrites40s
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding._rewrites39r import whichever_again_says39r
@@ -66,6 +66,11 @@ from hltl.grounding.tree import (
 from hltl.grounding.update import ground_update
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene
+
+# session 40's refusals before the read and checks of the whole reading, one tuple per engineer's
+# module, so each adds its rules there (run in _parse and parse_instruction)
+_REFUSALS40 = (*_rewrites40.REFUSE40, *_rewrites40r.REFUSE40R, *_rewrites40s.REFUSE40S)
+_CHECKS40 = (*_rewrites40.CHECK40, *_rewrites40r.CHECK40R, *_rewrites40s.CHECK40S)
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 _SUBORDINATORS = frozenset({"after", "once", "before"})
@@ -127,6 +132,8 @@ def parse_instruction(
             _had_already38l(text, node, lexicon)
             remark_said39s(text, node, lexicon)
             _left_moved39l(text, node, lexicon)
+            for check in _CHECKS40:
+                check(text, node, lexicon)
         return node
     except GroundingError as refused:
         more = (
@@ -611,6 +618,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         described_one38r(text, lexicon)
         _rewrites39.doubt_which39(text, lexicon)
         _rewrites39.usual39(text, lexicon)
+        for refuse in _REFUSALS40:
+            refuse(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
