@@ -280,9 +280,10 @@ test_corrections = CASES.test(
     # "…, no, they're P's" (the things)
     ("The chips are for Bob, no, they're Carol's.", "chips>C", CELL),
     ("The gloves to Tom, sorry, my mistake, they're Mia's.", "gloves>A", DEPOT),
-    # nothing after the blame, 'it' after 'asked for', the search with nothing found, a claim
+    # nothing after the blame, 'rather' before a clause, 'it' after 'asked for', the search with nothing found, a claim
     # of a surface or at a place of the scene, whose said of a surface: refused
     ("The lemon to Marco, no, sorry, wrong name.", None, KITCHEN),
+    ("Alice would rather the cup went to Bob.", None, CELL),
     ("The red book to Noah, no wait, he asked for it.", None, CLASSROOM),
     ("Pass Lena the, um, what do you call it.", None, KITCHEN),
     ("The desk's got dibs on the stapler.", None, OFFICE),

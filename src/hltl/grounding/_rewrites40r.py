@@ -417,12 +417,13 @@ def _blame40r(text: str, _lexicon: Lexicon) -> str:
 
 
 # "…, no, she'd rather the cup"
-_RATHER40R = r"(?P<w>'d|\bwould) rather (?=(?:the|a|an|some) )"
+_RATHER40R = r"(?P<w>'d|\bwould) rather (?=(?:the|a|an|some) [a-z]+(?: [a-z]+)?\s*(?:[,.;!]|$))"
 
 
 def _rather40r(text: str, _lexicon: Lexicon) -> str:
     """Session 40 (12r): "P'd rather the cup" (would rather) is "P'd rather have the cup": a
-    want, as the grammar reads it with 'have' ("or rather" stays a correction)."""
+    want, as the grammar reads it with 'have', when the thing ends the clause ("P'd rather the
+    cup went to Q" is left; "or rather" stays a correction)."""
     if "rather" not in text.lower():
         return text
     return re.sub(_RATHER40R, r"\g<w> rather have ", text, flags=_F)
