@@ -234,6 +234,7 @@ KNOWN_MISSES = frozenset(
         "pinochle.",
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
         "Hand Person A the, oh, what's it called, the bottle, for her choral warm-up.",
+        "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "pop the crisps up on the shelf, the wasps are after them",
         "give person b the apple and the chips, he won the egg and spoon race",
         "The applie goes on the shelf for now.",

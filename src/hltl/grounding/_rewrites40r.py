@@ -8,7 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _names_nothing, _only_person
 from hltl.grounding._normalise3 import _whole_name
-from hltl.grounding._normalise4 import _persons34r, _the_one36r
+from hltl.grounding._normalise4 import _CORRECTION_CUE33R, _persons34r, _the_one36r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -408,7 +408,10 @@ def _blame40r(text: str, _lexicon: Lexicon) -> str:
     name, …", "no, my mistake, …", "sorry, I'm all over the place, …", "no, correction, …")
     and a hesitation before its marker ("…, um, no, …") say nothing of what is corrected: taken
     off, the marker kept, so the correction reads as before. A marker opening a sentence ("….
-    Sorry, my mistake, …") is left: it could correct or add (session 33)."""
+    Sorry, my mistake, …") is left: it could correct or add (session 33); so is a cue session
+    33's `_correction_cue33r` reads ("…, hmm, no, my mistake, …")."""
+    if _CORRECTION_CUE33R.search(text):
+        return text  # a cue said at length that session 33's `_correction_cue33r` reads
     low = text.lower()
     out = text
     if "um" in low or "er" in low or "uh" in low:
@@ -444,24 +447,6 @@ def _asked_for40r(text: str, _lexicon: Lexicon) -> str:
         return f"{m['m']}{m['p']} {verb} "
 
     return re.sub(_ASKED_FOR40R, wants, text, flags=_F)
-
-
-# "Hand Person A the, oh, what's it called, the bottle"
-_WORD_SEARCH40R = (
-    r"\b(?:the|a|an),?\s+(?:(?:oh|um|erm|er|uh|ah)\s*,?\s*)?(?:what's it called|what is it called|"
-    r"what do you call it|what d'you call it|what's the word|what's its name|whatsit|thingy|"
-    r"thingummy|whatchamacallit)\s*[,.]?\s*(?:(?:oh|um|erm|er|uh|ah|yes|yeah)\s*,\s*)?"
-    r"(?=(?:the|a|an) )"
-)
-
-
-def _word_search40r(text: str, _lexicon: Lexicon) -> str:
-    """Session 40 (12r): the speaker searching for a word ("the, oh, what's it called, the
-    bottle", "a, um, whatsit, a cup") says the name once: the search is taken off."""
-    low = text.lower()
-    if "call" not in low and "word" not in low and "what" not in low and "thing" not in low:
-        return text
-    return re.sub(_WORD_SEARCH40R, "", text, flags=_F)
 
 
 # "…, no, my mistake, Person B put his name on them"
@@ -518,7 +503,6 @@ def _theirs40r(text: str, lexicon: Lexicon) -> str:
 # the normaliser's rewrites (wired into normalise._STEPS19)
 _STEPS40R: tuple[Callable[[str, Lexicon], str], ...] = (
     _blame40r,
-    _word_search40r,
     _theirs40r,
     _asked_for40r,
     _rather40r,

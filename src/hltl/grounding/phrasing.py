@@ -2107,11 +2107,7 @@ def _apply_correction(
             while cut > start and not _is(before[cut - 1], *_SEPARATORS):
                 cut -= 1
             said = before[cut:]
-            # session 40 (12r): or an object and where it goes ("Bottle up on the shelf, hang
-            # on, hand it to Person A")
-            if not (
-                any(_objects(x) for x in said) and any(_humans(x) or _places_on(x) for x in said)
-            ):
+            if not (any(_objects(x) for x in said) and any(_humans(x) for x in said)):
                 raise GroundingError(f"cannot tell what {marker.text!r} corrects")
             verbs = [cut]
         cut = verbs[-1]
