@@ -353,11 +353,7 @@ _ONE_OF_THE33S = re.compile(
 )
 # 'One of them gets the chips': 'them' people, by the verb after it
 _ONE_OF_THEM_GETS33S = re.compile(
-    r"\bone of them (?:gets|wants|needs|can have|should get|is getting|is having)\b"
-    # session 40 (12): the wants of session 39's idioms ("One of them's after the apple")
-    r"|\bone of them(?:'s| is| has)? (?:after|asked for|asking for|would like|'d like|could use|"
-    r"could do with|fancies|would love|'d love)\b",
-    re.I,
+    r"\bone of them (?:gets|wants|needs|can have|should get|is getting|is having)\b", re.I
 )
 
 
