@@ -104,11 +104,106 @@ def test_the_words_a_pattern_needs(pattern: str, flags: int, words: set[str] | N
     assert gate.required(pattern, flags)[0] == (None if words is None else frozenset(words))
 
 
-def test_a_pattern_met_the_first_time_runs_ungated() -> None:
+def test_a_pattern_is_gated_the_first_time_it_is_met() -> None:
     pattern = r"\bfirst met (\w+)\b"
-    assert gate.may_match(pattern, re.I, "the cup to Alice")  # once: run, nothing derived
+    assert not gate.may_match(pattern, re.I, "the cup to Alice")  # derived when first met
     assert not gate.may_match(pattern, re.I, "the cup to Alice")
     assert gate.may_match(pattern, re.I, "FIRST MET Alice")
+
+
+def test_a_pattern_is_compiled_once_from_the_parse_its_words_came_from(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    parses: list[str] = []
+    real = gate._parser.parse
+
+    def counted(pattern: str, flags: int = 0) -> object:
+        parses.append(pattern)
+        return real(pattern, flags)
+
+    monkeypatch.setattr(gate._parser, "parse", counted)
+    pattern = r"\bonce (?:parsed|read) for (\w+)\b"
+    for text in ("the cup to Alice", "once parsed for Bob", "the bowl to Bob"):
+        gate.sub(pattern, r"\1", text, flags=re.I)
+        gate.search(pattern, text, re.I)
+    assert gate.sub(pattern, r"\1", "ONCE READ FOR Bob", flags=re.I) == "Bob"
+    assert parses == [pattern]
+
+
+def test_a_compiled_pattern_is_run_as_it_is() -> None:
+    compiled = re.compile(r"\b(?P<who>alice|bob) gets (?:the )?(\w+)", re.I)
+    size = gate._compiled.cache_info().currsize
+    for text in ("Alice gets the cup", "the cup to Alice", "BOB GETS A MUG", "ſo Bob gets it"):
+        for name in ("search", "match", "fullmatch"):
+            got, want = getattr(gate, name)(compiled, text), getattr(compiled, name)(text)
+            assert (got and (got.span(), got.groups())) == (want and (want.span(), want.groups()))
+        assert gate.findall(compiled, text) == compiled.findall(text)
+        assert gate.split(compiled, text) == compiled.split(text)
+        assert gate.sub(compiled, r"\g<who>", text) == compiled.sub(r"\g<who>", text)
+        assert gate.sub(compiled, r"\g<who>", text) == re.sub(compiled, r"\g<who>", text)
+    assert gate._compiled.cache_info().currsize == size  # never compiled again
+    assert (compiled.pattern, compiled.flags) not in gate._BUILT
+
+
+# pieces of patterns: literals (cased and not), classes, groups, alternations, repeats, anchors,
+# look-arounds, back references, inline flags
+_PIECES = st.sampled_from(
+    [
+        "the",
+        "Cup",
+        "mr ",
+        r"\b",
+        r"\s+",
+        r"\w+",
+        "[a-z]",
+        "[^,.]*?",
+        "(?:mug|bowl)",
+        "(?P<who>alice|bob)",
+        "(x)?",
+        "(?=,)",
+        "(?<!no )",
+        "(?i:Tea)",
+        "s?",
+        "(?:a|an) ",
+        "$",
+        "^",
+        "'s",
+    ]
+)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.lists(_PIECES, min_size=1, max_size=7).map("".join),
+    st.sampled_from([0, re.I, re.I | re.M, re.S]),
+)
+def test_a_pattern_compiled_from_the_gates_parse_is_the_one_re_compiles(
+    pattern: str, flags: int
+) -> None:
+    gate._GATES.pop((pattern, flags), None)
+    gate.may_match(pattern, flags, "")  # gated: its parse kept
+    try:
+        theirs = re.compile(pattern, flags)
+    except re.error:
+        with pytest.raises(re.error):
+            gate.compiled(pattern, flags)
+        return
+    ours = gate.compiled(pattern, flags)
+    assert ours == theirs  # re's equality: the same text, flags and code
+    assert (ours.groups, ours.groupindex, ours.flags) == (
+        theirs.groups,
+        theirs.groupindex,
+        theirs.flags,
+    )
+
+
+def test_every_pattern_the_rewrites_gate_compiles_from_its_parse_as_re_does(
+    patterns: list[tuple[str, int]],
+) -> None:
+    for pattern, flags in patterns:
+        gate._GATES.pop((pattern, flags), None)
+        gate.may_match(pattern, flags, "")
+        assert gate.compiled(pattern, flags) == re.compile(pattern, flags), pattern
 
 
 def test_a_case_kept_pattern_is_checked_with_its_case() -> None:

@@ -173,86 +173,107 @@ KNOWN_MISSES = frozenset(
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
         "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
-        "If you'd be so kind, pass Jess the hammer, bonny lad.",
-        "Carol's after a brew, so she'll be wanting the blue mug.",
-        "Bob's dying for a drink after the raft race, he needs that bottle.",
-        'Person A could murder an apple after all that hay bale stacking.',
-        "Person B's been craving the bottle ever since the scarecrow judging.",
-        "Person A needs a drink, and the bottle's the only one going.",
-        "Emma's been asking for a banana since she got in from the duck race.",
-        "Bob's been stood there for ages after his pickled egg stall. Hand him the bottle, "
-        'would you.',
-        "The crisps? Alice's. The bottle? That's Bob's, he won it on the hook a duck.",
-        "Person B put his name down for the apple. As for Person A, the cup, she's thirsty "
-        'from the corn dolly weaving.',
-        "The bottle's Person A's, if you would, she's been at the shin kicking.",
-        'Mr Lee was asking after his magazine, he does the puzzles in it every afternoon; '
-        'could you take it over?',
-        "The white plate's wanted by Lena. As for Mr Novak, he's had his eye on the lemon "
-        "since the cookery demo, so that's his.",
-        "Bob's after the bottle, so sort him out first. Then the crisps can go up on the shelf "
-        "out of the terrier's reach.",
-        "Start off with the bottle for Person B, he's got a bed push to get to. Once that's "
-        'done, Person A can have the chips.',
-        'The bib goes on the high chair and the wipes to Grandad. Once both are sorted, the '
-        "teddy's for Ava.",
-        "Carol can have a mug, red or blue, she'll take whichever's closest to hand.",
-        'Alice is happy with either the bottle or the crisps after her spinning wheel demo, '
-        'hand her whichever.',
-        'They each get a bite before the giant veg show: Person A the apple, Person B the chips.',
-        "Person B can make do with the cup or the bottle, whichever you reach first, he's late "
-        'for the cake stall.',
+        "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
+        "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
-        'bottle for Person A, the chips to Person B.',
+        "bottle for Person A, the chips to Person B.",
         "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
-        'The chips can go to whichever of the two you like, Person A or Person B, they both '
-        'put in a shift on the cake stall.',
-        "Sam's labelling jam jars for the fete, give him any pen as long as it's not the one "
-        'on the desk.',
+        "The chips can go to whichever of the two you like, Person A or Person B, they both "
+        "put in a shift on the cake stall.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
-        'not fussy.',
-        "Alice is taking both things to the gundog scurry, so that's the bottle and the crisps "
-        'to her.',
-        "Person A's picnic for the vintage tractor rally wants three things: the bottle, the "
-        'cup and the apple, all to her.',
-        "One bottle, just the one, for Person A, she's helping at the plant sale.",
-        "One bottle for Person A, that's all she asked for.",
+        "not fussy.",
         "All three of the pens into the box, Priya's had enough of the doodling.",
-        'Stand both of the blocks up on the high chair so Lily can see them from her paddling '
-        'pool.',
-        'Alice is after the blue mug; leave the red one where it is.',
+        "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
+        "pool.",
         "Alice doesn't want the bottle, she's had her fill at the cream tea; the crisps are "
-        'for her.',
-        'Bob wants something, but not the crisps.',
+        "for her.",
         "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
         "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
         "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
-        "It's not Person B who wants the bottle, it's Person A.",
         "The bottle's for Person A and for no one else, she's earned it at the fun run.",
-        "Don't hang on to the bottle, give it to Person A.",
         "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
         "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
-        'blanket.',
+        "blanket.",
         "Noah isn't allowed the scissors after what happened with the bunting, so the glue "
-        'stick goes to him.',
-        "Kofi's not after the drill, it's the torch he wants for the loft hatch.",
+        "stick goes to him.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
-        'about, so give it her.',
-        'Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.',
-        'bob could use the crisps after a go on the coconut shy',
-        'person a gets the apple for her packed lunch person b the chips hes at the steam fair',
-        'the chips go to person a first and once shes sorted the apple to person b',
-        'stapler back on the desk please priya is tired of hunting for it',
-        'barcode scanner over to mia and toms after the work gloves',
-        "The blue mug's to go on the counetr, it's for the cake sale.",
-        "Spohge in the sink please, Omar's got potato print paint all over it.",
-        'Can Person A have the cup, do you reckon, she wants it for her dandelion tea?',
+        "about, so give it her.",
+        "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
-        "D'you think Person A could get the chips, she's been at the village fete since dawn?",
-        'Any chance Person A could have the bottle before she heads back to her stall at the '
-        'farmers market?',
-        'Is it at all possible to get the small box down onto the pallet before the van hire '
-        'place shuts?',
+        # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
+        "Go on then, pass Person A the chips, she's earned them after the boccia.",
+        "Dana, bless her, wants the banana, so could you be a dear and take it over? Thanks.",
+        "Kofi sends his thanks in advance: could you pass him the power drill, please?",
+        "Carol's after a red mug for her ham radio night, and Bob could do with the apple.",
+        "Person A could really murder that bottle right now.",
+        "Person B would love the chips, if there's any going.",
+        "Person B's crying out for the chips after a day's fly fishing.",
+        "Person B needs the chips for the drive to pinochle night, Person A the bottle.",
+        "Omar needs the sponge to clean up after the moth trap.",
+        "The crisps, Alice. She asked first.",
+        "Person B wants the chips for the bar billiards league. The apple too.",
+        "Person B's been flying his drone all morning and asked for the chips, so hand him them.",
+        "The bottle? Person A, for the seed swap. The chips? Same.",
+        "Bottle's hers, Person A's, she's the organ builder.",
+        "Sam left his notepad here, take it back to him.",
+        "The apple is for Alice. Crisps, Bob. The red mug can be left on the counter.",
+        "the bottle goes to Bob and Alice gets the crisps they're both off to the angler's "
+        "meeting after",
+        "Person A's having the cup and Person B the apple and the chips go to Person B too.",
+        "Start with the apple to Person B; next the bottle to Person A; finish with the cup to "
+        "Person B.",
+        "give Person A the bottle she's been on about it all morning",
+        "Give Ruth the thermometer she's doing the rounds and Mrs Khan the magazine",
+        "Alice needs supplies for her upcycling class: both the bottle and the crisps, please.",
+        "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
+        "crisps.",
+        "Person B's not fussy after his am-dram rehearsal, he'll take any one of the four.",
+        "The apple can go to whoever's nearest, Person A or Person B.",
+        "Give Person A one of the drinks, the cup or the bottle, she doesn't mind.",
+        "Person B's fine with either, the bottle or the chips, he's got beadwork to get back to.",
+        "One of them, doesn't matter which, should get the bottle.",
+        "Omar can take whichever cup's going, green or white.",
+        "Each of the spanners back in the locker, the organ builder's borrowing the bench.",
+        "The two mugs go up on the shelf, we're clearing the counter for the seed swap.",
+        "The tin whistle session's just finished, so both of them get a drink: the cup to "
+        "Person A, the bottle to Person B.",
+        "Give the pair of them one each: bottle to Person B, chips to Person A.",
+        "Person A's taking both items to the repair cafe, so hand them over.",
+        "We've only got the one bottle, and it's Person A's, she's just back from bar billiards.",
+        "There's a single bottle, and Person A's the one who needs it, she's soaked from the "
+        "lifeboat drill.",
+        "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
+        "pinochle.",
+        "Alice says no bottle for her; it's the crisps she's after, for the topiary judging.",
+        "Bob's gone off crisps since the bar billiards, it's the bottle he wants.",
+        "Person B gets the chips, leave the bottle where it is, he's got his own.",
+        "The bottle's not for Person A, it's Person B's.",
+        "No need to ask, the bottle's for Person A.",
+        "Priya's pen is neither the black one nor the red one, it's the other one, pass it over.",
+        "Leave the knife, just give Marco the tongs.",
+        "The glue stick's not for Noah, Zoe's the one who asked.",
+        "Don't put the teddy on the mat, put the bib on it.",
+        "Crisps for Bob, no, sorry, wrong name, they're for Alice.",
+        "Person A's having the apple, hang on, no, she'd rather the cup, she's hot from the "
+        "boccia.",
+        "Person A gets the bottle, um, no, correction, it's Person B's, he's the drone pilot.",
+        "Hand Person A the, oh, what's it called, the bottle, for her choral warm-up.",
+        "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
+        "The chips are for Person A, no, my mistake, Person B put his name on them at the seed "
+        "swap.",
+        "Tape to Mia, sorry, I'm all over the place, it's for Tom.",
+        "The white plate to Mr Novak, no wait, he asked for the blue one for his topiary cake.",
+        "pop the crisps up on the shelf, the wasps are after them",
+        "give person b the apple and the chips, he won the egg and spoon race",
+        "The applie goes on the shelf for now.",
+        "Pesrson B wants the bottle for the charcoal burning demo.",
+        "The banaana on the tray for the moth trap volunteers.",
+        "Could the notwbook go to Priya for her tin whistle notes?",
+        "Could you stand the cup on the counter for the bellfounder?",
+        "Can Person B have the cup and the apple for his model boat outing?",
+        "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
+        "Could you hang the tongs on the plate rack, Marco's done with them?",
+        "Would the teacher be able to borrow the red book?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -261,9 +282,10 @@ KNOWN_UNCLEAR = frozenset(
         # blind21 (tuned on in session 23)
         # blind22 (tuned on in session 24)
         # blind37 (tuned on in session 39)
-        "Whichever student's nearer can have the book.",
-        'person a asked for her usual',
-        "Person B wants the cup or the applpe, I can't remember which.",
+        # blind38 (tuned on in session 40)
+        "One of them's after the apple, can't recall who.",
+        "Person B. The bottle. Or the chips. Whatever he said, I wasn't listening.",
+        "Give Person B the chips, no, the other thing, or maybe not, I'm not sure now.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -334,7 +356,10 @@ KNOWN_UNCLEAR = frozenset(
 # reviewed by a second one, measured once at the end of session 37 (0 wrong), tuned on in session
 # 38: asserted now, the rest in KNOWN_MISSES; "blind37" written in session 38 by another engineer
 # and committed alone, reviewed by a second one, measured once at the end of session 38 (1 wrong,
-# fixed), tuned on in session 39: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+# fixed), tuned on in session 39: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
+# "blind38" written in session 39 by another engineer and committed alone, reviewed by a second
+# one, measured once at the end of session 39 (0 wrong), tuned on in session 40: asserted now, the
+# rest in KNOWN_MISSES and KNOWN_UNCLEAR)
 MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
@@ -435,6 +460,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind36"].entries}) >= 3
     assert len(CORPORA["blind37"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind37"].entries}) >= 3
+    assert len(CORPORA["blind38"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind38"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -127,7 +127,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineers who change the grounder before its one measurement at the end of session 37; tuned on in
 # session 38), blind37 (written in session 38 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of session
-# 38; its one wrong reading fixed and tuned on in session 39).
+# 38; its one wrong reading fixed and tuned on in session 39), blind38 (written in session 39 by
+# another engineer and committed alone, never opened by the engineers who change the grounder before
+# its one measurement at the end of session 39; tuned on in session 40).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -182,6 +184,7 @@ PARTS = (
     "blind35",
     "blind36",
     "blind37",
+    "blind38",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -92,8 +92,8 @@ def _ids(text: str, lexicon: Lexicon, kind: str | None = None) -> set[str]:
 def _rx(pattern: str) -> re.Pattern[str]:
     """``pattern`` compiled (case-insensitive) once: re's own cache keeps 512 patterns, fewer than
     the rewrites build over a scene's names, and recompiling them was a third of a rewrite's
-    time."""
-    return re.compile(pattern, _F)
+    time (the pattern the gate compiled when it gated it, where it did: gate.compiled)."""
+    return re.compiled(pattern, _F)
 
 
 def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], text: str) -> str:
@@ -2630,6 +2630,8 @@ _ADDRESS = frozenset(
         *("thx", "ty", "much", "so", "very", "a", "lot", "again", "sweet", "awesome", "perfect"),
         *("grand", "super", "fab", "smashing", "amazing", "cool", "that's", "it", "the", "best"),
         *("bless", "ya", "always", "as", "mate's", "yeah", "right", "ok", "okay"),
+        # session 39 (12): "…, bonny lad", "…, bonny lass"
+        "bonny",
     }
 )
 

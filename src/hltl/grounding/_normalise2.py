@@ -2178,7 +2178,7 @@ def _each_wants32(text: str, lexicon: Lexicon) -> str:
 # times)
 _BEFORE32 = re.compile(
     r",?\s+before (?P<what>(?:(?P<pron>he|she|they) |(?:the|our|my|some) [a-z]+s? )?"
-    r"[a-z][a-z' ]*?)(?P<end>\s*[.!]?)\s*$",
+    r"[a-z][a-z' ]*?)(?P<end>\s*[.!?]?)\s*$",
     _F,
 )
 _BACK_POINTERS32 = re.compile(r"\b(?:he|she|they|his|her|their|it|them)\b", _F)
@@ -2923,8 +2923,8 @@ def _name_typo33(text: str, lexicon: Lexicon) -> str:
 # "Do you think Person A could have the cup …?": the question asks what 'Could Person A have
 # the cup …?' asks
 _THINK_COULD33 = re.compile(
-    r"(?:^|(?<=[.!?]\s))(?:do|d'you|don't) you (?:think|reckon|suppose) (?:that )?(?P<p>[A-Z]"
-    r"[^,.;!?]*?) (?P<m>could|can|might) (?=(?:have|get|take|use)\b)",
+    r"(?:^|(?<=[.!?]\s))(?:(?:do|don't) you|d'you|d'ya) (?:think|reckon|suppose) (?:that )?"
+    r"(?P<p>[A-Z][^,.;!?]*?) (?P<m>could|can|might) (?=(?:have|get|take|use)\b)",
     _F,
 )
 # "Is it okay if the globe goes up on the bookshelf …?": 'Could the globe go up on …?'

@@ -7637,9 +7637,9 @@ _DOING37 = (
     r"massage|sauna)"
 )
 _AFTER_DOING37 = re.compile(
-    r"(?P<lead>,\s*|\s+)(?:after|since|following) (?:(?P<pron>his|her|their)|the|(?P<a>a|an) "
-    r"(?:(?:whole|full|long|hard|busy|good) )?(?:hour|day|morning|afternoon|evening|week|session|"
-    rf"shift|stint|night) (?:of|at)) (?P<doing>{_DOING37})(?=\s*(?:[,.;!?]|$))",
+    r"(?P<lead>,\s*|\s+)(?:after|(?:ever )?since|following) (?:(?P<pron>his|her|their)|the|"
+    r"(?P<a>a|an) (?:(?:whole|full|long|hard|busy|good) )?(?:hour|day|morning|afternoon|evening|"
+    rf"week|session|shift|stint|night) (?:of|at)) (?P<doing>{_DOING37})(?=\s*(?:[,.;!?]|$))",
     _F,
 )
 # after 'X is for P' only a doing said as one (a word in -ing, a game, a lesson …): a pastime's

@@ -11,11 +11,17 @@
 # Compiled patterns are also kept in a cache larger than re's own (512): the normaliser's
 # patterns overflowed it, and every overflow recompiled a pattern on its next use.
 #
+# A pattern's words are derived the first time it is met (session 39, 12p), from re's parse of
+# it, and the pattern is compiled from that same parse (re's own code generator on it: the
+# pattern re.compile returns). Until then a pattern had been compiled (parsed) the first time it
+# was met and parsed again for its words the second: two parses where one does.
+#
 # The functions take re's arguments and return what re returns; where the gate says no match is
 # possible they return what re returns for no match (the text unchanged, None, [], [text]).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import re
 import sys
@@ -32,6 +38,7 @@ __all__ = [
     "Match",
     "Pattern",
     "compile",
+    "compiled",
     "escape",
     "findall",
     "finditer",
@@ -46,9 +53,11 @@ __all__ = [
 
 _Words = frozenset[str] | None
 
-# re's own pattern parser (imported by re itself; taken from sys.modules, as typeshed's re has no
-# _parser: mypy 2.4 refuses ``from re import _parser``)
+# re's own pattern parser and code generator (imported by re itself; taken from sys.modules, as
+# typeshed's re has no _parser: mypy 2.4 refuses ``from re import _parser``)
 _parser = sys.modules["re._parser"]
+_compiler = sys.modules["re._compiler"]
+_sre = sys.modules["_sre"]
 
 _LITERAL = _parser.LITERAL
 _BRANCH = _parser.BRANCH
@@ -121,25 +130,64 @@ def required(pattern: str, flags: int = 0) -> tuple[_Words, bool]:
 
 _Gate = tuple[tuple[str, ...], bool] | None
 _GATES: dict[tuple[str, int], _Gate] = {}
-_ONCE: set[tuple[str, int]] = set()
+# each pattern gated, compiled from the parse its words were derived from, until it is first run
+# (then kept by the caller: ``compiled`` hands it over)
+_BUILT: dict[tuple[str, int], re.Pattern[str]] = {}
+# flags whose patterns re.compile alone builds (it prints a pattern, or warns of it)
+_RE_ONLY = int(re.DEBUG) | int(getattr(re, "TEMPLATE", 0))
 
 
-def _gate(pattern: str, flags: int) -> _Gate:
-    """The words ``pattern`` needs and whether they are lower-cased, or None (always run). A
-    pattern met the first time runs ungated: many are built from the text at hand and never met
-    again, and deriving their words would cost more than running them."""
+def _gate(pattern: str, flags: int, *, build: bool = True) -> _Gate:
+    """The words ``pattern`` needs and whether they are lower-cased, or None (always run),
+    derived from re's parse of it, from which the pattern is compiled too (``compiled``; not
+    where ``build`` is false: the caller has it compiled)."""
     key = (pattern, flags)
-    if key not in _ONCE:
-        if len(_ONCE) > 16384:
-            _ONCE.clear()
-        _ONCE.add(key)
-        return None
-    words, fold = required(pattern, flags)
-    gate = None if words is None else (tuple(sorted(words)), fold)
+    try:
+        parsed = _parser.parse(pattern, int(flags))  # as re.compile parses it
+    except re.error:
+        gate: _Gate = None  # run: re raises its error
+    else:
+        fold = bool(parsed.state.flags & re.IGNORECASE)  # its flags or an inline '(?i)'
+        words = _needed(parsed, fold)
+        gate = None if words is None else (tuple(sorted(words)), fold)
+        if build and not flags & _RE_ONLY:
+            if len(_BUILT) > 16384:
+                _BUILT.clear()
+            # an error re raises where it compiles the pattern: raised there, as it was; and
+            # where re's private code generator is not what this Python's re has (_from_parse
+            # follows the re._compiler.compile of CPython 3.11, the version used here), re.compile
+            # builds the pattern as before
+            with contextlib.suppress(re.error, AttributeError, TypeError, ValueError):
+                _BUILT[key] = _from_parse(pattern, int(flags), parsed)
     if len(_GATES) > 16384:
         _GATES.clear()
     _GATES[key] = gate
     return gate
+
+
+def _from_parse(pattern: str, flags: int, parsed: Any) -> re.Pattern[str]:
+    """re._compiler.compile, given re's parse of ``pattern`` instead of its text."""
+    code = _compiler._code(parsed, flags)
+    groupindex = parsed.state.groupdict
+    indexgroup: list[str | None] = [None] * parsed.state.groups
+    for name, index in groupindex.items():
+        indexgroup[index] = name
+    out: re.Pattern[str] = _sre.compile(
+        pattern,
+        int(flags | parsed.state.flags),
+        code,
+        parsed.state.groups - 1,
+        groupindex,
+        tuple(indexgroup),
+    )
+    return out
+
+
+def compiled(pattern: str, flags: int = 0) -> re.Pattern[str]:
+    """What ``re.compile(pattern, flags)`` returns (an equal pattern): the one compiled when
+    the pattern was gated, where it was (not kept here: the callers keep what they compile)."""
+    built = _BUILT.pop((pattern, flags), None)
+    return re.compile(pattern, flags) if built is None else built
 
 
 # the last text checked and its lower case (None where it is not ASCII), replaced as one tuple
@@ -173,7 +221,7 @@ def may_match(pattern: str, flags: int, text: str) -> bool:
 
 @functools.lru_cache(maxsize=16384)
 def _compiled(pattern: str, flags: int) -> re.Pattern[str]:
-    return re.compile(pattern, flags)
+    return compiled(pattern, flags)
 
 
 _T = TypeVar("_T")
@@ -191,11 +239,14 @@ def _gated(
     returns for no match) where the gate says ``pattern`` cannot match ``string``."""
     if isinstance(pattern, re.Pattern):
         source, flags = pattern.pattern, pattern.flags
-    else:
-        source = pattern
-    if not may_match(source, flags, string):
+        if (source, flags) not in _GATES:
+            _gate(source, flags, build=False)  # compiled already: never again
+        if not may_match(source, flags, string):
+            return on_no_match
+        return method(pattern, *args)
+    if not may_match(pattern, flags, string):
         return on_no_match
-    return method(_compiled(source, flags), *args)
+    return method(_compiled(pattern, flags), *args)
 
 
 def sub(

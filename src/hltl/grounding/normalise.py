@@ -528,6 +528,9 @@ from hltl.grounding._rewrites38s import _STEPS38S, _STEPS38S_FIRST
 from hltl.grounding._rewrites39 import _STEPS39
 from hltl.grounding._rewrites39r import _STEPS39R
 from hltl.grounding._rewrites39s import _STEPS39S, _STEPS39S_FIRST
+from hltl.grounding._rewrites40 import _STEPS40
+from hltl.grounding._rewrites40r import _STEPS40R
+from hltl.grounding._rewrites40s import _STEPS40S, _STEPS40S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -605,6 +608,15 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
             return text  # "Mr Lee is cold, give her …": not him
         if not _kin_fits36s(next(iter(person)), body, lexicon):
             return text  # "Grandad's here, she'll need her bib": not him
+        first = re.search(r"\b(?:him|her|he|she)\b", body, _F)
+        if first is not None and any(
+            _fits(other, body, lexicon) and _kin_fits36s(other, body, lexicon)
+            for other in _ids(body[: first.start()], lexicon, "human") - person
+        ):
+            # "Lily is freezing. Ava doesn't want the wipes, give her the teddy.": 'her' may be
+            # Ava, named in the request before it, not only the remark's person (session 39,
+            # lead: 12c's fuzz)
+            return text
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
@@ -836,6 +848,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S_FIRST,
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
+    # session 40 (12s)
+    *_STEPS40S_FIRST,
     # session 39 (12s)
     *_STEPS39S_FIRST,
     # session 33 (12s): blind21-22's kinds (first: the greeting is what they look for)
@@ -850,6 +864,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33T,
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
+    # session 40 (12r)
+    *_STEPS40R,
     # session 39 (12r)
     *_STEPS39R,
     # session 37 (12r): blind35's choices, counts, negation, exclusions and corrections
@@ -878,6 +894,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S,
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
+    # session 40 (12s)
+    *_STEPS40S,
     # session 39 (12s)
     *_STEPS39S,
     # session 29 (12r)
@@ -953,6 +971,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _since28,
     # session 38 (12): blind36's kinds
     *_STEPS38,
+    # session 40 (12)
+    *_STEPS40,
     # session 39 (12)
     *_STEPS39,
     # session 37 (12): blind35's kinds

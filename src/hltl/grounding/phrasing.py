@@ -2525,6 +2525,18 @@ def _not_wanted(items: list[Item]) -> list[Item]:
             x.kind == "ent" and {r.id for r in x.refs} & objs for x in items[comma:]
         ):
             continue
+        if any(_humans(x) for x in head) and not any(
+            _humans(x) or _is(x, "pronoun") or _is_verb_item(x) for x in rest
+        ):
+            # "Lily is freezing. Ava doesn't need the wipes, just the teddy.": what follows is
+            # only objects, for the person the clause names; dropped with the clause, that
+            # person is lost and an earlier sentence's person took the teddy (session 39, lead:
+            # 12c's fuzz)
+            continue
+        if any(_is(x, "pronoun") for x in rest) and any(_humans(x) for x in items[:start]):
+            # "Lily is freezing. Ava doesn't want the wipes, give her the teddy.": 'her' is Ava;
+            # with the clause dropped it would point back to Lily
+            continue
         return _not_wanted([*items[:start], *rest, *items[end:]])
     return items
 
