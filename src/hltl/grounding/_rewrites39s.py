@@ -65,7 +65,13 @@ _RUN_ON39S = re.compile(
 _AND39S = re.compile(r"\s+and\s+(?=(?:he|she|we|they|his|her|their)\b)", _F)
 # what the subject is
 _WE39S = re.compile(r"^we(?='re|'ve|'d|\s+(?:are|were|have|had|all|both)\b)", _F)
-_PRON39S = re.compile(r"^(?P<pron>he|she)(?='s|'d|\s+(?:is|was|has|had|[a-z]+(?:s|ed))\b)", _F)
+# (session 40, 12s: or a doing gone by said without -ed: "he won the egg and spoon race")
+_PRON39S = re.compile(
+    r"^(?P<pron>he|she)(?='s|'d|\s+(?:is|was|has|had|[a-z]+(?:s|ed)|won|got|came|spent|did|ran|"
+    r"swam|sang|rode|flew|slept|caught|drove|fought|taught|built|made|kept|sat|stood|wrote|dug|"
+    r"threw|broke|felt|burnt|lost|beat|met|found|saw|heard|knew|grew|wore)\b)",
+    _F,
+)
 _THEY39S = re.compile(
     r"^they(?P<aux>'ve|'re|\s+(?:have|are|were))?\s+(?:both|all)\b(?P<rest>.*)$", _F
 )
@@ -418,17 +424,25 @@ _FIRST39S = re.compile(
     _F,
 )
 _THEIRS39S = re.compile(r"\b(?:he|him|his|she|her|hers|they|them|their|theirs)\b", _F)
+_BOTH_OF_THEM40S = re.compile(r"\b(?:both|each|either|the pair|the two|all) of them\b", _F)
 
 
 def _remark_first39s(text: str, lexicon: Lexicon) -> str:
     """Session 39 (12s): a remark opening the instruction taken off (above)."""
     m = _FIRST39S.match(text)
-    if m is None or _THEIRS39S.search(m["req"]) or not _names(m["req"], lexicon):
+    if m is None or not _names(m["req"], lexicon):
         return text
     found = _subject39s(m["said"], lexicon)
     if found is None:
         return text
     kind, head, rest = found
+    req = m["req"]
+    if kind in ("thing", "we"):
+        # (session 40, 12s: "The tin whistle session's just finished, so both of them get a
+        # drink: …": 'both of them' are the request's people, not the remark's thing)
+        req = _BOTH_OF_THEM40S.sub(" ", req)
+    if _THEIRS39S.search(req):
+        return text
     comma = m["sep"].strip() == ","
     if kind not in ("person", "pron", "poss", "we", "thing") or head == "their":
         return text
