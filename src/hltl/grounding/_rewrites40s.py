@@ -57,8 +57,11 @@ def _after_name40s(before: str, lexicon: Lexicon) -> bool:
 def _purpose_words40s(what: str, lexicon: Lexicon) -> bool:
     """Whether ``what`` (a purpose's words after its determiner) is one to take off (above)."""
     plain = re.sub(r"\b[a-z]+(?:-[a-z]+)+\b", "x", what, flags=_F)  # 'five-a-side': one word
+    # (a name said with an 's' and no apostrophe: 'the teachers paper props')
+    bare = re.sub(r"(?<=[a-z])'?s\b", "", what, flags=_F)
     return (
         not _names(what, lexicon)
+        and not _names(bare, lexicon)
         and not _KEEP_WORDS.search(plain)
         and not _NOT_PURPOSE40S.search(what)
     )
@@ -148,11 +151,14 @@ def _owner40s(text: str, node: Node, lexicon: Lexicon) -> None:
 # crisps they're both off to the angler's meeting after"): right after a name of the request,
 # set off by commas (and its 'after' at the very end is 'afterwards'), so the rules of remarks
 # said with commas read it (or refuse it) as they would; in the middle only before 'and' + a
-# person of the scene + what they get (a request's next piece). A text with any comma, colon,
-# semicolon or dash is left as it is.
+# person of the scene + what they get (a request's next piece). He / she must fit the one person
+# named before it, and say what session 39's rule takes off of a person (no time, going or being
+# done) or that they want what they get (_THEIR_WANT40S); a remark naming something of the scene or
+# saying 'not' is left. A text with any comma, colon, semicolon or dash is left as it is.
 _RUN_ON40S = re.compile(
     r"(?<=[a-z]) (?P<said>(?:he|she)'s|(?:we|they)'(?:re|ve)|(?:he|she) (?:is|was|has)) ", _F
 )
+_NOT40S = re.compile(r"\b(?:not|never|no|nobody|nothing|none)\b|n't\b", _F)
 _AND_NEXT40S = re.compile(r" and (?=(?P<who>[a-z]+(?: [a-z]+)?) (?:the|a|an|some|his|her) )", _F)
 
 
@@ -164,6 +170,24 @@ def _run_on40s(text: str, lexicon: Lexicon) -> str:
     if m is None or not _after_name40s(text[: m.start()], lexicon):
         return text
     before, said = text[: m.start()], text[m.start() + 1 :]
+    if _NOT40S.search(said):
+        return text  # "… hes not back from his darts match": left to be refused
+    pron = re.match(r"(he|she)\b", said, _F)
+    if pron is not None:
+        # he / she: the one person named before it, whom it fits ("crisps for bob please shes
+        # back from her darts match" is someone else: left to be refused)
+        named = _ids(before, lexicon, "human")
+        if len(named) != 1 or not _fit36(next(iter(named)), pron[1], lexicon):
+            return text
+        # … saying nothing of a time, a going or being done ("… hes back at six") but what they
+        # want of what they get ("… shes been on about it all morning")
+        end = _AND_NEXT40S.search(said)
+        remark = said[: end.start()] if end is not None else said
+        found = _subject39s(remark, lexicon)
+        if not _THEIR_WANT40S.search(f", {remark}") and (
+            found is None or not _plain39s("pron", found[2], next(iter(named)), lexicon)
+        ):
+            return text
     for n in _AND_NEXT40S.finditer(said):
         if _only_person(n["who"], lexicon) and _names(said[n.end() :], lexicon):
             if _names(said[: n.start()], lexicon):
