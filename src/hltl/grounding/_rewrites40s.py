@@ -49,9 +49,16 @@ _OWNER40S = re.compile(r"\bfor (?P<det>his|her) (?P<what>[a-z][a-z' -]*)", _F)
 
 
 def _after_name40s(before: str, lexicon: Lexicon) -> bool:
-    """Whether ``before`` ends with a name of the scene (its last word or two)."""
-    words = re.findall(r"[a-z][a-z'-]*", before.lower())
-    return any(_names(" ".join(words[-k:]), lexicon) for k in (1, 2) if len(words) >= k)
+    """Whether ``before`` ends with a name of the scene (its last word, or 'Person A'), a 'please'
+    or 'thanks' after it aside ("… to Bob then" does not)."""
+    words = re.findall(r"[a-z0-9][a-z0-9'-]*", before.lower())
+    while words and words[-1] in ("please", "thanks", "cheers", "ta"):
+        words.pop()
+    if not words:
+        return False
+    if len(words[-1]) == 1 and len(words) >= 2:
+        return bool(_names(" ".join(words[-2:]), lexicon))
+    return bool(_names(words[-1], lexicon))
 
 
 def _purpose_words40s(what: str, lexicon: Lexicon) -> bool:
