@@ -218,7 +218,6 @@ KNOWN_MISSES = frozenset(
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
         "pinochle.",
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
-        "Hand Person A the, oh, what's it called, the bottle, for her choral warm-up.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "The applie goes on the shelf for now.",
         "Could you stand the cup on the counter for the bellfounder?",

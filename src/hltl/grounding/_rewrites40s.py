@@ -102,26 +102,6 @@ def _purpose40s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
-# "Alice needs supplies for her upcycling class: both the bottle and the crisps": a want of
-# things said in general (supplies, a few things, bits, kit), its purpose, and a colon before
-# what they are: the things said are what is wanted.
-_SUPPLIES40S = re.compile(
-    r"\b(?P<verb>needs|wants|is after|'s after|could do with|would like) (?:some |a few |a couple "
-    r"of |the |her |his )?(?:supplies|things|bits|bits and bobs|stuff|kit|provisions|items)"
-    r"(?: for (?:the|a|an|his|her|their|our|my) (?P<what>[a-z][a-z' -]*?))?\s*:\s+",
-    _F,
-)
-
-
-def _supplies40s(text: str, lexicon: Lexicon) -> str:
-    """Session 40 (12s): a want of things in general before a colon and what they are (above)."""
-    m = _SUPPLIES40S.search(text)
-    if m is None or (m["what"] and not _purpose_words40s(m["what"], lexicon)):
-        return text
-    out = f"{text[: m.start()]}{m['verb']} {text[m.end() :]}"
-    return out if _reading(out, lexicon) is not None else text
-
-
 def _owner40s(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 40 (12s): "Give Bob the red mug for her pottery evening": a his / her of a purpose
     (above) that fits no one who gets something in the reading is someone else's: the purpose
@@ -357,7 +337,6 @@ def _been_and40s(text: str, lexicon: Lexicon) -> str:
 # the normaliser's rewrites (wired into normalise._STEPS19)
 _STEPS40S: tuple[Callable[[str, Lexicon], str], ...] = (
     _purpose40s,
-    _supplies40s,
     _their_want40s,
     _things_aside40s,
 )
