@@ -69,6 +69,14 @@ test_a_time_said_of_the_request_after_it_puts_it_off = CASES.test(
 )
 
 
+test_a_correction_after_a_question_and_a_remark_replaces = CASES.test(
+    # the remark taken off left "…?. Thank you, no, the cup", read as one more handover
+    ("Could Bob have the apple? He's hungry. Thank you, no, I tell a lie, the cup", "cup>B", CELL),
+    ("Could Bob have the apple? He's hungry. Thank you, correction, the cup", "cup>B", CELL),
+    ("Can Kofi have the drill? He's busy. No, the torch", "torch>A", WORKSHOP),
+)
+
+
 @pytest.mark.parametrize(
     ("text", "scene", "names"),
     [
