@@ -201,37 +201,16 @@ KNOWN_MISSES = frozenset(
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
         # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
-        "Go on then, pass Person A the chips, she's earned them after the boccia.",
-        "Carol's after a red mug for her ham radio night, and Bob could do with the apple.",
-        "Person B needs the chips for the drive to pinochle night, Person A the bottle.",
         "Omar needs the sponge to clean up after the moth trap.",
-        "The crisps, Alice. She asked first.",
-        "Person B wants the chips for the bar billiards league. The apple too.",
-        "Person B's been flying his drone all morning and asked for the chips, so hand him them.",
         "Bottle's hers, Person A's, she's the organ builder.",
-        "the bottle goes to Bob and Alice gets the crisps they're both off to the angler's "
-        "meeting after",
         "Person A's having the cup and Person B the apple and the chips go to Person B too.",
-        "give Person A the bottle she's been on about it all morning",
-        "Give Ruth the thermometer she's doing the rounds and Mrs Khan the magazine",
         "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
         "crisps.",
-        "Each of the spanners back in the locker, the organ builder's borrowing the bench.",
-        "The two mugs go up on the shelf, we're clearing the counter for the seed swap.",
-        "The tin whistle session's just finished, so both of them get a drink: the cup to "
-        "Person A, the bottle to Person B.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
         "pinochle.",
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
-        "Hand Person A the, oh, what's it called, the bottle, for her choral warm-up.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
-        "pop the crisps up on the shelf, the wasps are after them",
-        "give person b the apple and the chips, he won the egg and spoon race",
         "The applie goes on the shelf for now.",
-        "Pesrson B wants the bottle for the charcoal burning demo.",
-        "The banaana on the tray for the moth trap volunteers.",
-        "Could the notwbook go to Priya for her tin whistle notes?",
-        "Can Person B have the cup and the apple for his model boat outing?",
         "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
         "Could you hang the tongs on the plate rack, Marco's done with them?",
     }
