@@ -199,15 +199,10 @@ test_courtesy = KINDS.test(
         "banana>A",
         LAB,
     ),
-    ("Ruth sends her regards: could you pass her the water jug?", "jug>A", WARD),
-    ("Mrs Khan sends her best: could you pass her the magazine?", "magazine>C", WARD),
-    ("Kofi sends his thanks in advance: could you pass him the power drill?", "drill>A", WORKSHOP),
     # a pronoun of the other sex; two people; a thing blessed; thanks alone; thanks of the other sex
     ("Grandad, bless her, could do with the wipes.", None, NURSERY),
     ("Grandad and Ava, bless them, want the wipes.", None, NURSERY),
     ("The teddy, bless it, goes on the mat.", None, NURSERY),
-    ("Mr Lee sends his thanks.", None, WARD),
-    ("Ruth sends his thanks: could you pass her the water jug?", None, WARD),
 )
 
 # an availability said as a condition: 'if there's any going / one left / some spare'

@@ -120,28 +120,6 @@ def _bless40(text: str, lexicon: Lexicon) -> str:
     return text
 
 
-# -- courtesy: thanks a person of the scene sends before their own request ("Kofi sends his thanks
-# in advance: could you pass him the power drill?", "Ruth sends her regards, …"): what the grammar
-# reads as 'P says thanks: …' (the request is theirs, its him / her them)
-_SENDS_THANKS40 = re.compile(
-    r"^(?P<p>[A-Z][\w]*(?: [A-Z][\w]*)?) (?:sends|passes on|gives|offers) (?P<pron>his|her|their) "
-    r"(?:thanks|regards|best|best wishes|love|compliments)(?: in advance| already| ahead of time)?"
-    r"(?P<mark>\s*[:—–,]\s*)",
-)
-
-
-def _sends_thanks40(text: str, lexicon: Lexicon) -> str:
-    """Session 40: 'P sends his thanks (in advance):' opening a request is 'P says thanks:' (one
-    person of the scene whom the pronoun may be)."""
-    m = _SENDS_THANKS40.match(text)
-    if m is None or not _only_person(m["p"], lexicon):
-        return text
-    pid = next(iter(_ids(m["p"], lexicon, "human")))
-    if m["pron"] != "their" and not _fit36(pid, m["pron"], lexicon):
-        return text
-    return f"{m['p']} says thanks: {text[m.end() :]}"
-
-
 # -- an availability said as a condition after a want or request ("Person B would love the chips,
 # if there's any going", "…, if there are some spare", "…, if there's one left"): the scene has
 # the object, so it asks nothing more; taken off when it closes the instruction
@@ -211,7 +189,6 @@ def _same40(text: str, lexicon: Lexicon) -> str:
 _STEPS40: tuple[Callable[[str, Lexicon], str], ...] = (
     _left_on40,
     _bless40,
-    _sends_thanks40,
     _any_going40,
     _finish_with40,
     _same40,
