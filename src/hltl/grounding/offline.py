@@ -132,6 +132,8 @@ def parse_instruction(
             _had_already38l(text, node, lexicon)
             remark_said39s(text, node, lexicon)
             _left_moved39l(text, node, lexicon)
+            _after_that40l(text, node, lexicon)
+            _too_after_remark40l(text, node, lexicon)
             for check in _CHECKS40:
                 check(text, node, lexicon)
         return node
@@ -4337,8 +4339,10 @@ _AWAY_TILL37S = re.compile(
 
 # "put the lemon on the worktop, chef wants it": a want of the placed thing said after the placement
 _PLACED_WANTED38L = re.compile(
-    r"[,;.]\s*(?:(?:and|cos|because|since|as)\s+)?(?P<who>(?:the\s+)?[A-Za-z][\w]*(?:\s+[A-Z][\w]*)?)"
-    r"\s+(?:wants|needs|is after|'s after|would like|could use|has asked for)\s+(?:it|them)\b",
+    r"(?:[,;.]\s*|\s+(?=and\s))(?:(?:and|cos|because|since|as)\s+)?"
+    r"(?P<who>(?:the\s+)?[A-Za-z][\w]*(?:\s+[A-Z][\w]*)?)"
+    r"(?:\s+(?:wants|needs|would like|could use|has asked for)|(?:\s+is|'s)\s+(?:after|"
+    r"(?:been\s+)?(?:waiting|asking)\s+(?:for|on)))\s+(?:it|them)\b",
     re.I,
 )
 # a verb that asks for a handover in words: then the handover is said, not only wanted (not the
@@ -4361,7 +4365,9 @@ def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
     the placement and a handover of the lemon to the chef. A want of the placed thing said after
     the placement, with no verb of handing anywhere, is the reason for the placement (it waits
     there for them) or a second request to hand it over: refused naming both readings."""
-    if not any(w in text.lower() for w in ("want", "need", "after", "like", "use", "asked")):
+    if not any(
+        w in text.lower() for w in ("want", "need", "after", "like", "use", "ask", "waiting")
+    ):
         return
     placed = {t.obj: t.target for t in tasks(node) if t.kind == "place"}
     both = [t for t in tasks(node) if t.kind == "deliver" and t.obj in placed]
@@ -4498,3 +4504,82 @@ def _left_moved39l(text: str, node: Node, lexicon: Lexicon) -> None:
                 f"{m.group(0)!r} keeps the {moved[0]} where it is, but the instruction also moves "
                 "it: say which thing goes to whom"
             )
+
+
+# 'after that apple', 'after all those chips': a demonstrative, then an object's name ending the
+# clause ('… after that chips to person b' is 'then', its own target after it)
+_AFTER_THAT40L = re.compile(
+    r"\bafter\s+(?:all\s+)?(?:that|those|these|this)\s+"
+    r"(?!(?:the|a|an|his|her|their|my|your|our|its)\b)"
+    r"(?P<what>[A-Za-z][\w-]*(?:\s+[a-z][\w-]*)?)(?=\s*(?:[,.;!?]|$))",
+    re.I,
+)
+
+
+def _after_that40l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 40 (lead): "Bob wants the cup after that apple" had read `cup>B ; apple>B` ('after
+    that' taken for 'then') and "Bob wants the cup after all that apple" `apple>B ; cup>B`. 'after
+    that <thing>' may order the thing's task first, follow 'after that' ('then the apple'), or
+    say what the person has had already ('after all that apple'): a reading that moves the thing
+    so named is refused naming the orders."""
+    if "after" not in text.lower():
+        return
+    for m in _AFTER_THAT40L.finditer(text):
+        named = _ids(m["what"], lexicon, "object")
+        moved = [t for t in tasks(node) if t.obj in named]
+        if len(named) != 1 or not moved or len(list(tasks(node))) < 2:
+            continue
+        t = moved[0]
+        rest = [u for u in tasks(node) if u.obj != t.obj]
+        step, others = (
+            f"{t.obj}>{t.target}" if t.kind == "deliver" else f"{t.obj}@{t.target}",
+            (
+                " & ".join(
+                    f"{u.obj}>{u.target}" if u.kind == "deliver" else f"{u.obj}@{u.target}"
+                    for u in rest
+                )
+            ),
+        )
+        raise GroundingError(
+            f"{m.group(0)!r}: is the {t.obj} first ({step} ; {others}), after the rest "
+            f"({others} ; {step}), or what was had already ({others})? say 'first', 'then', or "
+            f"leave the {t.obj} out"
+        )
+
+
+# a sentence of one object's name and 'too' / 'as well' / 'also' ("The apple too.")
+_TOO40L = re.compile(
+    r"^(?:and\s+|oh,?\s+)?(?:(?:the|a|an|that|this|those|these)\s+)?(?P<what>[A-Za-z][\w\s-]*?)"
+    r",?\s+(?:too|as well|also)\W*$",
+    re.I,
+)
+
+
+def _too_after_remark40l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 40 (lead): "Give Bob the chips. Alice's bus was late. The apple too." had read the
+    apple as Alice's: 'the apple too' follows a request to Bob and a remark about Alice, and may
+    add to either. When the sentence before the elliptical one names a person and nothing to move,
+    and the request's one recipient is someone else, it is refused naming both."""
+    if not any(w in text.lower() for w in ("too", "as well", "also")):
+        return
+    said = [s.strip() for s in _SENTENCE39L.split(text) if s.strip()]
+    for k in range(2, len(said)):
+        m = _TOO40L.match(said[k])
+        if m is None or _ids(said[k], lexicon, "human"):
+            continue
+        named = _ids(m["what"], lexicon, "object")
+        before = said[k - 1]
+        remark = _ids(before, lexicon, "human")
+        if len(named) != 1 or len(remark) != 1:
+            continue
+        if _ids(before, lexicon, "object") or _ids(before, lexicon, "surface"):
+            continue
+        (obj,), (other,) = named, remark
+        got = {u.target for u in tasks(node) if u.kind == "deliver" and u.obj != obj}
+        if len(got) != 1 or other in got:
+            continue
+        (first,) = got
+        raise GroundingError(
+            f"{said[k]!r} after {before!r}: is the {obj} for {person_name(first, lexicon)} "
+            f"({obj}>{first}) or {person_name(other, lexicon)} ({obj}>{other})? say who"
+        )

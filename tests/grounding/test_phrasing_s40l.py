@@ -1,0 +1,82 @@
+"""Session-40 phrasing of issue 12 (lead): readings that guessed, from session 39's follow-ups
+(docs/grounding.md, "Session 40 (lead)").
+
+"Put the cup on the shelf, Carol's waiting for it." read the cup placed and handed to Carol: the
+want said as 'waiting for it' escaped session 38's placed-then-wanted check, as did one joined by
+'and'. "Bob wants the cup after that apple" read `cup>B ; apple>B` ('after that' as 'then') and
+"… after all that apple" `apple>B ; cup>B`: 'after that <thing>' may order it either way or say
+what was had. "Give Bob the chips. Alice's bus was late. The apple too." read the apple as
+Alice's: 'the apple too' after a remark about someone else may add to either person."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.errors import GroundingError
+from hltl.grounding import offline
+from hltl.world.scene import Scene
+from tests.grounding.helpers import CELL, KITCHEN, WARD, WORKSHOP, PhrasingCases
+
+CASES = PhrasingCases()
+
+test_a_wait_for_the_placed_thing_is_refused = CASES.test(
+    ("Put the cup on the shelf, Carol's waiting for it.", None, CELL),
+    ("Put the cup on the shelf, Bob is waiting on it.", None, CELL),
+    ("Put the cup on the shelf and Carol wants it.", None, CELL),
+    ("Lemon on the worktop, chef's been asking for it.", None, KITCHEN),
+    # a verb of handing said of it, or a want of another thing: read as before
+    (
+        "Put the cup on the shelf, then give it to Carol, she's waiting for it.",
+        "cup@shelf ; cup>C",
+        CELL,
+    ),
+    ("Put the cup on the shelf.", "cup@shelf", CELL),
+)
+
+test_after_that_thing_is_refused = CASES.test(
+    ("Bob wants the cup after that apple", None, CELL),
+    ("Bob wants the cup after all that apple", None, CELL),
+    ("Give Bob the cup after all those chips.", None, CELL),
+    ("Kofi wants the torch after that drill.", None, WORKSHOP),
+    # 'after that, the apple' / 'after that the apple' / 'after the apple': read as before
+    ("Give Bob the cup, after that the apple.", "cup>B ; apple>B", CELL),
+    ("Give Bob the cup. After that, the apple.", "cup>B ; apple>B", CELL),
+    ("Give Bob the cup after the apple.", "apple>B ; cup>B", CELL),
+    # 'after that <thing>' with its own target after it: 'then' (blind18)
+    ("first the cup to person a after that chips to person b", "cup>A ; chips>B", CELL),
+)
+
+test_too_after_a_remark_about_another_person_is_refused = CASES.test(
+    ("Give Bob the chips. Alice's bus was late. The apple too.", None, CELL),
+    ("Give Bob the chips. Alice is tired. The apple as well.", None, CELL),
+    ("Take Mr Lee the jug. Mrs Khan is asleep. The magazine too.", None, WARD),
+    # no remark between, or the remark is about the same person: read as before
+    ("Give Bob the chips. The apple too.", "chips>B & apple>B", CELL),
+    ("Give Alice the chips. Alice is tired. The apple too.", "chips>A & apple>A", CELL),
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "names"),
+    [
+        ("Put the cup on the shelf, Carol's waiting for it.", CELL, ("cup@shelf", "cup>C")),
+        ("Bob wants the cup after that apple", CELL, ("apple>B ; cup>B", "cup>B ; apple>B")),
+        ("Give Bob the chips. Alice's bus was late. The apple too.", CELL, ("apple>B", "apple>A")),
+    ],
+)
+def test_the_refusals_name_the_readings(text: str, scene: Scene, names: tuple[str, ...]) -> None:
+    with pytest.raises(GroundingError) as refused:
+        offline.parse_instruction(text, scene)
+    said = str(refused.value)
+    assert all(n in said for n in names), said
+
+
+def test_each_check_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """With the two session-40 checks off, their sentences read (as they did before them)."""
+    monkeypatch.setattr(offline, "_after_that40l", lambda *_: None)
+    monkeypatch.setattr(offline, "_too_after_remark40l", lambda *_: None)
+    for text in (
+        "Bob wants the cup after that apple",
+        "Give Bob the chips. Alice's bus was late. The apple too.",
+    ):
+        offline.parse_instruction(text, CELL)
