@@ -56,6 +56,27 @@ test_too_after_a_remark_about_another_person_is_refused = CASES.test(
 )
 
 
+test_a_time_said_of_the_request_after_it_puts_it_off = CASES.test(
+    ("give Bob the chips, not the apple, it's for after the meeting", None, CELL),
+    ("Put the bottle on the shelf, thanks, it's for after the meeting", None, CELL),
+    ("Give Bob the apple, that's for Friday.", None, CELL),
+    ("Give Bob the apple, it's for tomorrow night.", None, CELL),
+    ("Hand Kofi the torch, it's for when the power's back.", None, WORKSHOP),
+    # a bare time after the objects is what the thing is for (session 30), and 'it's for <person>'
+    # says who gets it: read as before
+    ("Give Bob the apple for tonight.", "apple>B", CELL),
+    ("Give Bob the apple, it's for him.", "apple>B", CELL),
+)
+
+
+test_a_correction_after_a_question_and_a_remark_replaces = CASES.test(
+    # the remark taken off left "…?. Thank you, no, the cup", read as one more handover
+    ("Could Bob have the apple? He's hungry. Thank you, no, I tell a lie, the cup", "cup>B", CELL),
+    ("Could Bob have the apple? He's hungry. Thank you, correction, the cup", "cup>B", CELL),
+    ("Can Kofi have the drill? He's busy. No, the torch", "torch>A", WORKSHOP),
+)
+
+
 @pytest.mark.parametrize(
     ("text", "scene", "names"),
     [

@@ -591,7 +591,12 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
     thing = {r.id for it in things for r in it.refs}
     requests = [c for c, r in zip(clauses, remark, strict=True) if not r]
     # a request said as a question keeps its mark ("ava gets the teddy?. That's everything.")
-    body = ". ".join(c.strip(" ,:") + ("?" if c in asked else "") for c in requests)
+    # (session 40, lead: and no '.' after it: "Could Bob have the apple?. Thank you, no, the cup"
+    # read the correction as one more handover, 12c's fuzz)
+    body = " ".join(
+        c.strip(" ,:") + ("?" if c in asked else "" if k == len(requests) - 1 else ".")
+        for k, c in enumerate(requests)
+    )
     # session 31 (lead): "Give Bob the cup and, once Bob has it, give Alice the bottle. It's the
     # apple that Alice is hoping for.": the request's 'it' is the cup, said before it; remarks said
     # after every request do not stand in for pronouns the request resolves (it had made 'once

@@ -715,12 +715,16 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
 # that is for later.", "…. It's for tomorrow."): a pronoun for it, 'be', then 'for' and the time,
 # ending a sentence. Taken off as a closer (or its time as how long), it had been read as a
 # request for now; refused as a deferring time word is. ("… for later" after the verb's objects
-# stays a purpose: "Give Bob the cup for later".)
+# stays a purpose: "Give Bob the cup for later".) Session 40 (lead, 12c's purposes fuzz): any time
+# said so, not only the listed words ("…, it's for after the meeting", "…, that's for Friday",
+# "…, it's for tomorrow night" had read as requests for now).
 _PUT_OFF30S = re.compile(
     r"[,.;!?]\s*(?:and\s+|but\s+)?(?P<said>(?:that|this|it|those|these|they|that one|those ones)"
     r"(?:'s|'re| is| are|'ll be| will be| can wait| can be) (?:saved |kept )?for (?:later(?: on)?|"
-    r"tomorrow|tonight|next (?:week|month|time)|the weekend|this (?:evening|afternoon)|after "
-    r"(?:lunch|dinner|breakfast|tea|school|work)))\b(?=\s*(?:,?\s*(?:please|thanks|thank you|"
+    r"tomorrow(?: (?:morning|afternoon|evening|night))?|tonight|next \w+|"
+    r"the (?:weekend|morning|afternoon|evening)|this (?:evening|afternoon|morning)|"
+    r"(?:on )?(?:mon|tues|wednes|thurs|fri|satur|sun)day(?: (?:morning|afternoon|evening|night))?|"
+    r"(?:after|before|when|once|until|till) [^.,;!?]+?))\b(?=\s*(?:,?\s*(?:please|thanks|thank you|"
     r"ta|cheers)\s*)?[.!]*\s*$)",
     re.I,
 )
