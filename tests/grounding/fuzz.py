@@ -86,7 +86,14 @@ generator): a pronoun before the request ("She's had a morning of it at the allo
 "his/her X" or a name's possessive after it (", his knee's playing up again"), "we" and the place
 before or after it (", we've got the inspectors in", "The back door's jammed. …"), a sentence
 between two of the request's, and a "who" clause after a name ("Give Bob, who's new here, the
-apple."): the entry, or refused.
+apple."): the entry, or refused. A fourteenth family (session 40), purposes: blind38's purpose "for
+<an event, a pastime, a group>" beside a request, with words no earlier part uses: after it with or
+without a comma ("… for the harvest supper."), before it ("For the ramblers, …"), after its one
+object inside it ("Give the apple for the cricket tea to Bob."), as a sentence after it (". That's
+for the stamp fair."), and "his/her/their <pastime>" after an entry of one handover naming its one
+person, fitting that person or another ("Give Bob the apple for her wild swim."): the entry, or
+refused; a purpose as an object's only recipient ("The apple for the ramblers.") and the request
+said after it to be for a later time (", it's for tonight"): refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -807,6 +814,91 @@ REMARK_FORMS39 = (
     "middle",
     "who",
 )
+# purposes (session 40; blind38's purpose "for <an event, a pastime, an outing>" beside a request:
+# "Carol's after a red mug for her ham radio night", "wants the chips for the bar billiards
+# league", "The bottle? Person A, for the seed swap."; said here with events, pastimes and groups
+# no earlier part uses, so that a rule for the kind is measured on forms it was not written on).
+# Each names nothing of the scene (a form that would is left out). A purpose beside a request that
+# has its recipient or place changes nothing: the entry, or refused (a refused entry stays refused
+# with its readings); said after it with or without a comma (PURPOSE_AFTER: at its end, before a
+# question mark; without a comma only after a name of the scene), before it ("For the harvest
+# supper, …"), after its one object inside it ("Give the apple for the cricket tea to Bob."), as a
+# sentence after it (PURPOSE_SENTENCES), and as "his/her/their <pastime>" after an entry of one
+# handover naming its one person, the possessive fitting that person (PURPOSE_OWN; "his"/"her"
+# only of a name NAMED_HE/NAMED_SHE says). Refused: the purpose as the only recipient of an
+# object (PURPOSE_ONLY: "The apple for the ramblers."), and the request said after it to be for a
+# later time (PURPOSE_TIMES: ", it's for tonight"; a bare "for tonight" after the objects is what
+# the thing is for, read by decided rules, and is not made). A possessive fitting another person
+# of the scene and not the one named ("Give Bob the apple for her wild swim."): the entry, or
+# refused (`possessive other`; the handover is said whole, the possessive says whose the event is).
+PURPOSE_EVENTS = (
+    "the harvest supper",
+    "the open mic night",
+    "the litter pick",
+    "the cricket tea",
+    "the flower show",
+    "the treasure hunt",
+    "the lantern parade",
+    "the ghost walk",
+    "the stamp fair",
+    "the vintage tractor run",
+)
+PURPOSE_GROUPS = (
+    "the ramblers",
+    "the quilters",
+    "the pigeon fanciers",
+    "the cub pack",
+    "the litter pickers",
+    "the clog dancers",
+    "the wassail committee",
+)
+PURPOSE_OWN = (  # after "his" / "her" / "their"
+    "evening class",
+    "first aid course",
+    "wild swim",
+    "fell run",
+    "folk night",
+    "rock pooling trip",
+    "mah jong night",
+    "bell ringing practice",
+)
+PURPOSE_SENTENCES = (". That's for {x}.", ". It's all for {x}.")
+PURPOSE_ONLY = (  # {o} a one-of-a-kind object ({O} at a sentence's start), {x} a purpose
+    "The {o} for {x}.",
+    "{O} for {x}, please.",
+    "Could you hand over the {o} for {x}?",
+    "The {o}'s for {x}.",
+    "Take the {o} over for {x}.",
+)
+PURPOSE_TIMES = (
+    ", it's for tonight",
+    ", that's for after lunch",
+    ", that one's for tomorrow",
+    ", it's for after the meeting",
+    ". It'll be for this evening.",
+    ". That's for later.",
+)
+# names of the scenes whose people a careful reader takes for a man or a woman ("his"/"her")
+NAMED_HE = frozenset(
+    ["Bob", "Kofi", "Marco", "Grandad", "Mr Lee", "Noah", "Omar", "Tom", "Mr Novak"]
+)
+NAMED_SHE = frozenset(
+    [
+        *("Alice", "Carol", "Dana", "Lily", "Mia", "Mrs Ortiz", "Priya", "Ruth", "Lena", "Jess"),
+        *("Ava", "Emma", "Mrs Khan", "Zoe"),
+    ]
+)
+PURPOSE_FORMS = (
+    "after",
+    "after comma",
+    "before",
+    "inside",
+    "sentence",
+    "possessive",
+    "possessive other",
+    "only",
+    "time",
+)
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -821,6 +913,7 @@ Family = Literal[
     "clefts",
     "counts",
     "remarks",
+    "purposes",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -2069,6 +2162,117 @@ def remarks39(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iter
         yield variant(said, entry.want, (), "who")
 
 
+def _scene_words(scene: Scene) -> set[str]:
+    """The words of every name of an object, person or surface of ``scene`` (lower case)."""
+    names = [
+        *(n for o in scene.objects for n in (o.id.replace("_", " "), o.category, *o.aliases)),
+        *(n for h in scene.humans for n in (h.name, *h.aliases)),
+        *(n for s in scene.surfaces for n in (s.id.replace("_", " "), *s.aliases)),
+    ]
+    return {w for n in names for w in re.findall(r"[a-z]+", n.lower())}
+
+
+def _purpose_after(text: str, phrase: str, scene: Scene, comma: bool) -> str | None:
+    """``text`` with ``phrase`` ("for <purpose>") at its end, before its last stop or question
+    mark, after a comma or not; without a comma only after a word of a name of ``scene`` (not
+    after "please", "too", a remark …), else None."""
+    bare = text.rstrip(".!?")
+    end = text[len(bare) :] or "."
+    if not comma:
+        said = re.findall(r"[A-Za-z]+", bare)
+        if not said or said[-1].lower() not in _scene_words(scene):
+            return None
+    return f"{bare}{',' if comma else ''} {phrase}{end}"
+
+
+# what may follow an object for a purpose to be said after it inside an entry
+_PURPOSE_INSIDE = re.compile(r"(?i)^(?:,|\s+(?:to|on|onto|in|into|over to|please)\b)")
+
+
+def _pronoun_of(name: str) -> str | None:
+    """The possessive ("his" or "her") of a name NAMED_HE / NAMED_SHE says, else None."""
+    return "his" if name in NAMED_HE else "her" if name in NAMED_SHE else None
+
+
+def purposes(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The purpose variants of one entry (PURPOSE_FORMS): a purpose naming nothing of the scene
+    (an event or a group) said after it with or without a comma (not without one after a word
+    that names nothing of the scene), before it (not before one that takes back or opens with a
+    joining word), after its one object inside an entry of one task, and as a sentence after it:
+    the entry, or refused (a refused entry stays refused with its readings); for an entry of one
+    handover naming its one person, "his/her/their <pastime>" after it fitting that person
+    (`possessive`) or fitting another person of the scene and not that one (`possessive other`):
+    the entry, or refused; and, for a grounded entry, one of its objects with a purpose as its
+    only recipient (`only`) and the entry said after it to be for a later time (`time`): refused.
+    After a question only the sentence forms follow it."""
+    text = entry.text.strip()
+    question = text.endswith("?")
+    takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
+    joined = text.lower().startswith(_JOINING39)
+    events = [x for x in PURPOSE_EVENTS if _names_nothing(x, scene)]
+    groups = [x for x in PURPOSE_GROUPS if _names_nothing(x, scene)]
+    own = [x for x in PURPOSE_OWN if _names_nothing(x, scene)]
+    if not events or not groups or not own:
+        return
+    want = entry.want
+
+    def purpose() -> str:
+        return rng.choice(events if rng.random() < 0.5 else groups)
+
+    def said_after(phrase: str, comma: bool) -> str:
+        said = _purpose_after(text, phrase, scene, comma) or _purpose_after(
+            text, phrase, scene, True
+        )
+        assert said is not None  # (with a comma, always)
+        return said
+
+    def variant(said: str, form: str, refused: bool = False) -> Variant:
+        if refused:
+            return Variant(part, entry.scene, said, None, "refuse", "purposes", (), form)
+        must: Must = "same" if want is not None else "refuse"
+        return Variant(part, entry.scene, said, want, must, "purposes", entry.readings, form)
+
+    if (said := _purpose_after(text, f"for {purpose()}", scene, comma=False)) is not None:
+        yield variant(said, "after")
+    yield variant(said_after(f"for {purpose()}", True), "after comma")
+    x = purpose()
+    if not takes_back and not joined:
+        yield variant(_after(f"For {x}, ", text, scene), "before")
+    if isinstance(want, Task) and (at := _said_once(text, scene, want.obj)) is not None:
+        x = purpose()
+        if _PURPOSE_INSIDE.match(text[at.end() :]):
+            yield variant(f"{text[: at.end()]} for {x}{text[at.end() :]}", "inside")
+    yield variant(_then(text, rng.choice(PURPOSE_SENTENCES).format(x=purpose())), "sentence")
+    one = _one_person_said(text, want, scene)
+    if one is not None:
+        name, task = one
+        fits = _pronoun_of(name)
+        pos = rng.choice((fits, "their")) if fits is not None else "their"
+        yield variant(said_after(f"for {pos} {rng.choice(own)}", rng.random() < 0.5), "possessive")
+        other = {"his": "her", "her": "his"}.get(fits or "")
+        elsewhere = [
+            h.id
+            for h in scene.humans
+            if h.id != task.target and any(_pronoun_of(n) == other for n in (h.name, *h.aliases))
+        ]
+        if other is not None and elsewhere:
+            phrase = f"for {other} {rng.choice(own)}"
+            yield variant(said_after(phrase, rng.random() < 0.5), "possessive other")
+    if want is not None:
+        unique = _unique_objects(scene)
+        moved = [t.obj for t in tasks(want) if t.obj in unique]
+        if moved or unique:
+            o = _name(scene, rng.choice(moved or unique))
+            if rng.random() < 0.25:
+                x = f"{rng.choice(('his', 'her', 'their'))} {rng.choice(own)}"
+            else:
+                x = purpose()
+            said = rng.choice(PURPOSE_ONLY).format(o=o, O=o[:1].upper() + o[1:], x=x)
+            yield variant(said, "only", refused=True)
+        times = [f for f in PURPOSE_TIMES if not question or f.startswith(". ")]
+        yield variant(_then(text, rng.choice(times)), "time", refused=True)
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -2147,6 +2351,7 @@ def generated(
     rng_counts = random.Random(f"counts:{seed}")
     rng_remarks = random.Random(f"remarks:{seed}")
     rng_remarks39 = random.Random(f"remarks39:{seed}")
+    rng_purposes = random.Random(f"purposes:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -2193,6 +2398,9 @@ def generated(
                 for v in remarks(part, entry, scene, rng_remarks):
                     yield v, scene
                 for v in remarks39(part, entry, scene, rng_remarks39):
+                    yield v, scene
+            if "purposes" in families:
+                for v in purposes(part, entry, scene, rng_purposes):
                     yield v, scene
 
 

@@ -34,7 +34,9 @@ blind36's kinds (a remark about a person by a pronoun or before the entry, a thi
 another, one of a kind "any", another person set against the one named), the remarks session 39
 added from blind37's kind (by a pronoun before, a possessive after, "we" and the place before or
 after, a sentence between two, a "who" clause after a name: the entry; a seed's earlier remarks
-unchanged), and the wrappers and take-backs of a seed unchanged by them."""
+unchanged), the purpose family of session 40 (a purpose "for <an event or group>" or "for his/her
+<pastime>" beside a request: the entry; as an object's only recipient, or the request said to be
+for a later time: refused), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -202,7 +204,17 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
 
 
 @pytest.mark.parametrize(
-    "family", ["wrappers", "takebacks", "exclusions", "tails", "asides", "afterthoughts", "remarks"]
+    "family",
+    [
+        "wrappers",
+        "takebacks",
+        "exclusions",
+        "tails",
+        "asides",
+        "afterthoughts",
+        "remarks",
+        "purposes",
+    ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
     alone = [v for v, _ in fuzz.generated(PARTS, seed=25, every=11, families=(family,))]
@@ -221,7 +233,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert (
         "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts', " in err
     )
-    assert "'remarks')" in err
+    assert "'remarks', 'purposes')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -2408,3 +2420,209 @@ def test_over_the_corpus_each_session_39_remark_names_what_it_says() -> None:
         else:
             assert v.form not in ("middle", "who"), v.text
     assert min(kinds.values()) >= 5 and kinds["we"] >= 100, kinds
+
+
+# -- session 40: blind38's purpose "for <an event>" beside a request, with new words ---------------
+
+
+def _purposes(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.purposes("t", entry, scene, random.Random(seed)))
+
+
+_PURPOSES = (*fuzz.PURPOSE_EVENTS, *fuzz.PURPOSE_GROUPS)
+
+
+def _purpose_of(v: fuzz.Variant, entry: str) -> str:
+    """The purpose ``v`` says beside ``entry`` by its form ("the ramblers", "his wild swim", or
+    for `only` the whole request); fails where ``v`` is not ``entry`` with it."""
+    bare, end = entry.rstrip(".!?"), entry[len(entry.rstrip(".!?")) :] or "."
+    owns = [f"{p} {x}" for p in ("his", "her", "their") for x in fuzz.PURPOSE_OWN]
+    if v.form in ("after", "after comma", "possessive", "possessive other"):
+        said = _PURPOSES if v.form.startswith("after") else owns
+        commas = {"after": ("",), "after comma": (",",)}.get(v.form, ("", ","))
+        for x in said:
+            if any(v.text == f"{bare}{c} for {x}{end}" for c in commas):
+                return x
+    elif v.form == "before":
+        for x in _PURPOSES:
+            if (
+                v.text.startswith(f"For {x}, ")
+                and v.text[len(f"For {x}, ") :].lower() == (entry[:1].lower() + entry[1:]).lower()
+            ):
+                return x
+    elif v.form == "inside":
+        for x in _PURPOSES:
+            if f" for {x}" in v.text and v.text.replace(f" for {x}", "", 1) == entry:
+                return x
+    elif v.form in ("sentence", "time"):
+        forms = fuzz.PURPOSE_SENTENCES if v.form == "sentence" else fuzz.PURPOSE_TIMES
+        for f in forms:
+            for x in _PURPOSES if "{x}" in f else ("",):
+                said = f.format(x=x)
+                if v.text == fuzz._then(entry, said) and (said[0] == "." or end != "?"):
+                    return x or said
+    elif v.form == "only":
+        for f in fuzz.PURPOSE_ONLY:
+            for x in (*_PURPOSES, *owns):
+                m = re.fullmatch(_pattern(f.replace("{O}", "{P}").replace("{x}", x)), v.text)
+                if m:
+                    return v.text
+    raise AssertionError(f"{v.form}: {v.text!r} is not {entry!r} with a purpose of it")
+
+
+def test_a_purpose_is_said_by_every_form_with_every_word() -> None:
+    """After an entry of one handover naming its one person by a name and ending in it: every
+    form, each as its form, the request as it reads or refused; every event, group and pastime
+    is said, and the possessive fits Bob ("his", "their"), the other one fits Alice or Carol."""
+    entry = _entry("cell", "Give the apple to Bob.", "apple>B")
+    said: set[str] = set()
+    pronouns: dict[str, set[str]] = {"possessive": set(), "possessive other": set()}
+    for seed in range(200):
+        made = _purposes(entry, CELL, seed)
+        assert [v.form for v in made] == list(fuzz.PURPOSE_FORMS)
+        for v in made:
+            assert v.family == "purposes" and v.readings == ()
+            refused = v.form in ("only", "time")
+            assert (v.want, v.must) == ((None, "refuse") if refused else (entry.want, "same"))
+            x = _purpose_of(v, entry.text)
+            said.update(w for w in (*_PURPOSES, *fuzz.PURPOSE_OWN) if w in x)
+            if v.form in pronouns:
+                pronouns[v.form].add(x.split()[0])
+            if v.form == "only":
+                assert "Bob" not in v.text and fuzz._objects_named(v.text, CELL) == {"apple"}
+    assert said == {*_PURPOSES, *fuzz.PURPOSE_OWN}, {*_PURPOSES, *fuzz.PURPOSE_OWN} - said
+    assert pronouns == {"possessive": {"his", "their"}, "possessive other": {"her"}}
+
+
+_OWN = "possessive, possessive other"
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # without a comma only after a name of the scene; inside after the object before "," / "to"
+        (
+            "Give Bob the apple, please.",
+            "apple>B",
+            f"after comma, before, inside, sentence, {_OWN}",
+        ),
+        (
+            "Give the apple to Bob.",
+            "apple>B",
+            f"after, after comma, before, inside, sentence, {_OWN}",
+        ),
+        ("Hand Carol the bottle.", "bottle>C", f"after, after comma, before, sentence, {_OWN}"),
+        # no name for a person ("Person A" says no man or woman): no possessive of another
+        ("Give Person A the apple.", "apple>A", "after, after comma, before, sentence, possessive"),
+        # two people, a pronoun for a person: no possessive
+        (
+            "Give Bob the cup and Alice the apple.",
+            "cup>B & apple>A",
+            "after, after comma, before, sentence",
+        ),
+        ("Bob wants the cup, give it to him.", "cup>B", "after comma, before, inside, sentence"),
+        ("Put the cup on the shelf.", "cup@shelf", "after, after comma, before, inside, sentence"),
+        # taking back or joined: nothing before it
+        ("Scratch that, give Bob the apple.", "apple>B", f"after, after comma, sentence, {_OWN}"),
+        ("so give Bob the apple.", "apple>B", f"after, after comma, sentence, {_OWN}"),
+    ],
+)
+def test_a_purpose_is_only_made_where_it_says_what_it_must(
+    text: str, want: str, forms: str
+) -> None:
+    """Each grounded entry also gets the two refused forms (`only`, `time`)."""
+    entry = _entry("cell", text, want)
+    made: set[str] = set()
+    for seed in range(20):
+        made |= {v.form for v in _purposes(entry, CELL, seed)}
+    assert made == {*forms.split(", "), "only", "time"}, made
+
+
+def test_possessive_other_needs_another_person_it_fits() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["humans"][0]["aliases"] = ["Tom"]
+    raw["humans"][2]["aliases"] = ["Omar"]
+    men = scene_from_dict(raw)
+    for seed in range(20):
+        forms = [
+            v.form for v in _purposes(_entry("cell", "Give Bob the apple.", "apple>B"), men, seed)
+        ]
+        assert "possessive" in forms and "possessive other" not in forms
+        for v in _purposes(_entry("cell", "Give Alice the apple.", "apple>A"), CELL, seed):
+            if v.form == "possessive other":
+                assert (
+                    " for his " in v.text
+                    and v.must == "same"
+                    and v.want == parse_expectation("apple>A")
+                )
+
+
+def test_a_refused_entry_stays_refused_with_its_readings_and_gets_no_refused_forms() -> None:
+    entry = Entry("cell", "Give her the mug.", None, ("mug_red", "mug_blue"))
+    for seed in range(10):
+        made = _purposes(entry, CELL, seed)
+        assert {v.form for v in made} <= {"after", "after comma", "before", "sentence"}
+        assert {"after comma", "before", "sentence"} <= {v.form for v in made}
+        for v in made:
+            assert v.must == "refuse" and v.want is None and v.readings == entry.readings
+            _purpose_of(v, entry.text)
+
+
+def test_after_a_question_a_purpose_goes_before_its_mark_and_a_time_is_a_sentence() -> None:
+    entry = _entry("cell", "Could you give Carol the bottle?", "bottle>C")
+    for seed in range(30):
+        for v in _purposes(entry, CELL, seed):
+            _purpose_of(v, entry.text)
+            if v.form in ("after", "after comma", "possessive", "possessive other"):
+                assert v.text.startswith("Could you give Carol the bottle") and v.text.endswith("?")
+            if v.form in ("sentence", "time"):
+                assert v.text.startswith("Could you give Carol the bottle? "), v.text
+
+
+def test_a_purpose_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["objects"].append({"id": "lantern", "category": "lantern", "position": [0.5, 0.5, 0.05]})
+    raw["objects"].append({"id": "tea", "category": "tea", "position": [0.6, 0.5, 0.05]})
+    raw["humans"][1]["aliases"] = ["Bob", "rambler"]
+    scene = scene_from_dict(raw)
+    assert not fuzz._names_nothing("the ramblers", scene)  # (a plural of a name)
+    entry = _entry("cell", "Give the apple to Carol.", "apple>C")
+    for seed in range(60):
+        for v in _purposes(entry, scene, seed):
+            assert not re.search(r"lantern parade|cricket tea|ramblers", v.text), v.text
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "form", "verdict"),
+    [
+        ("Give Alice the cup for the quilters.", "cup>A", "after", "exact"),
+        ("Give Alice the cup for the quilters.", "cup>B", "after", "wrong"),
+        ("Give Alice the cup, it's for tonight.", None, "time", "refused"),
+        ("Give Alice the cup for the quilters.", None, "only", "wrong"),  # read where refused
+    ],
+)
+def test_a_purpose_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, form: str, verdict: str
+) -> None:
+    assert _judged(text, want, "purposes", form) == verdict
+
+
+def test_over_the_corpus_each_purpose_names_what_it_says() -> None:
+    """Every third entry of three parts: each variant is its entry with a purpose of its form (a
+    purpose naming nothing of the scene), refused where it must be."""
+    kinds = dict.fromkeys(fuzz.PURPOSE_FORMS, 0)
+    rng = random.Random("purposes:40")
+    for part in PARTS:
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        for entry in corpus.entries[::3]:
+            scene = corpus.scenes[entry.scene]
+            for v in fuzz.purposes(part, entry, scene, rng):
+                kinds[v.form] += 1
+                assert (v.must == "refuse") is (v.want is None)
+                assert v.form not in ("only", "time") or v.want is None
+                assert v.form in ("only", "time") or v.want == entry.want
+                x = _purpose_of(v, entry.text.strip())
+                for word in (*_PURPOSES, *fuzz.PURPOSE_OWN):
+                    if word in x:
+                        assert fuzz._names_nothing(word, scene), (word, v.text)
+    assert min(kinds.values()) >= 20, kinds

@@ -224,45 +224,17 @@ KNOWN_MISSES = frozenset(
         "Person B.",
         "give Person A the bottle she's been on about it all morning",
         "Give Ruth the thermometer she's doing the rounds and Mrs Khan the magazine",
-        "Alice needs supplies for her upcycling class: both the bottle and the crisps, please.",
         "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
         "crisps.",
-        "Person B's not fussy after his am-dram rehearsal, he'll take any one of the four.",
-        "The apple can go to whoever's nearest, Person A or Person B.",
-        "Give Person A one of the drinks, the cup or the bottle, she doesn't mind.",
-        "Person B's fine with either, the bottle or the chips, he's got beadwork to get back to.",
-        "One of them, doesn't matter which, should get the bottle.",
-        "Omar can take whichever cup's going, green or white.",
         "Each of the spanners back in the locker, the organ builder's borrowing the bench.",
         "The two mugs go up on the shelf, we're clearing the counter for the seed swap.",
         "The tin whistle session's just finished, so both of them get a drink: the cup to "
         "Person A, the bottle to Person B.",
-        "Give the pair of them one each: bottle to Person B, chips to Person A.",
-        "Person A's taking both items to the repair cafe, so hand them over.",
-        "We've only got the one bottle, and it's Person A's, she's just back from bar billiards.",
-        "There's a single bottle, and Person A's the one who needs it, she's soaked from the "
-        "lifeboat drill.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
         "pinochle.",
-        "Alice says no bottle for her; it's the crisps she's after, for the topiary judging.",
-        "Bob's gone off crisps since the bar billiards, it's the bottle he wants.",
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
-        "The bottle's not for Person A, it's Person B's.",
-        "No need to ask, the bottle's for Person A.",
-        "Priya's pen is neither the black one nor the red one, it's the other one, pass it over.",
-        "Leave the knife, just give Marco the tongs.",
-        "The glue stick's not for Noah, Zoe's the one who asked.",
-        "Don't put the teddy on the mat, put the bib on it.",
-        "Crisps for Bob, no, sorry, wrong name, they're for Alice.",
-        "Person A's having the apple, hang on, no, she'd rather the cup, she's hot from the "
-        "boccia.",
-        "Person A gets the bottle, um, no, correction, it's Person B's, he's the drone pilot.",
         "Hand Person A the, oh, what's it called, the bottle, for her choral warm-up.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
-        "The chips are for Person A, no, my mistake, Person B put his name on them at the seed "
-        "swap.",
-        "Tape to Mia, sorry, I'm all over the place, it's for Tom.",
-        "The white plate to Mr Novak, no wait, he asked for the blue one for his topiary cake.",
         "pop the crisps up on the shelf, the wasps are after them",
         "give person b the apple and the chips, he won the egg and spoon race",
         "The applie goes on the shelf for now.",
@@ -283,9 +255,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind22 (tuned on in session 24)
         # blind37 (tuned on in session 39)
         # blind38 (tuned on in session 40)
-        "One of them's after the apple, can't recall who.",
-        "Person B. The bottle. Or the chips. Whatever he said, I wasn't listening.",
-        "Give Person B the chips, no, the other thing, or maybe not, I'm not sure now.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -360,7 +329,7 @@ KNOWN_UNCLEAR = frozenset(
 # "blind38" written in session 39 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 39 (0 wrong), tuned on in session 40: asserted now, the
 # rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind39"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -462,6 +431,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind37"].entries}) >= 3
     assert len(CORPORA["blind38"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind38"].entries}) >= 3
+    assert len(CORPORA["blind39"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind39"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

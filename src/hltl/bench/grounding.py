@@ -129,7 +129,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of session
 # 38; its one wrong reading fixed and tuned on in session 39), blind38 (written in session 39 by
 # another engineer and committed alone, never opened by the engineers who change the grounder before
-# its one measurement at the end of session 39; tuned on in session 40).
+# its one measurement at the end of session 39; tuned on in session 40), blind39 (written in session
+# 40 by another engineer and committed alone, never opened by the engineers who change the grounder
+# before its one measurement at the end of session 40; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -185,6 +187,7 @@ PARTS = (
     "blind36",
     "blind37",
     "blind38",
+    "blind39",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -4080,9 +4080,11 @@ def _first_said34r(text: str, lexicon: Lexicon) -> str:
 
 # "Crisps on the shelf, actually no, give them to Bob."
 _PLACED_THEN34R = re.compile(
-    r"^(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?P<p>on|in|onto|into) (?P<s>the [a-z]+(?: [a-z]+)?)"
-    r"(?P<cue>,\s*(?:(?:actually|hmm|oh|er|um),?\s*)?(?:no|sorry|wait|actually)\b,?\s*"
-    r"(?:give|hand|pass|take|bring) (?:them|it) .+)$",
+    r"^(?P<x>(?:the )?[a-z]+(?: (?!up\b|down\b)[a-z]+)?) (?:up |down )?(?P<p>on|in|onto|into) "
+    r"(?P<s>the [a-z]+"
+    r"(?: [a-z]+)?)(?P<cue>,\s*(?:(?:actually|hmm|oh|er|um),?\s*)?(?:no|sorry|wait|actually|hang "
+    # session 40 (12r): 'hang on' / 'hold on', and 'I meant' before the new request
+    r"on|hold on)\b,?\s*(?:i meant )?(?:give|hand|pass|take|bring) (?:them|it) .+)$",
     _F,
 )
 
@@ -6716,8 +6718,10 @@ def _only_chew36r(text: str, lexicon: Lexicon) -> str:
 
 # "Person A wants the, sorry, where was I, the bottle, yes, the bottle, to Person A."
 _WHERE_WAS_I36R = re.compile(
-    r"\bthe,\s*(?:(?:sorry|erm|um|er|uh),?\s*)*(?:where was i|what's it called|what do you call "
-    r"it),\s*(?P<x>the [a-z]+(?: [a-z]+)?)(?:,\s*(?:yes|yeah|that's it),\s*(?P<again>the [a-z]+"
+    # session 40 (12r): 'oh', 'ah' before it; "what's its name", "what's the word"
+    r"\bthe,\s*(?:(?:sorry|erm|um|er|uh|oh|ah),?\s*)*(?:where was i|what's it called|what is it "
+    r"called|what do you call it|what's its name|what's the word),\s*(?P<x>the [a-z]+"
+    r"(?: [a-z]+)?)(?:,\s*(?:yes|yeah|that's it),\s*(?P<again>the [a-z]+"
     r"(?: [a-z]+)?))?(?=\s*(?:[,.;!?]|$))",
     _F,
 )

@@ -775,8 +775,11 @@ def _refuse_deferral33l(items: list[Item], k: int) -> None:
     while end < len(items) and items[end].kind != "punct" and not _is(items[end], "then"):
         end += 1
     if any(not _DEFERS33L.isdisjoint(x.text.lower().split()) for x in items[k + 1 : end]):
+        # session 40 (12r): the things said before it are what the word could have picked
+        said = list(dict.fromkeys(r.id for x in items[:k] if _objects(x) for r in x.refs))
+        could = f"; it could mean {' or '.join(said)}" if len(said) > 1 else ""
         raise GroundingError(
-            f"{_words_of(items[k:end])!r} waits on someone else's word: say what to do"
+            f"{_words_of(items[k:end])!r} waits on someone else's word{could}: say what to do"
         )
 
 
