@@ -77,12 +77,28 @@ test_a_correction_after_a_question_and_a_remark_replaces = CASES.test(
 )
 
 
+test_or_opening_a_sentence_is_no_more_things = CASES.test(
+    # 'or <thing>' as a sentence of its own had been read as one more thing
+    ("Give Bob the cup. Or the apple.", None, CELL),
+    ("Put the cup on the shelf. Or the apple.", None, CELL),
+    ("Hand Kofi the torch. Or the drill.", None, WORKSHOP),
+    # 'or' in the same sentence is a choice; 'or the other way round' swaps: read as before
+    ("Give Bob the cup, or the apple.", "cup>B | apple>B", CELL),
+    (
+        "Give Alice the cup and Carol the apple. Or the other way round.",
+        "(cup>A & apple>C) | (apple>A & cup>C)",
+        CELL,
+    ),
+)
+
+
 @pytest.mark.parametrize(
     ("text", "scene", "names"),
     [
         ("Put the cup on the shelf, Carol's waiting for it.", CELL, ("cup@shelf", "cup>C")),
         ("Bob wants the cup after that apple", CELL, ("apple>B ; cup>B", "cup>B ; apple>B")),
         ("Give Bob the chips. Alice's bus was late. The apple too.", CELL, ("apple>B", "apple>A")),
+        ("Give Bob the cup. Or the apple.", CELL, ("cup>B | apple>B", "(apple>B)")),
     ],
 )
 def test_the_refusals_name_the_readings(text: str, scene: Scene, names: tuple[str, ...]) -> None:

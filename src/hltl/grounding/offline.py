@@ -134,6 +134,7 @@ def parse_instruction(
             _left_moved39l(text, node, lexicon)
             _after_that40l(text, node, lexicon)
             _too_after_remark40l(text, node, lexicon)
+            _or_sentence40l(text, node, lexicon)
             for check in _CHECKS40:
                 check(text, node, lexicon)
         return node
@@ -4587,3 +4588,42 @@ def _too_after_remark40l(text: str, node: Node, lexicon: Lexicon) -> None:
             f"{said[k]!r} after {before!r}: is the {obj} for {person_name(first, lexicon)} "
             f"({obj}>{first}) or {person_name(other, lexicon)} ({obj}>{other})? say who"
         )
+
+
+# a sentence of its own opening with 'or' and naming things only ("Give Bob the cup. Or the apple.")
+_OR_SENTENCE40L = re.compile(
+    r"(?:^|[.!?;]\s+)(?P<said>or\s+(?:else\s+|maybe\s+|perhaps\s+)?(?P<what>[^.!?;]+?))\s*[.!?]*\s*$",
+    re.I,
+)
+
+
+def _show40l(task: Task) -> str:
+    return f"{task.obj}>{task.target}" if task.kind == "deliver" else f"{task.obj}@{task.target}"
+
+
+def _or_sentence40l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 40 (lead): "Give Bob the cup. Or the apple." read `cup>B & apple>B`: the 'or' of a
+    sentence of its own was dropped and the thing added. After a full stop 'or the apple' offers a
+    choice or takes the first thing back; a reading that keeps both things is refused naming
+    both readings ("Give Bob the cup, or the apple." reads the choice as before)."""
+    if "or" not in text.lower():
+        return
+    m = _OR_SENTENCE40L.search(text)
+    if m is None or _ids(m["what"], lexicon, "human") or _ids(m["what"], lexicon, "surface"):
+        return
+    named = _ids(m["what"], lexicon, "object")
+    if len(named) != 1:
+        return
+    done = list(tasks(node))
+    mine = [t for t in done if t.obj in named]
+    before = [t for t in done if t.obj not in named]
+    if len(mine) != 1 or not before:
+        return
+    (said,) = mine
+    if not isinstance(node, Group) or node.op == "or":
+        return
+    prev = before[-1]
+    raise GroundingError(
+        f"{m['said']!r} after a full stop: a choice ({_show40l(prev)} | {_show40l(said)}) or the "
+        f"{said.obj} instead ({_show40l(said)})? say 'or' in the same sentence, or 'instead'"
+    )
