@@ -236,5 +236,16 @@ test_questions = CASES.test(
 
 def test_refused_without_the_rules(monkeypatch: pytest.MonkeyPatch) -> None:
     # session 39's _run_on39 and _after_all39 (engineer 12) say _run_on38's and _after_doing38's
-    # kinds more widely: taken out too
-    CASES.refused_without((*normalise._STEPS38, *normalise._STEPS39), monkeypatch)
+    # kinds more widely: taken out too; so do 12s's remarks said without punctuation (sessions 39
+    # and 40) and purpose of up to four words (session 40)
+    CASES.refused_without(
+        (
+            *normalise._STEPS38,
+            *normalise._STEPS39,
+            *normalise._STEPS39S_FIRST,
+            *normalise._STEPS39S,
+            *normalise._STEPS40S_FIRST,
+            *normalise._STEPS40S,
+        ),
+        monkeypatch,
+    )

@@ -329,7 +329,16 @@ def test_dyou_think_refused_before(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 def test_refused_without_the_rules(monkeypatch: pytest.MonkeyPatch) -> None:
-    CASES.refused_without(normalise._STEPS39, monkeypatch)
+    # 12s's remarks said without punctuation (sessions 39 and 40) read _run_on39's kind too
+    CASES.refused_without(
+        (
+            *normalise._STEPS39,
+            *normalise._STEPS39S_FIRST,
+            *normalise._STEPS39S,
+            *normalise._STEPS40S_FIRST,
+        ),
+        monkeypatch,
+    )
 
 
 _ = (CELL, TWO)

@@ -65,8 +65,43 @@ test_remarks = CASES.test(
     ("Give Mr Novak the lemon, his doctor's put him off salt.", "lemon>C", KITCHEN),
 )
 
+# said without punctuation: before he's / she's / we're, or 'were' after 'please'; a place by its
+# number ('at table six'), 'a long one', 'since noon' (a time gone by)
+test_remarks_run_on = CASES.test(
+    ("stapler on the desk please were off to the staff quiz", "stapler@desk", OFFICE),
+    (
+        "the bowl to omar please hes only just back from the dentist and hes starving",
+        "bowl>B",
+        LAB,
+    ),
+    ("the knife to lena please shes at table four", "knife>B", KITCHEN),
+    ("Hand Lena the tongs; her shift was a long one.", "tongs>B", KITCHEN),
+)
+
+# a remark as a sentence, or closing one, with another sentence of the request after it
+test_remarks_middle = CASES.test(
+    (
+        "Give Tom the scanner. The loading bay doors are jammed again. Then the tape to Mia.",
+        "scanner>B ; tape>A",
+        DEPOT,
+    ),
+    (
+        "Put the bowl in the sink. Dana has been on the wards all day. Then the spoon to Omar.",
+        "bowl@sink ; spoon>B",
+        LAB,
+    ),
+    (
+        "Give Lena the tongs. Marco has been at the grill since noon. Then the salt to Mr Novak.",
+        "tongs>B ; salt>C",
+        KITCHEN,
+    ),
+)
+
 # what must stay refused: a remark that could change who gets what or when
 test_remarks_refused = CASES.test(
+    # a time of the person's own, said without punctuation; a pronoun that cannot be the person
+    ("pass the drill to kofi please hes back at six", None, WORKSHOP),
+    ("Give Lena the tongs, Marco has been at the grill since six tonight.", None, KITCHEN),
     # a dislike of what the person gets
     ("Give Alice the crisps, her running club's put her off crisps.", None, CELL),
     ("Give Mr Novak the salt, his doctor's put him off salt.", None, KITCHEN),
@@ -154,7 +189,18 @@ test_corrections_refused = CASES.test(
 
 
 def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    CASES.refused_without((*normalise._STEPS39S, *normalise._STEPS39S_FIRST), monkeypatch)
+    # 12's _run_on39 (session 39) reads a remark said without punctuation too; session 40's
+    # widened rules (12s) read some of these kinds again
+    CASES.refused_without(
+        (
+            *normalise._STEPS39S,
+            *normalise._STEPS39S_FIRST,
+            *normalise._STEPS39,
+            *normalise._STEPS40S,
+            *normalise._STEPS40S_FIRST,
+        ),
+        monkeypatch,
+    )
 
 
 # -- what a remark about a person must not be read past (offline.remark_said39s) ----------------

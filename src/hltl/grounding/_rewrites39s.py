@@ -54,11 +54,24 @@ _END39S = re.compile(
     r"mind you),?\s+)?(?P<said>[^,;:.!?—–]+?)\s*(?P<end>[.!?]?)\s*$",
     _F,
 )
+# … or, in a text said without punctuation ("salt for mr novak please he's at table six"), before
+# he's / she's / we're / we've / they're, or 'were' after a closer ("… please were off to …")
+_RUN_ON39S = re.compile(
+    r"^(?P<before>[^,;:.!?—–]+?[a-z])(?P<sep>\s+)(?P<said>(?:(?:he|she)'s|(?:we|they)'(?:re|ve)|"
+    r"(?<=please )were|(?<=thanks )were|(?<=cheers )were) [^,;:.!?—–]+?)\s*$",
+    _F,
+)
 # a second remark joined to the first by 'and'
 _AND39S = re.compile(r"\s+and\s+(?=(?:he|she|we|they|his|her|their)\b)", _F)
 # what the subject is
 _WE39S = re.compile(r"^we(?='re|'ve|'d|\s+(?:are|were|have|had|all|both)\b)", _F)
-_PRON39S = re.compile(r"^(?P<pron>he|she)(?='s|'d|\s+(?:is|was|has|had|[a-z]+(?:s|ed))\b)", _F)
+# (session 40, 12s: or a doing gone by said without -ed: "he won the egg and spoon race")
+_PRON39S = re.compile(
+    r"^(?P<pron>he|she)(?='s|'d|\s+(?:is|was|has|had|[a-z]+(?:s|ed)|won|got|came|spent|did|ran|"
+    r"swam|sang|rode|flew|slept|caught|drove|fought|taught|built|made|kept|sat|stood|wrote|dug|"
+    r"threw|broke|felt|burnt|lost|beat|met|found|saw|heard|knew|grew|wore)\b)",
+    _F,
+)
 _THEY39S = re.compile(
     r"^they(?P<aux>'ve|'re|\s+(?:have|are|were))?\s+(?:both|all)\b(?P<rest>.*)$", _F
 )
@@ -81,7 +94,8 @@ _DISLIKE39S = re.compile(
 # 'after' / 'since' a thing gone by (not 'he's after the X': a want)
 _SINCE39S = re.compile(
     r"(?<!'s )(?<!\bis )(?<!\bwas )(?<!\bbeen )\b(?:after|since) (?:the|a|an|his|her|their|our) "
-    r"[a-z]+(?: [a-z]+){0,3}$",
+    r"[a-z]+(?: [a-z]+){0,3}$|\bsince (?:noon|midday|lunch(?:time)?|teatime|\d{1,2}(?: ?[ap]m)?|"
+    r"(?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)(?: o'clock)?)$",
     _F,
 )
 # a time word ending a thing's name ('a quiz night', 'the away day', 'her lunch club'): no time
@@ -95,6 +109,12 @@ _NAMED_TIME39S = re.compile(
 _A_LONG_ONE39S = re.compile(
     r"\b(?:a|such a|another) (?:long|short|hard|busy|rough|tough|late|early|quiet|slow|mad|good|"
     r"bad|big|hectic) one\b",
+    _F,
+)
+# 'at table six', 'in bed four': a place by its number, no time
+_PLACE_NUMBER39S = re.compile(
+    r"\b(?:at|on|in) (?:table|bed|room|bay|seat|desk|stall|pitch|platform|gate|cubicle) "
+    r"(?:number )?(?:\d{1,3}|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\b",
     _F,
 )
 # held of every remark: negation, counts and choices, pointing words, what is whose, the speaker
@@ -219,6 +239,7 @@ def _plain39s(kind: str, rest: str, who: str | None, lexicon: Lexicon) -> bool:
     plain = _SINCE39S.sub(" ", plain.strip())
     plain = _NAMED_TIME39S.sub(" ", plain)
     plain = _A_LONG_ONE39S.sub(" ", plain)
+    plain = _PLACE_NUMBER39S.sub(" ", plain)
     if kind in ("we", "thing"):
         plain = _CLOCK39S.sub(" ", plain)
     m = _DISLIKE39S.search(plain)
@@ -254,21 +275,27 @@ def _disliked39s(rest: str, lexicon: Lexicon) -> set[str]:
     return _ids(m["x"], lexicon, "object") if m is not None else set()
 
 
-def _remark39s(text: str, lexicon: Lexicon) -> str:
-    """Session 39 (12s): remarks closing the instruction taken off (above), one by one from the
-    end, while what is left names something; then what is left must read, each person a remark
-    is about by a pronoun get something there, no one get what a remark says they dislike, and
-    a need be said only of someone who gets something."""
-    if _gather35r(text, lexicon) != text:
-        return text  # session 35's (12r) 'gather up X and drop them in S' reads its remark
+def _ends39s(text: str) -> re.Match[str] | None:
+    """The remark closing ``text`` (_END39S), else the run-on one (_RUN_ON39S)."""
+    return _END39S.search(text) or _RUN_ON39S.match(text)
+
+
+def _closed39s(
+    text: str,
+    lexicon: Lexicon,
+    about: set[str],
+    needy: set[str],
+    dislikes: dict[str, set[str]],
+    middle: bool = False,
+) -> str:
+    """``text`` without the remarks closing it (above), taken off one by one from the end while
+    what is left names something; the people a pronoun of them means (``about``), those said to
+    need something (``needy``) and what each is said to dislike (``dislikes``) are added to
+    (``middle``: a sentence with another after it, which _about_them38s does not read)."""
     out = text
-    about: set[str] = set()  # people a pronoun of a remark means: they must get something
-    needy: set[str] = set()
-    dislikes: dict[str, set[str]] = {}
-    taken = False
-    while (m := _END39S.search(out)) is not None:
-        before = out[: m.start()].rstrip()
-        parts = _AND39S.split(m["said"])
+    while (m := _ends39s(out)) is not None:
+        before = out[: m.start("sep")].rstrip()
+        parts = _AND39S.split(re.sub(r"^were\b", "we're", m["said"]))
         people = _people39s(before, lexicon)
         ok = bool(_names(before, lexicon))
         last = re.split(r"[,;:.!?—–]\s|\s-\s", before.rstrip(" .!?"))[-1]
@@ -283,8 +310,8 @@ def _remark39s(text: str, lexicon: Lexicon) -> str:
             kind, head, rest = found
             said_of = {*re.findall(r"\b(?:he|him|his|she|her|hers)\b", rest.lower())}
             if kind == "person":
-                if _about_of38s(said, lexicon) is not None:
-                    ok = False  # _about_them38s's: read there
+                if not middle and _about_of38s(said, lexicon) is not None:
+                    ok = False  # _about_them38s's (closing the instruction): read there
                     break
                 who = next(iter(_ids(head, lexicon, "human")))
                 if _PRONOUNS39S.search(before) or (
@@ -299,13 +326,16 @@ def _remark39s(text: str, lexicon: Lexicon) -> str:
                     break
                 fit = sorted(people) if len(people) >= 2 and not said_of else []
             else:
-                if kind in ("pron", "poss") and m["sep"].strip() == "":
+                if (
+                    kind in ("pron", "poss")
+                    and not middle
+                    and m.re is _END39S
+                    and m["sep"].strip() == ""
+                ):
                     ok = False  # a he / she sentence of its own: sessions 37 and 38 (12) read it
                     break
                 if kind == "pron" and any(
-                    p.search(f"{e} {said}")
-                    for p in (_SHE_IS_A37, _BACK_FROM37, _HERS_AT37)
-                    for e in (",", ".")
+                    p.search(f", {said}") for p in (_SHE_IS_A37, _BACK_FROM37, _HERS_AT37)
                 ):
                     ok = False  # session 37's
                     break
@@ -334,10 +364,37 @@ def _remark39s(text: str, lexicon: Lexicon) -> str:
                 dislikes.setdefault(p, set()).update(_disliked39s(rest, lexicon))
         if not ok:
             break
-        taken = True
-        end = "?" if m["end"] == "?" and before[-1:] not in (".", "!", "?") else "."
+        said_end = m.groupdict().get("end") or ""
+        end = "?" if said_end == "?" and before[-1:] not in (".", "!", "?") else "."
         out = before if before[-1:] in (".", "!", "?") else before + end
-    if not taken or out == text:
+    return out
+
+
+# sentences (and parts after a semicolon) of an instruction, each with the space after it
+_SENTENCES39S = re.compile(r"[^.!?;]+(?:[.!?;]+|$)\s*")
+
+
+def _remark39s(text: str, lexicon: Lexicon) -> str:
+    """Session 39 (12s): remarks closing the instruction, or a sentence of it before another
+    ("…, he's got a bed push to get to. Once that's done, …", "…. The boiler's playing up again.
+    …"), taken off (above); then what is left must read, each person a remark is about by a
+    pronoun get something there, no one get what a remark says they dislike, and a need be said
+    only of someone who gets something."""
+    if _gather35r(text, lexicon) != text:
+        return text  # session 35's (12r) 'gather up X and drop them in S' reads its remark
+    about: set[str] = set()  # people a pronoun of a remark means: they must get something
+    needy: set[str] = set()
+    dislikes: dict[str, set[str]] = {}
+    pieces = _SENTENCES39S.findall(text) if re.search(r"[.!?;]\s+\S", text) else [text]
+    out = ""
+    for k, piece in enumerate(pieces):
+        said = out + piece
+        if k == len(pieces) - 1:
+            out = _closed39s(said, lexicon, about, needy, dislikes)
+            break
+        cut = _closed39s(said.rstrip(), lexicon, about, needy, dislikes, middle=True)
+        out = cut + " " if cut != said.rstrip() else said
+    if out == text or " ".join(out.split()) == " ".join(text.split()):
         return text
     read = _reading(out, lexicon)
     if read is None:
@@ -367,42 +424,61 @@ _FIRST39S = re.compile(
     _F,
 )
 _THEIRS39S = re.compile(r"\b(?:he|him|his|she|her|hers|they|them|their|theirs)\b", _F)
+_BOTH_OF_THEM40S = re.compile(r"\b(?:both|each|either|the pair|the two|all) of them\b", _F)
 
 
 def _remark_first39s(text: str, lexicon: Lexicon) -> str:
     """Session 39 (12s): a remark opening the instruction taken off (above)."""
     m = _FIRST39S.match(text)
-    if m is None or _THEIRS39S.search(m["req"]) or not _names(m["req"], lexicon):
+    if m is None or not _names(m["req"], lexicon):
         return text
     found = _subject39s(m["said"], lexicon)
     if found is None:
         return text
     kind, head, rest = found
+    req = m["req"]
+    if kind in ("thing", "we"):
+        # (session 40, 12s: "The tin whistle session's just finished, so both of them get a
+        # drink: …": 'both of them' are the request's people, not the remark's thing)
+        req = _BOTH_OF_THEM40S.sub(" ", req)
+    if _THEIRS39S.search(req):
+        return text
     comma = m["sep"].strip() == ","
-    if kind not in ("person", "we", "thing") or (comma and kind == "person"):
+    if kind not in ("person", "pron", "poss", "we", "thing") or head == "their":
         return text
-    if _PRONOUNS39S.search(rest) and kind != "person":
+    if comma and kind in ("person", "pron", "poss"):
         return text
-    who = next(iter(_ids(head, lexicon, "human"))) if kind == "person" else ""
-    named = _people39s(m["req"], lexicon)
-    if kind == "person" and (
-        not named  # (the lead's session-37 rule: the remark's person gets the objects after it)
-        or who in named
-        or not all(
-            _fit36(who, w, lexicon)
-            for w in re.findall(r"\b(?:he|him|his|she|her|hers)\b", rest, _F)
-        )
-    ):
+    said_of = set(re.findall(r"\b(?:he|him|his|she|her|hers)\b", rest.lower()))
+    if kind == "person":
+        who = next(iter(_ids(head, lexicon, "human")))
+        named = _people39s(m["req"], lexicon)
+        if not named or who in named or not all(_fit36(who, w, lexicon) for w in said_of):
+            return text  # (the lead's session-37 rule: the remark's person gets what follows)
+    elif kind in ("pron", "poss"):
+        # "He's got a train to catch, so give Bob the cup": the one person the request names
+        fit = [
+            p
+            for p in _people39s(m["req"], lexicon)
+            if all(_fit36(p, w, lexicon) for w in said_of | {head.lower()})
+        ]
+        if len(fit) != 1:
+            return text
+        who = fit[0]
+    elif said_of:
         return text
+    else:
+        who = ""
     if not _plain39s(kind, rest, who, lexicon):
         return text
-    if _NEEDY38S.search(rest) and kind != "person":
+    if _NEEDY38S.search(rest) and not who:
         return text
     out = m["req"][:1].upper() + m["req"][1:]
     read = _reading(out, lexicon)
     if read is None:
         return text
     got = {t.target for t in tasks(read)}
+    if kind in ("pron", "poss") and who not in got:
+        return text
     if who and who not in got and (_NEEDY38S.search(rest) or who in _ids(out, lexicon, "human")):
         return text
     return out
