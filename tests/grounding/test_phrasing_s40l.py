@@ -92,6 +92,15 @@ test_or_opening_a_sentence_is_no_more_things = CASES.test(
 )
 
 
+test_what_someone_has_got_is_not_handed_over = CASES.test(
+    ("give alice the cup, she's got the apple, and bob the chips", None, CELL),
+    ("Give Kofi the torch, he's got the drill.", None, WORKSHOP),
+    # 'has got to have' asks; 'once … has got' orders: read as before
+    ("Alice's got to have the apple", "apple>A", CELL),
+    ("Once Alice has got the apple, give Bob the cup.", "apple>A ; cup>B", CELL),
+)
+
+
 @pytest.mark.parametrize(
     ("text", "scene", "names"),
     [

@@ -4403,9 +4403,11 @@ def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
-# "he's just had his tablets", "Bob has already had the apple": what someone has had is done
+# "he's just had his tablets", "Bob has already had the apple": what someone has had is done; and
+# what someone has got (session 40, lead: "give alice the cup, she's got the apple, and bob the
+# chips" had read the apple handed to her, 12s's report), 'got to' apart
 _HAD_ALREADY38L = re.compile(
-    r"(?:'s|\bhas|\bhave|'ve)\s+(?:(?:just|already|only|recently)\s+)?had\s+"
+    r"(?:'s|\bhas|\bhave|'ve)\s+(?:(?:just|already|only|recently)\s+)?(?:had|got)\s+"
     r"(?:(?:the|his|her|their|its|my|your|our|a|an|some)\s+)?(?P<what>[^,;.!?]+?)\s*(?=[,;.!?]|$)",
     re.I,
 )
@@ -4418,7 +4420,7 @@ def _had_already38l(text: str, node: Node, lexicon: Lexicon) -> None:
     the tablets to Mr Lee (found by 12r): 'has had X' says X was had already, a remark, never a
     request to hand it over. A reading that hands over the thing so said (the words after 'had'
     are its name alone) is refused; 'once/after P has had X' orders steps and is left alone."""
-    if "had" not in text.lower():
+    if "had" not in text.lower() and "got" not in text.lower():
         return
     given = {t.obj for t in tasks(node) if t.kind == "deliver"}
     if not given:
