@@ -24,6 +24,19 @@ test_a_wait_for_the_placed_thing_is_refused = CASES.test(
     ("Put the cup on the shelf, Bob is waiting on it.", None, CELL),
     ("Put the cup on the shelf and Carol wants it.", None, CELL),
     ("Lemon on the worktop, chef's been asking for it.", None, KITCHEN),
+    # 'it' as a dummy subject in a later request is no handing of the placed thing (12c's fuzz)
+    (
+        "Lemon on the worktop, chef wants it for the fish. Also, give Marco the salt or the "
+        "knife, it's up to you which.",
+        None,
+        KITCHEN,
+    ),
+    (
+        "Put the cup on the shelf, Carol wants it. Also give Bob the apple or the chips, it's up "
+        "to you which.",
+        None,
+        CELL,
+    ),
     # a verb of handing said of it, or a want of another thing: read as before
     (
         "Put the cup on the shelf, then give it to Carol, she's waiting for it.",
@@ -98,6 +111,8 @@ test_what_someone_has_got_is_not_handed_over = CASES.test(
     # 'has got to have' asks; 'once … has got' orders: read as before
     ("Alice's got to have the apple", "apple>A", CELL),
     ("Once Alice has got the apple, give Bob the cup.", "apple>A ; cup>B", CELL),
+    # a name's 'got' assigns (session 27)
+    ("Marco's got the tongs, and what Lena wants is the salt shaker.", "tongs>A & salt>B", KITCHEN),
 )
 
 

@@ -4362,7 +4362,9 @@ _HANDOVER_SAID38L = re.compile(
 
 
 _SENTENCE39L = re.compile(r"(?<=[.!?;])\s+")
-_THEM39L = re.compile(r"\b(?:it|them)\b", re.I)
+# ('it' as a dummy subject, "it's up to you which", "it is your call", says no thing: session 40,
+# lead, 12c's fuzz)
+_THEM39L = re.compile(r"\b(?:it(?!'s|\u2019s|\s+is\b|\s+was\b)|them)\b", re.I)
 
 
 def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
@@ -4404,10 +4406,12 @@ def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
 
 
 # "he's just had his tablets", "Bob has already had the apple": what someone has had is done; and
-# what someone has got (session 40, lead: "give alice the cup, she's got the apple, and bob the
-# chips" had read the apple handed to her, 12s's report), 'got to' apart
+# what he / she / they have got (session 40, lead: "give alice the cup, she's got the apple, and bob
+# the chips" had read the apple handed to her, 12s's report), 'got to' apart; a name's 'got'
+# assigns ("Marco's got the tongs, and Lena the salt": session 27)
 _HAD_ALREADY38L = re.compile(
-    r"(?:'s|\bhas|\bhave|'ve)\s+(?:(?:just|already|only|recently)\s+)?(?:had|got)\s+"
+    r"(?:(?:'s|\bhas|\bhave|'ve)\s+(?:(?:just|already|only|recently)\s+)?had|"
+    r"\b(?:he|she|they)(?:'s|'ve|\s+has|\s+have)\s+(?:(?:just|already)\s+)?got)\s+"
     r"(?:(?:the|his|her|their|its|my|your|our|a|an|some)\s+)?(?P<what>[^,;.!?]+?)\s*(?=[,;.!?]|$)",
     re.I,
 )
