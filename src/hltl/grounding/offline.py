@@ -14,7 +14,7 @@ from hltl.grounding import _rewrites39, _rewrites40, _rewrites40r, _rewrites40s
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding._rewrites39r import whichever_again_says39r
-from hltl.grounding._rewrites39s import remark_said39s
+from hltl.grounding._rewrites39s import _shown39s, remark_said39s
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
@@ -4537,20 +4537,13 @@ def _after_that40l(text: str, node: Node, lexicon: Lexicon) -> None:
         return
     for m in _AFTER_THAT40L.finditer(text):
         named = _ids(m["what"], lexicon, "object")
-        moved = [t for t in tasks(node) if t.obj in named]
-        if len(named) != 1 or not moved or len(list(tasks(node))) < 2:
+        done = list(tasks(node))
+        moved = [t for t in done if t.obj in named]
+        if len(named) != 1 or not moved or len(done) < 2:
             continue
         t = moved[0]
-        rest = [u for u in tasks(node) if u.obj != t.obj]
-        step, others = (
-            f"{t.obj}>{t.target}" if t.kind == "deliver" else f"{t.obj}@{t.target}",
-            (
-                " & ".join(
-                    f"{u.obj}>{u.target}" if u.kind == "deliver" else f"{u.obj}@{u.target}"
-                    for u in rest
-                )
-            ),
-        )
+        step = _shown39s(t)
+        others = " & ".join(_shown39s(u) for u in done if u.obj != t.obj)
         raise GroundingError(
             f"{m.group(0)!r}: is the {t.obj} first ({step} ; {others}), after the rest "
             f"({others} ; {step}), or what was had already ({others})? say 'first', 'then', or "
@@ -4603,10 +4596,6 @@ _OR_SENTENCE40L = re.compile(
 )
 
 
-def _show40l(task: Task) -> str:
-    return f"{task.obj}>{task.target}" if task.kind == "deliver" else f"{task.obj}@{task.target}"
-
-
 def _or_sentence40l(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 40 (lead): "Give Bob the cup. Or the apple." read `cup>B & apple>B`: the 'or' of a
     sentence of its own was dropped and the thing added. After a full stop 'or the apple' offers a
@@ -4630,6 +4619,6 @@ def _or_sentence40l(text: str, node: Node, lexicon: Lexicon) -> None:
         return
     prev = before[-1]
     raise GroundingError(
-        f"{m['said']!r} after a full stop: a choice ({_show40l(prev)} | {_show40l(said)}) or the "
-        f"{said.obj} instead ({_show40l(said)})? say 'or' in the same sentence, or 'instead'"
+        f"{m['said']!r} after a full stop: a choice ({_shown39s(prev)} | {_shown39s(said)}) or the "
+        f"{said.obj} instead ({_shown39s(said)})? say 'or' in the same sentence, or 'instead'"
     )
