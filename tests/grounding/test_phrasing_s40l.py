@@ -24,6 +24,19 @@ test_a_wait_for_the_placed_thing_is_refused = CASES.test(
     ("Put the cup on the shelf, Bob is waiting on it.", None, CELL),
     ("Put the cup on the shelf and Carol wants it.", None, CELL),
     ("Lemon on the worktop, chef's been asking for it.", None, KITCHEN),
+    # 'it' as a dummy subject in a later request is no handing of the placed thing (12c's fuzz)
+    (
+        "Lemon on the worktop, chef wants it for the fish. Also, give Marco the salt or the "
+        "knife, it's up to you which.",
+        None,
+        KITCHEN,
+    ),
+    (
+        "Put the cup on the shelf, Carol wants it. Also give Bob the apple or the chips, it's up "
+        "to you which.",
+        None,
+        CELL,
+    ),
     # a verb of handing said of it, or a want of another thing: read as before
     (
         "Put the cup on the shelf, then give it to Carol, she's waiting for it.",
@@ -77,12 +90,39 @@ test_a_correction_after_a_question_and_a_remark_replaces = CASES.test(
 )
 
 
+test_or_opening_a_sentence_is_no_more_things = CASES.test(
+    # 'or <thing>' as a sentence of its own had been read as one more thing
+    ("Give Bob the cup. Or the apple.", None, CELL),
+    ("Put the cup on the shelf. Or the apple.", None, CELL),
+    ("Hand Kofi the torch. Or the drill.", None, WORKSHOP),
+    # 'or' in the same sentence is a choice; 'or the other way round' swaps: read as before
+    ("Give Bob the cup, or the apple.", "cup>B | apple>B", CELL),
+    (
+        "Give Alice the cup and Carol the apple. Or the other way round.",
+        "(cup>A & apple>C) | (apple>A & cup>C)",
+        CELL,
+    ),
+)
+
+
+test_what_someone_has_got_is_not_handed_over = CASES.test(
+    ("give alice the cup, she's got the apple, and bob the chips", None, CELL),
+    ("Give Kofi the torch, he's got the drill.", None, WORKSHOP),
+    # 'has got to have' asks; 'once … has got' orders: read as before
+    ("Alice's got to have the apple", "apple>A", CELL),
+    ("Once Alice has got the apple, give Bob the cup.", "apple>A ; cup>B", CELL),
+    # a name's 'got' assigns (session 27)
+    ("Marco's got the tongs, and what Lena wants is the salt shaker.", "tongs>A & salt>B", KITCHEN),
+)
+
+
 @pytest.mark.parametrize(
     ("text", "scene", "names"),
     [
         ("Put the cup on the shelf, Carol's waiting for it.", CELL, ("cup@shelf", "cup>C")),
         ("Bob wants the cup after that apple", CELL, ("apple>B ; cup>B", "cup>B ; apple>B")),
         ("Give Bob the chips. Alice's bus was late. The apple too.", CELL, ("apple>B", "apple>A")),
+        ("Give Bob the cup. Or the apple.", CELL, ("cup>B | apple>B", "(apple>B)")),
     ],
 )
 def test_the_refusals_name_the_readings(text: str, scene: Scene, names: tuple[str, ...]) -> None:

@@ -14,7 +14,7 @@ from hltl.grounding import _rewrites39, _rewrites40, _rewrites40r, _rewrites40s
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding._rewrites39r import whichever_again_says39r
-from hltl.grounding._rewrites39s import remark_said39s
+from hltl.grounding._rewrites39s import _shown39s, remark_said39s
 from hltl.grounding.base import Grounding, TokenUsage
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
@@ -134,6 +134,7 @@ def parse_instruction(
             _left_moved39l(text, node, lexicon)
             _after_that40l(text, node, lexicon)
             _too_after_remark40l(text, node, lexicon)
+            _or_sentence40l(text, node, lexicon)
             for check in _CHECKS40:
                 check(text, node, lexicon)
         return node
@@ -4361,7 +4362,9 @@ _HANDOVER_SAID38L = re.compile(
 
 
 _SENTENCE39L = re.compile(r"(?<=[.!?;])\s+")
-_THEM39L = re.compile(r"\b(?:it|them)\b", re.I)
+# ('it' as a dummy subject, "it's up to you which", "it is your call", says no thing: session 40,
+# lead, 12c's fuzz)
+_THEM39L = re.compile(r"\b(?:it(?!'s|\u2019s|\s+is\b|\s+was\b)|them)\b", re.I)
 
 
 def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
@@ -4402,9 +4405,13 @@ def _placed_wanted38l(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
-# "he's just had his tablets", "Bob has already had the apple": what someone has had is done
+# "he's just had his tablets", "Bob has already had the apple": what someone has had is done; and
+# what he / she / they have got (session 40, lead: "give alice the cup, she's got the apple, and bob
+# the chips" had read the apple handed to her, 12s's report), 'got to' apart; a name's 'got'
+# assigns ("Marco's got the tongs, and Lena the salt": session 27)
 _HAD_ALREADY38L = re.compile(
-    r"(?:'s|\bhas|\bhave|'ve)\s+(?:(?:just|already|only|recently)\s+)?had\s+"
+    r"(?:(?:'s|\bhas|\bhave|'ve)\s+(?:(?:just|already|only|recently)\s+)?had|"
+    r"\b(?:he|she|they)(?:'s|'ve|\s+has|\s+have)\s+(?:(?:just|already)\s+)?got)\s+"
     r"(?:(?:the|his|her|their|its|my|your|our|a|an|some)\s+)?(?P<what>[^,;.!?]+?)\s*(?=[,;.!?]|$)",
     re.I,
 )
@@ -4417,7 +4424,7 @@ def _had_already38l(text: str, node: Node, lexicon: Lexicon) -> None:
     the tablets to Mr Lee (found by 12r): 'has had X' says X was had already, a remark, never a
     request to hand it over. A reading that hands over the thing so said (the words after 'had'
     are its name alone) is refused; 'once/after P has had X' orders steps and is left alone."""
-    if "had" not in text.lower():
+    if "had" not in text.lower() and "got" not in text.lower():
         return
     given = {t.obj for t in tasks(node) if t.kind == "deliver"}
     if not given:
@@ -4530,20 +4537,13 @@ def _after_that40l(text: str, node: Node, lexicon: Lexicon) -> None:
         return
     for m in _AFTER_THAT40L.finditer(text):
         named = _ids(m["what"], lexicon, "object")
-        moved = [t for t in tasks(node) if t.obj in named]
-        if len(named) != 1 or not moved or len(list(tasks(node))) < 2:
+        done = list(tasks(node))
+        moved = [t for t in done if t.obj in named]
+        if len(named) != 1 or not moved or len(done) < 2:
             continue
         t = moved[0]
-        rest = [u for u in tasks(node) if u.obj != t.obj]
-        step, others = (
-            f"{t.obj}>{t.target}" if t.kind == "deliver" else f"{t.obj}@{t.target}",
-            (
-                " & ".join(
-                    f"{u.obj}>{u.target}" if u.kind == "deliver" else f"{u.obj}@{u.target}"
-                    for u in rest
-                )
-            ),
-        )
+        step = _shown39s(t)
+        others = " & ".join(_shown39s(u) for u in done if u.obj != t.obj)
         raise GroundingError(
             f"{m.group(0)!r}: is the {t.obj} first ({step} ; {others}), after the rest "
             f"({others} ; {step}), or what was had already ({others})? say 'first', 'then', or "
@@ -4587,3 +4587,38 @@ def _too_after_remark40l(text: str, node: Node, lexicon: Lexicon) -> None:
             f"{said[k]!r} after {before!r}: is the {obj} for {person_name(first, lexicon)} "
             f"({obj}>{first}) or {person_name(other, lexicon)} ({obj}>{other})? say who"
         )
+
+
+# a sentence of its own opening with 'or' and naming things only ("Give Bob the cup. Or the apple.")
+_OR_SENTENCE40L = re.compile(
+    r"(?:^|[.!?;]\s+)(?P<said>or\s+(?:else\s+|maybe\s+|perhaps\s+)?(?P<what>[^.!?;]+?))\s*[.!?]*\s*$",
+    re.I,
+)
+
+
+def _or_sentence40l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 40 (lead): "Give Bob the cup. Or the apple." read `cup>B & apple>B`: the 'or' of a
+    sentence of its own was dropped and the thing added. After a full stop 'or the apple' offers a
+    choice or takes the first thing back; a reading that keeps both things is refused naming
+    both readings ("Give Bob the cup, or the apple." reads the choice as before)."""
+    if "or" not in text.lower():
+        return
+    m = _OR_SENTENCE40L.search(text)
+    if m is None or _ids(m["what"], lexicon, "human") or _ids(m["what"], lexicon, "surface"):
+        return
+    named = _ids(m["what"], lexicon, "object")
+    if len(named) != 1:
+        return
+    done = list(tasks(node))
+    mine = [t for t in done if t.obj in named]
+    before = [t for t in done if t.obj not in named]
+    if len(mine) != 1 or not before:
+        return
+    (said,) = mine
+    if not isinstance(node, Group) or node.op == "or":
+        return
+    prev = before[-1]
+    raise GroundingError(
+        f"{m['said']!r} after a full stop: a choice ({_shown39s(prev)} | {_shown39s(said)}) or the "
+        f"{said.obj} instead ({_shown39s(said)})? say 'or' in the same sentence, or 'instead'"
+    )
