@@ -42,36 +42,6 @@ def posture_state40(text: str, lexicon: Lexicon) -> None:
         )
 
 
-# -- an afterthought 'Or the Y.' said as a sentence of its own after a request for X ("Give Person
-# B the bottle. Or the chips.", "Person B. The bottle. Or the chips."): the Y instead, or either
-# one, or both? (the grammar read both). Refused naming each object, unless 'instead', 'either',
-# 'whichever', 'too' … say which (then the sentence does not end at the objects)
-_OR_AFTER40 = re.compile(
-    r"or (?:maybe |perhaps |possibly )?(?P<y>(?:the|a|an|some) [a-z][a-z ]*?)\s*[.!?]*", _F
-)
-
-
-def or_after40(text: str, lexicon: Lexicon) -> None:
-    """Session 40: refuse the afterthought above when the sentence names objects only and the
-    text before it names an object."""
-    if " or " not in text.lower():
-        return
-    sentences = re.split(r"(?<=[.!?;])\s+", text.strip())
-    for k in range(1, len(sentences)):
-        m = _OR_AFTER40.fullmatch(sentences[k])
-        if m is None or not _objects_only(m["y"], lexicon):
-            continue
-        before = sorted(_ids(" ".join(sentences[:k]), lexicon, "object"))
-        after = sorted(_ids(m["y"], lexicon, "object"))
-        if not before:
-            continue
-        raise GroundingError(
-            f"'or {m['y']}' said after the request could mean {' or '.join(after)} instead of "
-            f"{' and '.join(before)}, either one, or both: say 'instead', 'either … or …' or "
-            "'too'"
-        )
-
-
 # -- 'X can be left on S' ("The red mug can be left on the counter", "the spanners should be left
 # in the locker"): the passive of 'leave X on S' (a placing verb; 'left' is no verb of the
 # lexicon, being also a side and what remains), asked with a modal or 'to be' at a sentence start
@@ -194,6 +164,6 @@ _STEPS40: tuple[Callable[[str, Lexicon], str], ...] = (
     _same40,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-39 ones)
-REFUSE40: tuple[Callable[[str, Lexicon], None], ...] = (posture_state40, or_after40)
+REFUSE40: tuple[Callable[[str, Lexicon], None], ...] = (posture_state40,)
 # checks of the whole instruction's reading (offline.parse_instruction, after remark_said39s)
 CHECK40: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
