@@ -289,7 +289,6 @@ KNOWN_MISSES = frozenset(
         "Person B's getting the bottle, oh scratch that, it's Person A, the papermaker, who "
         "gets it.",
         "Chips to Person A, oh wait, she wants the apple instead.",
-        "Stand the bottle on the, oh, no, just hand the thing to Person A.",
         "Bottle for Person A; sorry, I said that already, just the once.",
         "Person A gets chips, no, correction, she gets the bottle; the chips are Person B's.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
