@@ -131,7 +131,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # another engineer and committed alone, never opened by the engineers who change the grounder before
 # its one measurement at the end of session 39; tuned on in session 40), blind39 (written in session
 # 40 by another engineer and committed alone, never opened by the engineers who change the grounder
-# before its one measurement at the end of session 40; tests do not assert it).
+# before its one measurement at the end of session 40; tuned on in session 41).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

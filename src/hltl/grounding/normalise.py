@@ -531,6 +531,9 @@ from hltl.grounding._rewrites39s import _STEPS39S, _STEPS39S_FIRST
 from hltl.grounding._rewrites40 import _STEPS40
 from hltl.grounding._rewrites40r import _STEPS40R
 from hltl.grounding._rewrites40s import _STEPS40S, _STEPS40S_FIRST
+from hltl.grounding._rewrites41 import _STEPS41, _STEPS41_FIRST
+from hltl.grounding._rewrites41r import _STEPS41R, _STEPS41R_FIRST
+from hltl.grounding._rewrites41s import _STEPS41S, _STEPS41S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -853,6 +856,10 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S_FIRST,
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
+    # session 41 (12s, 12r, 12)
+    *_STEPS41S_FIRST,
+    *_STEPS41R_FIRST,
+    *_STEPS41_FIRST,
     # session 40 (12s)
     *_STEPS40S_FIRST,
     # session 39 (12s)
@@ -869,6 +876,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33T,
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
+    # session 41 (12r)
+    *_STEPS41R,
     # session 40 (12r)
     *_STEPS40R,
     # session 39 (12r)
@@ -899,6 +908,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S,
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
+    # session 41 (12s)
+    *_STEPS41S,
     # session 40 (12s)
     *_STEPS40S,
     # session 39 (12s)
@@ -976,6 +987,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _since28,
     # session 38 (12): blind36's kinds
     *_STEPS38,
+    # session 41 (12)
+    *_STEPS41,
     # session 40 (12)
     *_STEPS40,
     # session 39 (12)

@@ -10,7 +10,15 @@ from dataclasses import dataclass, field
 from typing import Literal, cast
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites39, _rewrites40, _rewrites40r, _rewrites40s
+from hltl.grounding import (
+    _rewrites39,
+    _rewrites40,
+    _rewrites40r,
+    _rewrites40s,
+    _rewrites41,
+    _rewrites41r,
+    _rewrites41s,
+)
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
 from hltl.grounding._rewrites39r import whichever_again_says39r
@@ -71,6 +79,8 @@ from hltl.world.scene import Scene
 # module, so each adds its rules there (run in _parse and parse_instruction)
 _REFUSALS40 = (*_rewrites40.REFUSE40, *_rewrites40r.REFUSE40R, *_rewrites40s.REFUSE40S)
 _CHECKS40 = (*_rewrites40.CHECK40, *_rewrites40r.CHECK40R, *_rewrites40s.CHECK40S)
+_REFUSALS41 = (*_rewrites41.REFUSE41, *_rewrites41r.REFUSE41R, *_rewrites41s.REFUSE41S)
+_CHECKS41 = (*_rewrites41.CHECK41, *_rewrites41r.CHECK41R, *_rewrites41s.CHECK41S)
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 _SUBORDINATORS = frozenset({"after", "once", "before"})
@@ -136,6 +146,8 @@ def parse_instruction(
             _too_after_remark40l(text, node, lexicon)
             _or_sentence40l(text, node, lexicon)
             for check in _CHECKS40:
+                check(text, node, lexicon)
+            for check in _CHECKS41:
                 check(text, node, lexicon)
         return node
     except GroundingError as refused:
@@ -622,6 +634,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _rewrites39.doubt_which39(text, lexicon)
         _rewrites39.usual39(text, lexicon)
         for refuse in _REFUSALS40:
+            refuse(text, lexicon)
+        for refuse in _REFUSALS41:
             refuse(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
