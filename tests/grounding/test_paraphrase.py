@@ -214,14 +214,10 @@ KNOWN_MISSES = frozenset(
         "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
         "Could you hang the tongs on the plate rack, Marco's done with them?",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
-        "Rakhmat, as my Bashkir gran would say, and would you set the red mug on the shelf, "
-        "please.",
         "Ta ever so, Person B's been on the sackbut all morning and could murder that bottle.",
-        "Beg pardon for the fuss, the tablets go to Mrs Khan, bless you.",
         "Kindly put the globe on the bookshelf for Mrs Ortiz, thank you ever so.",
         "Alice has her heart set on the crisps, and Bob's eyeing up the bottle after his yodel "
         "practice.",
-        "Person A's after something to drink out of, the cup will do her.",
         "What Person B really needs after the worm charming is that apple.",
         "Person A would be glad of the bottle, her spinet lesson ran long, and Person B could "
         "use the chips.",
@@ -229,23 +225,14 @@ KNOWN_MISSES = frozenset(
         "Person A needs the chips before her charades evening.",
         "The bottle's a must for Person B after bocce, and Person A's set on the chips.",
         "Priya's in want of the stapler and the notebook for her scrivener's guild minutes.",
-        "Chef's asked that the tongs and the knife both get left out on the counter for the "
-        "terrazzo crew's lunch.",
-        "The crisps? Those are Alice's. And Bob, he can have the bottle.",
         "The bottle, that's Person A's. The chips, Person B has those, he called them after "
         "the dulcimer.",
         "Person A's down for the chips. Person B? The bottle, he said, after the hornpipe.",
-        "Person B said he'd take the chips, so they're his.",
         "That bottle's hers, Person A's.",
-        "The chips are going Person A's way and the remaining thing ends up with Person B.",
         "Ruth put in for the thermometer during her indigo dyeing break; run it over to her.",
-        "Those work gloves, Mia wants them on the belt.",
         "Lena's got the plate rack sorted, so give her the lemon.",
-        "Ava's been eyeing the sippy cup since the treasure hunt; let her take it.",
         "Bottle for Person A, she's back from the scavenger hunt, and the chips for Person B.",
         "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
-        "First the small box onto the belt, next the medium box up on the pallet, and last of "
-        "all Tom gets the tape.",
         "Carol's a lorimer and not picky: a mug for her, red or blue, grab whichever is handy.",
         "Up on the shelf with the pair of them, the bottle and the crisps, the washboard "
         "band's using the table.",
@@ -298,13 +285,7 @@ KNOWN_MISSES = frozenset(
         "person b's asking for the bottle after his sackbut solo",
         "first the bottle for person b the madrigal singer and after that person a's chips",
         "the chips are person b's, he's a ditcher and starving",
-        "person a's got to have the bottle ahead of her boggle night",
-        "the waitress is after the knife plus the tongs, sort her out",
-        "Zoe's been asking for the scossors all lesson.",
-        "Would you mind ever so much getting Bob his crisps, he's the washboard player?",
-        "Can Person B take the apple and the chips off to the piquet table?",
         "Would you be able to leave the bowl out on the tray for the enamel kiln?",
-        "Is Zoe alright to have the globe?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -262,6 +262,8 @@ def _name_s39(text: str, lexicon: Lexicon) -> str:
         word = m[0]
         if word in VERBS or not _only_person(m["n"], lexicon):
             return word
+        if word in {a.lower() for h in lexicon.scene.humans for a in (h.name, *h.aliases)}:
+            return word  # session 41: a name in its own right ('waitress', not 'waitres' + s)
         if not _ids(word, lexicon) <= _ids(m["n"], lexicon, "human"):
             return word  # a name of its own ('chips'), or of someone else
         return f"{m['n']}'s"
