@@ -50,7 +50,7 @@ _WANT_IDIOM41 = re.compile(
     r"(?:set on|hungry for|thirsty for|starving for|famished for|parched for|ravenous for|"
     r"yearning for|aching for|hankering (?:for|after)|hungering for|thirsting for|angling for|"
     r"holding out for|entitled to|down for|(?:first |next )?in line for|first in the queue for|"
-    r"in the queue for|eyeing up|eyeing)"
+    r"in the queue for)"
     r"|(?: has|'s) set (?:his|her|their) (?:heart|sights) on"
     r"|(?: has|'s)(?: got)? (?:his|her|their) sights (?:set )?on"
     r"|(?: has|'s got|'s)(?: the)? (?:first call|first dibs|first claim|first pick|a claim) on"
