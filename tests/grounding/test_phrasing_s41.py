@@ -207,6 +207,7 @@ COURTESY = PhrasingCases()
 
 test_courtesy = COURTESY.test(
     ("Rakhmat, as my gran would say, give Bob the apple.", "apple>B", CELL),
+    ("Spasibo, as they say in Russian, hand Jess the drill.", "drill>B", WORKSHOP),
     (
         "Merci, as they say, and could you put the globe on the shelf?",
         "globe@shelf",
@@ -224,10 +225,15 @@ test_alright_to = COURTESY.test(
     ("Is Zoe alright to have the globe?", "globe>C", CLASSROOM),
     ("Is Zoe okay to take the glue stick?", "glue>C", CLASSROOM),
     ("Is Mr Lee allowed the magazine?", "magazine>B", WARD),
+    ("Zoe alright to have the globe?", "globe>C", CLASSROOM),
+    ("Would you mind if Zoe had the globe?", "globe>C", CLASSROOM),
+    ("Would you mind if Jess took the torch?", "torch>B", WORKSHOP),
     # no thing; a thing asked about; a surface
     ("Is Zoe alright?", None, CLASSROOM),
     ("Is the globe alright to have?", None, CLASSROOM),
     ("Is Zoe alright to have the shelf?", None, CLASSROOM),
+    ("Would you mind if Zoe had the shelf?", None, CLASSROOM),
+    ("Would you mind if I had the globe?", None, CLASSROOM),
 )
 
 test_lock_away = COURTESY.test(
@@ -263,6 +269,7 @@ def test_courtesy_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
         (
             _rewrites41._courtesy41,
             _rewrites41._alright_to41,
+            _rewrites41._mind_if_had41,
             _rewrites41._lock_away41,
             _rewrites41._sort_out41,
         ),

@@ -271,7 +271,7 @@ _COURTESY41: tuple[tuple[re.Pattern[str], str], ...] = (
         re.compile(
             r",\s*as (?:my|our|the|his|her|their|they|we|you|people|folk|one) (?P<w>[a-z' ]{0,40}?)"
             r"(?:would say|'d say|says|say|used to say|would put it|puts it|put it|likes to say)"
-            r"\s*,",
+            r"(?: in [a-z]+)?\s*,",
             _F,
         ),
         ",",
@@ -316,9 +316,9 @@ def _courtesy41(text: str, lexicon: Lexicon) -> str:
 # take the apple?", "Is Mr Lee allowed the magazine?"): a request, as 'Can Zoe have the globe?'
 # is read, when P is one person of the scene and the rest names objects of it only
 _ALRIGHT_TO41 = re.compile(
-    r"(?:^|(?<=[.;!?,])\s*)is (?P<p>[A-Za-z][\w]*(?: [A-Za-z][\w]*)?) (?:alright|all right|okay|ok|"
-    r"fine|ok'd|allowed|free|cleared|good) (?:to (?:have|take|get|borrow) )?(?P<x>(?:the|that|this|"
-    r"those|these|both|a|an|some) [^,;.!?]+?)(?P<end>\s*\?)",
+    r"(?:^|(?<=[.;!?,])\s*)(?:is )?(?P<p>[A-Za-z][\w]*(?: [A-Za-z][\w]*)?) (?:alright|all right|"
+    r"okay|ok|fine|ok'd|allowed|free|cleared|good) (?:to (?:have|take|get|borrow) )?"
+    r"(?P<x>(?:the|that|this|those|these|both|a|an|some) [^,;.!?]+?)(?P<end>\s*\?)",
     _F,
 )
 
@@ -331,6 +331,26 @@ def _alright_to41(text: str, lexicon: Lexicon) -> str:
         if not _only_person(m["p"], lexicon) or not _objects_only(m["x"], lexicon):
             continue
         text = f"{text[: m.start()]}Can {m['p']} have {m['x']}{m['end']}{text[m.end() :]}"
+    return text
+
+
+# -- 'would you mind if P had X?' (the past of the courtesy): 'do you mind if P has X?', which is
+# read as a request ('had' is otherwise what P had, refused as a condition)
+_MIND_IF_HAD41 = re.compile(
+    r"\b(?:would|do) you mind if (?P<p>[A-Za-z][\w]*(?: [A-Z][\w]*)?) (?:had|took|got) "
+    r"(?P<x>(?:the|that|this|those|these|both) [^,;.!?]+?)(?=\s*\?)",
+    _F,
+)
+
+
+def _mind_if_had41(text: str, lexicon: Lexicon) -> str:
+    """Session 41: the question above, P one person of the scene and X objects of it only."""
+    if "mind if" not in text.lower():
+        return text
+    for m in list(_MIND_IF_HAD41.finditer(text))[::-1]:
+        if not _only_person(m["p"], lexicon) or not _objects_only(m["x"], lexicon):
+            continue
+        text = f"{text[: m.start()]}do you mind if {m['p']} has {m['x']}{text[m.end() :]}"
     return text
 
 
@@ -508,6 +528,7 @@ _STEPS41_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _going_way41,
     _courtesy41,
     _alright_to41,
+    _mind_if_had41,
     _lock_away41,
     _sort_out41,
     _ahead_of41,
