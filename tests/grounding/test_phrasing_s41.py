@@ -189,6 +189,30 @@ test_going_way = PRONOUNS.test(
 )
 
 
+test_as_for = PRONOUNS.test(
+    (
+        "Person A wants the bottle. As for Person B, he can have the chips.",
+        "bottle>A & chips>B",
+        DUO,
+    ),
+    (
+        "Person A wants the bottle; as for Person B, she'll have the chips.",
+        "bottle>A & chips>B",
+        DUO,
+    ),
+    (
+        "Person A wants the bottle. And as for Person B, give him the chips.",
+        "bottle>A & chips>B",
+        DUO,
+    ),
+    ("As to Mrs Khan, she'll have the magazine.", "magazine>C", WARD),
+    # a pronoun the person cannot be; two people as the topic
+    ("As for Bob, she can have the apple.", None, CELL),
+    ("As to Mrs Khan, he'll have the magazine.", None, WARD),
+    ("As for Bob and Alice, they can have the apple.", None, CELL),
+)
+
+
 def test_pronouns_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     PRONOUNS.refused_without(
         (
@@ -196,6 +220,7 @@ def test_pronouns_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             _rewrites41._said_tag41,
             _rewrites41._said_want41,
             _rewrites41._going_way41,
+            _rewrites41._as_for41,
         ),
         monkeypatch,
     )

@@ -517,6 +517,41 @@ def _object_first41(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- a person set up as the topic, then taken up by a pronoun ("As for Person B, he can have the
+# chips", "and as for Bob, give him the apple", "As to Mrs Khan, she'll have the magazine"): the
+# pronoun is the topic (its one antecedent in its clause), so the person is said in its place; a
+# pronoun the person cannot be stays, as does a topic naming anything but one person
+_AS_FOR41 = re.compile(
+    r"(?:^|(?<=[.;!?])\s*|(?<=,)\s*)(?P<all>(?P<and>and )?as (?:for|to|regards) "
+    r"(?P<p>[A-Za-z][\w]*(?: [A-Z][\w]*)?),\s*(?:(?P<pron>he|she|they)(?P<be>'ll|'d|'s| can| "
+    r"could| will| would| should| gets| wants| needs| is)\b|(?P<v>give|hand|pass|bring|get|take) "
+    r"(?P<obj>him|her|them)\b))",
+    _F,
+)
+
+
+def _as_for41(text: str, lexicon: Lexicon) -> str:
+    """Session 41: the topic above said in the pronoun's place ('Person B can have the chips',
+    'give Bob the apple')."""
+    if "as " not in text.lower():
+        return text
+    for m in list(_AS_FOR41.finditer(text))[::-1]:
+        if not _only_person(m["p"], lexicon):
+            continue
+        (pid,) = _ids(m["p"], lexicon, "human")
+        pron = m["pron"] or m["obj"]
+        if not _fit36(pid, pron, lexicon):
+            continue
+        opening = m["and"] or ""
+        if m["pron"] is not None:
+            be = {"'ll": " will", "'d": " would", "'s": " is"}.get(m["be"], m["be"])
+            said = f"{opening}{m['p']}{be}"
+        else:
+            said = f"{opening}{m['v']} {m['p']}"
+        text = text[: m.start("all")] + said + text[m.end() :]
+    return text
+
+
 # the normaliser's rewrites run before the session-40 ones (wired into normalise._STEPS19)
 _STEPS41_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _want_idiom41,
@@ -536,6 +571,7 @@ _STEPS41_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _take_off41,
     _last_of_all41,
     _object_first41,
+    _as_for41,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-40 ones)
 _STEPS41: tuple[Callable[[str, Lexicon], str], ...] = ()
