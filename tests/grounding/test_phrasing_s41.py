@@ -213,6 +213,18 @@ test_as_for = PRONOUNS.test(
 )
 
 
+# 'he's' after the topic may be 'he has' (blind37's "… As for Mr Novak, he's had his eye on the
+# lemon …" read before the rule and still reads)
+test_as_for_has = PhrasingCases().test(
+    ("As for Mr Novak, he's had his eye on the lemon.", "lemon>C", KITCHEN),
+    (
+        "Person A wants the bottle. As for Person B, he's got to have the chips.",
+        "bottle>A & chips>B",
+        DUO,
+    ),
+)
+
+
 def test_pronouns_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     PRONOUNS.refused_without(
         (

@@ -544,7 +544,7 @@ def _as_for41(text: str, lexicon: Lexicon) -> str:
             continue
         opening = m["and"] or ""
         if m["pron"] is not None:
-            be = {"'ll": " will", "'d": " would", "'s": " is"}.get(m["be"], m["be"])
+            be = " will" if m["be"] == "'ll" else m["be"]  # 's and 'd kept: is or has, had or would
             said = f"{opening}{m['p']}{be}"
         else:
             said = f"{opening}{m['v']} {m['p']}"
