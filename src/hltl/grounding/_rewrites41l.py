@@ -1,0 +1,64 @@
+"""The grounder's rules of session 41, the lead (docs/grounding.md)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids
+from hltl.grounding.lexicon import Lexicon
+
+# -- session 41 (lead): a handing or placing told as done ----------------------------------------
+#
+# "The chips were handed to Bob, so give Alice the cup." read `chips>B & cup>A`, "The cup has been
+# given to Alice." `cup>A` and "The cup's been put on the shelf." `cup@shelf`: the grammar's
+# passive ("the cup is handed to Bob", "… should be given to …") took any auxiliary, the past
+# ones too. A past or perfect passive of a verb of handing or placing, said of a scene object
+# with a person or a surface after it, tells what has been done, not what to do: refused. Kept:
+# the present and the modal passives (a goal said as a state: "the cup is put on the shelf", "the
+# cup will be given to Alice"), a subordinate clause ("after Bob has been given the chips", "if
+# the apple were placed on the counter", "the cup that was given to Alice"), a person as the
+# subject ("she's been stuck on the phones", "Bob's been stood there for ages").
+_HANDLED41L = (
+    r"given|handed|passed|brought|taken|delivered|put|placed|moved|sent|set|left|dropped|stood|"
+    r"hung|popped|stuck|carried|fetched|returned|laid|stacked|stored|shifted|lent|loaned"
+)
+_DONE41L = re.compiled(
+    r"(?P<subject>[^,.;:!?]*?)\s*(?P<said>\b(?:was|were)|(?:\b(?:has|have|had)|(?<=\w)['’]s)\s+"
+    r"(?:already\s+|just\s+)?been)\s+(?:already\s+|just\s+)?(?:" + _HANDLED41L + r")\b"
+    r"(?P<rest>\s+(?:(?:over|across|back|up|down|out|away)\s+)?(?:to|on|onto|in|into)\b"
+    r"[^,.;:!?]*)",
+    _F,
+)
+_SUBORDINATE41L = re.compiled(
+    r"\b(?:if|after|once|when|whenever|until|till|before|unless|soon as|so that|that|which|who|"
+    r"whether|where|since|because)\b",
+    _F,
+)
+
+
+def _done41l(text: str, lexicon: Lexicon) -> None:
+    """Session 41 (lead): 'the chips were handed to Bob', 'the cup has been given to Alice', 'the
+    cup's been put on the shelf' — a handing or placing told as done — refused, not read as a
+    request."""
+    if "been" not in text.lower() and "was" not in text.lower() and "were" not in text.lower():
+        return
+    for m in _DONE41L.finditer(text):
+        subject = m.group("subject")
+        if _SUBORDINATE41L.search(subject):
+            continue
+        if not _ids(subject, lexicon, "object") or _ids(subject, lexicon, "human"):
+            continue
+        rest = m.group("rest")
+        if not (_ids(rest, lexicon, "human") or _ids(rest, lexicon, "surface")):
+            continue
+        said = m.group(0).strip()
+        raise GroundingError(
+            f"{said!r} is said as done ({m.group('said').strip()!r}), not as something to do: "
+            "say the request without it, e.g. 'give Bob the chips' or 'put the cup on the shelf'"
+        )
+
+
+# refusals asked of the text before it is read (offline._parse, after the engineers' ones)
+REFUSE41L: tuple[Callable[[str, Lexicon], None], ...] = (_done41l,)

@@ -1,0 +1,78 @@
+"""Session-41 phrasing of issue 12 (lead): a handing or placing told as done is refused
+(docs/grounding.md, "Session 41 (lead)").
+
+"The chips were handed to Bob, so give Alice the cup." read `chips>B & cup>A` and "The cup's been
+put on the shelf." `cup@shelf`: the grammar's passive took the past and perfect auxiliaries as it
+takes the present and modal ones, so a report of what was done became a request."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.errors import GroundingError
+from hltl.grounding import _rewrites41l, offline
+from tests.grounding.helpers import CELL, KITCHEN, WARD, WORKSHOP, PhrasingCases
+
+CASES = PhrasingCases()
+
+test_a_handing_told_as_done_is_refused = CASES.test(
+    ("The chips were handed to Bob, so give Alice the cup.", None, CELL),
+    ("The cup has been given to Alice.", None, CELL),
+    ("The cup's been put on the shelf.", None, CELL),
+    ("The cup was passed to Bob.", None, CELL),
+    ("The cup has been handed to Alice, and the bottle to Bob.", None, CELL),
+    ("The red mug was set on the table.", None, CELL),
+    ("The cup was placed on the shelf, now give Bob the chips.", None, CELL),
+    ("The cup should have been given to Alice.", None, CELL),
+    ("the cup has already been brought over to carol", None, CELL),
+    ("The lemon was left on the worktop, so hand Marco the knife.", None, KITCHEN),
+    ("The jug had been taken to Mr Lee.", None, WARD),
+    ("The torch was just lent to Kofi; pass him the drill.", None, WORKSHOP),
+)
+
+test_present_modal_and_subordinate_passives_read_as_before = CASES.test(
+    # a goal said as a state or with a modal, as before
+    ("The cup is given to Alice.", "cup>A", CELL),
+    ("The cup will be given to Alice.", "cup>A", CELL),
+    ("The apple should be delivered to Bob.", "apple>B", CELL),
+    ("The cup is being given to Alice.", "cup>A", CELL),
+    # a subordinate clause: a condition or a time, not a report
+    ("It would be appreciated if the apple were placed on the table.", "apple@table", CELL),
+    (
+        "The cup should be handed to Carol after Bob has been given the chips",
+        "chips>B ; cup>C",
+        CELL,
+    ),
+    # a person as the subject: a state of the person, not a handing
+    (
+        "Alice could do with the crisps, she's been stuck on the phones all morning.",
+        "chips>A",
+        CELL,
+    ),
+)
+
+
+def test_the_refusal_names_what_was_said_as_done() -> None:
+    with pytest.raises(GroundingError, match=r"'The chips were handed to Bob' is said as done"):
+        offline.parse_instruction("The chips were handed to Bob, so give Alice the cup.", CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "was"),
+    [
+        ("The chips were handed to Bob, so give Alice the cup.", "chips>B & cup>A"),
+        ("The cup has been given to Alice.", "cup>A"),
+        ("The cup's been put on the shelf.", "cup@shelf"),
+        ("The cup was placed on the shelf, now give Bob the chips.", "cup@shelf & chips>B"),
+    ],
+)
+def test_each_read_without_the_rule(text: str, was: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    # the rule is what refuses them: without it each reads as it did on main 6b135df
+    from hltl.bench.grounding import show_tree
+
+    monkeypatch.setattr(
+        offline,
+        "_REFUSALS41",
+        tuple(r for r in offline._REFUSALS41 if r is not _rewrites41l._done41l),
+    )
+    assert show_tree(offline.parse_instruction(text, CELL)) == was
