@@ -1,9 +1,12 @@
-"""Session-41 phrasing of issue 12 (lead): a handing or placing told as done is refused
-(docs/grounding.md, "Session 41 (lead)").
+"""Session-41 phrasing of issue 12 (lead): a handing or placing told as done, a want taken back by
+an idiom, and a want idiom with 'after' are refused (docs/grounding.md, "Session 41 (lead)").
 
 "The chips were handed to Bob, so give Alice the cup." read `chips>B & cup>A` and "The cup's been
 put on the shelf." `cup@shelf`: the grammar's passive took the past and perfect auxiliaries as it
-takes the present and modal ones, so a report of what was done became a request."""
+takes the present and modal ones, so a report of what was done became a request. 12c's `idioms`
+fuzz: "Give Bob the cup. Bob has gone off the cup." read `cup>B` (the sentence dropped as a remark)
+and "Give Bob the cup. Carol is hankering after the apple." `cup>B` ('after the apple' taken for a
+time gone by)."""
 
 from __future__ import annotations
 
@@ -74,5 +77,52 @@ def test_each_read_without_the_rule(text: str, was: str, monkeypatch: pytest.Mon
         offline,
         "_REFUSALS41",
         tuple(r for r in offline._REFUSALS41 if r is not _rewrites41l._done41l),
+    )
+    assert show_tree(offline.parse_instruction(text, CELL)) == was
+
+
+test_a_want_taken_back_is_refused = CASES.test(
+    ("Give Bob the cup. Bob has gone off the cup.", None, CELL),
+    ("Give Bob the cup, Bob has gone off it.", None, CELL),
+    ("Give Bob the cup. He's so over it.", None, CELL),
+    ("Bob is so over the cup.", None, CELL),
+    ("Give Bob the cup. Carol is so over the apple.", None, CELL),
+    ("Give Bob the cup. Bob is through with the cup.", None, CELL),
+    ("Pass Kofi the torch, he's totally fed up with it.", None, WORKSHOP),
+    ("Mr Lee gets the jug. He's had enough of the jug.", None, WARD),
+    # a thing the person does not get, a placement, another person, 'over there': as before
+    ("Give Bob the cup, he's sick of the apple.", "cup>B", CELL),
+    ("Put the cup on the shelf, Bob's done with it.", "cup@shelf", CELL),
+    ("Give Bob the cup, Alice is done with it.", "cup>B", CELL),
+    ("Give Bob the cup, he's over there.", "cup>B", CELL),
+)
+
+test_a_want_idiom_with_after_is_no_time_gone_by = CASES.test(
+    ("Give Bob the cup. Carol is hankering after the apple.", None, CELL),
+    ("Give Bob the cup, he's been hankering after the chips.", None, CELL),
+    ("Hand Marco the knife, Lena is pining after the tongs.", None, KITCHEN),
+    # a time gone by after a remark: dropped as before
+    ("Give Bob the cup, he's tired after his shift.", "cup>B", CELL),
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "was"),
+    [
+        ("Give Bob the cup. Bob has gone off the cup.", "cup>B"),
+        ("Give Bob the cup. He's so over it.", "cup>B"),
+        ("Bob is so over the cup.", "cup>B"),
+        ("Give Bob the cup. Carol is so over the apple.", "cup>B & apple>C"),
+    ],
+)
+def test_each_taken_back_reads_without_the_check(
+    text: str, was: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from hltl.bench.grounding import show_tree
+
+    monkeypatch.setattr(
+        offline,
+        "_CHECKS41",
+        tuple(c for c in offline._CHECKS41 if c is not _rewrites41l._taken_back41l),
     )
     assert show_tree(offline.parse_instruction(text, CELL)) == was

@@ -7,7 +7,9 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids
+from hltl.grounding._normalise4 import _fit36
 from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.tree import Node, tasks
 
 # -- session 41 (lead): a handing or placing told as done ----------------------------------------
 #
@@ -60,5 +62,52 @@ def _done41l(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# -- session 41 (lead): a want taken back by an idiom, of what the reading hands that person --
+#
+# 12c's `idioms` fuzz: "Give Bob the cup. Bob has gone off the cup." read `cup>B` (the sentence
+# was dropped as a remark about the request's person and thing), as did "…, Bob is through with
+# the cup", "…. He's so over it.", "… has lost interest in the bottle", and "Bob is so over the
+# cup." read `cup>B` (as 'is after'). A person said to have gone off, be over, be sick / tired /
+# fed up / bored of, be through / finished / done with, have had enough of, have lost interest in
+# or have gone cold on a thing (or 'it', 'them') no longer wants it: a reading that hands them that
+# thing is refused (a negation word was refused already). A placement beside it ("hang the tongs
+# on the rack, Marco's done with them") and a thing the person does not get read as before.
+_TAKEN_BACK41L = re.compiled(
+    r"\b(?P<who>he|she|they|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?:['’]s|\s+(?:is|was|has|had|have|are|"
+    r"were))?\s+(?:(?:so|totally|completely|well|really|just|now|already|all|rather)\s+)*"
+    r"(?P<idiom>gone (?:right |completely )?off|gone (?:cold|sour) on|over(?! the moon\b)|"
+    r"(?:sick|tired|bored) (?:of|with)|fed up (?:of|with)|through with|finished with|done with|"
+    r"had (?:quite )?enough of|had it up to here with|lost (?:interest|his appetite|her "
+    r"appetite) (?:in|for)|cooled (?:on|off on)|off the idea of)\s+(?P<x>(?:the |that |those |"
+    r"his |her |their )?[a-z]+(?: [a-z]+)?|it|them|that|those)",
+    _F,
+)
+
+
+def _taken_back41l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 41 (lead): a person said to no longer want a thing the reading hands them
+    (above): refused."""
+    for m in _TAKEN_BACK41L.finditer(text):
+        who, x = m.group("who"), m.group("x")
+        people = _ids(who, lexicon, "human")
+        if not people and who.lower() in ("he", "she", "they"):
+            people = {
+                t.target
+                for t in tasks(node)
+                if who.lower() == "they" or _fit36(t.target, who, lexicon)
+            }
+        things = _ids(x, lexicon, "object")
+        pointed = x.lower() in ("it", "them", "that", "those")
+        for t in tasks(node):
+            if t.target in people and (t.obj in things or (pointed and not things)):
+                said = m.group(0).strip()
+                raise GroundingError(
+                    f"{said!r} says the person no longer wants it, yet the reading has "
+                    f"{t.obj}>{t.target}: say what to do; to drop a task, say 'cancel …'"
+                )
+
+
 # refusals asked of the text before it is read (offline._parse, after the engineers' ones)
 REFUSE41L: tuple[Callable[[str, Lexicon], None], ...] = (_done41l,)
+# checks of the whole instruction's reading (offline.parse_instruction, after the engineers' ones)
+CHECK41L: tuple[Callable[[str, Node, Lexicon], None], ...] = (_taken_back41l,)

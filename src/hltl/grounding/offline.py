@@ -86,7 +86,12 @@ _REFUSALS41 = (
     *_rewrites41s.REFUSE41S,
     *_rewrites41l.REFUSE41L,
 )
-_CHECKS41 = (*_rewrites41.CHECK41, *_rewrites41r.CHECK41R, *_rewrites41s.CHECK41S)
+_CHECKS41 = (
+    *_rewrites41.CHECK41,
+    *_rewrites41r.CHECK41R,
+    *_rewrites41s.CHECK41S,
+    *_rewrites41l.CHECK41L,
+)
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 _SUBORDINATORS = frozenset({"after", "once", "before"})
