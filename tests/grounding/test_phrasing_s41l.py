@@ -95,6 +95,8 @@ test_a_want_taken_back_is_refused = CASES.test(
     ("Put the cup on the shelf, Bob's done with it.", "cup@shelf", CELL),
     ("Give Bob the cup, Alice is done with it.", "cup>B", CELL),
     ("Give Bob the cup, he's over there.", "cup>B", CELL),
+    # 'she's done with it' beside a placement (session 35): as before
+    ("The magazine can go back on the trolley, she's done with it.", "magazine@trolley", WARD),
 )
 
 test_a_want_idiom_with_after_is_no_time_gone_by = CASES.test(

@@ -69,9 +69,11 @@ def _done41l(text: str, lexicon: Lexicon) -> None:
 # the cup", "…. He's so over it.", "… has lost interest in the bottle", and "Bob is so over the
 # cup." read `cup>B` (as 'is after'). A person said to have gone off, be over, be sick / tired /
 # fed up / bored of, be through / finished / done with, have had enough of, have lost interest in
-# or have gone cold on a thing (or 'it', 'them') no longer wants it: a reading that hands them that
-# thing is refused (a negation word was refused already). A placement beside it ("hang the tongs
-# on the rack, Marco's done with them") and a thing the person does not get read as before.
+# or have gone cold on a thing (or 'it', 'them') no longer wants it: a reading that hands them
+# that thing is refused (a negation word was refused already). A placement beside it ("hang the
+# tongs on the rack, Marco's done with them") and a thing the person does not get read as before;
+# 'he / she is done / finished with it' is left to session 36's `offline._use_said36s`, which
+# weighs it against the reading (and its tests take that rule out).
 _TAKEN_BACK41L = re.compiled(
     r"\b(?P<who>he|she|they|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?:['’]s|\s+(?:is|was|has|had|have|are|"
     r"were))?\s+(?:(?:so|totally|completely|well|really|just|now|already|all|rather)\s+)*"
@@ -91,10 +93,13 @@ def _taken_back41l(text: str, node: Node, lexicon: Lexicon) -> None:
         who, x = m.group("who"), m.group("x")
         people = _ids(who, lexicon, "human")
         if not people and who.lower() in ("he", "she", "they"):
+            if m.group("idiom").lower().startswith(("done", "finished")):
+                continue  # session 36's offline._use_said36s weighs these against the reading
+            humans = {h.id for h in lexicon.scene.humans}
             people = {
                 t.target
                 for t in tasks(node)
-                if who.lower() == "they" or _fit36(t.target, who, lexicon)
+                if t.target in humans and (who.lower() == "they" or _fit36(t.target, who, lexicon))
             }
         things = _ids(x, lexicon, "object")
         pointed = x.lower() in ("it", "them", "that", "those")
