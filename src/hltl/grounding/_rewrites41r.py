@@ -314,7 +314,8 @@ _A_KIND_SAID41R = (
 def _a_kind_said41r(text: str, lexicon: Lexicon) -> str:
     """Session 41 (12r): "a box …, the small or the medium (one)" says which boxes the choice
     is between: "the small box or the medium box …" (each an object of the scene named whole,
-    of the kind said, two apart); 'one' of another kind, or a word naming none, is left."""
+    of the kind said, two apart), when that reads; 'one' of another kind, a word naming none, or
+    a rewrite that does not read ("The belt needs one box on it, …": the older rules') is left."""
     if " or the " not in text:
         return text
     m = re.search(_A_KIND_SAID41R, text, _F)
@@ -327,7 +328,8 @@ def _a_kind_said41r(text: str, lexicon: Lexicon) -> str:
     ids = _ids(a, lexicon, "object") | _ids(b, lexicon, "object")
     if not ids <= _ids(f"the {kind}", lexicon, "object") | _ids(f"the {kind}s", lexicon, "object"):
         return text
-    return f"{text[: m.start()]}{a} or {b}{m['mid']}{text[m.end() :]}"
+    out = f"{text[: m.start()]}{a} or {b}{m['mid']}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
 
 
 # "Person B isn't fussy between the chips and the bottle, bring whichever's closest."
@@ -380,7 +382,8 @@ def _so_long_as41r(text: str, lexicon: Lexicon) -> str:
 _ONE_OF_THEM_GETS41R = (
     r"^(?P<v>give|hand|pass|bring|take) one of (?:them|the two|the two of them|you two) "
     rf"(?P<x>{_THING41R})\s*,\s*(?:either )?(?P<p>{_NAME41R}) or (?P<q>{_NAME41R})"
-    r"(?=\s*(?:[,;.!]|$))"
+    r"(?=\s*(?:[.!]|$|,\s*(?:your call|your choice|up to you|whichever|i'll let you pick|you pick|"
+    r"take your pick)\b))"
 )
 
 
@@ -456,20 +459,19 @@ _COUNT41R = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 
 # "The pair of them to Person B, …", "The both of the plates …", "The trio of pens …"
 _PAIR_OF41R = (
-    r"\bthe (?:(?P<two>pair|both|couple|two)|(?P<three>trio|three)) of (?P<what>them|the (?P<ks>"
-    r"[a-z]+s)|(?P<ks2>[a-z]+s))\b"
+    r"\bthe (?:(?P<two>pair|couple) of them|(?P<both>both) of (?:them|the (?P<ks>[a-z]+s))|"
+    r"(?P<three>trio) of (?:them|(?:the )?(?P<ks3>[a-z]+s)))\b"
 )
 
 
 def _pair_of41r(text: str, lexicon: Lexicon) -> str:
-    """Session 41 (12r): a count said as a collective noun, "the pair of them", "the both of
-    them / of the plates", "the trio of pens", "the three of them", is "both of them", "both
-    of the plates", "the three pens" (the count then checked against the scene by the grammar:
-    'both' two, 'the three pens' three pens)."""
+    """Session 41 (12r): a count said as a collective noun, "the pair (couple) of them", "the
+    both of them / of the plates", "the trio of them / of pens", is "both of them", "both of the
+    plates", "all three of them", "the three pens" (the count then checked against the scene by
+    the grammar: 'both' two, 'the three pens' three pens; "the pair of cups, the green and the
+    white" is session 37's, "the two of them" the grammar's)."""
     low = text.lower()
-    if " of " not in low or not any(
-        w in low for w in ("pair", "both", "couple", "two", "trio", "three")
-    ):
+    if " of " not in low or not any(w in low for w in ("pair", "both", "couple", "trio")):
         return text
 
     def said(m: re.Match[str]) -> str:
@@ -477,14 +479,11 @@ def _pair_of41r(text: str, lexicon: Lexicon) -> str:
         return _capital41r(out) if m[0][:1].isupper() else out
 
     def count(m: re.Match[str]) -> str:
-        ks = m["ks"] or m["ks2"]
         if m["two"] is not None:
-            if ks is None:
-                return "both of them"
-            return f"both of the {ks}" if m["ks"] else f"both {ks}"
-        if ks is None:
-            return "all three of them"
-        return f"the three {ks}"
+            return "both of them"
+        if m["both"] is not None:
+            return f"both of the {m['ks']}" if m["ks"] else "both of them"
+        return f"the three {m['ks3']}" if m["ks3"] else "all three of them"
 
     return re.sub(_PAIR_OF41R, said, text, flags=_F)
 
@@ -634,7 +633,8 @@ def _cue_run41r(text: str, lexicon: Lexicon) -> str:
     "oh scratch that", "no, correction", "oh, silly me", "oh wait") is ", no, " (the cue the
     grammar's corrections read): 'oh' and 'sorry' alone are no correction, so the run must
     hold one of 'no', 'wait', 'hang on / about', 'scratch that', 'silly me', 'my mistake'…;
-    a single cue the earlier rules read is left as it is."""
+    a single cue the earlier rules read is left as it is, and so is a run whose rewrite does not
+    read (the older rules' cues: "…, no, hang on, swap the order round")."""
     m = re.search(_CUE_RUN41R, text, _F)
     if m is None or m.start() == 0:
         return text
@@ -643,7 +643,8 @@ def _cue_run41r(text: str, lexicon: Lexicon) -> str:
         return text
     if re.fullmatch(_ONE_CUE41R, run.strip(" ,"), _F):
         return text
-    return f"{text[: m.start()]}, no, {text[m.end() :]}"
+    out = f"{text[: m.start()]}, no, {text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
 
 
 # "…, no, straight to Alice."
@@ -694,8 +695,8 @@ def _the_one_for41r(text: str, lexicon: Lexicon) -> str:
 
 # "Person A gets chips, no, she gets the bottle."
 _PRONOUN_AGAIN41R = (
-    r"(?P<cue>,\s*no,\s*)(?P<pro>she|he|they) (?:gets|wants|needs|takes|'s getting|is getting|"
-    r"'ll have|should get|'s having|is having|'s after|is after|can have|'s to have|is to have) "
+    r"(?P<cue>,\s*no,\s*)(?P<pro>she|he|they)(?: (?:gets|wants|needs|takes|should get|can have)|"
+    r"(?:'s| is) (?:getting|having|after|to have)|'ll have|'d like) "
     rf"(?P<x>{_THING41R})(?: instead)?(?P<end>\s*(?:[,;.!]|$))"
 )
 
@@ -743,6 +744,136 @@ def _said_already41r(text: str, _lexicon: Lexicon) -> str:
     if m is None or not text[: m.start()].strip():
         return text
     return f"{text[: m.start()]}{m['end'] or '.'}"
+
+
+# -- closers, durations, words of place and count --------------------------------------------------
+
+# "…, just those, nothing more for him."
+_JUST_THOSE41R = (
+    r"\s*,\s*(?:(?:just|only) (?:those|that|them|these|this|the one|it)(?:\s*,\s*|\s+and\s+)?)?"
+    r"(?:nothing (?:more|else)(?: for (?:him|her|them))?|no more|that's (?:it|all))?"
+    r"(?P<end>\s*[.!]?)$"
+)
+
+
+def _just_those41r(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12r): a request then "just those (that, the one)", "nothing more (else) for
+    him", "that's all" says the request is all there is: dropped when the request before it
+    reads alone and gives its objects to one person ("him" / "her" then that person by the
+    grammar's reading of the request, which the closer only repeats)."""
+    low = text.lower()
+    if "just" not in low and "only" not in low and "nothing" not in low and "that's" not in low:
+        return text
+    m = re.search(_JUST_THOSE41R, text, _F)
+    if m is None or m.start() == m.end() - len(m["end"] or ""):
+        return text
+    head = text[: m.start()]
+    node = _reading(head, lexicon)
+    if node is None or _has_or41r(node):
+        return text
+    if len({t.target for t in tasks(node)}) != 1:
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# "…, and last of all Tom gets the tape."; "Zoe's been asking for the scissors all lesson."
+_OF_ALL41R = r"\b(?P<w>first|last|next) of all\b"
+_ALL_TIME41R = (
+    r"\s+all (?:lesson|morning|day|afternoon|evening|night|week|session|shift|class|term|"
+    r"break|lunch|lunchtime|match|game|meeting)(?: long)?(?=\s*(?:[,;.!]|$))"
+)
+
+
+def _of_all41r(text: str, _lexicon: Lexicon) -> str:
+    """Session 41 (12r): 'all' that counts nothing: "last (first, next) of all" is "last", and
+    "all lesson (morning, day …)" closing a clause says how long someone has been asking, not
+    which objects: dropped."""
+    if "all" not in text.lower():
+        return text
+    out = re.sub(_OF_ALL41R, lambda m: m["w"], text, flags=_F)
+    return re.sub(_ALL_TIME41R, "", out, flags=_F)
+
+
+# "The both of the plates out on the counter"
+_OUT_ON41R = (
+    r"\b(?:out|set out|laid out) (?P<prep>on|onto|on to) (?P<s>the [a-z]+)(?P<s2> [a-z]+)?\b"
+)
+
+
+def _out_on41r(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12r): "X out on the counter" (set out, laid out onto S) is "X on the counter":
+    'out' says the thing is set out, the surface where (S a surface named whole)."""
+    if " out " not in text:
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        if m["s2"] and _whole_name(m["s"] + m["s2"], lexicon, "surface"):
+            return f"on {m['s']}{m['s2']}"
+        if _whole_name(m["s"], lexicon, "surface"):
+            return f"on {m['s']}{m['s2'] or ''}"
+        return m[0]
+
+    return re.sub(_OUT_ON41R, said, text, flags=_F)
+
+
+# "There's only the one bottle going"
+_ONE_GOING41R = (
+    r"\b(?P<h>(?:only|just) (?:the )?one [a-z]+) (?:going spare|going|spare|about|around|"
+    r"available|to go round|to go around|on offer)\b"
+)
+
+
+def _one_going41r(text: str, _lexicon: Lexicon) -> str:
+    """Session 41 (12r): "only the one X going (spare, about, to go round)" is "only the one X"
+    (the count then checked against the scene by the grammar)."""
+    if "one" not in text.lower():
+        return text
+    return re.sub(_ONE_GOING41R, lambda m: m["h"], text, flags=_F)
+
+
+# "… and let her cuddle the teddy"
+_LET_USE41R = (
+    r"\blet (?P<p>her|him|them|[A-Z][\w]*(?: [A-Z][\w]*)?) (?:cuddle|hug|hold|play with|have a go "
+    r"(?:with|on)|borrow|use|keep) (?=the )"
+)
+
+
+def _let_use41r(text: str, _lexicon: Lexicon) -> str:
+    """Session 41 (12r): "let P cuddle (hug, hold, play with, borrow, use, keep) X" is "let P have
+    X": letting someone hold or use a thing is handing it to them (the grammar reads "let P have
+    X")."""
+    if "let " not in text.lower():
+        return text
+    return re.sub(_LET_USE41R, lambda m: f"let {m['p']} have ", text, flags=_F)
+
+
+# "Carol's not picky: a mug for her, …"
+_NOT_PICKY41R = (
+    rf"^(?P<p>{_NAME41R})(?:'s| is)(?: not|n't) (?:picky|fussy|choosy|bothered|particular)"
+    r"\s*[:;,]\s*(?=\S)"
+)
+
+
+def _not_picky41r(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12r): "P's not picky (fussy, bothered):" opening a request that offers P a
+    choice is that request (the choice says as much), its first 'her' / 'him' P (when P may be
+    so called): P one person, the request read with a choice."""
+    if "not" not in text.lower() and "n't" not in text:
+        return text
+    m = re.match(_NOT_PICKY41R, text, _F)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    rest = text[m.end() :]
+    (pid,) = _ids(m["p"], lexicon, "human")
+    pro = re.search(r"\b(?:her|him)\b", rest, _F)
+    if pro is not None:
+        sex = said_sex35s(pid, lexicon) or first_name_sex36s(pid, lexicon)
+        if sex is not None and sex != PRONOUN_SEX[pro[0].lower()]:
+            return text
+        rest = f"{rest[: pro.start()]}{m['p']}{rest[pro.end() :]}"
+    rest = _capital41r(rest)
+    node = _reading(rest, lexicon)
+    return rest if node is not None and _has_or41r(node) else text
 
 
 # -- refusals that name the readings -------------------------------------------------------------
@@ -818,10 +949,12 @@ def which_forgotten41r(text: str, lexicon: Lexicon) -> None:
 # -- checks of the whole reading -------------------------------------------------------------------
 
 
-def _choice_twice41r(_text: str, node: Node, lexicon: Lexicon) -> None:
-    """Session 41 (12r): a choice that offers one task twice ("Put a box on the conveyor, the
-    small one or the medium one": every box, then the small one and the medium one again) is
-    not what was said: refused, naming the tasks it offers."""
+def _choice_twice41r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 41 (12r): a choice that offers some tasks twice and, once, a task of an object
+    the text does not name ("Put a box on the conveyor, the small one or the medium one": every
+    box, then the small one and the medium one again, the large one among them, never said) is
+    not what was said: refused, naming the tasks it offers (a choice whose every option is said,
+    "Whichever, the bottle or the chips, to P", read with one option twice, stays read)."""
     groups = [node]
     while groups:
         g = groups.pop()
@@ -831,13 +964,30 @@ def _choice_twice41r(_text: str, node: Node, lexicon: Lexicon) -> None:
         if g.op != "or":
             continue
         seen = [normalise(c) for c in g.children]
-        if len(set(seen)) == len(seen):
+        once = [c for c in seen if seen.count(c) == 1]
+        if len(once) == len(seen):
+            continue
+        unsaid = [t for c in once for t in tasks(c) if not _named_alone41r(t.obj, text, lexicon)]
+        if not unsaid:
             continue
         offered = sorted({_said41r(t, lexicon) for t in tasks(g)})
         raise GroundingError(
-            "the choice offers one thing twice (" + " or ".join(offered) + "): name each "
-            "option once, e.g. 'the small box or the medium box'"
+            "the choice offers "
+            + " or ".join(offered)
+            + ", and "
+            + " and ".join(sorted({t.obj for t in unsaid}))
+            + " is not said: name each option once, e.g. 'the small box or the medium box'"
         )
+
+
+def _named_alone41r(oid: str, text: str, lexicon: Lexicon) -> bool:
+    """Whether ``text`` names object ``oid`` by a name of its own: its id, an alias, or its
+    kind when no other object of the scene is of that kind."""
+    low = f" {' '.join(re.findall(r'[a-z_]+', text.lower()))} "
+    obj = next(o for o in lexicon.scene.objects if o.id == oid)
+    kinds = [o.category for o in lexicon.scene.objects]
+    names = [oid, *obj.aliases] + ([obj.category] if kinds.count(obj.category) == 1 else [])
+    return any(f" {n.lower()} " in low or f" {n.lower()}s " in low for n in names)
 
 
 def _said41r(task: Task, lexicon: Lexicon) -> str:
@@ -875,6 +1025,7 @@ def _the_one_gets41r(text: str, node: Node, lexicon: Lexicon) -> None:
 # the normaliser's rewrites run before the session-40 ones (wired into normalise._STEPS19)
 _STEPS41R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_its41r,
+    _not_picky41r,
     _cue_run41r,
     _straight_to41r,
     _the_one_for41r,
@@ -903,6 +1054,11 @@ _STEPS41R: tuple[Callable[[str, Lexicon], str], ...] = (
     _only_one_anyway41r,
     _one_and_one41r,
     _plain_simple41r,
+    _just_those41r,
+    _of_all41r,
+    _out_on41r,
+    _one_going41r,
+    _let_use41r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-40 ones)
 REFUSE41R: tuple[Callable[[str, Lexicon], None], ...] = (
