@@ -250,6 +250,9 @@ test_closers_and_words = CASES.test(
     # _just_those41r: "…, just that, nothing more for him", "…, only that"
     ("Mrs Khan's to have the jug, only that.", "jug>C", WARD),
     ("Mrs Khan's to have the jug or the magazine, just those.", None, WARD),
+    # after a cue the closer corrects the request: not dropped
+    ("The spanners to Jess, sorry, just the one.", None, WORKSHOP),
+    ("The cups to Emma, no, just the one.", None, LAB),
     # _of_all41r: "last of all", "all morning"
     (
         "Drill on the bench first, then the torch in the locker, and last of all Jess gets the "
@@ -275,6 +278,21 @@ test_closers_and_words = CASES.test(
         LAB,
     ),
     ("Omar's not fussy: a cup for her, green or white, take your pick.", None, LAB),
+)
+
+
+test_corrected_then = CASES.test(
+    # _corrected_then41r: the corrected request, then another clause after a semicolon
+    (
+        "Lena gets the salt, no, correction, she's having the lemon; the knife is Marco's.",
+        "lemon>B & knife>A",
+        KITCHEN,
+    ),
+    (
+        "Lena gets the salt, no, correction, she's having the lemon; the knife is the counter's.",
+        None,
+        KITCHEN,
+    ),
 )
 
 

@@ -727,6 +727,30 @@ def _pronoun_again41r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['cue']}{m['x']}{m['end']}{text[m.end() :]}"
 
 
+# "Person A gets chips, no, the bottle; the chips are Person B's."
+_CORRECTED_THEN41R = (
+    rf"^(?P<head>[^;]+?,\s*no,\s*(?P<y>{_THING41R}))(?P<sep>\s*;\s*)(?P<rest>\S[^;]*)$"
+)
+
+
+def _corrected_then41r(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12r): a request with its object corrected, then another clause after a
+    semicolon ("P gets the chips, no, the bottle; the chips are Q's") is the corrected request
+    then that clause ("P gets the bottle; the chips are Q's"): the correction read alone first (one
+    hand-over), and the whole then read."""
+    if "no," not in text.lower() or ";" not in text:
+        return text
+    m = re.match(_CORRECTED_THEN41R, text.strip(), _F)
+    if m is None:
+        return text
+    node = _reading(m["head"], lexicon)
+    if not isinstance(node, Task) or node.kind != "deliver":
+        return text
+    name = person_name(node.target, lexicon).split(" (")[0]
+    out = f"{name} gets {m['y']}{m['sep']}{m['rest']}"
+    return out if _reading(out, lexicon) is not None else text
+
+
 # "Bottle for Person A; sorry, I said that already, just the once."
 _SAID_ALREADY41R = (
     r"\s*[;.,]\s*(?:sorry|oops|ah)?,?\s*(?:i(?:'ve| have)?|i think i(?:'ve| have)?) "
@@ -750,17 +774,22 @@ def _said_already41r(text: str, _lexicon: Lexicon) -> str:
 
 # "…, just those, nothing more for him."
 _JUST_THOSE41R = (
-    r"\s*,\s*(?:(?:just|only) (?:those|that|them|these|this|the one|it)(?:\s*,\s*|\s+and\s+)?)?"
+    r"\s*,\s*(?:(?:just|only) (?:those|that|them|these|this)(?:\s*,\s*|\s+and\s+)?)?"
     r"(?:nothing (?:more|else)(?: for (?:him|her|them))?|no more|that's (?:it|all))?"
     r"(?P<end>\s*[.!]?)$"
+)
+# a cue before the closer makes it a correction ("The pens to Sam, sorry, just the one")
+_CUE_BEFORE41R = (
+    r"\b(?:sorry|no|oh|actually|wait|hang on|hold on|correction|i mean|rather)\s*,?\s*$"
 )
 
 
 def _just_those41r(text: str, lexicon: Lexicon) -> str:
-    """Session 41 (12r): a request then "just those (that, the one)", "nothing more (else) for
-    him", "that's all" says the request is all there is: dropped when the request before it
-    reads alone and gives its objects to one person ("him" / "her" then that person by the
-    grammar's reading of the request, which the closer only repeats)."""
+    """Session 41 (12r): a request then "just those (that)", "nothing more (else) for him",
+    "that's all" says the request is all there is: dropped when the request before it reads
+    alone and gives its objects to one person ("him" / "her" then that person by the grammar's
+    reading of the request, which the closer only repeats); after a cue ('sorry', 'no') it
+    corrects the request, and is left."""
     low = text.lower()
     if "just" not in low and "only" not in low and "nothing" not in low and "that's" not in low:
         return text
@@ -768,6 +797,8 @@ def _just_those41r(text: str, lexicon: Lexicon) -> str:
     if m is None or m.start() == m.end() - len(m["end"] or ""):
         return text
     head = text[: m.start()]
+    if re.search(_CUE_BEFORE41R, head, _F):
+        return text
     node = _reading(head, lexicon)
     if node is None or _has_or41r(node):
         return text
@@ -784,25 +815,33 @@ _ALL_TIME41R = (
 )
 
 
-def _of_all41r(text: str, _lexicon: Lexicon) -> str:
+def _of_all41r(text: str, lexicon: Lexicon) -> str:
     """Session 41 (12r): 'all' that counts nothing: "last (first, next) of all" is "last", and
     "all lesson (morning, day …)" closing a clause says how long someone has been asking, not
-    which objects: dropped."""
+    which objects: dropped from a single clause where what is left reads (else left for the
+    older rules)."""
     if "all" not in text.lower():
         return text
     out = re.sub(_OF_ALL41R, lambda m: m["w"], text, flags=_F)
-    return re.sub(_ALL_TIME41R, "", out, flags=_F)
+    if "," in out or ";" in out:
+        return out  # a remark around it is the older rules' to take off, 'all day' with it
+    cut = re.sub(_ALL_TIME41R, "", out, flags=_F)
+    if cut != out and _reading(cut, lexicon) is None:
+        return out
+    return cut
 
 
 # "The both of the plates out on the counter"
 _OUT_ON41R = (
-    r"\b(?:out|set out|laid out) (?P<prep>on|onto|on to) (?P<s>the [a-z]+)(?P<s2> [a-z]+)?\b"
+    r"(?<!\bleft )(?<!\bleave )(?<!\bleaving )(?<!\bput )(?<!\bset )(?<!\blaid )(?<!\blay )"
+    r"\bout (?P<prep>on|onto|on to) (?P<s>the [a-z]+)(?P<s2> [a-z]+)?\b"
 )
 
 
 def _out_on41r(text: str, lexicon: Lexicon) -> str:
-    """Session 41 (12r): "X out on the counter" (set out, laid out onto S) is "X on the counter":
-    'out' says the thing is set out, the surface where (S a surface named whole)."""
+    """Session 41 (12r): "X out on the counter" (out onto S) is "X on the counter": 'out' says
+    the thing is set out, the surface where (S a surface named whole); after a verb ("left out
+    on", "put out on") it is the verb's, and left."""
     if " out " not in text:
         return text
 
@@ -1030,6 +1069,7 @@ _STEPS41R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _straight_to41r,
     _the_one_for41r,
     _pronoun_again41r,
+    _corrected_then41r,
     _said_already41r,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-40 ones)
