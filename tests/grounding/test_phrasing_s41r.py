@@ -222,7 +222,9 @@ test_corr = CASES.test(
     ("Drill on the bench, oh no, hang about, to Kofi.", "drill>A", WORKSHOP),
     ("Jess is getting the torch, oh scratch that, it's Kofi who gets it.", "torch>A", WORKSHOP),
     ("Salt to Lena, oh wait, she wants the lemon instead.", "lemon>B", KITCHEN),
-    ("Pills to Mrs Khan, oh, hang about, Mr Lee.", "pills>B", WARD),
+    ("Pills to Mrs Khan, oh no, hang about, Mr Lee.", "pills>B", WARD),
+    # one cue the older rules read, naming what the request said: refused as before
+    ("Pills to Mrs Khan, oh no, hang about, Mrs Khan.", None, WARD),
     ("Salt to Lena, oh, she wants the lemon instead.", None, KITCHEN),
     # _straight_to41r
     ("Magazine up on the trolley, no, straight to Mr Lee.", "magazine>B", WARD),

@@ -122,6 +122,8 @@ def _forget_after41r(text: str, lexicon: Lexicon) -> str:
     if m is None or not _whole_name(m["x"], lexicon, "object"):
         return text
     head = text[: m.start()]
+    if re.search(r"[.!?]", head):
+        return text  # a sentence of its own after the request: changing it, or a task
     named = _ids(head, lexicon, "object")
     if not named or named & _ids(m["x"], lexicon, "object"):
         return text
@@ -158,7 +160,7 @@ def _not_for_after41r(text: str, lexicon: Lexicon) -> str:
 
 # "Nothing to wait for, the bottle can go to Person A straight off."
 _NO_WAIT41R = (
-    r"^(?:there's |there is )?(?:nothing to wait (?:for|on)|no (?:need|call|reason) to wait"
+    r"^(?:there's |there is )?(?:nothing to wait (?:for|on)|no (?:call|reason) to wait"
     r"(?: (?:for anyone|for anything|around|about))?|no waiting(?: around)?|no (?:rush|hurry)"
     r"(?: either way)?|no point waiting(?: around)?)\s*[,;:]\s*(?=[a-z])"
 )
@@ -168,9 +170,9 @@ _STRAIGHT_OFF41R = r",? (?:straight|right) off(?P<end>\s*[.!]?)$"
 
 def _no_wait41r(text: str, _lexicon: Lexicon) -> str:
     """Session 41 (12r): an opener saying nothing holds the request up ("Nothing to wait for",
-    "No need to wait", "No rush", "No point waiting") is dropped before the request (as
-    session 40's "No need to ask"), and "straight off" / "right off" closing it is "straight
-    away" (when, not where)."""
+    "No reason to wait", "No rush", "No point waiting") is dropped before the request (as
+    session 40's "No need to ask" and session 37's "No need to wait"), and "straight off" /
+    "right off" closing it is "straight away" (when, not where)."""
     out = text
     m = re.match(_NO_WAIT41R, out, _F)
     if m is not None:
@@ -306,7 +308,8 @@ def _whichever_free41r(text: str, lexicon: Lexicon) -> str:
 
 # "Stick a box on the conveyor, the small or the medium, your call."
 _A_KIND_SAID41R = (
-    r"\b(?:a|an|one) (?P<kind>[a-z]+)\b(?P<mid>[^,;]*?)\s*,\s*(?:either )?the (?P<a>[a-z]+)"
+    r"\b(?:a|an|one) (?P<kind>[a-z]+)\b(?P<mid>(?:(?!\b(?:not|but|except|bar|apart|other|save|"
+    r"besides|without|no|never)\b)[^,;])*?)\s*,\s*(?:either )?the (?P<a>[a-z]+)"
     r"(?: one)? or the (?P<b>[a-z]+)(?: one)?(?=\s*(?:[,;.!]|$))"
 )
 
@@ -460,7 +463,7 @@ _COUNT41R = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 # "The pair of them to Person B, …", "The both of the plates …", "The trio of pens …"
 _PAIR_OF41R = (
     r"\bthe (?:(?P<two>pair|couple) of them|(?P<both>both) of (?:them|the (?P<ks>[a-z]+s))|"
-    r"(?P<three>trio) of (?:them|(?:the )?(?P<ks3>[a-z]+s)))\b"
+    r"(?P<three>trio) of (?:them|(?:the )?(?P<ks3>[a-z]+s)))\b(?!\s+one each)"
 )
 
 
@@ -625,26 +628,34 @@ _STRONG_CUE41R = (
 )
 _CUE_RUN41R = rf"\s*[,;]\s*(?P<run>{_CUE_WORD41R}(?:[\s,]+{_CUE_WORD41R})*)\s*[,;]?\s+(?=[a-z])"
 # what a single cue the earlier rules read already is said as
-_ONE_CUE41R = r"(?:no|wait|sorry|correction|hang on|hold on)"
+_ONE_CUE41R = r"(?:no,?\s*(?:wait|hang on|hold on|sorry|correction|my mistake))"
+# cues the older rules do not read (or read only alone): enough alone in a run ("oh wait")
+_NEW_CUE41R = r"\b(?:scratch that|strike that|silly me|daft me|my bad)\b|^(?:oh|ah),?\s*wait$"
 
 
 def _cue_run41r(text: str, lexicon: Lexicon) -> str:
     """Session 41 (12r): a correction said with a run of cue words ("oh no, hang about",
     "oh scratch that", "no, correction", "oh, silly me", "oh wait") is ", no, " (the cue the
-    grammar's corrections read): 'oh' and 'sorry' alone are no correction, so the run must
-    hold one of 'no', 'wait', 'hang on / about', 'scratch that', 'silly me', 'my mistake'…;
-    a single cue the earlier rules read is left as it is, and so is a run whose rewrite does not
-    read (the older rules' cues: "…, no, hang on, swap the order round")."""
+    grammar's corrections read): a run of two cues ('no', 'wait', 'hang on / about',
+    'correction' …; not "no wait", "no, hang on", which the older rules read), or one the older
+    rules do not read ('scratch that', 'silly me', 'my bad', "oh wait"); a rewrite that does not
+    read, or reads as the request before it did (a correction naming what was said), is left."""
     m = re.search(_CUE_RUN41R, text, _F)
     if m is None or m.start() == 0:
         return text
     run = m["run"]
-    if re.search(_STRONG_CUE41R, run, _F) is None:
-        return text
-    if re.fullmatch(_ONE_CUE41R, run.strip(" ,"), _F):
+    strong = re.findall(_STRONG_CUE41R, run, _F)
+    # a new cue alone ("scratch that, …") is session 39's; said after 'oh' / 'no' it is ours
+    new = re.search(_NEW_CUE41R, run, _F) is not None and (
+        re.match(r"(?:oh|ah|no)\b", run, _F) is not None
+    )
+    if not new and (len(strong) < 2 or re.fullmatch(_ONE_CUE41R, run.strip(" ,"), _F)):
         return text
     out = f"{text[: m.start()]}, no, {text[m.end() :]}"
-    return out if _reading(out, lexicon) is not None else text
+    after = _reading(out, lexicon)
+    if after is None or after == _reading(text[: m.start()], lexicon):
+        return text  # a correction naming what the request said is no correction
+    return out
 
 
 # "…, no, straight to Alice."
@@ -673,7 +684,8 @@ def _straight_to41r(text: str, _lexicon: Lexicon) -> str:
 
 # "…, no, Mrs Khan's the one they're prescribed for."
 _THE_ONE_FOR41R = (
-    rf"(?P<cue>,\s*no,\s*)(?:it(?:'s| is) (?P<own>{_NAME41R})'s|(?P<q>{_NAME41R})(?:'s| is) "
+    r"(?P<cue>,\s*no,?\s*(?:(?:hang|hold) on|wait)?,\s*)"
+    rf"(?:(?:(?<=on, )|(?<=wait, ))it(?:'s| is) (?P<own>{_NAME41R})'s|(?P<q>{_NAME41R})(?:'s| is) "
     r"the one (?:(?:it's|it is|they're|they are|"
     r"that's|that is) (?:for|meant for|prescribed for|intended for|ordered for|needed for)|(?:who|"
     r"that) (?:gets|wants|needs|asked for|ordered|is getting) (?:it|them)))(?P<end>\s*(?:[,;.!]|$))"
@@ -695,7 +707,8 @@ def _the_one_for41r(text: str, lexicon: Lexicon) -> str:
 
 # "Person A gets chips, no, she gets the bottle."
 _PRONOUN_AGAIN41R = (
-    r"(?P<cue>,\s*no,\s*)(?P<pro>she|he|they)(?: (?:gets|wants|needs|takes|should get|can have)|"
+    r"(?P<cue>,\s*no,\s*(?:correction,\s*)?)(?P<pro>she|he|they)(?: (?:gets|wants|needs|takes|"
+    r"should get|can have)|"
     r"(?:'s| is) (?:getting|having|after|to have)|'ll have|'d like) "
     rf"(?P<x>{_THING41R})(?: instead)?(?P<end>\s*(?:[,;.!]|$))"
 )
@@ -724,7 +737,7 @@ def _pronoun_again41r(text: str, lexicon: Lexicon) -> str:
         sex = said_sex35s(pid, lexicon) or first_name_sex36s(pid, lexicon)
         if sex is not None and sex != PRONOUN_SEX[pro]:
             return text
-    return f"{text[: m.start()]}{m['cue']}{m['x']}{m['end']}{text[m.end() :]}"
+    return f"{text[: m.start()]}, no, {m['x']}{m['end']}{text[m.end() :]}"
 
 
 # "Person A gets chips, no, the bottle; the chips are Person B's."
@@ -810,22 +823,24 @@ def _just_those41r(text: str, lexicon: Lexicon) -> str:
 # "…, and last of all Tom gets the tape."; "Zoe's been asking for the scissors all lesson."
 _OF_ALL41R = r"\b(?P<w>first|last|next) of all\b"
 _ALL_TIME41R = (
-    r"\s+all (?:lesson|morning|day|afternoon|evening|night|week|session|shift|class|term|"
-    r"break|lunch|lunchtime|match|game|meeting)(?: long)?(?=\s*(?:[,;.!]|$))"
+    r"(?P<want>\b(?:asking for|asked for|after|wanting|waiting for|on about|going on about|"
+    r"begging for|pestering me for|nagging for) (?:the )?[a-z]+(?: [a-z]+)?)\s+all (?:lesson|"
+    r"morning|day|afternoon|evening|night|week|session|shift|class|term|break|lunch|lunchtime|"
+    r"match|game|meeting)(?: long)?(?=\s*(?:[,;.!]|$))"
 )
 
 
 def _of_all41r(text: str, lexicon: Lexicon) -> str:
     """Session 41 (12r): 'all' that counts nothing: "last (first, next) of all" is "last", and
-    "all lesson (morning, day …)" closing a clause says how long someone has been asking, not
-    which objects: dropped from a single clause where what is left reads (else left for the
-    older rules)."""
+    "all lesson (morning, day …)" after what someone has been asking for (after, waiting for)
+    says how long, not which objects: dropped from a single clause where what is left reads
+    (else left for the older rules)."""
     if "all" not in text.lower():
         return text
     out = re.sub(_OF_ALL41R, lambda m: m["w"], text, flags=_F)
     if "," in out or ";" in out:
         return out  # a remark around it is the older rules' to take off, 'all day' with it
-    cut = re.sub(_ALL_TIME41R, "", out, flags=_F)
+    cut = re.sub(_ALL_TIME41R, lambda m: m["want"], out, flags=_F)
     if cut != out and _reading(cut, lexicon) is None:
         return out
     return cut
@@ -833,26 +848,28 @@ def _of_all41r(text: str, lexicon: Lexicon) -> str:
 
 # "The both of the plates out on the counter"
 _OUT_ON41R = (
-    r"(?<!\bleft )(?<!\bleave )(?<!\bleaving )(?<!\bput )(?<!\bset )(?<!\blaid )(?<!\blay )"
-    r"\bout (?P<prep>on|onto|on to) (?P<s>the [a-z]+)(?P<s2> [a-z]+)?\b"
+    r"^(?P<what>(?:the|both|all|these|those) [^,;.!?]*?) out (?P<prep>on|onto|on to) "
+    r"(?P<s>the [a-z]+)(?P<s2> [a-z]+)?\b"
 )
 
 
 def _out_on41r(text: str, lexicon: Lexicon) -> str:
-    """Session 41 (12r): "X out on the counter" (out onto S) is "X on the counter": 'out' says
-    the thing is set out, the surface where (S a surface named whole); after a verb ("left out
-    on", "put out on") it is the verb's, and left."""
+    """Session 41 (12r): a verbless placing "The X out on the counter" (out onto S) is "The X on
+    the counter": 'out' says the thing is set out, the surface where (S a surface named whole);
+    after a verb ("left out on", "laying X out on") it is the verb's, and left."""
     if " out " not in text:
         return text
 
-    def said(m: re.Match[str]) -> str:
-        if m["s2"] and _whole_name(m["s"] + m["s2"], lexicon, "surface"):
-            return f"on {m['s']}{m['s2']}"
-        if _whole_name(m["s"], lexicon, "surface"):
-            return f"on {m['s']}{m['s2'] or ''}"
-        return m[0]
-
-    return re.sub(_OUT_ON41R, said, text, flags=_F)
+    m = re.match(_OUT_ON41R, text, _F)
+    if m is None or re.search(
+        r"\b(?:put|set|lay|laid|laying|left|leave|leaving|get)\b", m["what"], _F
+    ):
+        return text
+    if m["s2"] and _whole_name(m["s"] + m["s2"], lexicon, "surface"):
+        return f"{m['what']} on {m['s']}{m['s2']}{text[m.end() :]}"
+    if _whole_name(m["s"], lexicon, "surface"):
+        return f"{m['what']} on {m['s']}{m['s2'] or ''}{text[m.end() :]}"
+    return text
 
 
 # "There's only the one bottle going"
@@ -889,7 +906,7 @@ def _let_use41r(text: str, _lexicon: Lexicon) -> str:
 # "Carol's not picky: a mug for her, …"
 _NOT_PICKY41R = (
     rf"^(?P<p>{_NAME41R})(?:'s| is)(?: not|n't) (?:picky|fussy|choosy|bothered|particular)"
-    r"\s*[:;,]\s*(?=\S)"
+    r"\s*:\s*(?=\S)"
 )
 
 
