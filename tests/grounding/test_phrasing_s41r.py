@@ -266,6 +266,8 @@ test_closers_and_words = CASES.test(
     # _out_on41r: "X out on the desk"
     ("The globe and the ruler out on the desk, please.", "globe@desk & ruler@desk", CLASSROOM),
     ("The globe out on Zoe, please.", None, CLASSROOM),
+    ("Leave the knife out on the counter.", "knife@counter", KITCHEN),
+    ("Leave the knife out on Marco.", None, KITCHEN),
     # _one_going41r: "only the one X going spare"
     ("There's only the one jug going spare and it's Mrs Khan's.", "jug>C", WARD),
     ("There's only the one blanket going spare and it's Mrs Khan's.", None, WARD),

@@ -852,14 +852,24 @@ _OUT_ON41R = (
     r"(?P<s>the [a-z]+)(?P<s2> [a-z]+)?\b"
 )
 
+# "… leave the bowl out on the tray …"
+_LEAVE_OUT_ON41R = (
+    r"\b(?P<head>leave (?:the [a-z]+(?: [a-z]+)?|it|them)) out (?:on|onto|on to) "
+    r"(?P<s>the [a-z]+)\b"
+)
+
 
 def _out_on41r(text: str, lexicon: Lexicon) -> str:
     """Session 41 (12r): a verbless placing "The X out on the counter" (out onto S) is "The X on
-    the counter": 'out' says the thing is set out, the surface where (S a surface named whole);
-    after a verb ("left out on", "laying X out on") it is the verb's, and left."""
+    the counter": 'out' says the thing is set out, the surface where (S a surface named whole),
+    and "leave X out on S" is "leave X on S"; after another verb ("wants X left out on", "laying X
+    out on") it is the verb's, and left."""
     if " out " not in text:
         return text
 
+    leave = re.search(_LEAVE_OUT_ON41R, text, _F)
+    if leave is not None and _whole_name(leave["s"], lexicon, "surface"):
+        return f"{text[: leave.start()]}{leave['head']} on {leave['s']}{text[leave.end() :]}"
     m = re.match(_OUT_ON41R, text, _F)
     if m is None or re.search(
         r"\b(?:put|set|lay|laid|laying|left|leave|leaving|get)\b", m["what"], _F
