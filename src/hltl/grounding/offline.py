@@ -620,7 +620,11 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 "names: say 'too' or 'instead'"
             )
         cleft = _CLEFT_AFTER31.search(text)
-        if cleft is not None and _names_any30s(text[: cleft.start()], lexicon):
+        if (
+            cleft is not None
+            and _names_any30s(text[: cleft.start()], lexicon)
+            and not _rewrites41r.left_out_only41r(text[: cleft.start()])
+        ):
             raise GroundingError(
                 f"{cleft.group('said')!r} after a request could add to it or correct what it "
                 "names: say 'too' or 'instead'"
