@@ -90,11 +90,15 @@ test_a_want_taken_back_is_refused = CASES.test(
     ("Give Bob the cup. Bob is through with the cup.", None, CELL),
     ("Pass Kofi the torch, he's totally fed up with it.", None, WORKSHOP),
     ("Mr Lee gets the jug. He's had enough of the jug.", None, WARD),
+    ("Give Bob the cup. Bob has already got the cup.", None, CELL),
+    ("Hand Marco the knife, he has got the knife already.", None, KITCHEN),
     # a thing the person does not get, a placement, another person, 'over there': as before
     ("Give Bob the cup, he's sick of the apple.", "cup>B", CELL),
     ("Put the cup on the shelf, Bob's done with it.", "cup@shelf", CELL),
     ("Give Bob the cup, Alice is done with it.", "cup>B", CELL),
     ("Give Bob the cup, he's over there.", "cup>B", CELL),
+    # a name's 'got' without 'already' assigns (session 27)
+    ("Alice's got the apple, Bob's got the cup.", "apple>A & cup>B", CELL),
     # 'she's done with it' beside a placement (session 35): as before
     ("The magazine can go back on the trolley, she's done with it.", "magazine@trolley", WARD),
 )

@@ -67,17 +67,19 @@ def _done41l(text: str, lexicon: Lexicon) -> None:
 # 12c's `idioms` fuzz: "Give Bob the cup. Bob has gone off the cup." read `cup>B` (the sentence
 # was dropped as a remark about the request's person and thing), as did "…, Bob is through with
 # the cup", "…. He's so over it.", "… has lost interest in the bottle", and "Bob is so over the
-# cup." read `cup>B` (as 'is after'). A person said to have gone off, be over, be sick / tired /
-# fed up / bored of, be through / finished / done with, have had enough of, have lost interest in
-# or have gone cold on a thing (or 'it', 'them') no longer wants it: a reading that hands them
-# that thing is refused (a negation word was refused already). A placement beside it ("hang the
+# cup." read `cup>B` (as 'is after'). A person said to have got a thing already ('has already
+# got', 'has got it already'), or to have gone off, be over, be sick / tired / fed up / bored of,
+# be through / finished / done with, have had enough of, have lost interest in or have gone cold
+# on it (or 'it', 'them'), has it or no longer wants it: a reading that hands them that thing is
+# refused (a negation word was refused already). A placement beside it ("hang the
 # tongs on the rack, Marco's done with them") and a thing the person does not get read as before;
 # 'he / she is done / finished with it' is left to session 36's `offline._use_said36s`, which
 # weighs it against the reading (and its tests take that rule out).
 _TAKEN_BACK41L = re.compiled(
     r"\b(?P<who>he|she|they|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?:['’]s|\s+(?:is|was|has|had|have|are|"
     r"were))?\s+(?:(?:so|totally|completely|well|really|just|now|already|all|rather)\s+)*"
-    r"(?P<idiom>gone (?:right |completely )?off|gone (?:cold|sour) on|over(?! the moon\b)|"
+    r"(?P<idiom>(?<=already )got|got(?= (?:it|them|that|those|the [a-z]+(?: [a-z]+)?) already\b)|"
+    r"gone (?:right |completely )?off|gone (?:cold|sour) on|over(?! the moon\b)|"
     r"(?:sick|tired|bored) (?:of|with)|fed up (?:of|with)|through with|finished with|done with|"
     r"had (?:quite )?enough of|had it up to here with|lost (?:interest|his appetite|her "
     r"appetite) (?:in|for)|cooled (?:on|off on)|off the idea of)\s+(?P<x>(?:the |that |those |"
@@ -107,8 +109,9 @@ def _taken_back41l(text: str, node: Node, lexicon: Lexicon) -> None:
             if t.target in people and (t.obj in things or (pointed and not things)):
                 said = m.group(0).strip()
                 raise GroundingError(
-                    f"{said!r} says the person no longer wants it, yet the reading has "
-                    f"{t.obj}>{t.target}: say what to do; to drop a task, say 'cancel …'"
+                    f"{said!r} says the person has it already or no longer wants it, yet the "
+                    f"reading has {t.obj}>{t.target}: say what to do; to drop a task, say "
+                    "'cancel …'"
                 )
 
 
