@@ -91,6 +91,12 @@ test_a_want_taken_back_is_refused = CASES.test(
     ("Pass Kofi the torch, he's totally fed up with it.", None, WORKSHOP),
     ("Mr Lee gets the jug. He's had enough of the jug.", None, WARD),
     ("Give Bob the cup. Bob has already got the cup.", None, CELL),
+    # a person said as 'Person A' or with a title, in lower case too (12c's idioms fuzz)
+    ("Person A is so over the cup.", None, CELL),
+    ("Give Person A the cup. Person A has gone off the cup.", None, CELL),
+    ("give person b the chips. person b is through with the chips.", None, CELL),
+    ("Give Person B the chips. Person B has already got the chips.", None, CELL),
+    ("Pass Mrs Khan the magazine; Mrs Khan has lost interest in it.", None, WARD),
     ("Hand Marco the knife, he has got the knife already.", None, KITCHEN),
     # a thing the person does not get, a placement, another person, 'over there': as before
     ("Give Bob the cup, he's sick of the apple.", "cup>B", CELL),

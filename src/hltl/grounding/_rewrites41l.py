@@ -76,8 +76,8 @@ def _done41l(text: str, lexicon: Lexicon) -> None:
 # 'he / she is done / finished with it' is left to session 36's `offline._use_said36s`, which
 # weighs it against the reading (and its tests take that rule out).
 _TAKEN_BACK41L = re.compiled(
-    r"\b(?P<who>he|she|they|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?:['’]s|\s+(?:is|was|has|had|have|are|"
-    r"were))?\s+(?:(?:so|totally|completely|well|really|just|now|already|all|rather)\s+)*"
+    r"\b(?P<who>he|she|they|(?:person|mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
+    r"(?:['’]s|\s+(?:is|was|has|had|have|are|were))?\s+(?:(?:so|totally|completely|well|really|just|now|already|all|rather)\s+)*"
     r"(?P<idiom>(?<=already )got|got(?= (?:it|them|that|those|the [a-z]+(?: [a-z]+)?) already\b)|"
     r"gone (?:right |completely )?off|gone (?:cold|sour) on|over(?! the moon\b)|"
     r"(?:sick|tired|bored) (?:of|with)|fed up (?:of|with)|through with|finished with|done with|"
