@@ -16,6 +16,7 @@ from hltl.grounding import (
     _rewrites40r,
     _rewrites40s,
     _rewrites41,
+    _rewrites41l,
     _rewrites41r,
     _rewrites41s,
 )
@@ -79,8 +80,18 @@ from hltl.world.scene import Scene
 # module, so each adds its rules there (run in _parse and parse_instruction)
 _REFUSALS40 = (*_rewrites40.REFUSE40, *_rewrites40r.REFUSE40R, *_rewrites40s.REFUSE40S)
 _CHECKS40 = (*_rewrites40.CHECK40, *_rewrites40r.CHECK40R, *_rewrites40s.CHECK40S)
-_REFUSALS41 = (*_rewrites41.REFUSE41, *_rewrites41r.REFUSE41R, *_rewrites41s.REFUSE41S)
-_CHECKS41 = (*_rewrites41.CHECK41, *_rewrites41r.CHECK41R, *_rewrites41s.CHECK41S)
+_REFUSALS41 = (
+    *_rewrites41.REFUSE41,
+    *_rewrites41r.REFUSE41R,
+    *_rewrites41s.REFUSE41S,
+    *_rewrites41l.REFUSE41L,
+)
+_CHECKS41 = (
+    *_rewrites41.CHECK41,
+    *_rewrites41r.CHECK41R,
+    *_rewrites41s.CHECK41S,
+    *_rewrites41l.CHECK41L,
+)
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 _SUBORDINATORS = frozenset({"after", "once", "before"})
@@ -609,7 +620,11 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 "names: say 'too' or 'instead'"
             )
         cleft = _CLEFT_AFTER31.search(text)
-        if cleft is not None and _names_any30s(text[: cleft.start()], lexicon):
+        if (
+            cleft is not None
+            and _names_any30s(text[: cleft.start()], lexicon)
+            and not _rewrites41r.left_out_only41r(text[: cleft.start()])
+        ):
             raise GroundingError(
                 f"{cleft.group('said')!r} after a request could add to it or correct what it "
                 "names: say 'too' or 'instead'"
