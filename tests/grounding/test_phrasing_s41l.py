@@ -14,7 +14,8 @@ import pytest
 
 from hltl.errors import GroundingError
 from hltl.grounding import _rewrites41l, offline
-from tests.grounding.helpers import CELL, KITCHEN, WARD, WORKSHOP, PhrasingCases
+from hltl.world.scene import load_scene
+from tests.grounding.helpers import CELL, KITCHEN, ROOT, WARD, WORKSHOP, PhrasingCases
 
 CASES = PhrasingCases()
 
@@ -91,6 +92,12 @@ test_a_want_taken_back_is_refused = CASES.test(
     ("Pass Kofi the torch, he's totally fed up with it.", None, WORKSHOP),
     ("Mr Lee gets the jug. He's had enough of the jug.", None, WARD),
     ("Give Bob the cup. Bob has already got the cup.", None, CELL),
+    # a person said as 'Person A' or with a title, in lower case too (12c's idioms fuzz)
+    ("Person A is so over the cup.", None, CELL),
+    ("Give Person A the cup. Person A has gone off the cup.", None, CELL),
+    ("give person b the chips. person b is through with the chips.", None, CELL),
+    ("Give Person B the chips. Person B has already got the chips.", None, CELL),
+    ("Pass Mrs Khan the magazine; Mrs Khan has lost interest in it.", None, WARD),
     ("Hand Marco the knife, he has got the knife already.", None, KITCHEN),
     # a thing the person does not get, a placement, another person, 'over there': as before
     ("Give Bob the cup, he's sick of the apple.", "cup>B", CELL),
@@ -132,3 +139,17 @@ def test_each_taken_back_reads_without_the_check(
         tuple(c for c in offline._CHECKS41 if c is not _rewrites41l._taken_back41l),
     )
     assert show_tree(offline.parse_instruction(text, CELL)) == was
+
+
+ONE_BOTTLE = load_scene(ROOT / "examples/scenes/1-2.yaml")
+
+test_an_ordinal_beyond_the_scene_is_refused = CASES.test(
+    # blind40's one wrong reading at its measurement, in other words
+    ("Hand the bottle to Person A, then a second bottle.", None, ONE_BOTTLE),
+    ("Give Alice the cup. Give her the second cup too.", None, CELL),
+    ("Give Alice the third mug.", None, CELL),
+    ("Give Alice the second red mug.", None, CELL),
+    # 'second' ordering the tasks: as before
+    ("First the cup to Alice, second the apple to Bob.", "cup>A ; apple>B", CELL),
+    ("Give Alice the cup; second, give Bob the apple.", "cup>A ; apple>B", CELL),
+)

@@ -76,8 +76,8 @@ def _done41l(text: str, lexicon: Lexicon) -> None:
 # 'he / she is done / finished with it' is left to session 36's `offline._use_said36s`, which
 # weighs it against the reading (and its tests take that rule out).
 _TAKEN_BACK41L = re.compiled(
-    r"\b(?P<who>he|she|they|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?:['’]s|\s+(?:is|was|has|had|have|are|"
-    r"were))?\s+(?:(?:so|totally|completely|well|really|just|now|already|all|rather)\s+)*"
+    r"\b(?P<who>he|she|they|(?:person|mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
+    r"(?:['’]s|\s+(?:is|was|has|had|have|are|were))?\s+(?:(?:so|totally|completely|well|really|just|now|already|all|rather)\s+)*"
     r"(?P<idiom>(?<=already )got|got(?= (?:it|them|that|those|the [a-z]+(?: [a-z]+)?) already\b)|"
     r"gone (?:right |completely )?off|gone (?:cold|sour) on|over(?! the moon\b)|"
     r"(?:sick|tired|bored) (?:of|with)|fed up (?:of|with)|through with|finished with|done with|"
@@ -115,7 +115,43 @@ def _taken_back41l(text: str, node: Node, lexicon: Lexicon) -> None:
                 )
 
 
+# -- session 41 (lead): an ordinal beyond what the scene has ---------------------------------------
+#
+# blind40's one wrong reading at its measurement: "Hand the bottle to Person A. Hand her the second
+# bottle as well." (a scene with one bottle) read `bottle>A`: 'second' was dropped and the second
+# handing of the same bottle merged into the first. 'the / a second (third, fourth, fifth) X' where
+# the scene has fewer things that X names than the ordinal counts is refused naming how many there
+# are; with enough of them the older rules ask which one ('mug' is ambiguous).
+_ORDINAL41L = re.compiled(
+    r"\b(?P<nth>second|third|fourth|fifth)\s+(?!(?:the|a|an|his|her|their|one|of|to|for|and|then)\b)"
+    r"(?P<x>[a-z]+(?:\s+[a-z]+)?)",
+    _F,
+)
+_NTH41L = {"second": 2, "third": 3, "fourth": 4, "fifth": 5}
+
+
+def _ordinal41l(text: str, lexicon: Lexicon) -> None:
+    """Session 41 (lead): 'the second bottle' in a scene with one bottle (above): refused."""
+    if not any(w in text.lower() for w in _NTH41L):
+        return
+    for m in _ORDINAL41L.finditer(text):
+        said = m.group("x").split()[0]
+        things = _ids(said, lexicon, "object")
+        if not things:
+            said = m.group("x")
+            things = _ids(said, lexicon, "object")
+        if not things:
+            continue
+        n = _NTH41L[m.group("nth").lower()]
+        if len(things) < n:
+            have = ", ".join(sorted(things))
+            raise GroundingError(
+                f"{m.group('nth')} {said!r}: the scene has {len(things)} ({have}), not "
+                f"{n}: say which thing you mean"
+            )
+
+
 # refusals asked of the text before it is read (offline._parse, after the engineers' ones)
-REFUSE41L: tuple[Callable[[str, Lexicon], None], ...] = (_done41l,)
+REFUSE41L: tuple[Callable[[str, Lexicon], None], ...] = (_done41l, _ordinal41l)
 # checks of the whole instruction's reading (offline.parse_instruction, after the engineers' ones)
 CHECK41L: tuple[Callable[[str, Node, Lexicon], None], ...] = (_taken_back41l,)
