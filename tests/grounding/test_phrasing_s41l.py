@@ -98,6 +98,8 @@ test_a_want_taken_back_is_refused = CASES.test(
     ("give person b the chips. person b is through with the chips.", None, CELL),
     ("Give Person B the chips. Person B has already got the chips.", None, CELL),
     ("Pass Mrs Khan the magazine; Mrs Khan has lost interest in it.", None, WARD),
+    # a thing named with 'of' (12c's fuzz on main f35ba9e5)
+    ("Kofi is so over the tin of screws.", None, WORKSHOP),
     ("Hand Marco the knife, he has got the knife already.", None, KITCHEN),
     # a thing the person does not get, a placement, another person, 'over there': as before
     ("Give Bob the cup, he's sick of the apple.", "cup>B", CELL),

@@ -83,7 +83,7 @@ _TAKEN_BACK41L = re.compiled(
     r"(?:sick|tired|bored) (?:of|with)|fed up (?:of|with)|through with|finished with|done with|"
     r"had (?:quite )?enough of|had it up to here with|lost (?:interest|his appetite|her "
     r"appetite) (?:in|for)|cooled (?:on|off on)|off the idea of)\s+(?P<x>(?:the |that |those |"
-    r"his |her |their )?[a-z]+(?: [a-z]+)?|it|them|that|those)",
+    r"his |her |their )?[a-z]+(?: [a-z]+){0,3}|it|them|that|those)",
     _F,
 )
 
