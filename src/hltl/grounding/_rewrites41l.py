@@ -44,7 +44,8 @@ def _done41l(text: str, lexicon: Lexicon) -> None:
     """Session 41 (lead): 'the chips were handed to Bob', 'the cup has been given to Alice', 'the
     cup's been put on the shelf' — a handing or placing told as done — refused, not read as a
     request."""
-    if "been" not in text.lower() and "was" not in text.lower() and "were" not in text.lower():
+    low = text.lower()
+    if "been" not in low and "was" not in low and "were" not in low:
         return
     for m in _DONE41L.finditer(text):
         subject = m.group("subject")
