@@ -323,7 +323,6 @@ KNOWN_MISSES = frozenset(
         "Just the one bottle in the room and it's promised to Person A.",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
-        "Person B says he'll have both items, the chips as well as the bottle.",
         "Tom should get the two boxes that aren't sitting on the pallet.",
         "Bob isn't after the crisps at all; it's the bottle he wants.",
         "The bottle's no good to Alice, she's brought her own; the crisps then.",
