@@ -457,19 +457,6 @@ def _take_off41(text: str, lexicon: Lexicon) -> str:
     return text
 
 
-# -- 'last of all' opening the last step ("…, next the medium box up on the pallet, and last of
-# all Tom gets the tape"): 'finally' (session 11 read it so in the other rewrites only, which a
-# session-19 rewrite the same sentence needs does not reach)
-_LAST_OF_ALL41 = re.compile(r"(?:^|(?<=[.;!?,])\s*|(?<=\band)\s+)\blast of all\b,?", _F)
-
-
-def _last_of_all41(text: str, _lexicon: Lexicon) -> str:
-    """Session 41: 'last of all' (above) said as 'finally'."""
-    if "last of all" not in text.lower():
-        return text
-    return _LAST_OF_ALL41.sub(lambda m: m[0][: len(m[0]) - len(m[0].lstrip())] + "finally", text)
-
-
 # -- a thing said first and taken up again by 'it' / 'them' in a want with a place ("Those work
 # gloves, Mia wants them on the belt", "The apple, Bob wants it on the shelf"): the want of the
 # thing there, as 'Mia wants the work gloves on the belt' is read; X objects of the scene only, P
@@ -512,7 +499,6 @@ _STEPS41_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _ahead_of41,
     _let_take41,
     _take_off41,
-    _last_of_all41,
     _object_first41,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-40 ones)
