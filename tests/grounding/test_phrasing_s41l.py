@@ -118,7 +118,7 @@ test_a_want_idiom_with_after_is_no_time_gone_by = CASES.test(
     # the want, not a time gone by
     ("Give Bob the cup. Carol is hankering after the apple.", "cup>B & apple>C", CELL),
     ("Give Bob the cup, he's been hankering after the chips.", "cup>B & chips>B", CELL),
-    ("Hand Marco the knife, Lena is pining after the tongs.", None, KITCHEN),
+    ("Hand Marco the knife, Lena is pining after the tongs.", "knife>A & tongs>B", KITCHEN),
     # a time gone by after a remark: dropped as before
     ("Give Bob the cup, he's tired after his shift.", "cup>B", CELL),
 )

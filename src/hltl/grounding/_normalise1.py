@@ -184,7 +184,8 @@ _WORDS: tuple[tuple[str, str], ...] = (
         r"already|ages ago|a while ago|a bit ago|earlier|this morning|this afternoon|yesterday|"
         r"last night|(?:an|one|two|ten|twenty|half an) (?:minutes?|hours?) ago|just now|all day|"
         r"all morning|all afternoon|all evening|all week|all lesson|all class|all shift|all "
-        r"session|all practice|all rehearsal|all meeting|all match)(?: now| today| already)?"
+        r"session|all practice|all rehearsal|all meeting|all match)(?: long)?"
+        r"(?: now| today| already)?"
         r"(?=\s*(?:[.,;!?]|$))",
         r"\1",
     ),
@@ -3994,8 +3995,8 @@ _FOR_WHAT = (
     # "… been wanting the drill for ages / all morning"
     (r"(?:'s| has| have) been wanting\b", " wants"),
     (
-        r"\s+(?:for ages|all (?:morning|day|afternoon|evening|week|lesson|class|shift|session)|"
-        r"for a while|since this morning)\b",
+        r"\s+(?:for ages|all (?:morning|day|afternoon|evening|week|lesson|class|shift|session)"
+        r"(?: long)?|for a while|since this morning)\b",
         "",
     ),
     # "a bit of salt": the salt

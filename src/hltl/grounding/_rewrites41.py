@@ -46,15 +46,28 @@ _WANT_IDIOM41 = re.compile(
     r"(?P<p>\b[A-Za-z][\w]*)(?P<idiom>"
     r"(?: would|'d) (?:really |so |very |ever so )?be (?:glad|thankful|grateful) (?:of|for)"
     r"|(?: is|'s) in (?:want|the market) (?:of|for)"
-    r"|(?: is|'s|'s been| has been) (?:really |so |very |dead |quite |absolutely |just )?"
+    r"|(?: is|'s|'s been| has been) (?:really |so |very |dead |quite |absolutely |just |rather |"
+    r"pretty |awfully |ever so )?"
     r"(?:set on|hungry for|thirsty for|starving for|famished for|parched for|ravenous for|"
     r"yearning for|aching for|hankering (?:for|after)|hungering for|thirsting for|angling for|"
     r"holding out for|entitled to|down for|(?:first |next )?in line for|first in the queue for|"
-    r"in the queue for)"
+    r"in the queue for|keen on|pining (?:for|after)|clamou?ring for|shouting for|yelling for|"
+    r"hollering for|gunning for)"
     r"|(?: has|'s) set (?:his|her|their) (?:heart|sights) on"
     r"|(?: has|'s)(?: got)? (?:his|her|their) sights (?:set )?on"
     r"|(?: has|'s got|'s)(?: the)? (?:first call|first dibs|first claim|first pick|a claim) on"
     r"|(?: has|'s) (?:bagsied|bagsed)"
+    # session 42: 'would give anything for', 'would jump at', 'has a yen for', 'keeps going on
+    # about (wanting)', 'put in a word for' (blind40; 12c's fuzz)
+    r"|(?: would|'d) (?:happily |gladly )?give (?:anything|(?:his|her|their) right arm|the "
+    r"world) for"
+    r"|(?: would|'d) (?:happily |gladly )?(?:jump|leap) at"
+    r"|(?: has|'s got|'s) (?:a|such a|a real|a bit of a|a right) (?:yen|hankering|craving|hunger|"
+    r"thirst|longing|yearning) for"
+    r"|(?: keeps|'s been| has been| is|'s| kept) (?:going|banging|harping) on about"
+    r"(?: wanting| needing| having| getting)?"
+    r"|(?: keeps| kept) (?:asking|begging|pestering|nagging) for"
+    r"|(?: put|'s put| has put|'d put| had put) in (?:a word|a request|a bid|an order) for"
     r")(?= (?:the|that|this|those|these|both|a|an|some|his|her|their) )",
     _F,
 )
@@ -63,9 +76,14 @@ _WANT_IDIOM41 = re.compile(
 def _want_idiom41(text: str, lexicon: Lexicon) -> str:
     """Session 41: the idiom above after one person of the scene (or 'he' / 'she', left to the
     grammar to resolve) opening its clause, before words naming objects of the scene only (up to
-    the clause's end), said as 'wants'."""
+    the clause's end), said as 'wants' (session 42: 'put in a word for' as 'asked for', and the
+    person left unsaid after 'and' when the sentence opens with that one person and names nothing
+    else before it: "Alice is parched and would kill for the bottle")."""
     for m in list(_WANT_IDIOM41.finditer(text))[::-1]:
-        if _person_at41(text, m.end("p"), lexicon, pronouns=True) is None:
+        if m["p"].lower() == "and":
+            if _elided42(text[: m.start("p")], lexicon) is None:
+                continue
+        elif _person_at41(text, m.end("p"), lexicon, pronouns=True) is None:
             continue
         rest = re.split(
             r"[,;:.!?—–]| (?:and|but|so|while|after|before|since|for) ",
@@ -73,8 +91,32 @@ def _want_idiom41(text: str, lexicon: Lexicon) -> str:
         )
         if not _objects_only(rest[0], lexicon):
             continue
-        text = f"{text[: m.start('idiom')]} wants{text[m.end('idiom') :]}"
+        if _TO_HIM42.search(text[m.end() :]):
+            # session 42: "Carol keeps asking for the apple, give her the cup" may hand her
+            # something else instead (session 32's near form): left as it was
+            continue
+        said = " asked for" if " in " in m["idiom"] and " put" in m["idiom"] else " wants"
+        text = f"{text[: m.start('idiom')]}{said}{text[m.end('idiom') :]}"
     return text
+
+
+_TO_HIM42 = re.compile(r"\b(?:give|hand|pass|bring|get|take|fetch) (?:him|her|them)\b", _F)
+
+
+def _elided42(head: str, lexicon: Lexicon) -> str | None:
+    """Session 42: the one person of the scene who opens the sentence ending at ``head`` (the
+    words before an 'and' whose subject is left unsaid), naming nothing else; None if not so."""
+    sentence = re.split(r"[.;!?]\s+", head)[-1]
+    if "," in sentence or _ids(sentence, lexicon, "object") or _ids(sentence, lexicon, "surface"):
+        return None
+    people = _ids(sentence, lexicon, "human")
+    if len(people) != 1:
+        return None
+    for n in (2, 1):
+        who = " ".join(sentence.split(" ")[:n])
+        if _only_person(who, lexicon):
+            return who
+    return None
 
 
 # -- a want of a kind answered by the thing that will do ("Person A's after something to drink out
@@ -161,7 +203,10 @@ def _asked_that41(text: str, lexicon: Lexicon) -> str:
 # pronoun may be a person named in its sentence and nothing after it names the scene ('…, she
 # said, the cup' may correct, and stays)
 _SAID_TAG41 = re.compile(
-    r"\s*,\s*(?P<pron>he|she|they) (?:said|says|told me|tells me|reckons|reckoned|insists|insisted)"
+    r"\s*,\s*(?P<pron>he|she|they) (?:said|says|told me|tells me|reckons|reckoned|insists|insisted|"
+    # session 42: who asked for it ("Chips for Person B, he asked. Bottle for Person A, she asked
+    # too.")
+    r"asked(?: for (?:it|them|that|those))?(?: too| as well| also| first)?)"
     r"(?P<end>\s*,\s*(?P<rest>[^.!?;]*)|(?=\s*[.!?]|\s*$))",
     _F,
 )
@@ -169,7 +214,9 @@ _SAID_TAG41 = re.compile(
 
 def _said_tag41(text: str, lexicon: Lexicon) -> str:
     """Session 41: the tag above taken off (a comma after it kept)."""
-    if not any(w in text.lower() for w in (" said", " says", " told", " reckon", " insist")):
+    if not any(
+        w in text.lower() for w in (" said", " says", " told", " reckon", " insist", " asked")
+    ):
         return text
     for m in list(_SAID_TAG41.finditer(text))[::-1]:
         if m["rest"] is not None and _ids(m["rest"], lexicon):
@@ -338,7 +385,8 @@ def _mind_if_had41(text: str, lexicon: Lexicon) -> str:
 # without 'away' / 'up' and a surface ('lock the locker', 'lock them away') it stays refused
 _LOCK_AWAY41 = re.compile(
     r"\block (?P<x>(?:the|both|both the|both of the|all|all the|all of the|that|this|those|these) "
-    r"[a-z][a-z ]*?) (?:away|up) (?P<prep>in|into|inside) (?P<s>the [a-z]+(?: [a-z]+)?)\b",
+    r"[a-z][a-z ]*?) (?:away|up) (?P<prep>in|into|inside) (?P<s>the [a-z]+(?: (?!(?:before|after|"
+    r"when|while|once|until|till|as|so|then|and|for|now|please)\b)[a-z]+)?)\b",
     _F,
 )
 
@@ -361,9 +409,12 @@ def _lock_away41(text: str, lexicon: Lexicon) -> str:
 # that the want be met, which the want already asks; taken off when the pronoun may be the one
 # person named before it
 _SORT_OUT41 = re.compile(
-    r"\s*[,;]\s*(?:(?:so|and|then|just|please|could you|can you|would you),?\s+)*(?:sort "
-    r"(?P<p1>her|him|them) out|see (?P<p2>her|him|them) right|see to (?P<p3>her|him|them)|look "
-    r"after (?P<p4>her|him|them))(?:,? please)?(?P<end>\s*[.!]*)\s*$",
+    r"\s*[,;.!]\s*(?:(?:so|and|then|just|please|could you|can you|would you),?\s+)*(?:sort "
+    r"(?P<p1>her|him|them)(?P<both1> both| all)? out|see (?P<p2>her|him|them)(?P<both2> both| all)?"
+    r" right|see to (?P<p3>her|him|them)(?P<both3> both| all)?|look after (?P<p4>her|him|them)|"
+    # session 42: "…; as for Tom, it's the tape he's short of. Sort them both."
+    r"sort (?P<p5>them) (?P<both5>both|all)(?: out)?)(?:,? please|,? would you|,? will you)?"
+    r"(?P<end>\s*[.!]*)\s*$",
     _F,
 )
 
@@ -375,9 +426,15 @@ def _sort_out41(text: str, lexicon: Lexicon) -> str:
     m = _SORT_OUT41.search(text)
     if m is None:
         return text
-    pron = m["p1"] or m["p2"] or m["p3"] or m["p4"]
+    pron = m["p1"] or m["p2"] or m["p3"] or m["p4"] or m["p5"]
     people = _ids(text[: m.start()], lexicon, "human")
-    if len(people) != 1 or not _fit36(next(iter(people)), pron, lexicon):
+    both = m["both1"] or m["both2"] or m["both3"] or m["both5"]
+    if pron.lower() == "them" and len(people) > 1:
+        # session 42: 'sort them (both) out' after the wants of two people (or more, for 'all'),
+        # each of whom a request names
+        if both is not None and both.strip().lower() == "both" and len(people) != 2:
+            return text
+    elif both is not None or len(people) != 1 or not _fit36(next(iter(people)), pron, lexicon):
         return text
     if not _ids(text[: m.start()], lexicon, "object"):
         return text
