@@ -228,7 +228,6 @@ KNOWN_MISSES = frozenset(
         "The bottle, that's Person A's. The chips, Person B has those, he called them after "
         "the dulcimer.",
         "Person A's down for the chips. Person B? The bottle, he said, after the hornpipe.",
-        "That bottle's hers, Person A's.",
         "Ruth put in for the thermometer during her indigo dyeing break; run it over to her.",
         "Lena's got the plate rack sorted, so give her the lemon.",
         "Bottle for Person A, she's back from the scavenger hunt, and the chips for Person B.",
@@ -254,33 +253,8 @@ KNOWN_MISSES = frozenset(
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
         "No bother if not, but could the crisps go up on the shelf, out of the puppy's reach? "
         "Thanks a million.",
-        "Evening, and sorry about the racket from the handpan group next door: the cup for "
-        "Person A and the chips for Person B, if you'd be so kind.",
-        "Pardon me for butting in on your ludo game, but could Person A get the apple? Thanks "
-        "ever so.",
-        "With many thanks from all of us at the carrom club: the bottle to Person A, please.",
-        "The topiarist next door sends her regards; in the meantime could Person B have the "
-        "bottle, please?",
-        "Tanemmirt, which is thanks in Tamazight, my first language. Now, kindly put the white "
-        "cup in the sink.",
-        "Alice is parched after her cyclocross race and would kill for the water bottle.",
-        "Bob's been pining for those crisps all morning long.",
-        "Alice fancies the bottle, and Bob's rather keen on the crisps.",
         "Person A wouldn't say no to the chips if they were going spare.",
-        "The cup's what Person A is after, and Person B reckons he needs the bottle.",
-        "Person B needs that bottle more than anybody right now.",
-        "It's the chips that Person A has her heart set on, the poor thing.",
-        "Person A is absolutely dying of thirst over there; that bottle would save her life.",
-        "Mrs Khan is feeling the chill and would love the blue blanket.",
         "Grandad's after the wipes, the little one's made a right mess.",
-        "Bob? Bottle. For him, yeah, that one.",
-        "Person A put in a word for the apple earlier, and Person B for the chips; sort them "
-        "both out, would you.",
-        "Person A has her eye on the chips, and as for Person B, it's the bottle he's hoping for.",
-        "Whose are the chips? Person B's. And the bottle? Also his, so take him both.",
-        "Person A left that bottle behind at the bus stop; it's hers, so she ought to get it back.",
-        "Person A mentioned she'd like it brought over, the bottle that is, before her "
-        "shakuhachi practice.",
         "Person B wants the chips, and she wants the bottle; Person A, I mean.",
         "Omar's after a spoon to stir his tea. Could you get him one?",
         "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
@@ -291,10 +265,7 @@ KNOWN_MISSES = frozenset(
         "sort that",
         "OK so I was thinking the chips for Person B to start with and once he's got those the "
         "bottle can head over to Person A and then we're all square.",
-        "Bottle, that's Person A's. Apple, Person B's. Go.",
         "Bottle over to Person A, chips over to Person B, and then you can put your feet up.",
-        "Start with Person B. He gets the chips. Person A after him, with the bottle.",
-        "Chips for Person B, he asked. Bottle for Person A, she asked too.",
         "Mia wants the small box. The tape's for the conveyor, put it on there. Nothing else "
         "today.",
         "Noah's gluing and Zoe's cutting, so they need the glue stick and the scissors "
@@ -353,35 +324,20 @@ KNOWN_MISSES = frozenset(
         "carols had a long shift at the pawn shop so give her the chips and the red mug",
         "stick the bottle up on the shelf would you im trying to tidy for the bouzouki players",
         "bob keeps pointing at the crisps so i think hed like them go on",
-        "person b has dibs on the cup so the apple goes to person a",
         "ever since balalaika practice person a keeps going on about wanting the bottle",
         "person b gets both the chips and the bottle nobody else wants them",
         "person a could do with the chips after disc golf",
         "orders from earlier still stand person b is having the chips and person a the bottle",
         "pop the notebook into the box first and once its in there priya can have the stapler",
-        "ruth is doing obs and needs the thermometer and mrs khan is bored so bring her the "
-        "magazine",
         "marcos on the grill tonight and hes shouting for the tongs",
-        "mrs ortiz has asked for the scissors and says the globe can live on the shelf from now on",
         "Alice asked for the boittle after her paddle on the lake.",
         "Person B's having the cthips while he watches the match.",
-        "Person B left his botgtle here; could he have it back?",
-        "Drop the spoinge into the sink when you're passing.",
         "Sam's taking minutes for the sugar crafter's guild, hand over the notebopk.",
         "Set the scasnner down on the belt for the next shift to find.",
         "Mr Novak's asked for the lemoin to go with his fish.",
-        "Could I trouble you to see that Bob gets the bottle?",
-        "While you're on your feet, would you be good enough to see Person A gets the bottle?",
         "Is there any way Person B could get the chips this side of lunch?",
-        "How would it be if Person B had the cup and Person A the apple? Do that, please.",
-        "Is it too much bother to get Person A her bottle from over there?",
         "Reckon you can get that bottle to Person A without spilling it?",
-        "Shall the chips go to Person B, then? Yes, let's do that.",
-        "Dana's sorting samples; is there room on the tray for the bowl, and could you put it "
-        "there?",
-        "Could Mr Novak trouble you for the salt shaker, do you suppose?",
         "Could Grandad have the red block for Lily's tower?",
-        "Would you be a pal and lock the drill away in the locker before the armourer comes round?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
