@@ -9,6 +9,7 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
 from hltl.grounding._normalise3 import _handovers33t, _whole_name
 from hltl.grounding._normalise4 import _objects34r, _persons34r
+from hltl.grounding._rewrites40r import _NAME40R, _capital40r
 from hltl.grounding.lexicon import (
     KIND_CATEGORIES,
     PRONOUN_SEX,
@@ -17,16 +18,10 @@ from hltl.grounding.lexicon import (
     person_name,
     said_sex35s,
 )
-from hltl.grounding.tree import Group, Node, Task, normalise, tasks
+from hltl.grounding.tree import Group, Node, Task, has_choice, normalise, tasks
 
-# a person's name as these rules take it (checked against the scene after the match)
-_NAME41R = r"[A-Za-z][\w ]*?"
 # an object's name as these rules take it (checked against the scene after the match)
 _THING41R = r"the [a-z]+(?: (?!(?:that|who|which|person|mr|mrs|ms|miss|dr)\b)[a-z]+)?"
-
-
-def _capital41r(text: str) -> str:
-    return text[:1].upper() + text[1:]
 
 
 # -- negation and exclusion ------------------------------------------------------------------------
@@ -68,7 +63,7 @@ def _everything_but41r(text: str, _lexicon: Lexicon) -> str:
 _NOT_ITS41R = (
     rf"^(?:not|never mind(?: about)?|forget(?: about)?|leave|skip|scrap) (?P<x>{_THING41R})"
     r"(?:,? (?:mind|mind you|though))?\s*[,;:]\s*(?:but )?(?:it's|it is) "
-    rf"(?P<y>{_THING41R}) (?:that )?(?P<p>{_NAME41R})(?:'s| is|'s been| has been)? "
+    rf"(?P<y>{_THING41R}) (?:that )?(?P<p>{_NAME40R})(?:'s| is|'s been| has been)? "
     r"(?:after|wants|needs|asked for|has asked for|'s asked for|wanted|is wanting|fancies|"
     r"is after|'s after)(?P<rest>(?:\s+[^,;.!?]+?)?)(?P<end>\s*[.!]?)$"
 )
@@ -176,7 +171,7 @@ def _no_wait41r(text: str, _lexicon: Lexicon) -> str:
     out = text
     m = re.match(_NO_WAIT41R, out, _F)
     if m is not None:
-        out = _capital41r(out[m.end() :])
+        out = _capital40r(out[m.end() :])
     if " off" in out:
         out = re.sub(_STRAIGHT_OFF41R, lambda k: f" straight away{k['end']}", out, flags=_F)
     return out
@@ -205,13 +200,13 @@ def _left_that_isnt41r(text: str, _lexicon: Lexicon) -> str:
 
 # "Tom doesn't need the scanner, give him the tape instead."
 _NOT_NEEDED_INSTEAD41R = (
-    rf"^(?P<p>{_NAME41R}) (?:doesn't|does not|won't|will not) (?:need|want) (?P<x>{_THING41R})"
+    rf"^(?P<p>{_NAME40R}) (?:doesn't|does not|won't|will not) (?:need|want) (?P<x>{_THING41R})"
     rf"(?: (?:today|now|any ?more))?\s*[,;]\s*(?P<rest>.+?) instead(?P<end>\s*[.!]?)$"
 )
 # "Keep the wipes away from Lily and give her the teddy instead."
 _KEEP_AWAY41R = (
     rf"^(?:please )?(?:keep|hold) (?P<x>{_THING41R}) (?:away from|back from|out of reach of) "
-    rf"(?P<p>{_NAME41R})\s*(?:,|and|, and)\s*(?P<rest>.+?)(?: instead)?(?P<end>\s*[.!]?)$"
+    rf"(?P<p>{_NAME40R})\s*(?:,|and|, and)\s*(?P<rest>.+?)(?: instead)?(?P<end>\s*[.!]?)$"
 )
 
 
@@ -278,19 +273,12 @@ def _left_to_you41r(text: str, lexicon: Lexicon) -> str:
         return text
     out = f"{text[: m.start()]}, your call{m['end'] or '.'}"
     node = _reading(out, lexicon)
-    return out if node is not None and _has_or41r(node) else text
-
-
-def _has_or41r(node: Node) -> bool:
-    """Whether ``node`` offers a choice (an 'or' anywhere in it)."""
-    if not isinstance(node, Group):
-        return False
-    return node.op == "or" or any(_has_or41r(c) for c in node.children)
+    return out if node is not None and has_choice(node) else text
 
 
 # "Grandad or Ava, whichever's free, can take the teddy."
 _WHICHEVER_FREE41R = (
-    rf"^(?P<p>{_NAME41R}) or (?P<q>{_NAME41R})\s*,\s*(?:whichever|whoever|either)(?: of them| of "
+    rf"^(?P<p>{_NAME40R}) or (?P<q>{_NAME40R})\s*,\s*(?:whichever|whoever|either)(?: of them| of "
     r"the two)?(?:'s| is) (?:free|free first|around|about|available|closest|nearest|handy|"
     r"quicker|less busy)\s*,\s*(?=(?:can|could|should|will|'ll|may|might) )"
 )
@@ -339,7 +327,7 @@ def _a_kind_said41r(text: str, lexicon: Lexicon) -> str:
 
 # "Person B isn't fussy between the chips and the bottle, bring whichever's closest."
 _FUSSY_BETWEEN41R = (
-    rf"^(?P<p>{_NAME41R})(?:'s| is)(?: not|n't) (?:fussy|picky|choosy|bothered|particular) "
+    rf"^(?P<p>{_NAME40R})(?:'s| is)(?: not|n't) (?:fussy|picky|choosy|bothered|particular) "
     rf"(?:between|about|over) (?P<x>{_THING41R}) (?:and|or) (?P<y>{_THING41R})\s*[,;]\s*(?:so )?"
     r"(?P<v>bring|give|hand|pass|take|fetch)(?: (?:him|her|them))? (?P<w>whichever(?: one)?(?:'s| "
     r"is) (?:closest|nearest|handy|easiest|nearer|to hand)|whichever(?: one)?|either(?: one)?)"
@@ -359,12 +347,12 @@ def _fussy_between41r(text: str, lexicon: Lexicon) -> str:
     if not _objects34r(lexicon, m["x"], m["y"]):
         return text
     w = "whichever" if m["w"].lower().startswith("either") else m["w"]
-    return f"{_capital41r(m['v'])} {m['p']} {m['x']} or {m['y']}, {w}{m['end'] or '.'}"
+    return f"{_capital40r(m['v'])} {m['p']} {m['x']} or {m['y']}, {w}{m['end'] or '.'}"
 
 
 # "Sam can take whatever pen he likes so long as it isn't the red one."
 _SO_LONG_AS41R = (
-    rf"^(?P<head>{_NAME41R} (?:can|could|may|might) (?:take|have|grab|pick)) (?:whatever|whichever"
+    rf"^(?P<head>{_NAME40R} (?:can|could|may|might) (?:take|have|grab|pick)) (?:whatever|whichever"
     r"|any) (?P<kind>[a-z]+) (?:he|she|they) (?:likes?|wants?|fancies|fancy|prefers?)\s*,?\s*"
     r"(?:so long as|as long as|provided|providing|just|only)(?: that)? (?:it(?:'s not| isn't| is "
     r"not)|not) (?P<x>the [a-z]+(?: one)?)(?P<end>\s*(?:[,;.!]|$))"
@@ -386,7 +374,7 @@ def _so_long_as41r(text: str, lexicon: Lexicon) -> str:
 # "Give one of them the crisps, Alice or Bob"
 _ONE_OF_THEM_GETS41R = (
     r"^(?P<v>give|hand|pass|bring|take) one of (?:them|the two|the two of them|you two) "
-    rf"(?P<x>{_THING41R})\s*,\s*(?:either )?(?P<p>{_NAME41R}) or (?P<q>{_NAME41R})"
+    rf"(?P<x>{_THING41R})\s*,\s*(?:either )?(?P<p>{_NAME40R}) or (?P<q>{_NAME40R})"
     r"(?=\s*(?:[.!]|$|,\s*(?:your call|your choice|up to you|whichever|i'll let you pick|you pick|"
     r"take your pick)\b))"
 )
@@ -438,7 +426,7 @@ def _shared_out41r(text: str, lexicon: Lexicon) -> str:
     m = re.match(_SHARED_OUT41R, text.strip(), _F)
     if m is None:
         return text
-    rest = _capital41r(m["rest"])
+    rest = _capital40r(m["rest"])
     said = _handovers33t(rest, lexicon)
     if said is None or len(said) < 2:
         return text
@@ -499,7 +487,7 @@ def _pair_of41r(text: str, lexicon: Lexicon) -> str:
 
     def said(m: re.Match[str]) -> str:
         out = count(m)
-        return _capital41r(out) if m[0][:1].isupper() else out
+        return _capital40r(out) if m[0][:1].isupper() else out
 
     def count(m: re.Match[str]) -> str:
         if m["two"] is not None:
@@ -514,7 +502,7 @@ def _pair_of41r(text: str, lexicon: Lexicon) -> str:
 # "The pair of them to Person B, bottle and chips."
 _PAIR_LISTED41R = (
     r"^the (?:(?P<two>pair|both|two|couple)|(?P<three>trio|three)) of them (?P<to>to|for) "
-    rf"(?P<p>{_NAME41R})\s*,\s*(?P<list>(?:the )?[a-z]+(?: [a-z]+)?(?:(?:,| and|, and) (?:the )?"
+    rf"(?P<p>{_NAME40R})\s*,\s*(?P<list>(?:the )?[a-z]+(?: [a-z]+)?(?:(?:,| and|, and) (?:the )?"
     r"[a-z]+(?: [a-z]+)?)+)(?P<end>\s*[.!]?)$"
 )
 
@@ -535,7 +523,7 @@ def _pair_listed41r(text: str, lexicon: Lexicon) -> str:
         lexicon, *(w if w.lower().startswith("the ") else f"the {w}" for w in items)
     ):
         return text
-    return f"{_capital41r(m['list'])} {m['to']} {m['p']}{m['end'] or '.'}"
+    return f"{_capital40r(m['list'])} {m['to']} {m['p']}{m['end'] or '.'}"
 
 
 # "Person A's taking all four of them."
@@ -616,7 +604,7 @@ def _one_and_one41r(text: str, lexicon: Lexicon) -> str:
         return text
     if len(_ids(f"the {m['x']}", lexicon, "object")) != 1:
         return text
-    return _capital41r(re.sub(r"\bit\b", f"the {m['x']}", m["rest"], count=1, flags=_F))
+    return _capital40r(re.sub(r"\bit\b", f"the {m['x']}", m["rest"], count=1, flags=_F))
 
 
 # ", plain and simple."
@@ -705,7 +693,7 @@ def _straight_to41r(text: str, _lexicon: Lexicon) -> str:
 # "…, no, Mrs Khan's the one they're prescribed for."
 _THE_ONE_FOR41R = (
     r"(?P<cue>,\s*no,?\s*(?:(?:hang|hold) on|wait)?,\s*)"
-    rf"(?:(?:(?<=on, )|(?<=wait, ))it(?:'s| is) (?P<own>{_NAME41R})'s|(?P<q>{_NAME41R})(?:'s| is) "
+    rf"(?:(?:(?<=on, )|(?<=wait, ))it(?:'s| is) (?P<own>{_NAME40R})'s|(?P<q>{_NAME40R})(?:'s| is) "
     r"the one (?:(?:it's|it is|they're|they are|"
     r"that's|that is) (?:for|meant for|prescribed for|intended for|ordered for|needed for)|(?:who|"
     r"that) (?:gets|wants|needs|asked for|ordered|is getting) (?:it|them)))(?P<end>\s*(?:[,;.!]|$))"
@@ -833,7 +821,7 @@ def _just_those41r(text: str, lexicon: Lexicon) -> str:
     if re.search(_CUE_BEFORE41R, head, _F):
         return text
     node = _reading(head, lexicon)
-    if node is None or _has_or41r(node):
+    if node is None or has_choice(node):
         return text
     if len({t.target for t in tasks(node)}) != 1:
         return text
@@ -935,7 +923,7 @@ def _let_use41r(text: str, _lexicon: Lexicon) -> str:
 
 # "Carol's not picky: a mug for her, …"
 _NOT_PICKY41R = (
-    rf"^(?P<p>{_NAME41R})(?:'s| is)(?: not|n't) (?:picky|fussy|choosy|bothered|particular)"
+    rf"^(?P<p>{_NAME40R})(?:'s| is)(?: not|n't) (?:picky|fussy|choosy|bothered|particular)"
     r"\s*:\s*(?=\S)"
 )
 
@@ -957,9 +945,9 @@ def _not_picky41r(text: str, lexicon: Lexicon) -> str:
         if sex is not None and sex != PRONOUN_SEX[pro[0].lower()]:
             return text
         rest = f"{rest[: pro.start()]}{m['p']}{rest[pro.end() :]}"
-    rest = _capital41r(rest)
+    rest = _capital40r(rest)
     node = _reading(rest, lexicon)
-    return rest if node is not None and _has_or41r(node) else text
+    return rest if node is not None and has_choice(node) else text
 
 
 # -- turning a thing down, said another way -------------------------------------------------------
@@ -1189,7 +1177,7 @@ def _said41r(task: Task, lexicon: Lexicon) -> str:
 
 
 # "…, Mrs Khan's the one (they're for)."
-_THE_ONE41R = rf"(?:^|[,;.:!?]\s*)(?:no,?\s*)?(?P<q>{_NAME41R})(?:'s| is) the one\b"
+_THE_ONE41R = rf"(?:^|[,;.:!?]\s*)(?:no,?\s*)?(?P<q>{_NAME40R})(?:'s| is) the one\b"
 
 
 def _the_one_gets41r(text: str, node: Node, lexicon: Lexicon) -> None:
