@@ -398,11 +398,11 @@ def _one_of_them_gets41r(text: str, lexicon: Lexicon) -> str:
 # book: …"
 _SHARED_OUT41R = (
     r"^(?:(?P<a>(?:a|an|one) [a-z]+ (?:apiece|each)(?: for (?:the|both|all)[a-z' ]*|"
-    rf" for (?P<p1>{_NAME41R}) and (?P<p2>{_NAME41R}))?)|"
+    rf" for (?P<p1>{_NAME40R}) and (?P<p2>{_NAME40R}))?)|"
     r"(?P<b>(?:share|split|divide|dish|deal|hand|parcel) (?:out |up )?(?:them|these|those|the lot|"
     r"it|(?:the|all|these) (?:(?P<n>two|three|four|five|six) )?(?:things|items|bits|lot)|the "
     r"(?P<kinds>[a-z]+s))(?: out| up)?(?: between (?:them|the two(?: of them)?|both(?: of them)?|"
-    rf"the pair|(?P<p3>{_NAME41R}) and (?P<p4>{_NAME41R}))| down the middle| evenly| fairly)?"
+    rf"the pair|(?P<p3>{_NAME40R}) and (?P<p4>{_NAME40R}))| down the middle| evenly| fairly)?"
     r"(?:\s*,\s*(?:one|a thing|one thing) (?:apiece|each))?)|"
     r"(?P<d>the (?P<kinds2>[a-z]+s) (?:are|is) to be (?:shared|split|divided)(?: out| up)?"
     r"(?: between (?:them|the two|both))?)|"
@@ -954,12 +954,12 @@ def _not_picky41r(text: str, lexicon: Lexicon) -> str:
 
 # "Alice can do without the crisps, …", "No crisps for Alice, …"
 _TURNS_DOWN41R = (
-    rf"(?:^|(?<=[.;!?]\s))(?:(?P<p>{_NAME41R})(?: can do without| can manage without| could do "
+    rf"(?:^|(?<=[.;!?]\s))(?:(?P<p>{_NAME40R})(?: can do without| can manage without| could do "
     r"without|(?:'s| is) passing on| passes on|(?:'ll| will) pass on| can't stand| cannot stand|"
     r" has no use for|(?:'s| has) got no use for| has no need (?:of|for)| doesn't fancy| does not "
     r"fancy| doesn't care for| does not care for|(?: isn't| is not|'s not) keen on|(?:'s| has) "
     r"turned down| turned down) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?)|no (?P<y>(?:the )?[a-z]+"
-    rf"(?: [a-z]+)?) for (?P<q>{_NAME41R}))\s*[,;]\s*(?=[a-z])"
+    rf"(?: [a-z]+)?) for (?P<q>{_NAME40R}))\s*[,;]\s*(?=[a-z])"
 )
 
 
@@ -1052,7 +1052,7 @@ def _start_again41r(text: str, lexicon: Lexicon) -> str:
     m = re.match(_START_AGAIN41R, text.strip(), _F)
     if m is None:
         return text
-    rest = _capital41r(m["rest"])
+    rest = _capital40r(m["rest"])
     return rest if _reading(rest, lexicon) is not None else text
 
 
