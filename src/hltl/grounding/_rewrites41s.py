@@ -56,11 +56,12 @@ _PART_OF_DAY41S = re.compile(r"^(?:morning|afternoon|evening|night|week|weekend|
 # a clause that tells of a want, a need or a state (not an order)
 _WANT_SAID41S = re.compile(
     r"\b(?:needs?|needed|wants?|wanted|wanting|would (?:like|love|kill for|be glad of)|could "
-    r"(?:do with|use|murder|go)|fanc(?:y|ies)|(?:'s|is|was|been|are|were) after|asking for|asked "
+    r"(?:do with|use|murder)|fanc(?:y|ies)|(?:'s|is|was|been|are|were) after|asking for|asked "
     r"for|begging for|on about|eyeing|eying|set on|heart set on|gasping for|dying for|desperate "
     r"for|crying out for|longing for|itching for|aching for|pining for|hankering after|craving|"
-    r"must|got to have|in want of|in need of|put in for|called (?:for )?(?:it|them)|keen on|owed|"
-    r"deserves?|earned|hungry|thirsty|starving|parched|peckish|famished|ravenous)\b",
+    r"a must for|got to have|in want of|in need of|put in for|called (?:for )?(?:it|them)|keen "
+    r"on|owed|deserves?|earned|hungry|thirsty|starving|parched|peckish|famished|ravenous)\b"
+    r"(?! to (?:go|be|get|come|move|end up|head|wait|stay|have it|have them)\b)",
     _F,
 )
 # an order: a clause opening with a verb (after a courtesy)
@@ -73,8 +74,9 @@ _ORDER41S = re.compile(
 
 
 def _clause41s(before: str) -> str:
-    """The clause ``before`` ends with (after its last sentence end, semicolon or colon)."""
-    return re.split(r"[.;:!?]\s", before)[-1]
+    """The clause ``before`` ends with (after its last sentence end, semicolon, colon, comma, or
+    'and', 'so', 'then', 'but' joining clauses)."""
+    return re.split(r"[.;:!?,]\s|\s(?:and|so|then|but)\s", before)[-1]
 
 
 def _occasion41s(text: str, lexicon: Lexicon) -> str:
@@ -430,6 +432,72 @@ def _placed_for41s(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# -- session 41 (12s): where the person takes it, and what they have done to a surface ---------
+#
+# "Can Person B take the apple and the chips off to the piquet table?", "Person A's taking the
+# bottle home to the pole lathe lot": a person of the scene who takes the things (the one who gets
+# them) and where they take them after, a place or a group that names nothing of the scene ('home
+# to', 'off to', 'back to', 'round to' or 'to' + the / his / her …): their errand, taken off when
+# what is left reads as handing the things to that person alone. "Lena's got the plate rack sorted,
+# so give her the lemon": an opening remark that the person has done something to a surface of the
+# scene ('got the <surface> sorted / cleared / wiped / tidied / set / laid', 'sorted / cleared …
+# the <surface>'), then 'so' + a request whose one him / her fits that person: the remark taken
+# off and the person's name said in its place (the lead's session-37 rule: a remark's person gets
+# what follows).
+_TAKES_TO41S = re.compile(
+    r"(?P<who>\b[a-z]+(?: [a-z]+)?)(?:'s taking| is taking| can take| could take| will take|'ll "
+    r"take| takes| to take| may take| might take| take) (?P<what>[^,;:.!?]+?) (?P<to>(?:(?:home|off|"
+    r"back|away|round|over|along) )?to (?:the|his|her|their|a) (?P<where>[a-z][a-z' -]*?))(?=\s*"
+    r"(?:[.,;:!?]|$))",
+    _F,
+)
+_DONE_TO41S = re.compile(
+    r"^(?P<who>[a-z]+(?: [a-z]+)?)(?:'s| has) (?:got (?P<s1>(?:the|that) [a-z]+(?: [a-z]+)?) "
+    r"(?:sorted|cleared|wiped(?: down)?|tidied|cleaned|set|laid|done|ready)(?: out)?|(?:sorted|"
+    r"cleared|wiped(?: down)?|tidied|cleaned|set|laid) (?P<s2>(?:the|that) [a-z]+(?: [a-z]+)?))"
+    r"(?: already| now)?\s*,?\s*(?:and )?so,?\s+(?P<req>\S.*)$",
+    _F,
+)
+
+
+def _errand41s(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12s): where the person takes it, and what they have done to a surface, taken
+    off (above)."""
+    m = _TAKES_TO41S.search(text)
+    if m is not None and _only_person(m["who"], lexicon) and not _names(m["where"], lexicon):
+        (pid,) = _ids(m["who"], lexicon, "human")
+        out = text[: m.start("to")].rstrip() + text[m.end("to") :]
+        read = _reading(out, lexicon)
+        if (
+            read is not None
+            and {t.target for t in tasks(read)} == {pid}
+            and all(t.kind == "deliver" for t in tasks(read))
+        ):
+            return out
+    d = _DONE_TO41S.match(text)
+    if d is not None and _only_person(d["who"], lexicon):
+        surface = d["s1"] or d["s2"]
+        ids = _ids(surface, lexicon)
+        if not ids or _ids(surface, lexicon, "surface") != ids:
+            return text
+        (pid,) = _ids(d["who"], lexicon, "human")
+        req = d["req"]
+        said = re.findall(r"\b(?:he|him|his|she|her|hers|they|them|their)\b", req, _F)
+        if (
+            len(said) != 1
+            or said[0].lower() not in ("him", "her")
+            or not _fit36(pid, said[0], lexicon)
+            or _ids(req, lexicon, "human")
+        ):
+            return text
+        out = re.sub(r"\b(?:him|her)\b", d["who"], req, count=1, flags=_F)
+        out = out[:1].upper() + out[1:]
+        read = _reading(out, lexicon)
+        if read is not None and pid in {t.target for t in tasks(read)}:
+            return out
+    return text
+
+
 # -- session 41 (12s): checks of the whole reading ----------------------------------------------
 #
 # "Tablets across to Mr Lee, oh, silly me, Mrs Khan's the one they're prescribed for.", "Give Bob
@@ -512,6 +580,7 @@ _STEPS41S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _middle_remark41s,
     _group_remark41s,
     _placed_for41s,
+    _errand41s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-40 ones)
 _STEPS41S: tuple[Callable[[str, Lexicon], str], ...] = ()
