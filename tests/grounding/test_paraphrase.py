@@ -144,15 +144,12 @@ KNOWN_MISSES = frozenset(
         "Two items, both give Alice lah.",
         # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
         # on the desk for Noah"; session 33, 12t)
-        "Would you put the black pen in the box for Priya?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
-        "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
-        "the apple.",
         "Any book not yet on the bookshelf wants shelving.",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         "Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer "
@@ -189,7 +186,6 @@ KNOWN_MISSES = frozenset(
         "for her.",
         "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
         "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
-        "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
         "The bottle's for Person A and for no one else, she's earned it at the fun run.",
         "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
         "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
@@ -205,7 +201,6 @@ KNOWN_MISSES = frozenset(
         "Person A could really murder that bottle right now.",
         "Person B would love the chips, if there's any going.",
         "Person B's crying out for the chips after a day's fly fishing.",
-        "Omar needs the sponge to clean up after the moth trap.",
         "The bottle? Person A, for the seed swap. The chips? Same.",
         "Bottle's hers, Person A's, she's the organ builder.",
         "Sam left his notepad here, take it back to him.",
@@ -244,7 +239,6 @@ KNOWN_MISSES = frozenset(
         "That bottle's hers, Person A's.",
         "The chips are going Person A's way and the remaining thing ends up with Person B.",
         "Those work gloves, Mia wants them on the belt.",
-        "Lena's got the plate rack sorted, so give her the lemon.",
         "Ava's been eyeing the sippy cup since the treasure hunt; let her take it.",
         "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
         "First the small box onto the belt, next the medium box up on the pallet, and last of "
@@ -299,7 +293,6 @@ KNOWN_MISSES = frozenset(
         "the waitress is after the knife plus the tongs, sort her out",
         "Zoe's been asking for the scossors all lesson.",
         "Would you mind ever so much getting Bob his crisps, he's the washboard player?",
-        "Can Person B take the apple and the chips off to the piquet table?",
         "Would you be able to leave the bowl out on the tray for the enamel kiln?",
         "Is Zoe alright to have the globe?",
     }

@@ -1,8 +1,9 @@
 """Session-41 phrasings of issue 12 (engineer 12s): an occasion beside a want or a deadline
 (_occasion41s), a purpose where session 40's rule did not look (_purpose41s), a trade said of a
 person (_trade41s), a remark in the middle (_middle_remark41s), a group's remark (_group_remark41s),
-'for' + a person after a placement (_placed_for41s), and two checks (_the_one41s, _has_it41s);
-docs/grounding.md, "Session 41 (engineer 12s)". Other words, scenes and people than blind39's."""
+'for' + a person after a placement (_placed_for41s), an errand (_errand41s), and two checks
+(_the_one41s, _has_it41s); docs/grounding.md, "Session 41 (engineer 12s)". Other words, scenes
+and people than blind39's."""
 
 from __future__ import annotations
 
@@ -200,6 +201,28 @@ test_placed_for_refused = PLACED.test(
 
 def test_placed_for_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     PLACED.refused_without((r41s._placed_for41s,), monkeypatch)
+
+
+# -- where the person takes it; what they have done to a surface (_errand41s) --------------------
+
+ERRANDS = PhrasingCases()
+
+test_errands = ERRANDS.test(
+    ("Tom's taking the tape and the gloves off to the loading bay.", "tape>B & gloves>B", DEPOT),
+    ("Kofi's taking the torch home to his allotment.", "torch>A", WORKSHOP),
+    ("Priya's got the desk cleared, so pass her the notebook.", "notebook>A", OFFICE),
+)
+
+test_errands_refused = ERRANDS.test(
+    # a thing of the scene, not a surface, seen to
+    ("Priya's got the stapler sorted, so pass her the notebook.", None, OFFICE),
+    # a pronoun that does not fit the person
+    ("Grandad's got the play mat tidied, so pass her the bib.", None, NURSERY),
+)
+
+
+def test_errands_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ERRANDS.refused_without((r41s._errand41s,), monkeypatch)
 
 
 # -- the checks: '<a person>'s the one' of someone who gets nothing; 'she has the <thing>' --------

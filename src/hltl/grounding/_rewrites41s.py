@@ -446,9 +446,9 @@ def _placed_for41s(text: str, lexicon: Lexicon) -> str:
 # what follows).
 _TAKES_TO41S = re.compile(
     r"(?P<who>\b[a-z]+(?: [a-z]+)?)(?:'s taking| is taking| can take| could take| will take|'ll "
-    r"take| takes| to take| may take| might take| take) (?P<what>[^,;:.!?]+?) (?P<to>(?:(?:home|off|"
-    r"back|away|round|over|along) )?to (?:the|his|her|their|a) (?P<where>[a-z][a-z' -]*?))(?=\s*"
-    r"(?:[.,;:!?]|$))",
+    r"take| takes| to take| may take| might take| take) (?P<what>[^,;:.!?]+?) (?P<to>(?:(?:home|"
+    r"off|back|away|round|over|along) )?to (?:the|his|her|their|a) (?P<where>[a-z][a-z' -]*?))"
+    r"(?=\s*(?:[.,;:!?]|$))",
     _F,
 )
 _DONE_TO41S = re.compile(
