@@ -51,6 +51,8 @@ test_occasions_refused = OCCASIONS.test(
     # 'after' of an order puts it off
     ("Give Noah the scissors after the kite festival.", None, CLASSROOM),
     ("Hand Grandad the wipes after his face painting.", None, NURSERY),
+    # 'after' set off by a comma: when to hand it?
+    ("Noah's been after the scissors, after the kite festival.", None, CLASSROOM),
     # a meal or a part of the day: the time rules
     ("Noah needs the scissors after lunch.", None, CLASSROOM),
     # a his / her that fits no one who gets it
@@ -176,6 +178,8 @@ test_groups_refused = GROUPS.test(
     # a relative remark naming a thing of the scene, or saying a want
     ("The globe should go to Zoe rather than Noah, who's got the red book.", None, CLASSROOM),
     ("The globe should go to Zoe rather than Noah, who wants it.", None, CLASSROOM),
+    # a need of someone who gets nothing: a hint to give them something
+    ("The globe should go to Zoe rather than Noah, who's parched.", None, CLASSROOM),
 )
 
 

@@ -8,6 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _KEEP_WORDS, _ids, _names, _only_person, _reading
 from hltl.grounding._normalise4 import _fit36
+from hltl.grounding._rewrites38s import _NEEDY38S
 from hltl.grounding._rewrites39s import _plain39s, _shown39s, _subject39s
 from hltl.grounding._rewrites40s import _purpose_words40s
 from hltl.grounding.lexicon import Lexicon, person_name
@@ -29,7 +30,9 @@ from hltl.grounding.tree import Node, tasks
 # too; 'after' / 'since' / 'following' / 'during' of an order ("Give her the chips after her
 # charades evening") put it off or say something else: left to the time rules (refused). The words
 # name nothing of the scene and hold no word that counts, chooses or points back; a his / her of
-# them must fit someone who gets something in what is left; what is left must read.
+# them must fit someone who gets something in what is left; what is left must read. After a comma
+# 'after' / 'following' / 'during' may say when to hand it ("Bob wants the cup, after the match"):
+# left.
 _OCCASION41S = re.compile(
     r"(?P<sep>,?\s+)(?P<prep>after|before|ahead of|since|following|during) (?P<det>(?:the|a|an|"
     r"his|her|their|our|my|this|that) )?(?P<what>[a-z][a-z-]*(?:'s)?(?: [a-z][a-z-]*(?:'s)?)"
@@ -106,6 +109,8 @@ def _occasion41s(text: str, lexicon: Lexicon) -> str:
         prep = m["prep"].lower()
         if m["cleft"] is not None and not re.match(r"\s*what\b", clause, _F):
             return m.group(0)
+        if "," in m["sep"] and prep not in ("before", "ahead of", "since"):
+            return m.group(0)  # "Bob wants the cup, after the match": when to hand it?
         order = _ORDER41S.search(clause) is not None and not _WANT_SAID41S.search(clause)
         if order and prep not in ("before", "ahead of"):
             return m.group(0)
@@ -385,6 +390,8 @@ def _group_remark41s(text: str, lexicon: Lexicon) -> str:
         got = {t.target for t in tasks(read)}
         if pid in got and not _plain39s("person", rest, pid, lexicon):
             return text
+        if pid not in got and _NEEDY38S.search(rest):
+            return text  # "…, who's parched": a hint to give them something (session 39)
         return out
     return text
 
