@@ -132,6 +132,11 @@ test_middle = MIDDLE.test(
         "magazine>C & jug>B",
         WARD,
     ),
+    (
+        "Give Mr Lee the jug, his crossword club ran late, and Mrs Khan the magazine.",
+        "jug>B & magazine>C",
+        WARD,
+    ),
     ("Carol's back from paddleboarding, so she gets the apple.", "apple>C", CELL),
     ("Alice is home from bouldering, so she gets the cup.", "cup>A", CELL),
 )
@@ -139,6 +144,8 @@ test_middle = MIDDLE.test(
 test_middle_refused = MIDDLE.test(
     # a time: is it still to be handed over now?
     ("Magazine for Mrs Khan, she's back at six, and the jug for Mr Lee.", None, WARD),
+    # his is not Mrs Khan's
+    ("Give Mrs Khan the jug, his crossword club ran late, and Mr Lee the magazine.", None, WARD),
     # he is not Mrs Khan
     ("Magazine for Mrs Khan, he's back from the pool, and the jug for Mr Lee.", None, WARD),
 )

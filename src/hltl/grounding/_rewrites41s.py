@@ -266,16 +266,19 @@ def _trade41s(text: str, lexicon: Lexicon) -> str:
 
 # -- session 41 (12s): a remark in the middle of a request, and a gerund after 'back from' --------
 #
-# "Bottle for Person A, she's back from the scavenger hunt, and the chips for Person B": a remark of
-# he / she between commas before ', and' + the request's next piece: taken off when he / she fits
-# the one person named in the piece before it and session 39's rule would take it off of them
+# "Bottle for Person A, she's back from the scavenger hunt, and the chips for Person B", "…, her
+# spinet lesson ran long, and …": a remark of he / she or his / her <words> between commas before
+# ', and' + the request's next piece: taken off when he / she (his / her) fits the one person
+# named in the piece before it and session 39's rule would take it off of them
 # (_plain39s: no time, going, being done or wanting; 'back from …' is a time gone by), the piece
 # after names something of the scene, and what is left reads with that person getting something.
 # "Person A's back from tobogganing, so she gets …": 'back / home / in from' + a pastime said
 # with -ing and no determiner is the pastime ('from the tobogganing'), so the rules of remarks
 # read it as they read 'back from the pool'.
 _MIDDLE41S = re.compile(
-    r",\s*(?P<said>(?:he|she)(?:'s| is| has| was| had)\b[^,;:.!?]*?),\s*(?P<next>and\s+\S)", _F
+    r",\s*(?P<said>(?:(?:he|she)(?:'s| is| has| was| had)|(?:his|her) [a-z]+)\b[^,;:.!?]*?),\s*"
+    r"(?P<next>and\s+\S)",
+    _F,
 )
 _FROM_DOING41S = re.compile(r"\b(?P<from>(?:back|home|in) from) (?P<doing>[a-z]+ing)\b", _F)
 
@@ -296,9 +299,9 @@ def _middle_remark41s(text: str, lexicon: Lexicon) -> str:
         if (
             len(named) == 1
             and found is not None
-            and found[0] == "pron"
+            and found[0] in ("pron", "poss")
             and _fit36(next(iter(named)), found[1], lexicon)
-            and _plain39s("pron", found[2], next(iter(named)), lexicon)
+            and _plain39s(found[0], found[2], next(iter(named)), lexicon)
             and _names(out[m.start("next") :], lexicon)
         ):
             cut = f"{before}, {out[m.start('next') :]}"
