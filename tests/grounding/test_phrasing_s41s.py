@@ -1,9 +1,9 @@
 """Session-41 phrasings of issue 12 (engineer 12s): an occasion beside a want or a deadline
-(_occasion41s), a purpose where session 40's rule did not look (_purpose41s), a trade said of a
-person (_trade41s), a remark in the middle (_middle_remark41s), a group's remark (_group_remark41s),
-'for' + a person after a placement (_placed_for41s), an errand (_errand41s), and two checks
-(_the_one41s, _has_it41s); docs/grounding.md, "Session 41 (engineer 12s)". Other words, scenes
-and people than blind39's."""
+(_occasion41s), a purpose where session 40's rule did not look (_purpose41s, _all_for41s), a
+trade said of a person (_trade41s), a remark in the middle (_middle_remark41s), a group's remark
+(_group_remark41s), 'for' + a person after a placement (_placed_for41s), an errand (_errand41s),
+and two checks (_the_one41s, _has_it41s); docs/grounding.md, "Session 41 (engineer 12s)". Other
+words, scenes and people than blind39's."""
 
 from __future__ import annotations
 
@@ -92,6 +92,31 @@ test_purposes_refused = PURPOSES.test(
 
 def test_purposes_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     PURPOSES.refused_without((r41s._purpose41s,), monkeypatch)
+
+
+# -- "…. It's all for <a purpose>." (_all_for41s) ------------------------------------------------
+
+ALL_FOR = PhrasingCases()
+
+test_all_for = ALL_FOR.test(
+    ("Pass Zoe the ruler. It's all for the science fair.", "ruler>C", CLASSROOM),
+    (
+        "Put the drill and the hammer on the bench. They're all for the shed project.",
+        "drill@bench & hammer@bench",
+        WORKSHOP,
+    ),
+)
+
+test_all_for_refused = ALL_FOR.test(
+    # a person of the scene: whose is it?
+    ("Give Sam the stapler. It's all for Priya.", None, OFFICE),
+    # no request before it
+    ("It's all for the science fair.", None, CLASSROOM),
+)
+
+
+def test_all_for_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ALL_FOR.refused_without((r41s._all_for41s,), monkeypatch)
 
 
 # -- a trade said of a person (_trade41s) ----------------------------------------------------------

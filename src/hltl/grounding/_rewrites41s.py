@@ -213,6 +213,27 @@ def _purpose41s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# "Give Bob the cup. It's all for the ramblers.": 'all' of a closing "it's / that's / they're all
+# for <a purpose>" is the things the request moves, said together (session 36 reads "It's for the
+# bake sale."): said without it when the purpose names nothing of the scene and holds no word that
+# counts, chooses or points back.
+_ALL_FOR41S = re.compile(
+    r"(?P<head>(?:^|[.!?;,]\s*)(?:it|that|this|they|these|those)(?:'s| is| are|'re) )all "
+    r"(?P<rest>for (?:the|a|an|his|her|their|our) (?P<what>[a-z][a-z' -]*?))\s*(?P<end>[.!]?)\s*$",
+    _F,
+)
+
+
+def _all_for41s(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12s): "…. It's all for the ramblers." said as "…. It's for the ramblers."
+    (above), when that reads."""
+    m = _ALL_FOR41S.search(text)
+    if m is None or m.start() == 0 or not _purpose_words40s(m["what"], lexicon):
+        return text
+    out = f"{text[: m.start()]}{m['head']}{m['rest']}{m['end']}"
+    return out if _reading(out, lexicon) is not None else text
+
+
 # -- session 41 (12s): a trade said of a person ---------------------------------------------------
 #
 # "first the bottle for person b the madrigal singer and after that …", "give the bottle to person
@@ -586,6 +607,7 @@ def _has_it41s(text: str, node: Node, lexicon: Lexicon) -> None:
 _STEPS41S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _occasion41s,
     _purpose41s,
+    _all_for41s,
     _trade41s,
     _middle_remark41s,
     _group_remark41s,
