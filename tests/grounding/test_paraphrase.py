@@ -150,6 +150,8 @@ KNOWN_MISSES = frozenset(
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
         "Both blocks on the high chair, she likes to bang them.",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
+        "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
+        "the apple.",
         "Any book not yet on the bookshelf wants shelving.",
         # blind27 (tuned on in session 29): refusals left at its one measurement (docs/grounding.md)
         "Person A gets the bottle Person B gets the chips no need to wrap them the greengrocer "
@@ -186,6 +188,7 @@ KNOWN_MISSES = frozenset(
         "for her.",
         "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
         "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
+        "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
         "The bottle's for Person A and for no one else, she's earned it at the fun run.",
         "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
         "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
@@ -201,6 +204,7 @@ KNOWN_MISSES = frozenset(
         "Person A could really murder that bottle right now.",
         "Person B would love the chips, if there's any going.",
         "Person B's crying out for the chips after a day's fly fishing.",
+        "Omar needs the sponge to clean up after the moth trap.",
         "The bottle? Person A, for the seed swap. The chips? Same.",
         "Bottle's hers, Person A's, she's the organ builder.",
         "Sam left his notepad here, take it back to him.",

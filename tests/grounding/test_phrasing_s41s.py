@@ -32,9 +32,9 @@ OCCASIONS = PhrasingCases()
 
 test_occasions = OCCASIONS.test(
     # a want or a need, then the occasion: it asks now
-    ("Grandad could do with the wipes during the face painting.", "wipes>B", NURSERY),
+    ("Grandad asked for the wipes during the face painting.", "wipes>B", NURSERY),
     ("Mia needs the tape ahead of the stocktake party.", "tape>A", DEPOT),
-    ("Lena would love the lemon after salsa.", "lemon>B", KITCHEN),
+    ("Lena would love the lemon after tap dancing.", "lemon>B", KITCHEN),
     # a cleft of the want, the occasion inside it
     ("What Kofi really wants after the ferret racing is the torch.", "torch>A", WORKSHOP),
     # two wants, the occasion closing the first
@@ -225,6 +225,7 @@ PLACED = PhrasingCases()
 
 test_placed_for = PLACED.test(
     ("Leave the ruler on the desk for Noah, thanks.", "ruler@desk", CLASSROOM),
+    ("Put the ruler on the desk for Noah.", "ruler@desk", CLASSROOM),
     ("Set the jug on the locker for Mr Lee.", "jug@bedside", WARD),
 )
 

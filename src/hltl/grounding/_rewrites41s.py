@@ -7,7 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _KEEP_WORDS, _ids, _names, _only_person, _reading
-from hltl.grounding._normalise4 import _fit36
+from hltl.grounding._normalise4 import _DOING37, _EVENTS37, _fit36
 from hltl.grounding._rewrites38s import _NEEDY38S
 from hltl.grounding._rewrites39s import _plain39s, _shown39s, _subject39s
 from hltl.grounding._rewrites40s import _purpose_words40s
@@ -82,6 +82,39 @@ def _clause41s(before: str) -> str:
     return re.split(r"[.;:!?,]\s|\s(?:and|so|then|but)\s", before)[-1]
 
 
+# what made the person want it, their own doing (sessions 35 and 37: 'after his darts practice',
+# 'after the wild swimming'; an event with 'the' says when: "Carol wants the cup after the
+# wedding", "What Bob needs after the show is …" stay refused): a word in -ing, or a practice,
+# game, lesson, solo … (_DOING37), not an event word (_EVENTS37); with 'the', 'a', 'that' only a
+# word in -ing; 'since' says a time gone by (any but an event word); 'during' only of a want told
+# as past ('put in for …', 'asked for …': when it was asked); of a want of one person, of objects,
+# no surface
+_PAST_WANT41S = re.compile(
+    r"\b(?:put in for|asked for|called for|begged for|ordered|wanted|was after|were after|went "
+    r"on about)\b",
+    _F,
+)
+
+
+def _caused41s(prep: str, det: str, what: str, clause: str, lexicon: Lexicon) -> bool:
+    """Whether ``what`` after ``prep`` (with determiner ``det``) closing ``clause`` is what made
+    the person want it (above)."""
+    last = what.split()[-1].lower()
+    if last in _EVENTS37:
+        return False
+    if len(_ids(clause, lexicon, "human")) != 1 or _ids(clause, lexicon, "surface"):
+        return False
+    if not _ids(clause, lexicon, "object") and not re.match(r"\s*what\b", clause, _F):
+        return False
+    if prep == "since":
+        return True
+    if prep == "during":
+        return bool(_PAST_WANT41S.search(clause))
+    if det in ("his", "her", "their", ""):
+        return bool(re.fullmatch(_DOING37, last, _F)) or last == "solo"
+    return last.endswith("ing")
+
+
 def _occasion41s(text: str, lexicon: Lexicon) -> str:
     """Session 41 (12s): an occasion beside a want, a need or a remark, or a deadline of an
     order, taken off (above), when what is left reads and its his / her fits someone who gets
@@ -117,6 +150,8 @@ def _occasion41s(text: str, lexicon: Lexicon) -> str:
         if not order and not _WANT_SAID41S.search(clause) and prep not in ("before", "ahead of"):
             return m.group(0)
         det = (m["det"] or "").strip().lower()
+        if prep not in ("before", "ahead of") and not _caused41s(prep, det, what, clause, lexicon):
+            return m.group(0)
         if det in ("his", "her"):
             owners.append(det)
         return ""
