@@ -93,7 +93,16 @@ object inside it ("Give the apple for the cricket tea to Bob."), as a sentence a
 for the stamp fair."), and "his/her/their <pastime>" after an entry of one handover naming its one
 person, fitting that person or another ("Give Bob the apple for her wild swim."): the entry, or
 refused; a purpose as an object's only recipient ("The apple for the ramblers.") and the request
-said after it to be for a later time (", it's for tonight"): refused.
+said after it to be for a later time (", it's for tonight"): refused. A fifteenth family (session
+41), idioms: blind39's want, choice and exclusion idioms said by idioms blind39 does not use, over
+grounded entries: an entry's one handover said by a want idiom ("Bob is dying for the apple.",
+"Bob has a hankering for the apple."): that handover; after an entry for another object: the entry
+and that handover; the want taken back ("Bob can do without the apple.", "Bob has gone off the
+apple.", "Bob is so over the apple."), alone or after the entry: refused; a choice left to the
+robot between two objects, the objects of a kind or two people ("Give Bob the apple or the cup,
+take your pick.", "Bob gets a mug, suit yourself which."): that choice; of a kind the scene lacks:
+refused; and an exclusion idiom ("Give Bob the mugs, all but the red one.", "Give Bob everything
+but the apple."): every other one of the kind, or of the scene.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -899,6 +908,121 @@ PURPOSE_FORMS = (
     "only",
     "time",
 )
+# idioms (session 41; blind39's refusals were want idioms "would be glad of", "'s gasping for",
+# choice idioms "your call", "whichever's free", "a drink apiece" and exclusions "bar the mugs",
+# "rather than P"; 12 and 12r write rules for these kinds this session). So that a rule for a kind
+# is measured on forms it was not written on, the family says the kinds by idioms blind39 does not
+# use, over grounded entries (a request that reads), each with the verdict it must get; a refusal
+# is always allowed. A want idiom of the entry's one handover of a one-of-a-kind object to a person
+# (WANT_IDIOMS, `want`): that handover; after a grounded entry for a one-of-a-kind object it does
+# not name (`want tail`): the entry's reading and that handover (as a tail's, see ``kept``). An
+# idiom that takes the want back (CANCELLED: "can do without", "has gone off", "is so over", a want
+# that has passed) said alone (`cancelled`) or after the entry of that handover (`cancelled after`:
+# the entry said and then unsaid): refused. A choice left to the robot (CHOICE_IDIOMS) between two
+# one-of-a-kind objects for a person (`choice`), between the objects of a kind the scene has
+# several of (CHOICE_KIND: `choice kind`) and between two people for the entry's object
+# (CHOICE_PERSON: `choice person`): that choice; a choice of a kind the scene lacks (CHOICE_ABSENT
+# with ABSENT_KINDS: `choice absent`): refused. An exclusion idiom of one of a kind the scene tells
+# apart (EXCLUSION with {x} its word: `exclusion`): every other one of the kind; and of one object
+# from everything in the scene (EXCLUSION_ALL: `exclusion all`): every other object of the scene
+# to the person.
+WANT_IDIOMS = (
+    "{P} fancies the {o}.",
+    "{P} is dying for the {o}.",
+    "{P} has a hankering for the {o}.",
+    "{P} has a yen for the {o}.",
+    "{P} is crying out for the {o}.",
+    "{P} is longing for the {o}.",
+    "{P} is itching to get hold of the {o}.",
+    "{P} would give anything for the {o}.",
+    "{P} wouldn't say no to the {o}.",
+    "{P} is in the market for the {o}.",
+    "{P} would be grateful for the {o}.",
+    "{P} is angling for the {o}.",
+    "{P} is hankering after the {o}.",
+    "{P} is on the lookout for the {o}.",
+    "{P} would jump at the {o}.",
+    "The {o} would make {p}'s day.",
+)
+CANCELLED = (  # refused: the want taken back, given up, had already, or passed
+    "{P} can do without the {o}.",
+    "{P} has gone off the {o}.",
+    "{P} has no use for the {o}.",
+    "{P} has lost interest in the {o}.",
+    "{P} can live without the {o}.",
+    "{P} is fed up with the {o}.",
+    "{P} has finished with the {o}.",
+    "{P} is so over the {o}.",
+    "{P} has gone cold on the {o}.",
+    "{P} was dying for the {o}, but not any more.",
+    "{P} had a hankering for the {o}, but it's passed.",
+    "{P} wouldn't thank you for the {o}.",
+    "{P} is through with the {o}.",
+    "{P} doesn't fancy the {o}.",
+    "{P} has already got the {o}.",
+)
+CHOICE_IDIOMS = (  # {o}, {x} two one-of-a-kind objects, {p} a person
+    "Give {p} the {o} or the {x}, take your pick.",
+    "Take your pick: the {o} or the {x} for {p}.",
+    "{P} gets the {o} or the {x}, suit yourself which.",
+    "The {o} or the {x} for {p}, whichever takes your fancy.",
+    "The {o} or the {x} to {p}, I'll leave it with you.",
+    "Give {p} the {o} or the {x}, dealer's choice.",
+    "Hand {p} the {o} or the {x}, I'm not fussed which.",
+    "The {o} or the {x} for {p}, it's your shout.",
+    "Either the {o} or the {x} for {p}, as you see fit.",
+)
+CHOICE_KIND = (  # {c} a kind the scene has several of, {cs} its plural
+    "Give {p} whichever {c} you like.",
+    "{P} gets a {c}, take your pick.",
+    "Any {c} you fancy for {p}.",
+    "A {c} for {p}, suit yourself which.",
+    "Pick out one of the {cs} for {p}, any you like.",
+    "{P} can have a {c}, I'll leave the choice to you.",
+)
+CHOICE_PERSON = (  # {q} another person of the scene
+    "Give the {o} to {p} or {q}, take your pick.",
+    "The {o} goes to {p} or {q}, suit yourself which.",
+    "{P} or {q} can have the {o}, whoever you like.",
+    "Hand the {o} to {p} or {q}, your pick.",
+)
+CHOICE_ABSENT = (  # {a} a kind the scene has none of, {plural} its plural: refused
+    "Give {p} whichever {a} you like.",
+    "Take your pick of the {plural} for {p}.",
+    "{P} gets one of the {plural}, suit yourself which.",
+)
+ABSENT_KINDS = ("umbrella", "teapot", "stapler", "ladle", "torch", "kazoo", "colander")
+EXCLUSION = (  # {x} the word telling one of the kind apart: every other one of the kind
+    "Give {p} all the {cs} but the {x} one.",
+    "Give {p} the {cs}, all but the {x} one.",
+    "Every {c} save the {x} one to {p}.",
+    "The {cs} to {p}, minus the {x} one.",
+    "{P} gets the {cs}, leaving out the {x} one.",
+    "Give {p} the {cs}, the {x} one excepted.",
+    "Give {p} the {cs}, not counting the {x} one.",
+    "Give {p} the {cs}, with the exception of the {x} one.",
+    "All the {cs} to {p} other than the {x} one.",
+)
+EXCLUSION_ALL = (  # {o} a one-of-a-kind object: every other object of the scene
+    "Give {p} everything but the {o}.",
+    "{P} gets the lot, save the {o}.",
+    "{P} can have the whole lot apart from the {o}.",
+    "Everything for {p}, hold the {o}.",
+    "Give {p} the lot minus the {o}.",
+    "{P} gets everything, leave out the {o}.",
+)
+IDIOM_FORMS = (
+    "want",
+    "cancelled",
+    "cancelled after",
+    "choice person",
+    "want tail",
+    "choice",
+    "choice kind",
+    "choice absent",
+    "exclusion",
+    "exclusion all",
+)
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -914,6 +1038,7 @@ Family = Literal[
     "counts",
     "remarks",
     "purposes",
+    "idioms",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -2273,6 +2398,115 @@ def purposes(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Itera
         yield variant(_then(text, rng.choice(times)), "time", refused=True)
 
 
+def _fits(form: str, scene: Scene) -> bool:
+    """Whether ``form`` names nothing of ``scene`` but what its keys ({o}, {p} …) say."""
+    return _names_nothing(re.sub(r"\{\w+\}", "", form), scene)
+
+
+def idioms(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The idiom variants of one grounded entry (IDIOM_FORMS; none of a refused one). For an entry
+    of one handover of a one-of-a-kind object to a person: that handover said by a want idiom
+    (`want`: the handover), the want taken back alone and after the entry (`cancelled`,
+    `cancelled after`: refused) and the object left to the robot between that person and another
+    (`choice person`: that choice). For any grounded entry: a want idiom after it for a
+    one-of-a-kind object it does not name (`want tail`: the entry and that handover), a choice
+    left to the robot between two one-of-a-kind objects for a person (`choice`; the entry's own
+    object and person where it has one handover of a one-of-a-kind object), between the objects of
+    a kind the scene has several of (`choice kind`) and of a kind it lacks (`choice absent`:
+    refused), and an exclusion idiom of one of a kind the scene tells apart (`exclusion`: every
+    other one of it) and of one one-of-a-kind object from everything (`exclusion all`: every
+    other object of the scene). Only forms naming nothing of the scene but their keys are said."""
+    want = entry.want
+    if want is None:
+        return
+    text = entry.text.strip()
+
+    def variant(said: str, to: Node | None, form: str, added: Task | None = None) -> Variant:
+        must: Must = "same" if to is not None else "refuse"
+        return Variant(part, entry.scene, said, to, must, "idioms", (), form, added)
+
+    def say(forms: tuple[str, ...], **keys: str) -> str | None:
+        fitting = [f for f in forms if _fits(f, scene)]
+        if not fitting:
+            return None
+        if "p" in keys:
+            keys["P"] = keys["p"][:1].upper() + keys["p"][1:]
+        said = rng.choice(fitting).format(**keys)
+        return said[:1].upper() + said[1:]
+
+    unique = _unique_objects(scene)
+    one = (
+        want
+        if isinstance(want, Task)
+        and want.kind == "deliver"
+        and want.target is not None
+        and want.obj in unique
+        else None
+    )
+    if one is not None and one.target is not None:
+        o, p = _name(scene, one.obj), _name(scene, one.target)
+        if (said := say(WANT_IDIOMS, o=o, p=p)) is not None:
+            yield variant(said, one, "want")
+        if (said := say(CANCELLED, o=o, p=p)) is not None:
+            yield variant(said, None, "cancelled")
+        if (said := say(CANCELLED, o=o, p=p)) is not None:
+            sentence = text if text.endswith((".", "!", "?")) else text + "."
+            yield variant(f"{sentence} {said}", None, "cancelled after")
+        others = [h.id for h in scene.humans if h.id != one.target]
+        if others:
+            q = rng.choice(others)
+            if (said := say(CHOICE_PERSON, o=o, p=p, q=_name(scene, q))) is not None:
+                to = Group("or", (one, Task("deliver", one.obj, q)))
+                yield variant(said, to, "choice person")
+    text_said, free = _sentence_and_free(entry, scene)
+    if free:
+        oid, hid = rng.choice(free), rng.choice(scene.humans).id
+        said = say(WANT_IDIOMS, o=_name(scene, oid), p=_name(scene, hid))
+        if said is not None:
+            added = Task("deliver", oid, hid)
+            yield variant(f"{text_said} {said}", Group("and", (want, added)), "want tail", added)
+    if len(unique) >= 2:
+        if one is not None and one.target is not None:
+            oid, hid = one.obj, one.target
+            xid = rng.choice([u for u in unique if u != oid])
+        else:
+            oid, xid = rng.sample(unique, 2)
+            hid = rng.choice(scene.humans).id
+        o, x, p = _name(scene, oid), _name(scene, xid), _name(scene, hid)
+        if (said := say(CHOICE_IDIOMS, o=o, x=x, p=p)) is not None:
+            to = Group("or", (Task("deliver", oid, hid), Task("deliver", xid, hid)))
+            yield variant(said, to, "choice")
+    plurals = _plurals(scene)
+    if plurals:
+        cs, (c, ids) = rng.choice(sorted(plurals.items()))
+        hid = rng.choice(scene.humans).id
+        if (said := say(CHOICE_KIND, c=c, cs=cs, p=_name(scene, hid))) is not None:
+            yield variant(
+                said, Group("or", tuple(Task("deliver", i, hid) for i in ids)), "choice kind"
+            )
+    absent = [a for a in ABSENT_KINDS if _names_nothing(f"{a} {_plural(a)}", scene)]
+    if absent:
+        a, hid = rng.choice(absent), rng.choice(scene.humans).id
+        keys = {"a": a, "plural": _plural(a), "p": _name(scene, hid)}
+        if (said := say(CHOICE_ABSENT, **keys)) is not None:
+            yield variant(said, None, "choice absent")
+    told = _told_apart(scene)
+    if told:
+        c, cs, ids, words = rng.choice(told)
+        oid = rng.choice(sorted(words))
+        hid = rng.choice(scene.humans).id
+        said = say(EXCLUSION, c=c, cs=cs, x=words[oid], p=_name(scene, hid))
+        if said is not None:
+            rest = tuple(Task("deliver", i, hid) for i in ids if i != oid)
+            yield variant(said, rest[0] if len(rest) == 1 else Group("and", rest), "exclusion")
+    if unique and 2 < len(scene.objects) <= 8:
+        oid, hid = rng.choice(unique), rng.choice(scene.humans).id
+        said = say(EXCLUSION_ALL, o=_name(scene, oid), p=_name(scene, hid))
+        if said is not None:
+            rest = tuple(Task("deliver", b.id, hid) for b in scene.objects if b.id != oid)
+            yield variant(said, Group("and", rest), "exclusion all")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -2352,6 +2586,7 @@ def generated(
     rng_remarks = random.Random(f"remarks:{seed}")
     rng_remarks39 = random.Random(f"remarks39:{seed}")
     rng_purposes = random.Random(f"purposes:{seed}")
+    rng_idioms = random.Random(f"idioms:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -2401,6 +2636,9 @@ def generated(
                     yield v, scene
             if "purposes" in families:
                 for v in purposes(part, entry, scene, rng_purposes):
+                    yield v, scene
+            if "idioms" in families:
+                for v in idioms(part, entry, scene, rng_idioms):
                     yield v, scene
 
 

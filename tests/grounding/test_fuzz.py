@@ -36,12 +36,17 @@ added from blind37's kind (by a pronoun before, a possessive after, "we" and the
 after, a sentence between two, a "who" clause after a name: the entry; a seed's earlier remarks
 unchanged), the purpose family of session 40 (a purpose "for <an event or group>" or "for his/her
 <pastime>" beside a request: the entry; as an object's only recipient, or the request said to be
-for a later time: refused), and the wrappers and take-backs of a seed unchanged by them."""
+for a later time: refused), the idiom family of session 41 (an entry's one handover said by a want
+idiom blind39 does not use: that handover; after an entry: the entry and that handover; the want
+taken back: refused; a choice left to the robot by an idiom: that choice; of a kind the scene
+lacks: refused; an exclusion idiom: every other one), and the wrappers and take-backs of a seed
+unchanged by them."""
 
 from __future__ import annotations
 
 import random
 import re
+from typing import Literal
 
 import pytest
 
@@ -214,6 +219,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "afterthoughts",
         "remarks",
         "purposes",
+        "idioms",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -233,7 +239,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert (
         "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts', " in err
     )
-    assert "'remarks', 'purposes')" in err
+    assert "'remarks', 'purposes', 'idioms')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -2625,4 +2631,202 @@ def test_over_the_corpus_each_purpose_names_what_it_says() -> None:
                 for word in (*_PURPOSES, *fuzz.PURPOSE_OWN):
                     if word in x:
                         assert fuzz._names_nothing(word, scene), (word, v.text)
+    assert min(kinds.values()) >= 20, kinds
+
+
+# -- session 41: want, choice and exclusion idioms blind39 does not use ---------------------------
+
+_IDIOM_LISTS: dict[str, tuple[str, ...]] = {
+    "want": fuzz.WANT_IDIOMS,
+    "want tail": fuzz.WANT_IDIOMS,
+    "cancelled": fuzz.CANCELLED,
+    "cancelled after": fuzz.CANCELLED,
+    "choice": fuzz.CHOICE_IDIOMS,
+    "choice kind": fuzz.CHOICE_KIND,
+    "choice person": fuzz.CHOICE_PERSON,
+    "choice absent": fuzz.CHOICE_ABSENT,
+    "exclusion": fuzz.EXCLUSION,
+    "exclusion all": fuzz.EXCLUSION_ALL,
+}
+
+
+def _idioms(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.idioms("t", entry, scene, random.Random(seed)))
+
+
+def _idiom_of(v: fuzz.Variant, entry: str) -> tuple[str, dict[str, str]]:
+    """The idiom ``v`` says by its form (after ``entry`` as a sentence for `want tail` and
+    `cancelled after`) and what its keys say ("P" as "p", lower case)."""
+    said = v.text
+    if v.form in ("want tail", "cancelled after"):
+        sentence = entry if entry.endswith((".", "!", "?")) else entry + "."
+        assert said.startswith(sentence + " "), said
+        said = said[len(sentence) + 1 :]
+    for form in _IDIOM_LISTS[v.form]:
+        pattern = re.escape(form)
+        for key in ("o", "x", "p", "P", "q", "c", "cs", "a", "plural"):
+            pattern = pattern.replace(re.escape("{" + key + "}"), f"(?P<{key}>.+?)")
+        m = re.fullmatch(pattern, said)
+        if m:
+            keys = {k: w.lower() for k, w in m.groupdict().items()}
+            if "P" in keys:
+                keys["p"] = keys.pop("P")
+            return form, keys
+    raise AssertionError(f"{v.form}: {v.text!r} says no idiom of its form")
+
+
+def _one_named(words: str, scene: Scene, kind: Literal["object", "human"]) -> str:
+    (one,) = fuzz._named(f"the {words}" if kind == "object" else words, scene, kind)
+    return one
+
+
+def test_an_idiom_is_said_by_every_form_with_every_idiom() -> None:
+    """After an entry of one handover of a one-of-a-kind object to a person: every form, each as
+    its form and with what it must read as (its want idioms and take-backs of that object and
+    that person), and every idiom naming nothing of the cell scene is said."""
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    said: set[str] = set()
+    apple = parse_expectation("apple>B")
+    for seed in range(300):
+        made = _idioms(entry, CELL, seed)
+        assert [v.form for v in made] == list(fuzz.IDIOM_FORMS)
+        for v in made:
+            assert v.family == "idioms" and v.readings == ()
+            form, keys = _idiom_of(v, entry.text)
+            said.add(form)
+            refused = v.form in ("cancelled", "cancelled after", "choice absent")
+            assert (v.must == "refuse") is refused is (v.want is None)
+            if v.form in ("want", "cancelled", "cancelled after", "choice person"):
+                assert _one_named(keys["o"], CELL, "object") == "apple"
+                assert _one_named(keys["p"], CELL, "human") == "B"
+            if v.form == "want":
+                assert v.want == apple
+            elif v.form == "choice person":
+                q = _one_named(keys["q"], CELL, "human")
+                assert q != "B" and v.want == Group("or", (apple, Task("deliver", "apple", q)))
+            elif v.form == "want tail":
+                added = Task(
+                    "deliver",
+                    _one_named(keys["o"], CELL, "object"),
+                    _one_named(keys["p"], CELL, "human"),
+                )
+                assert added.obj != "apple" and v.added == added
+                assert v.want == Group("and", (apple, added))
+            elif v.form == "choice":
+                x = _one_named(keys["x"], CELL, "object")
+                assert x != "apple" and v.want == Group("or", (apple, Task("deliver", x, "B")))
+            elif v.form == "choice kind":
+                h = _one_named(keys["p"], CELL, "human")
+                mugs = (Task("deliver", "mug_red", h), Task("deliver", "mug_blue", h))
+                assert keys.get("c", "mug") == "mug" and keys.get("cs", "mugs") == "mugs"
+                assert v.want == Group("or", mugs)
+            elif v.form == "choice absent":
+                absent = {*fuzz.ABSENT_KINDS, *map(fuzz._plural, fuzz.ABSENT_KINDS)}
+                assert keys.get("a", keys.get("plural")) in absent
+            elif v.form == "exclusion":
+                h = _one_named(keys["p"], CELL, "human")
+                other = {"red": "mug_blue", "blue": "mug_red"}[keys["x"]]
+                assert v.want == Task("deliver", other, h)
+            elif v.form == "exclusion all":
+                o, h = _one_named(keys["o"], CELL, "object"), _one_named(keys["p"], CELL, "human")
+                rest = [b.id for b in CELL.objects if b.id != o]
+                assert v.want == Group("and", tuple(Task("deliver", b, h) for b in rest))
+    every = {f for forms in _IDIOM_LISTS.values() for f in forms}
+    fitting = {f for f in every if fuzz._fits(f, CELL)}  # ("A {c} for {p}": "A" is Person A)
+    assert said == fitting and len(fitting) == len(every) - 1, fitting - said
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # two handovers, a placement, a choice: no want of the entry's own handover
+        (
+            "Give Bob the cup and Alice the apple.",
+            "cup>B & apple>A",
+            "want tail, choice, choice kind, choice absent, exclusion, exclusion all",
+        ),
+        (
+            "Put the cup on the shelf.",
+            "cup@shelf",
+            "want tail, choice, choice kind, choice absent, exclusion, exclusion all",
+        ),
+        (
+            "Give Bob a mug.",
+            "mug_red>B | mug_blue>B",
+            "want tail, choice, choice kind, choice absent, exclusion, exclusion all",
+        ),
+        # every one-of-a-kind object named: no want tail
+        (
+            "Give Bob the cup, the bottle, the chips and the apple.",
+            "cup>B & bottle>B & chips>B & apple>B",
+            "choice, choice kind, choice absent, exclusion, exclusion all",
+        ),
+    ],
+)
+def test_an_idiom_is_only_made_where_it_says_what_it_must(text: str, want: str, forms: str) -> None:
+    entry = _entry("cell", text, want)
+    made: set[str] = set()
+    for seed in range(20):
+        made |= {v.form for v in _idioms(entry, CELL, seed)}
+    assert made == set(forms.split(", ")), made
+
+
+def test_a_refused_entry_gets_no_idiom() -> None:
+    entry = Entry("cell", "Give her the mug.", None, ("mug_red", "mug_blue"))
+    assert all(_idioms(entry, CELL, seed) == [] for seed in range(10))
+
+
+def test_an_idiom_naming_a_thing_of_the_scene_is_left_out() -> None:
+    raw = load_scene(ROOT / "examples/scenes/grounding_cell.yaml").to_dict()
+    raw["objects"].append({"id": "torch", "category": "torch", "position": [0.5, 0.5, 0.05]})
+    raw["objects"].append({"id": "pick", "category": "pick", "position": [0.6, 0.5, 0.05]})
+    scene = scene_from_dict(raw)
+    entry = _entry("cell", "Give Bob the apple.", "apple>B")
+    kinds = set()
+    for seed in range(100):
+        for v in _idioms(entry, scene, seed):
+            form, keys = _idiom_of(v, entry.text)
+            assert "pick" not in form, v.text
+            if v.form == "choice absent":
+                kinds.add(keys.get("a", keys.get("plural", "")))
+    assert kinds and not any("torch" in k for k in kinds), kinds
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "form", "verdict"),
+    [
+        ("Bob fancies the apple.", "apple>B", "want", "exact"),
+        ("Bob fancies the apple.", "apple>C", "want", "wrong"),
+        ("Bob fancies the apple.", None, "cancelled", "wrong"),  # read where it must refuse
+        ("Bob can do without the apple.", None, "cancelled", "refused"),
+        ("Any mug you fancy for Bob.", "mug_red>B | mug_blue>B", "choice kind", "exact"),
+        ("Give Bob the mugs, all but the red one.", "mug_red>B", "exclusion", "wrong"),
+    ],
+)
+def test_an_idiom_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, form: str, verdict: str
+) -> None:
+    assert _judged(text, want, "idioms", form) == verdict
+
+
+def test_over_the_corpus_each_idiom_names_what_it_says() -> None:
+    """Every third entry of three parts: each variant says an idiom of its form, its refused
+    forms refused, and a want or take-back names the entry's own object and person."""
+    kinds = dict.fromkeys(fuzz.IDIOM_FORMS, 0)
+    rng = random.Random("idioms:41")
+    for part in PARTS:
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        for entry in corpus.entries[::3]:
+            scene = corpus.scenes[entry.scene]
+            for v in fuzz.idioms(part, entry, scene, rng):
+                kinds[v.form] += 1
+                refused = v.form in ("cancelled", "cancelled after", "choice absent")
+                assert (v.must == "refuse") is refused is (v.want is None)
+                _, keys = _idiom_of(v, entry.text.strip())
+                if v.form in ("want", "cancelled", "cancelled after"):
+                    assert isinstance(entry.want, Task)
+                    assert _one_named(keys["o"], scene, "object") == entry.want.obj
+                    assert _one_named(keys["p"], scene, "human") == entry.want.target
+                if v.form in ("want", "choice person"):
+                    assert v.want is not None and entry.want in tasks(v.want)
     assert min(kinds.values()) >= 20, kinds
