@@ -200,18 +200,9 @@ KNOWN_MISSES = frozenset(
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
         # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
-        "Dana, bless her, wants the banana, so could you be a dear and take it over? Thanks.",
-        "Person A could really murder that bottle right now.",
-        "Person B would love the chips, if there's any going.",
-        "Person B's crying out for the chips after a day's fly fishing.",
         "Omar needs the sponge to clean up after the moth trap.",
-        "The bottle? Person A, for the seed swap. The chips? Same.",
         "Bottle's hers, Person A's, she's the organ builder.",
-        "Sam left his notepad here, take it back to him.",
-        "The apple is for Alice. Crisps, Bob. The red mug can be left on the counter.",
         "Person A's having the cup and Person B the apple and the chips go to Person B too.",
-        "Start with the apple to Person B; next the bottle to Person A; finish with the cup to "
-        "Person B.",
         "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
         "crisps.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
@@ -219,10 +210,8 @@ KNOWN_MISSES = frozenset(
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "The applie goes on the shelf for now.",
-        "Could you stand the cup on the counter for the bellfounder?",
         "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
         "Could you hang the tongs on the plate rack, Marco's done with them?",
-        "Would the teacher be able to borrow the red book?",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
         "Rakhmat, as my Bashkir gran would say, and would you set the red mug on the shelf, "
         "please.",
@@ -286,7 +275,6 @@ KNOWN_MISSES = frozenset(
         "Person B's getting the bottle, oh scratch that, it's Person A, the papermaker, who "
         "gets it.",
         "Chips to Person A, oh wait, she wants the apple instead.",
-        "Stand the bottle on the, oh, no, just hand the thing to Person A.",
         "Bottle for Person A; sorry, I said that already, just the once.",
         "Person A gets chips, no, correction, she gets the bottle; the chips are Person B's.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
@@ -386,8 +374,10 @@ KNOWN_UNCLEAR = frozenset(
 # one, measured once at the end of session 39 (0 wrong), tuned on in session 40: asserted now, the
 # rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind39" written in session 40 by another engineer and
 # committed alone, reviewed by a second one, measured once at the end of session 40 (0 wrong),
-# tuned on in session 41: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# tuned on in session 41: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind40"
+# written in session 41 by another engineer and committed alone, measured once at the end of
+# session 41: not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind40"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -491,6 +481,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind38"].entries}) >= 3
     assert len(CORPORA["blind39"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind39"].entries}) >= 3
+    assert len(CORPORA["blind40"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind40"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -131,7 +131,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # another engineer and committed alone, never opened by the engineers who change the grounder before
 # its one measurement at the end of session 39; tuned on in session 40), blind39 (written in session
 # 40 by another engineer and committed alone, never opened by the engineers who change the grounder
-# before its one measurement at the end of session 40; tuned on in session 41).
+# before its one measurement at the end of session 40; tuned on in session 41), blind40 (written
+# in session 41 by another engineer and committed alone, never opened by the engineers who change
+# the grounder before its one measurement at the end of session 41; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -188,6 +190,7 @@ PARTS = (
     "blind37",
     "blind38",
     "blind39",
+    "blind40",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -4085,7 +4085,9 @@ def _why_said_first(text: str, lexicon: Lexicon) -> str:
         return text
     m = _rx(
         r"^([^,]+?) (?:dropped|lost|has lost|'s lost|hasn't had|has not had|hasn't got|forgot|"
-        r"left|misplaced) (?:his|her|their) ([a-z ]+?)(?: again| yet)?(?:,\s*the ([a-z]+) one)?,\s*"
+        # session 40 (12): where it was left ("Sam left his notepad here, take it back to him")
+        r"left|misplaced) (?:his|her|their) ([a-z ]+?)(?: again| yet| here| behind| over here| "
+        r"(?:on|in|at|by) the [a-z]+(?: [a-z]+)?)?(?:,\s*the ([a-z]+) one)?,\s*"
         r"(?:(?:pick|grab|get) it(?: up)? and )?(?:give|hand|pass|bring|take) it (?:back )?(?:over"
         r"|to (?:him|her|them))\s*(.*)$"
     ).match(text.strip())
@@ -5525,7 +5527,8 @@ def _frames18(text: str, lexicon: Lexicon) -> str:
         out,
     )
     out = _sub(
-        rf"^(?:would|could|will|is|are) {_P} (?:be )?able to (?:have|get|take|receive) {_X}"
+        rf"^(?:would|could|will|is|are) {_P} (?:be )?able to (?:have|get|take|receive|borrow) "
+        rf"{_X}"
         r"(?: from you)?(?:,? do you (?:think|reckon))?\s*\?$",
         asked,
         out,

@@ -5142,7 +5142,9 @@ def _doing25(text: str, lexicon: Lexicon) -> str:
         if (
             not person
             or verb in _DOING_VERBS25
-            or verb in VERBS
+            # session 40 (12): the posture verbs the lexicon took in then ('he wants to hang a
+            # mirror') are taken off as before, naming nothing of the scene
+            or (verb in VERBS and VERBS[verb] not in ("stand", "hang", "sit"))
             or _DOING_HELD25.search(rest)
             or not _names_nothing(rest, lexicon)
             or not _names(re.split(r"[.!?]\s", before)[-1], lexicon)

@@ -7616,7 +7616,7 @@ _WANT_FRAME37 = re.compile(
     r"gets|is getting|'s getting|could have|can have|is having|'s having|(?:is|are|'s|'re) for|"
     r"(?:'s|has|is|'d|had) been (?:craving|wanting|after|on about|asking for)|craving|"
     r"(?:was|is|'s) on about|(?:is|'s) (?:desperate|gasping|dying|parched|gagging) for|"
-    r"asked for)\b",
+    r"asked for|crying out for)\b",  # session 40 (12): "Person B's crying out for the chips"
     _F,
 )
 # the speaker's doing or a pastime said as a time, not a thing done: 'after his meeting' says when
@@ -7643,7 +7643,8 @@ _DOING37 = (
 _AFTER_DOING37 = re.compile(
     r"(?P<lead>,\s*|\s+)(?:after|(?:ever )?since|following) (?:(?P<pron>his|her|their)|the|"
     r"(?P<a>a|an) (?:(?:whole|full|long|hard|busy|good) )?(?:hour|day|morning|afternoon|evening|"
-    rf"week|session|shift|stint|night) (?:of|at)) (?P<doing>{_DOING37})(?=\s*(?:[,.;!?]|$))",
+    # session 40 (12): 'a day's <doing>' ("after a day's fly fishing") as 'a day of'
+    rf"week|session|shift|stint|night)(?: of| at|'s)) (?P<doing>{_DOING37})(?=\s*(?:[,.;!?]|$))",
     _F,
 )
 # after 'X is for P' only a doing said as one (a word in -ing, a game, a lesson …): a pastime's

@@ -36,6 +36,9 @@ def _want_idioms39(text: str, lexicon: Lexicon) -> str:
     for m in list(_WANT_IDIOM39.finditer(text))[::-1]:
         before = re.split(r"[,.;!?]\s*|\s+(?:and|but|so)\s+", text[: m.start()])[-1]
         what = re.split(r"[,.;!?]|\s+(?:and|but|so|while|after|since)\s+", text[m.end() :])[0]
+        # session 40 (12): when, said after the object ("could really murder that bottle right
+        # now"), is no part of it
+        what = re.sub(r"\s+(?:right now|just now|now|at the moment|this minute)\s*$", "", what)
         if not _only_person(before, lexicon) or not _things31(what, lexicon):
             continue
         if re.search(r"\b(?:her|him|them)\b", text[m.end() :], _F):

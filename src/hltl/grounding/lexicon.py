@@ -202,8 +202,20 @@ for _lemma, _forms in {
     "dump": ("dumps", "dumping", "dumped"),
     "belong": ("belongs",),  # "The red mug belongs on the shelf" (not "to Alice": phrasing)
     "live": ("lives",),  # session 28: "The stapler lives in the box" (where it is kept)
+    # session 40 (12): verbs of setting a thing down in a posture, by class ("stand the cup on
+    # the counter", "hang the tongs on the plate rack", "sit the teddy on the mat"); said of
+    # where a thing already is ("the cup is standing on the shelf") they are refused
+    # (_rewrites40.posture_state40); 'hang on' is a correction (a phrase, read first)
+    "stand": ("stands", "standing"),  # not "stood", "sat": "we've been stood here for ages"
+    "hang": ("hangs", "hanging", "hung"),
+    "sit": ("sits", "sitting"),
 }.items():
     _verb(_lemma, "put", *_forms)
+# session 40 (12): 'drop' is a placing verb in its other forms ("dropping the spoon in the
+# sink", "drops it in the sink"); the bare word stays the update command ('drop the cup task')
+VERB_CLASS["drop"] = "put"
+for _form in ("drops", "dropping", "dropped"):
+    VERBS[_form] = "drop"
 # pick: no task by itself, only an antecedent for "it" ("pick up the cup and give it to A")
 for _lemma, _forms in {
     "pick": ("picks", "picking", "picked"),
