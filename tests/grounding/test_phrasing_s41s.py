@@ -292,14 +292,3 @@ test_checked_read = PhrasingCases().test(
 )
 
 _ = normalise  # (the rewrites the refused-without tests take out are normalise._STEPS19's)
-
-
-# -- a want said after the request is no remark (session 39's _plain39s, fixed where it is) -------
-#
-# "Could you give person b the chips, thanks. Person A is hankering after the bottle." had read
-# chips>B: 'after the bottle' was taken for a time gone by and the want for a remark (12c's idioms
-# family, session 41). 'after' + a thing of the scene is kept: refused (the want is not read).
-test_want_after_kept = PhrasingCases().test(
-    ("Give Sam the stapler. Priya is hankering after the red pen.", None, OFFICE),
-    ("Could you pass Zoe the glue, please? Noah is pining after the globe.", None, CLASSROOM),
-)
