@@ -191,7 +191,8 @@ _PURPOSE41S = re.compile(
 
 def _ends_with_name41s(before: str, lexicon: Lexicon) -> bool:
     """Whether ``before`` ends with a name of the scene of one to three words ('high chair',
-    'Mrs Ortiz', 'Person A'), a 'please' after it aside."""
+    'Mrs Ortiz', 'Person A') that ends at its last word (not "… Marco. It's"), a 'please' after
+    it aside."""
     words = re.findall(r"[a-z0-9][a-z0-9'-]*", before.lower())
     while words and words[-1] in ("please", "thanks", "cheers", "ta"):
         words.pop()
@@ -199,9 +200,7 @@ def _ends_with_name41s(before: str, lexicon: Lexicon) -> bool:
         if len(words) < k:
             break
         tail = " ".join(words[-k:])
-        if _names(tail, lexicon) and _ids(tail, lexicon) == _ids(
-            words[-1] if k == 1 else tail, lexicon
-        ):
+        if _names(tail, lexicon) and (k == 1 or not _names(" ".join(words[-k:-1]), lexicon)):
             return True
     return False
 
