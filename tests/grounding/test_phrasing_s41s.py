@@ -85,11 +85,7 @@ test_purposes = PURPOSES.test(
 test_purposes_refused = PURPOSES.test(
     # the purpose is what "It's" says after the request: never cut to a bare "It's." (a correction
     # before it had read both objects handed over: 12c's idioms family, session 41)
-    (
-        "Stapler to Sam, um, no, I tell a lie, notepad to Sam. It's for the quiz league.",
-        None,
-        OFFICE,
-    ),
+    ("Salt to Lena, no, I tell a lie, knife to Lena. It's for the pancake race.", None, KITCHEN),
     # a group not in the scene after 'to'
     ("Hand the stapler for the poetry slam to the judges.", None, OFFICE),
     # a word that points back
