@@ -125,7 +125,7 @@ from hltl.bench.grounding import CORPUS_DIR, PARTS, Entry, load_corpus, show_tre
 from hltl.errors import GroundingError
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.offline import parse_instruction, spec_of
-from hltl.grounding.tree import Group, Node, Task, tasks
+from hltl.grounding.tree import Group, Node, Task, has_choice, tasks
 from hltl.spec.equivalence import counterexample
 from hltl.world.scene import Scene
 
@@ -1168,12 +1168,6 @@ def _after(opener: str, body: str, scene: Scene) -> str:
     return opener + body
 
 
-def _has_choice(node: Node) -> bool:
-    return isinstance(node, Group) and (
-        node.op == "or" or any(_has_choice(c) for c in node.children)
-    )
-
-
 def takebacks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
     """The take-back variants of one entry: one taken back (refused); for a grounded entry of one
     task naming one object, one taken back and replaced by a handover of another object (that
@@ -1204,7 +1198,7 @@ def takebacks(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iter
             yield Variant(part, entry.scene, said, fixed, "same", "takebacks")
     takes_back = text.lower().startswith(("scratch that", "no,", "actually", "forget", "sorry"))
     unnamed = [x for x in objects if x not in named]
-    if unnamed and not takes_back and not _has_choice(want):
+    if unnamed and not takes_back and not has_choice(want):
         opener = rng.choice(LET_GO).format(o=_name(scene, rng.choice(unnamed)))
         yield Variant(part, entry.scene, _after(opener, text, scene), want, "same", "takebacks")
 
@@ -1329,7 +1323,7 @@ def references(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Ite
     want = entry.want
     kinds, titles = _shared(scene)
     people = [(h.id, _name(scene, h.id)) for h in scene.humans]
-    if want is not None and not _has_choice(want):
+    if want is not None and not has_choice(want):
         objs = {t.obj for t in tasks(want)}
         named = _named(text, scene, "object")
         for kind, ids in kinds.items():
@@ -1641,7 +1635,7 @@ def afterthoughts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> 
             yield variant(_then(text, fixed), to, "reason")
             forms = [f for f in UNDECIDED if plain_end or f.startswith(". ")]
             yield variant(_then(text, rng.choice(forms).format(p=p, q=q)), None, "undecided")
-    if _has_choice(want):
+    if has_choice(want):
         return
     if not pronoun:
         who = _name(scene, rng.choice(scene.humans).id)
@@ -1902,7 +1896,7 @@ def deferrals(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iter
         body = text if before.endswith(". ") else _after(", ", text, scene)[2:]
         yield variant(before + body, "before")
     yield variant(text + rng.choice(SETTLED), "settled")
-    if entry.want is not None and _has_choice(entry.want):
+    if entry.want is not None and has_choice(entry.want):
         if text.endswith("?") or rng.random() < 0.5:
             said = text + rng.choice(YOURS_AFTER)
         else:
@@ -2098,7 +2092,7 @@ def counts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         p = _name(scene, hid)
         said = rng.choice(ANY_OF).format(p=p, P=p[:1].upper() + p[1:], c=c, cs=cs)
         yield variant(said, Group("or", tuple(Task("deliver", i, hid) for i in ids)), "any")
-    if want is None or _has_choice(want):
+    if want is None or has_choice(want):
         return
     named = _objects_named(text, scene)
     unique = _unique_objects(scene)

@@ -52,7 +52,7 @@ import pytest
 
 from hltl.bench.grounding import CORPUS_DIR, Entry, load_corpus, parse_expectation, show_tree
 from hltl.grounding.lexicon import Lexicon, lex
-from hltl.grounding.tree import Group, Node, Task, tasks
+from hltl.grounding.tree import Group, Node, Task, has_choice, tasks
 from hltl.world.scene import Scene, load_scene, scene_from_dict
 from tests.grounding import fuzz
 from tests.grounding.helpers import (
@@ -1495,7 +1495,7 @@ def test_over_the_corpus_each_deferral_variant_names_what_it_says() -> None:
                 forms, at = said[v.form]
                 if v.form == "yours":  # said after the entry, or joined to it
                     assert v.want == entry.want and entry.want is not None
-                    assert fuzz._has_choice(entry.want)
+                    assert has_choice(entry.want)
                     if not v.text.endswith(fuzz.YOURS_AFTER):
                         forms = fuzz.YOURS_JOINED
                         text = text.rstrip(".!")

@@ -234,58 +234,20 @@ KNOWN_MISSES = frozenset(
         "Those work gloves, Mia wants them on the belt.",
         "Ava's been eyeing the sippy cup since the treasure hunt; let her take it.",
         "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
-        "First the small box onto the belt, next the medium box up on the pallet, and last of "
-        "all Tom gets the tape.",
         "Carol's a lorimer and not picky: a mug for her, red or blue, grab whichever is handy.",
-        "Up on the shelf with the pair of them, the bottle and the crisps, the washboard "
-        "band's using the table.",
-        "Give one of them the crisps, Alice or Bob, I'll let you pick.",
-        "A drink apiece for the crumhorn duo: cup goes to Person A, bottle goes to Person B.",
         "Person B's a reed cutter and takes anything, so any of the four things will do him.",
-        "Share them out, one apiece: chips for Person A, bottle for Person B, they've a "
-        "bezique match on.",
-        "Person A can have the bottle, it's the only one anyway.",
-        "Person B isn't fussy between the chips and the bottle, bring whichever's closest.",
         "Sam can take whatever pen he likes so long as it isn't the red one, the etcher "
         "borrowed that.",
-        "Stick a box on the conveyor, the small or the medium, your call.",
-        "The both of the plates out on the counter for the green wood carvers, please.",
-        "Each student gets a book: the green one to Zoe and the red one to Noah.",
-        "Grandad or Ava, whichever's free, can take the teddy.",
-        "Split the four things down the middle: cup plus apple for Person A, and bottle plus "
-        "chips for Person B.",
         "Person A's taking all four of them home to the pole lathe lot.",
-        "The pair of them to Person B, bottle and chips.",
         "Just one bottle, Person A's, she's a papermaker and needs the one only.",
-        "There's only the one bottle going and it's Person A's, for the spoon carving.",
-        "One bottle and one person in the room, so Person A gets it, plain and simple.",
-        "The trio of pens goes in the box, every one of them, the lead light class is over.",
         "Lock both the spanners away in the locker now that the wainwright's gone.",
-        "Every last thing bar the mugs goes to Alice for her bocce team picnic.",
-        "Not the bottle, mind, it's the crisps that Bob's after since his sackbut lesson.",
-        "Person B's to get the chips, just those, nothing more for him.",
-        "Hand the cup to Person A, forget about the apple for her.",
-        "Never mind about the chips; it's the bottle Person A wants for her pictionary night.",
-        "Nothing to wait for, the bottle can go to Person A straight off.",
-        "Whatever's left that isn't the bottle goes to Person A.",
-        "Mr Lee's to have the grey blanket; the blue one's not for him.",
-        "Tom doesn't need the scanner, give him the tape instead.",
-        "Keep the wipes away from Lily and let her cuddle the teddy instead.",
-        "Bottle up on the shelf, oh no, hang about, straight to Alice.",
-        "Person B's getting the bottle, oh scratch that, it's Person A, the papermaker, who "
-        "gets it.",
-        "Chips to Person A, oh wait, she wants the apple instead.",
-        "Bottle for Person A; sorry, I said that already, just the once.",
-        "Person A gets chips, no, correction, she gets the bottle; the chips are Person B's.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
         "Tablets across to Mr Lee, oh, silly me, Mrs Khan's the one they're prescribed for, "
         "the crumhorn lady.",
         "the chips are person b's, he's a ditcher and starving",
         "person a's got to have the bottle ahead of her boggle night",
         "the waitress is after the knife plus the tongs, sort her out",
-        "Zoe's been asking for the scossors all lesson.",
         "Would you mind ever so much getting Bob his crisps, he's the washboard player?",
-        "Would you be able to leave the bowl out on the tray for the enamel kiln?",
         "Is Zoe alright to have the globe?",
     }
 )
@@ -297,8 +259,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind37 (tuned on in session 39)
         # blind38 (tuned on in session 40)
         # blind39 (tuned on in session 41)
-        "Person A wants one of the drinks, she said which but I forget.",
-        "Give the bottle to Person A, no, hang on, the other one, or was it? Not sure now.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import normalise
+from hltl.grounding import _rewrites41r, normalise
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
@@ -351,7 +351,14 @@ test_corrections = CASES.test(
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-36 (12r) steps taken out: each
     rule is what reads it. (12s's remark rule of sessions 39-40 takes off "she won the bet" too,
-    and the correction then reads by older rules: taken out as well.)"""
+    and the correction then reads by older rules: taken out as well; session 41's (12r)
+    distribution announced then listed reads "Each patient gets a blanket: …" too: taken out.)"""
     CASES.refused_without(
-        (*normalise._STEPS36R, *normalise._STEPS39S_FIRST, *normalise._STEPS39S), monkeypatch
+        (
+            *normalise._STEPS36R,
+            *normalise._STEPS39S_FIRST,
+            *normalise._STEPS39S,
+            _rewrites41r._shared_out41r,
+        ),
+        monkeypatch,
     )

@@ -236,7 +236,9 @@ def _plain39s(kind: str, rest: str, who: str | None, lexicon: Lexicon) -> bool:
     nothing that could change who gets what or when (above)."""
     plain = _GONE_BY38S.sub(" ", rest)
     plain = _TO_DO39S.sub(lambda m: f"{m['got']} {m['what']}", plain)
-    plain = _SINCE39S.sub(" ", plain.strip())
+    # (session 41, lead: not 'after the apple', a thing of the scene: "Carol is hankering after
+    # the apple" is a want, not a time gone by)
+    plain = _SINCE39S.sub(lambda m: m[0] if _names(m[0], lexicon) else " ", plain.strip())
     plain = _NAMED_TIME39S.sub(" ", plain)
     plain = _A_LONG_ONE39S.sub(" ", plain)
     plain = _PLACE_NUMBER39S.sub(" ", plain)

@@ -16,6 +16,7 @@ from hltl.grounding import (
     _rewrites40r,
     _rewrites40s,
     _rewrites41,
+    _rewrites41l,
     _rewrites41r,
     _rewrites41s,
 )
@@ -68,6 +69,7 @@ from hltl.grounding.tree import (
     encode,
     entities,
     given_then_placed,
+    has_choice,
     normalise,
     tasks,
 )
@@ -79,8 +81,18 @@ from hltl.world.scene import Scene
 # module, so each adds its rules there (run in _parse and parse_instruction)
 _REFUSALS40 = (*_rewrites40.REFUSE40, *_rewrites40r.REFUSE40R, *_rewrites40s.REFUSE40S)
 _CHECKS40 = (*_rewrites40.CHECK40, *_rewrites40r.CHECK40R, *_rewrites40s.CHECK40S)
-_REFUSALS41 = (*_rewrites41.REFUSE41, *_rewrites41r.REFUSE41R, *_rewrites41s.REFUSE41S)
-_CHECKS41 = (*_rewrites41.CHECK41, *_rewrites41r.CHECK41R, *_rewrites41s.CHECK41S)
+_REFUSALS41 = (
+    *_rewrites41.REFUSE41,
+    *_rewrites41r.REFUSE41R,
+    *_rewrites41s.REFUSE41S,
+    *_rewrites41l.REFUSE41L,
+)
+_CHECKS41 = (
+    *_rewrites41.CHECK41,
+    *_rewrites41r.CHECK41R,
+    *_rewrites41s.CHECK41S,
+    *_rewrites41l.CHECK41L,
+)
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 _SUBORDINATORS = frozenset({"after", "once", "before"})
@@ -243,19 +255,13 @@ _ANY_WAY = re.compile(
 )
 
 
-def _has_choice(node: Node) -> bool:
-    return isinstance(node, Group) and (
-        node.op == "or" or any(_has_choice(c) for c in node.children)
-    )
-
-
 def _choices_kept(text: str, node: Node, lexicon: Lexicon) -> None:
     """Refuse a reading that drops a choice the words say (session 26, wrong readings 12s found):
     'either / any way round' with no 'or' in the reading ("Give Alice the red mug and Bob the blue
     mug, any way round" had read the one way only); a choice of two people given several objects
     ("Give Alice or Bob the cup and the apple" had read cup>A | (cup>B & apple>B))."""
     way = _ANY_WAY.search(text)
-    if way is not None and not _has_choice(node):
+    if way is not None and not has_choice(node):
         raise GroundingError(
             f"{way.group(0)!r} allows another way round, but the reading has only one: say who "
             "gets which, and 'or the other way round'"
@@ -570,11 +576,11 @@ def _counted30(rest: str, count: int, said: str, scene: Scene, lexicon: Lexicon)
     (the count is a check, never a request of that many)."""
     node = _parse(rest, scene, lexicon, normalise=True)
     done = list(tasks(node))
-    if not _has_choice(node) and len(done) == count == len({t.obj for t in done}):
+    if not has_choice(node) and len(done) == count == len({t.obj for t in done}):
         return node
     raise GroundingError(
         f"{said!r} counts {count}, but the request asks for {len(done)} "
-        f"({', '.join(t.atom for t in done)}){' with a choice' if _has_choice(node) else ''}: "
+        f"({', '.join(t.atom for t in done)}){' with a choice' if has_choice(node) else ''}: "
         "name the objects you want"
     )
 
@@ -609,7 +615,11 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 "names: say 'too' or 'instead'"
             )
         cleft = _CLEFT_AFTER31.search(text)
-        if cleft is not None and _names_any30s(text[: cleft.start()], lexicon):
+        if (
+            cleft is not None
+            and _names_any30s(text[: cleft.start()], lexicon)
+            and not _rewrites41r.left_out_only41r(text[: cleft.start()])
+        ):
             raise GroundingError(
                 f"{cleft.group('said')!r} after a request could add to it or correct what it "
                 "names: say 'too' or 'instead'"
@@ -4131,7 +4141,7 @@ def _choice_left35s(text: str, node: Node, lexicon: Lexicon) -> None:
     the other way round), or with nothing to choose ('Give Priya the notebook, your call':
     whether, when or what else is not said). Said of someone else ('Give Bob the chips, his
     choice') it is what that person chose, and read as before."""
-    if _has_choice(node):
+    if has_choice(node):
         return
     m = _WHO_GETS_FREE35S.search(text)
     said = _task_list35s(node, lexicon)

@@ -74,6 +74,13 @@ def tasks(node: Node) -> Iterator[Task]:
             yield from tasks(child)
 
 
+def has_choice(node: Node) -> bool:
+    """Whether ``node`` offers a choice (an ``or`` anywhere in it)."""
+    return isinstance(node, Group) and (
+        node.op == "or" or any(has_choice(c) for c in node.children)
+    )
+
+
 def entities(node: Node) -> tuple[str, ...]:
     """Scene ids the tree mentions, in order of first mention."""
     seen: dict[str, None] = {}
