@@ -234,11 +234,9 @@ KNOWN_MISSES = frozenset(
         "Those work gloves, Mia wants them on the belt.",
         "Ava's been eyeing the sippy cup since the treasure hunt; let her take it.",
         "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
-        "Carol's a lorimer and not picky: a mug for her, red or blue, grab whichever is handy.",
         "Person B's a reed cutter and takes anything, so any of the four things will do him.",
         "Sam can take whatever pen he likes so long as it isn't the red one, the etcher "
         "borrowed that.",
-        "Person A's taking all four of them home to the pole lathe lot.",
         "Just one bottle, Person A's, she's a papermaker and needs the one only.",
         "Lock both the spanners away in the locker now that the wainwright's gone.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
@@ -355,7 +353,6 @@ KNOWN_MISSES = frozenset(
         "person b has dibs on the cup so the apple goes to person a",
         "ever since balalaika practice person a keeps going on about wanting the bottle",
         "person b gets both the chips and the bottle nobody else wants them",
-        "person a could do with the chips after disc golf",
         "orders from earlier still stand person b is having the chips and person a the bottle",
         "pop the notebook into the box first and once its in there priya can have the stapler",
         "ruth is doing obs and needs the thermometer and mrs khan is bored so bring her the "
