@@ -214,10 +214,7 @@ KNOWN_MISSES = frozenset(
         "Could you hang the tongs on the plate rack, Marco's done with them?",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
         "Ta ever so, Person B's been on the sackbut all morning and could murder that bottle.",
-        "Person A would be glad of the bottle, her spinet lesson ran long, and Person B could "
-        "use the chips.",
         "The bottle's a must for Person B after bocce, and Person A's set on the chips.",
-        "Priya's in want of the stapler and the notebook for her scrivener's guild minutes.",
         "The bottle, that's Person A's. The chips, Person B has those, he called them after "
         "the dulcimer.",
         "Person A's down for the chips. Person B? The bottle, he said, after the hornpipe.",
@@ -226,7 +223,6 @@ KNOWN_MISSES = frozenset(
         "Sam can take whatever pen he likes so long as it isn't the red one, the etcher "
         "borrowed that.",
         "Just one bottle, Person A's, she's a papermaker and needs the one only.",
-        "Lock both the spanners away in the locker now that the wainwright's gone.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
         "Tablets across to Mr Lee, oh, silly me, Mrs Khan's the one they're prescribed for, "
         "the crumhorn lady.",

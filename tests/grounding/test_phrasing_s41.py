@@ -331,7 +331,10 @@ def test_courtesy_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 
 OTHERS = PhrasingCases()
 
-test_ahead_of = OTHERS.test(
+# session 42: 12s's session-41 occasions (landed first) read 'ahead of <an event>' too; this
+# branch's `_ahead_of41` was taken back when both landed, and these still read (by 12s's rule)
+AHEAD = PhrasingCases()
+test_ahead_of = AHEAD.test(
     ("Person A's got to have the bottle ahead of her boggle night.", "bottle>A", DUO),
     ("Give Noah the ruler ahead of the maths test.", "ruler>B", CLASSROOM),
     ("Jess needs the drill ahead of her shift.", "drill>B", WORKSHOP),
@@ -395,7 +398,6 @@ test_object_first = OTHERS.test(
 def test_others_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     OTHERS.refused_without(
         (
-            _rewrites41._ahead_of41,
             _rewrites41._let_take41,
             _rewrites41._take_off41,
             _rewrites41._object_first41,

@@ -441,29 +441,6 @@ def _sort_out41(text: str, lexicon: Lexicon) -> str:
     return text[: m.start()] + (m["end"].strip() or "")
 
 
-# -- 'ahead of' an event said for 'before' ("Person A's got to have the bottle ahead of her boggle
-# night", "Give Noah the ruler ahead of the maths test"): the same word of time, which the grammar
-# reads; before a thing or a person of the scene ('the cup ahead of the red mug' may say where it
-# stands) it is not matched
-_AHEAD_OF41 = re.compile(
-    r"(?<=\w) ahead of (?P<when>(?:the|her|his|their|its|this|that) [a-z][a-z' ]*?)"
-    r"(?=\s*(?:[,.;!?]|$))",
-    _F,
-)
-
-
-def _ahead_of41(text: str, lexicon: Lexicon) -> str:
-    """Session 41: 'ahead of' (above) said as 'before' when what follows names nothing of the
-    scene."""
-    if "ahead of" not in text.lower():
-        return text
-    for m in list(_AHEAD_OF41.finditer(text))[::-1]:
-        if _ids(m["when"], lexicon):
-            continue
-        text = f"{text[: m.start()]} before {m['when']}{text[m.end() :]}"
-    return text
-
-
 # -- 'let P take X' after a want, or alone ("Ava's been eyeing the sippy cup; let her take it",
 # "Let Bob take the apple"): P is let have it, as 'let P have X' is read; a place after it ('let
 # him take it to the shelf') carries more and is not matched
@@ -553,7 +530,6 @@ _STEPS41_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _mind_if_had41,
     _lock_away41,
     _sort_out41,
-    _ahead_of41,
     _let_take41,
     _take_off41,
     _object_first41,
