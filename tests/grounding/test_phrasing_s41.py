@@ -352,12 +352,16 @@ test_let_take = OTHERS.test(
     ("Let him take it.", None, CELL),
 )
 
-test_take_off = OTHERS.test(
+# session 42: 12s's session-41 occasions (landed first) read 'take X off to <somewhere not in the
+# scene>' too: that case reads by either rule (no `refused_without` of this branch's alone)
+test_take_off_either = PhrasingCases().test(
     (
         "Can Person B take the chips and the bottle off to the piquet table?",
         "chips>B & bottle>B",
         DUO,
     ),
+)
+test_take_off = OTHERS.test(
     ("Could Jess take the torch home?", "torch>B", WORKSHOP),
     # a surface of the scene or a person after 'to' is a delivery of its own
     ("Could Jess take the torch off to the bench?", None, WORKSHOP),
