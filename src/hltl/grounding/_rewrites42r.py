@@ -347,9 +347,9 @@ def _not_on42r(text: str, lexicon: Lexicon) -> str:
         count = m["n"] or ("both" if q.startswith("both") else None)
         if count and _COUNTS42R[count.lower()] != len(off):
             return m[0]
-        if one or (not count and not q and not kind.endswith("s")):
-            if not one and len(off) != 1:
-                return m[0]
+        if not one and not count and not q and not kind.endswith("s"):
+            return m[0]  # 'the X that isn't on S' is session 18's (`_negation18`)
+        if one:
             return said[0] if len(said) == 1 else " or ".join(said)
         return said[0] if len(said) == 1 else f"{', '.join(said[:-1])} and {said[-1]}"
 
@@ -595,6 +595,8 @@ def _owned_mistake42r(text: str, lexicon: Lexicon) -> str:
         said = _fixed42r(m["fix"], m["head"], lexicon)
         if said is None or said == m["fix"].strip():
             return text  # a plain 'no, …' is the grammar's own
+    if re.search(r"\b(?:oh|no|hang|hold|wait|sorry|scratch|actually|correction)\b", m["head"], _F):
+        return text  # a cue in the request before: the older correction rules'
     h = re.match(_I_SAID42R, m["head"].strip(), _F)
     head = _capital40r(h["req"]) if h is not None else m["head"]
     fix = _fixed42r(m["fix"], head, lexicon)
@@ -679,7 +681,7 @@ def _pronoun_i_mean42r(text: str, lexicon: Lexicon) -> str:
 # "Hand over both the chips and the bottle, the two together, to Person A."
 _COUNT_AGAIN42R = (
     rf"(?P<list>{_THING42R}(?:(?:,| and|, and) {_THING42R})+)\s*,\s*(?:the|both|all)(?: (?P<n>two|"
-    r"three|four))?(?: of them)?(?: together| at once| in one go| between them)?\s*(?=,|$|[.!])"
+    r"three|four))?(?: of them)? (?:together|at once|in one go)\s*(?=,|$|[.!])"
 )
 _NUMBER42R = {"two": 2, "three": 3, "four": 4, "both": 2}
 
@@ -810,7 +812,8 @@ def _only_one42r(text: str, lexicon: Lexicon) -> str:
 
 # "A blanket each for the two patients"
 _ROLE_GROUP42R = (
-    r"\b(?:the|both(?: of)?(?: the)?|all(?: of)?(?: the)?) (?:(?P<n>two|three|four) )?"
+    r"(?<!\bof )\b(?:the (?P<n>two|three|four)|both(?: of the)?|all (?P<n2>two|three|four)(?: of "
+    r"the)?) "
     r"(?P<r>[a-z]+s)\b"
 )
 
@@ -831,8 +834,8 @@ def _role_group42r(text: str, lexicon: Lexicon) -> str:
         ]
         if len(humans) < 2 or _ids(f"the {plural}", lexicon, "object"):
             return m[0]
-        said = m["n"] or ("both" if m[0].lower().startswith("both") else None)
-        if said and _NUMBER42R[said.lower()] != len(humans):
+        said = m["n"] or m["n2"] or "both"
+        if _NUMBER42R[said.lower()] != len(humans):
             return m[0]
         names = []
         for h in humans:
