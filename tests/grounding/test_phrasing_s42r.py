@@ -41,6 +41,9 @@ test_negated_then = CASES.test(
     ("Mrs Khan won't want the grey blanket; pass her the blue one.", "blanket_blue>C", WARD),
     ("tom isn't after the tape at all; it's the scanner he wants", "scanner>B", DEPOT),
     ("Tom isn't after the tape at all; it's the scaner he wants.", "scanner>B", DEPOT),
+    ("It's never the knife for Mr Novak; the lemon's what he wants.", "lemon>C", KITCHEN),
+    ("Tom can manage without the gloves, the tape's all he needs.", "tape>B", DEPOT),
+    ("The screws aren't Jess's to keep; they're for Kofi.", "screws>A", WORKSHOP),
     ("Omar isn't after the spoon at all; it's the spoon he wants.", None, LAB),
     ("The tongs aren't Marco's to have; they're going to Marco.", None, KITCHEN),
     ("It was never the knife for Lena; the kettle's what she's having.", None, KITCHEN),
@@ -68,6 +71,11 @@ test_exclusion = CASES.test(
     ),
     ("Besides the pens, everything on offer is Sam's.", "notebook>B & stapler>B", OFFICE),
     ("Apart from the kettle, everything goes to Marco.", None, KITCHEN),
+    (
+        "Leave the pills alone; the rest is Ruth's.",
+        "jug>A & blanket_blue>A & thermometer>A & blanket_grey>A & magazine>A",
+        WARD,
+    ),
     # _leave_all_but42r: everything left where it is but one thing
     (
         "Leave everything on the rack where it is, except the blue plate, which goes on the "
@@ -98,6 +106,7 @@ test_exclusion = CASES.test(
     ),
     ("Hand Lily the blocks that aren't on the mat.", "block_red>A", NURSERY),
     ("Priya should get the three pens that aren't lying on the desk.", None, OFFICE),
+    ("Mia should get both boxes that aren't on the pallet.", "box_small>A & box_medium>A", DEPOT),
     # _for_choice42r: a choice for a person named first
     ("For Tom, the small box or the medium box.", "box_small>B | box_medium>B", DEPOT),
     ("For Zoe, one of the books.", "book_red>C | book_green>C", CLASSROOM),
@@ -199,6 +208,9 @@ test_counts = CASES.test(
         "bottle@shelf & chips@shelf",
         TWO,
     ),
+    # _single42r
+    ("Give Noah a single ruler, the one you've got.", "ruler>B", CLASSROOM),
+    ("Give Mrs Khan a single blanket, the one you've got.", None, WARD),
     # _only_one42r
     ("Just the one jug here and it's earmarked for Mrs Khan.", "jug>C", WARD),
     ("Just the one box here and it's promised to Tom.", None, DEPOT),
@@ -302,6 +314,11 @@ UNCLEAR: list[tuple[str, Scene, tuple[str, ...]]] = [
     ),
     (
         "The jug, for whoever it was that phoned from reception.",
+        WARD,
+        ("Person A", "Person B", "Person C"),
+    ),
+    (
+        "The jug's for whoever it was that buzzed earlier.",
         WARD,
         ("Person A", "Person B", "Person C"),
     ),

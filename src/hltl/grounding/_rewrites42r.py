@@ -105,7 +105,7 @@ _NEG_HEAD42R = (
     rf"|(?P<x3>{_THING42R})(?: isn't| aren't| is not| are not|'s not|'re not| was never| were "
     r"never|'s never| is never| are never| wasn't| weren't)(?: meant)? (?:for "
     rf"(?P<p3>{_WHO42R})|(?P<p4>{_WHO42R})'s(?: to (?:have|keep|take))?)"
-    rf"|it (?:was never|'s never|is never|wasn't|isn't|'s not|is not)(?: meant to be)? "
+    r"|it(?: was never|'s never| is never| wasn't| isn't|'s not| is not)(?: meant to be)? "
     rf"(?P<x5>{_THING42R}) for (?P<p5>{_WHO42R}))"
     rf"{_INTENSE42R}"
 )
@@ -308,8 +308,9 @@ def _leave_all_but42r(text: str, lexicon: Lexicon) -> str:
 # "any one of the pens that isn't already lying on the desk", "the two boxes that aren't sitting
 # on the pallet"
 _NOT_ON42R = (
-    r"\b(?:(?P<q>(?:any )?one of|(?:any|either) of|all(?: of)?|both(?: of)?) )?the (?:(?P<n>two|"
-    r"three|four) )?(?P<k>[a-z]+) (?:that|which) (?:isn't|aren't|is not|are not|'s not|'re not) "
+    r"\b(?:(?:(?P<q>(?:any )?one of|(?:any|either) of|all(?: of)?|both(?: of)?) )?the (?:(?P<n>two|"
+    r"three|four) )?|(?P<q3>both|all) )(?P<k>[a-z]+) (?:that|which) (?:isn't|aren't|is not|are not|"
+    r"'s not|'re not) "
     r"(?:already |currently |yet |still )?(?:(?:lying|sitting|standing|resting|sat|stood|kept|"
     r"stored|left|put|placed) )?(?P<prep>on|in|at) (?P<s>the [a-z]+(?: [a-z]+)?)"
     r"(?=\s*(?:[.,;:!?]|$|goes|go|to|for|should|can|need|want))"
@@ -342,7 +343,7 @@ def _not_on42r(text: str, lexicon: Lexicon) -> str:
         if not off or not on or None in names:
             return m[0]
         said = [f"the {n}" for n in names if n]
-        q = (m["q"] or "").lower()
+        q = (m["q"] or m["q3"] or "").lower()
         one = q.startswith(("one", "any one", "any of", "either"))
         count = m["n"] or ("both" if q.startswith("both") else None)
         if count and _COUNTS42R[count.lower()] != len(off):
@@ -783,6 +784,31 @@ def _things_here42r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# "a single bottle will see her through, the one you've got"
+_SINGLE42R = r"\b(?P<a>a|one) single (?!(?:item|thing)\b)(?=[a-z]+)"
+_THE_ONE_GOT42R = (
+    r"\s*,\s*(?:just )?the one (?:you've got|you have|you've got there|you have there|there|"
+    r"you're holding|in front of you)(?P<end>\s*[.!]?)$"
+)
+
+
+def _single42r(text: str, lexicon: Lexicon) -> str:
+    """Session 42 (12r): "a single X" (one single X) is "a X", the count one, and ", the one
+    you've got (there)" closing a request names again the one object of a kind the scene has
+    one of: dropped then (of a kind with several, which one is not said: left)."""
+    low = text.lower()
+    if "single" not in low and "the one" not in low:
+        return text
+    out = re.sub(_SINGLE42R, lambda m: m["a"] + " ", text, flags=_F)
+    m = re.search(_THE_ONE_GOT42R, out, _F)
+    if m is not None:
+        named = _ids(out[: m.start()], lexicon, "object")
+        cats = {o.category for o in lexicon.scene.objects if o.id in named}
+        if named and all(sum(o.category == c for o in lexicon.scene.objects) == 1 for c in cats):
+            out = out[: m.start()] + (m["end"] or ".")
+    return out
+
+
 # "Just the one bottle in the room and it's promised to Person A."
 _ONLY_ONE42R = (
     r"^(?:there's |there is )?(?:just|only) the one (?P<k>[a-z]+)(?: (?:in the room|here|left|"
@@ -1100,8 +1126,9 @@ def which_lost42r(text: str, lexicon: Lexicon) -> None:
 # "give it to whichever of them asked first"; "for whoever it was that rang down from the office"
 _WHOEVER42R = (
     r"\b(?P<said>(?:whichever|whoever) (?:of (?:them|the two|you)|one)?\s*(?:(?:it was|it is|"
-    r"it's) (?:that|who) )?(?:asked|spoke|rang|called|came|got here|arrived|shouted|phoned|put "
-    r"(?:their|a) hand up|went|wanted it|said|rang|messaged|texted|emailed|left)(?: [a-z']+){0,5})"
+    r"it's) (?:that|who) [a-z]+|(?:asked|spoke|rang|called|came|got here|arrived|shouted|phoned|"
+    r"put "
+    r"(?:their|a) hand up|went|wanted it|said|rang|messaged|texted|emailed|left))(?: [a-z']+){0,5})"
 )
 
 
@@ -1165,6 +1192,7 @@ _STEPS42R: tuple[Callable[[str, Lexicon], str], ...] = (
     _owned_mistake42r,
     _keep_saying42r,
     _pronoun_i_mean42r,
+    _single42r,
     _count_again42r,
     _count_then_list42r,
     _things_here42r,
