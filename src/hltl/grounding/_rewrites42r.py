@@ -237,6 +237,8 @@ def _not_list_first42r(text: str, lexicon: Lexicon) -> str:
     rest = m["rest"]
     if len(set().union(*ids)) != len(out_of) or set().union(*ids) & _ids(rest, lexicon):
         return text
+    if re.match(r"(?:but )?it(?:'s| is) ", rest, _F):
+        return text  # "Not X, it's Y P wants" is session 41's (`_not_its41r`)
     out = f"{_capital40r(rest)}, not {' or '.join(out_of)}{m['end'] or '.'}"
     return out if _reading(out, lexicon) is not None else text
 
@@ -973,7 +975,7 @@ _ONE_EACH42R = (
 
 # "Everybody gets a single item here: …"
 _ONE_EACH_FIRST42R = (
-    r"^(?:everybody|everyone|each (?:of them|person|one)|they each|all of them) (?:gets|get|has|"
+    r"^(?:everybody|everyone|each person|every person) (?:gets|get|has|"
     r"have|is getting|are getting|ends up with) (?:a single|one|just one|the one|only one) (?:item|"
     r"thing)(?: each| here| apiece| this time)?\s*:\s*(?P<rest>\S.*)$"
 )
@@ -997,6 +999,8 @@ def _one_each42r(text: str, lexicon: Lexicon) -> str:
     targets = [t.target for t in tasks(node)]
     if len(targets) < 2 or len(set(targets)) != len(targets):
         return text
+    if first is not None and set(targets) != {h.id for h in lexicon.scene.humans}:
+        return text  # 'everybody' is every person of the scene
     return head
 
 
