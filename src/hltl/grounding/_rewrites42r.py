@@ -787,7 +787,10 @@ def _things_here42r(text: str, lexicon: Lexicon) -> str:
 
 
 # "a single bottle will see her through, the one you've got"
-_SINGLE42R = r"\b(?P<a>a|one) single (?!(?:item|thing)\b)(?=[a-z]+)"
+_SINGLE42R = (
+    r"(?<!\bthere's )(?<!\bthere is )(?<!\bonly )(?<!\bjust )\b(?P<a>a|one) single "
+    r"(?!(?:item|thing)\b)(?=[a-z]+)"
+)
 _THE_ONE_GOT42R = (
     r"\s*,\s*(?:just )?the one (?:you've got|you have|you've got there|you have there|there|"
     r"you're holding|in front of you)(?P<end>\s*[.!]?)$"
