@@ -346,6 +346,8 @@ def _not_on42r(text: str, lexicon: Lexicon) -> str:
             return m[0]
         said = [f"the {n}" for n in names if n]
         q = (m["q"] or m["q3"] or "").lower()
+        if q.startswith("all"):
+            return m[0]  # "All the boxes that aren't on S, stick them on" is session 27's
         one = q.startswith(("one", "any one", "any of", "either"))
         count = m["n"] or ("both" if q.startswith("both") else None)
         if count and _COUNTS42R[count.lower()] != len(off):
@@ -724,7 +726,7 @@ _COUNT_THEN_LIST42R = (
     r"\b(?P<n>both|all (?:two|three|four)|the (?:two|three|four))(?: (?:items|things|bits|of "
     r"them))?"
     rf"\s*,\s*(?P<list>{_THING42R}(?:, {_THING42R})*,? (?:and|as well as|plus|along with) "
-    rf"{_THING42R})(?=\s*(?:[.,;!]|$))"
+    rf"{_THING42R})(?=\s*(?:[.;!]|$))"
 )
 # "Person A's taking three of the things to her pyrography class: the cup, the apple and the chips."
 _TAKING_LIST42R = (
@@ -804,7 +806,14 @@ def _single42r(text: str, lexicon: Lexicon) -> str:
     low = text.lower()
     if "single" not in low and "the one" not in low:
         return text
-    out = re.sub(_SINGLE42R, lambda m: m["a"] + " ", text, flags=_F)
+
+    def one(m: re.Match[str]) -> str:
+        # "There's (only) a single X", "We've only got a single X": session 30's and 40's
+        if re.search(r"\b(?:only|there's|there is|just)\b", text[: m.start()], _F):
+            return m[0]
+        return m["a"] + " "
+
+    out = re.sub(_SINGLE42R, one, text, flags=_F)
     m = re.search(_THE_ONE_GOT42R, out, _F)
     if m is not None:
         named = _ids(out[: m.start()], lexicon, "object")
