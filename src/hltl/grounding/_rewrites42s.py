@@ -7,7 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _KEEP_WORDS, _ids, _names, _only_person, _reading
-from hltl.grounding._normalise4 import _fit36
+from hltl.grounding._normalise4 import _DOING37, _fit36
 from hltl.grounding._rewrites41s import _WANT_SAID41S, _clause41s
 from hltl.grounding.lexicon import Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
@@ -190,7 +190,8 @@ def _robot_rest42s(text: str, lexicon: Lexicon) -> str:
 # "Person B's having the chips while he watches the match": 'while' + he / she (the one person
 # who gets something) + what they do (naming nothing of the scene): when they will use it, met by
 # handing it now: taken off. "… after her paddle on the lake": a pastime's place (naming nothing
-# of the scene) after the pastime, taken off, so the occasion rules see the pastime alone.
+# of the scene) after the pastime (a doing of _DOING37: not "after a go on the coconut shy"),
+# taken off, so the occasion rules see the pastime alone.
 _WHILE42S = re.compile(
     r"(?P<sep>\s*,?\s+)while (?P<pron>he|she)(?:'s|\s+is|\s+[a-z]+(?:s|ed))\b(?P<words>[^.;:!?,]*?)"
     r"(?P<end>\s*[.!]*)\s*$",
@@ -228,6 +229,9 @@ def _pastime_place42s(text: str, lexicon: Lexicon) -> str:
     m = _PASTIME_PLACE42S.search(text)
     if m is None or _names(m["place"], lexicon) or _names(m["occ"].split(" ", 1)[1], lexicon):
         return text
+    if not re.fullmatch(_DOING37, m["occ"].split()[-1], _F):
+        return text  # "after a go on the coconut shy": the place is what was done
+
     return text[: m.end("occ")] + text[m.end("place") :]
 
 
