@@ -85,6 +85,9 @@ test_state_and = STATE.test(
     ("Lena is rushed off her feet and could use the tnogs.", "tongs>B", KITCHEN),
     ("Marco is sweating over the stove and would love the lemon.", "lemon>A", KITCHEN),
     ("Lena has been rushed off her feet and could use the tongs.", "tongs>B", KITCHEN),
+    # a need of the same person in the remark
+    ("Kofi is starving after his five-a-side and would love the torch.", None, WORKSHOP),
+    ("Jess is parched after her bike ride and would love the torch.", "torch>B", WORKSHOP),
 )
 test_state_and_refused = STATE.test(
     # a remark naming a thing or a person of the scene, or a negation: not only a remark
@@ -363,6 +366,26 @@ test_doer_refused = DOER.test(
 
 def test_doer_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     DOER.refused_without((r42s._doer_gets42s,), monkeypatch)
+
+
+MIDDLE = PhrasingCases()
+test_middle_state = MIDDLE.test(
+    (
+        "kofi is drilling and needs the screws and jess is knackered so bring her the torch",
+        "screws>A & torch>B",
+        WORKSHOP,
+    ),
+    ("Dana wants the bowl and Emma is bored, so pass her the banana.", "bowl>A & banana>C", LAB),
+    ("Dana wants the bowl and Emma is bored, so pass her the bananna.", "bowl>A & banana>C", LAB),
+)
+test_middle_state_refused = MIDDLE.test(
+    # the pronoun cannot be the person of the state
+    ("Ruth wants the jug and Mr Lee is bored, so pass her the magazine.", None, WARD),
+)
+
+
+def test_middle_state_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    MIDDLE.refused_without((r42s._middle_state42s,), monkeypatch)
 
 
 # -- 'so' without a comma after an opening state (session 32's _opening_state32s) -----------------

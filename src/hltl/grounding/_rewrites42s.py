@@ -77,6 +77,9 @@ _STATE_AND42S = re.compile(
     _F,
 )
 _NEGATED42S = re.compile(r"\b(?:not|no|never|nothing|nobody|none)\b|n't\b", _F)
+_NEED_STATE42S = re.compile(
+    r"\b(?:hungry|thirsty|parched|starving|peckish|famished|ravenous|gasping|dry)\b", _F
+)
 
 
 def _remark_only42s(words: str, lexicon: Lexicon) -> bool:
@@ -97,7 +100,8 @@ def _state_and42s(text: str, lexicon: Lexicon) -> str:
     m = _STATE_AND42S.match(text)
     if m is None or not _only_person(m["who"], lexicon):
         return text
-    if not _remark_only42s(m["words"], lexicon):
+    # a need of the same person ('parched', 'starving') is what the want says: not another want
+    if not _remark_only42s(_NEED_STATE42S.sub("", m["words"]), lexicon):
         return text
     (pid,) = _ids(m["who"], lexicon, "human")
     if not _fit36(pid, m["words"], lexicon):
@@ -560,6 +564,37 @@ def _doer_gets42s(text: str, lexicon: Lexicon) -> str:
     return out[:1].upper() + out[1:]
 
 
+# "ruth is doing obs and needs the thermometer and mrs khan is bored so bring her the magazine":
+# after a first request, another person's state (words naming nothing of the scene) then 'so' + a
+# request whose one him / her fits them: their name said in its place, the state gone (as
+# session 32's `_opening_state32s` does for an opening one).
+_MIDDLE_STATE42S = re.compile(
+    rf"(?P<sep>\s*(?:,|;|\.)?\s+(?:and\s+)?)(?P<who>{_P42S})(?:'s|\s+(?:is|has been|'s been|was|"
+    r"looks|seems))\s+(?P<words>[a-z][^.;:!?,]{1,60}?),?\s+so\s+(?P<verb>(?:please\s+)?(?:bring|"
+    r"give|hand|pass|take|get|fetch)) (?P<pron>him|her) (?P<rest>[^.;:!?]*)",
+    _F,
+)
+
+
+def _middle_state42s(text: str, lexicon: Lexicon) -> str:
+    """Session 42 (12s): the state above taken off and its person named in the request, when a
+    request comes before it, the pronoun may be the person, and what is left reads."""
+    if " so " not in text.lower():
+        return text
+    for m in _MIDDLE_STATE42S.finditer(text):
+        if m.start() == 0 or not _only_person(m["who"], lexicon):
+            continue
+        if not _names(text[: m.start()], lexicon) or not _remark_only42s(m["words"], lexicon):
+            continue
+        (pid,) = _ids(m["who"], lexicon, "human")
+        if not _fit36(pid, m["pron"], lexicon) or _ids(m["rest"], lexicon, "human"):
+            continue
+        out = f"{text[: m.start()]}; {m['verb']} {m['who']} {m['rest']}{text[m.end() :]}"
+        if _reading(out, lexicon) is not None:
+            return out
+    return text
+
+
 # the normaliser's rewrites run before the session-41 ones (wired into normalise._STEPS19)
 _STEPS42S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and42s,
@@ -578,6 +613,7 @@ _STEPS42S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _little_one42s,
     _orders_stand42s,
     _doer_gets42s,
+    _middle_state42s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-41 ones)
 _STEPS42S: tuple[Callable[[str, Lexicon], str], ...] = ()
