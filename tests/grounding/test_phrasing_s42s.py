@@ -10,6 +10,7 @@ from hltl.grounding import _normalise4 as n4
 from hltl.grounding import _rewrites42s as r42s
 from hltl.grounding import offline
 from tests.grounding.helpers import (
+    CELL,
     CLASSROOM,
     DEPOT,
     KITCHEN,
@@ -386,6 +387,24 @@ test_middle_state_refused = MIDDLE.test(
 
 def test_middle_state_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     MIDDLE.refused_without((r42s._middle_state42s,), monkeypatch)
+
+
+OPENING = PhrasingCases()
+test_opening_occasion = OPENING.test(
+    ("ever since judo practice carol has wanted the apple", "apple>C", CELL),
+    ("Ever since his judo practice Bob has wanted the apple.", "apple>B", CELL),
+    ("ever since judo practice carol has wanted the appel", "apple>C", CELL),
+)
+test_opening_occasion_refused = OPENING.test(
+    # an order after it (put off); his / her not the person; an event word
+    ("after judo practice give carol the apple", None, CELL),
+    ("ever since his judo practice carol has wanted the apple", None, CELL),
+    ("ever since the wedding carol has wanted the apple", None, CELL),
+)
+
+
+def test_opening_occasion_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    OPENING.refused_without((r42s._opening_occasion42s,), monkeypatch)
 
 
 # -- 'so' without a comma after an opening state (session 32's _opening_state32s) -----------------

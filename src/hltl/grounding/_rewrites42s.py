@@ -7,8 +7,8 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _KEEP_WORDS, _ids, _names, _only_person, _reading
-from hltl.grounding._normalise4 import _DOING37, _fit36
-from hltl.grounding._rewrites41s import _WANT_SAID41S, _clause41s
+from hltl.grounding._normalise4 import _DOING37, _EVENTS37, _fit36
+from hltl.grounding._rewrites41s import _ORDER41S, _WANT_SAID41S, _clause41s
 from hltl.grounding.lexicon import Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
 
@@ -595,6 +595,48 @@ def _middle_state42s(text: str, lexicon: Lexicon) -> str:
     return text
 
 
+# "ever since balalaika practice person a keeps going on about wanting the bottle": an occasion of
+# the person's own doing opening a want (no comma after it): what made them want it (sessions 35
+# and 37's policy, said first): taken off, when what is left reads and tells of a want.
+_OPENING_OCCASION42S = re.compile(
+    r"^(?:ever\s+)?(?P<prep>since|after|following)\s+(?:(?P<det>his|her|their|the|a)\s+)?"
+    r"(?P<tail>[a-z].*)$",
+    _F,
+)
+
+
+def _opening_occasion42s(text: str, lexicon: Lexicon) -> str:
+    """Session 42 (12s): the opening occasion above taken off, when it is a doing (_DOING37, no
+    event word) of up to three words naming nothing of the scene, what follows tells of the want
+    of the one person it fits, and it reads."""
+    m = _OPENING_OCCASION42S.match(text)
+    if m is None:
+        return text
+    words = m["tail"].split(" ")
+    det = (m["det"] or "").lower()
+    for k in (1, 2, 3):
+        what = " ".join(words[:k]).rstrip(",")
+        rest = " ".join(words[k:])
+        if not rest or _names(what, lexicon) or _KEEP_WORDS.search(what):
+            continue
+        last = what.split()[-1].lower()
+        if last in _EVENTS37 or not re.fullmatch(_DOING37, last, _F):
+            continue
+        if not _WANT_SAID41S.search(rest) or _ORDER41S.search(rest):
+            continue
+        rest = rest[:1].upper() + rest[1:]
+        read = _reading(rest, lexicon)
+        if read is None:
+            continue
+        given = {t.target for t in tasks(read) if t.kind == "deliver"}
+        if len(given) != 1:
+            continue
+        if det in ("his", "her") and not _fit36(next(iter(given)), det, lexicon):
+            continue
+        return rest
+    return text
+
+
 # the normaliser's rewrites run before the session-41 ones (wired into normalise._STEPS19)
 _STEPS42S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _state_and42s,
@@ -614,6 +656,7 @@ _STEPS42S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _orders_stand42s,
     _doer_gets42s,
     _middle_state42s,
+    _opening_occasion42s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-41 ones)
 _STEPS42S: tuple[Callable[[str, Lexicon], str], ...] = ()
