@@ -259,7 +259,6 @@ KNOWN_MISSES = frozenset(
         "bottle, please?",
         "Tanemmirt, which is thanks in Tamazight, my first language. Now, kindly put the white "
         "cup in the sink.",
-        "Alice is parched after her cyclocross race and would kill for the water bottle.",
         "Bob's been pining for those crisps all morning long.",
         "Alice fancies the bottle, and Bob's rather keen on the crisps.",
         "Person A wouldn't say no to the chips if they were going spare.",
@@ -341,8 +340,6 @@ KNOWN_MISSES = frozenset(
         "person b has dibs on the cup so the apple goes to person a",
         "ever since balalaika practice person a keeps going on about wanting the bottle",
         "person b gets both the chips and the bottle nobody else wants them",
-        "ruth is doing obs and needs the thermometer and mrs khan is bored so bring her the "
-        "magazine",
         "marcos on the grill tonight and hes shouting for the tongs",
         "Person B left his botgtle here; could he have it back?",
         "Could I trouble you to see that Bob gets the bottle?",
