@@ -155,14 +155,15 @@ def _inferred42s(text: str, lexicon: Lexicon) -> str:
 # "…, and then you can put your feet up.", "… and then take five", "…, when you're passing",
 # "… and then we're all square": what the robot may do when it is done, or that the speaker is
 # square, said after the request: taken off (it asks nothing of the scene). Its words name
-# nothing of the scene.
+# nothing of the scene. Not 'have a rest' (session 23: 'the rest' of the things?) nor "you're
+# done for the day" (session 38's rule reads it).
 _ROBOT_REST42S = re.compile(
     r"(?P<sep>\s*,?\s*(?:and\s+)?)(?:then\s+)?(?:you\s+can\s+|you\s+could\s+|you\s+may\s+|go\s+"
     r"and\s+|off you go and\s+)?(?P<what>put your feet up|take (?:a breather|a break|five|ten|"
-    r"five minutes|it easy|the weight off|a load off|the rest of the day off)|have (?:a|your) "
-    r"(?:rest|break|breather|cuppa|sit-down|sit down|lie-down|lie down|nap|brew|well-earned "
-    r"(?:rest|break))|knock off|clock off|call it a day|(?:you're|you are|we're|we are) (?:all "
-    r"square|square|done|finished|sorted|all done|all sorted)(?: for (?:the day|today|now))?)"
+    r"five minutes|it easy|the weight off|a load off)|have (?:a|your) (?:break|breather|cuppa|"
+    r"sit-down|sit down|lie-down|lie down|nap|brew|well-earned break)|knock off|clock off|call "
+    r"it a day|(?:we're|we are) (?:all square|square|done|finished|sorted|all done|all sorted)"
+    r"(?: for (?:the day|today|now))?)"
     r"(?P<end>\s*[.!]*)\s*$",
     _F,
 )
@@ -615,7 +616,9 @@ def _opening_occasion42s(text: str, lexicon: Lexicon) -> str:
     words = m["tail"].split(" ")
     det = (m["det"] or "").lower()
     for k in (1, 2, 3):
-        what = " ".join(words[:k]).rstrip(",")
+        if any(w.endswith(",") for w in words[:k]):
+            break  # with a comma: session 37's fronted occasion (`_AFTER_HIS37`)
+        what = " ".join(words[:k])
         rest = " ".join(words[k:])
         if not rest or _names(what, lexicon) or _KEEP_WORDS.search(what):
             continue
