@@ -1,6 +1,7 @@
 """Session-42 phrasing of issue 12 (lead): 'but' and a LIST of the objects left out, after the
 person or place of every object of a kind; a list handed to one person with 'for' another person
-after its last object (docs/grounding.md, "Session 42 (lead)").
+after its last object; a correction after a sentence of thanks, or announced by 'let me rephrase'
+(docs/grounding.md, "Session 42 (lead)").
 
 12c's `turns` fuzz: "Every mug for Bob but the red one and the blue one." read
 `mug_red>B & mug_blue>B`: `_but_after_place` moved a 'but' + ONE object ending the clause next to
@@ -8,19 +9,24 @@ the objects it leaves out, and a list after 'but' ended no clause there, so 'but
 'and' (every mug, the two named again). "Put every mug on the shelf but the red one and the blue
 one." read both mugs onto the shelf for the same reason. And "Could Grandad have the bib and the
 red block for Lily's tower?" read `bib>B & block_red>A`: the last object went to Lily, the first to
-Grandad, where 'for Lily' may say what the whole list is for."""
+Grandad, where 'for Lily' may say what the whole list is for. "… could you pop the packing tape
+over to Mia? Cheers. Ah, not that one, the work gloves." read `tape>A & gloves>A`: the correction
+cue took the thanks for the sentence it corrects, and the gloves were added; "… take Mr Lee his
+water jug? You're a star. Let me rephrase: the medication." read `jug>B & pills>B`: 'Let me
+rephrase' was taken off with the remark before it."""
 
 from __future__ import annotations
 
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites42l, offline, phrasing
+from hltl.grounding import _normalise4, _rewrites42l, offline, phrasing
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
     NURSERY,
     OFFICE,
+    WARD,
     PhrasingCases,
     assert_reads,
     assert_refused,
@@ -132,3 +138,59 @@ def test_refused_only_by_the_check(monkeypatch: pytest.MonkeyPatch) -> None:
     )
     assert tree("Give Bob the cup and the apple for Alice.", CELL) is not None
     assert tree("Grandad gets the bib and the red block for Lily.", NURSERY) is not None
+
+
+THANKS = PhrasingCases()
+
+test_a_correction_after_a_sentence_of_thanks = THANKS.test(
+    (
+        "Morning! When you've got a moment, could you pop the packing tape over to Mia? Cheers. "
+        "Ah, not that one, the work gloves.",
+        "gloves>A",
+        DEPOT,
+    ),
+    (
+        "Could Mrs Khan have her magazine? Thanks a million. Ah, not that one, the water jug.",
+        "jug>C",
+        WARD,
+    ),
+    ("Give Bob the cup? Thanks. No, the apple.", "apple>B", CELL),
+    ("give bob the cup, please. ta. no, the apple", "apple>B", CELL),
+    ("Hand Sam the stapler. Cheers! No, the notepad.", "notebook>B", OFFICE),
+)
+
+test_thanks_then_more_still_adds = PhrasingCases().test(
+    ("Give Bob the cup. Thanks. Give Alice the apple.", "cup>B & apple>A", CELL),
+    ("Give Bob the cup, thanks. Oh, and the apple.", "cup>B & apple>B", CELL),
+    ("Give Bob the cup? Thanks. The apple too.", "cup>B & apple>B", CELL),
+)
+
+test_let_me_rephrase_is_never_an_addition = PhrasingCases().test(
+    (
+        "Could you take Mr Lee his water jug? You're a star. Let me rephrase: the medication.",
+        None,
+        WARD,
+    ),
+    (
+        "Could you get the bottle over to Bob? Thanks ever so, I've lost count of my squares now. "
+        "Let me rephrase: the chips.",
+        None,
+        CELL,
+    ),
+)
+
+
+def test_read_only_past_the_thanks(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the session-42 step past a sentence of thanks, each correction is read as adding
+    (the wrong reading) or refused."""
+    monkeypatch.setattr(phrasing, "_past_thanks42l", lambda before: None)
+    for text, want, scene in THANKS.read:
+        with pytest.raises((GroundingError, AssertionError)):
+            assert_reads(text, want, scene)
+
+
+def test_let_me_rephrase_was_read_as_an_addition(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without `_REPHRASE42L` 'Let me rephrase:' goes with the remark before it."""
+    monkeypatch.setattr(_normalise4, "_REPHRASE42L", _normalise4.re.compile(r"(?!)"))
+    text = "Could you take Mr Lee his water jug? You're a star. Let me rephrase: the medication."
+    assert tree(text, WARD) is not None

@@ -1910,6 +1910,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
                 while before and _is(before[-1], ",", "-", "filler"):
                     before.pop()  # "Give Bob the bottle, please. Thanks, no, the crisps"
+                    _past_thanks42l(before)
                 whole = True
             elif after:
                 raise GroundingError(
@@ -2641,6 +2642,15 @@ def _instead_of(items: list[Item]) -> list[Item]:
 
 def _is_verb_item(item: Item) -> bool:
     return item.kind == "word" and item.lemma.startswith("verb:")
+
+
+def _past_thanks42l(before: list[Item]) -> None:
+    """Session 42 (lead): "Give Bob the bottle? Thanks. Ah, not that one, the crisps" — a sentence
+    of thanks alone (fillers) between the request and the correction: its full stop is taken off
+    too, so the request before it is what is corrected (12c's turns fuzz: the crisps had been read
+    as added after the question mark)."""
+    if before and before[-1].kind == "punct" and before[-1].lemma in _END:
+        before.pop()
 
 
 def _but_after_place(items: list[Item]) -> list[Item]:
