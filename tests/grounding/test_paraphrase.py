@@ -144,7 +144,6 @@ KNOWN_MISSES = frozenset(
         "Two items, both give Alice lah.",
         # a bare 'for Priya' after a placement stays refused (test_phrasing_s31's "Put the ruler
         # on the desk for Noah"; session 33, 12t)
-        "Would you put the black pen in the box for Priya?",
         # blind24 (tuned on in session 26): refusals left (docs/grounding.md, "Session 26")
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
@@ -218,15 +217,9 @@ KNOWN_MISSES = frozenset(
         "please.",
         "Ta ever so, Person B's been on the sackbut all morning and could murder that bottle.",
         "Beg pardon for the fuss, the tablets go to Mrs Khan, bless you.",
-        "Kindly put the globe on the bookshelf for Mrs Ortiz, thank you ever so.",
-        "Alice has her heart set on the crisps, and Bob's eyeing up the bottle after his yodel "
-        "practice.",
         "Person A's after something to drink out of, the cup will do her.",
-        "What Person B really needs after the worm charming is that apple.",
         "Person A would be glad of the bottle, her spinet lesson ran long, and Person B could "
         "use the chips.",
-        "Person B's gasping for the bottle after bandy practice.",
-        "Person A needs the chips before her charades evening.",
         "The bottle's a must for Person B after bocce, and Person A's set on the chips.",
         "Priya's in want of the stapler and the notebook for her scrivener's guild minutes.",
         "Chef's asked that the tongs and the knife both get left out on the counter for the "
@@ -238,34 +231,21 @@ KNOWN_MISSES = frozenset(
         "Person B said he'd take the chips, so they're his.",
         "That bottle's hers, Person A's.",
         "The chips are going Person A's way and the remaining thing ends up with Person B.",
-        "Ruth put in for the thermometer during her indigo dyeing break; run it over to her.",
         "Those work gloves, Mia wants them on the belt.",
-        "Lena's got the plate rack sorted, so give her the lemon.",
         "Ava's been eyeing the sippy cup since the treasure hunt; let her take it.",
-        "Bottle for Person A, she's back from the scavenger hunt, and the chips for Person B.",
         "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
-        "Carol's a lorimer and not picky: a mug for her, red or blue, grab whichever is handy.",
         "Person B's a reed cutter and takes anything, so any of the four things will do him.",
-        "Person A's back from tobogganing, so she gets the apple as well as the chips.",
         "Sam can take whatever pen he likes so long as it isn't the red one, the etcher "
         "borrowed that.",
-        "Person A's taking all four of them home to the pole lathe lot.",
         "Just one bottle, Person A's, she's a papermaker and needs the one only.",
-        "Pop the two cups in the sink, the scagliola demo's done with them.",
         "Lock both the spanners away in the locker now that the wainwright's gone.",
-        "Alice says no to the crisps, she's a shawm player and it's the bottle she wants.",
-        "The apple should go to Person A rather than Person B, who's off to the dulcimer night.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
         "Tablets across to Mr Lee, oh, silly me, Mrs Khan's the one they're prescribed for, "
         "the crumhorn lady.",
-        "crisps up on that shelf pls the piquet lot will want them",
-        "person b's asking for the bottle after his sackbut solo",
-        "first the bottle for person b the madrigal singer and after that person a's chips",
         "the chips are person b's, he's a ditcher and starving",
         "person a's got to have the bottle ahead of her boggle night",
         "the waitress is after the knife plus the tongs, sort her out",
         "Would you mind ever so much getting Bob his crisps, he's the washboard player?",
-        "Can Person B take the apple and the chips off to the piquet table?",
         "Is Zoe alright to have the globe?",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
         "No bother if not, but could the crisps go up on the shelf, out of the puppy's reach? "
@@ -373,7 +353,6 @@ KNOWN_MISSES = frozenset(
         "person b has dibs on the cup so the apple goes to person a",
         "ever since balalaika practice person a keeps going on about wanting the bottle",
         "person b gets both the chips and the bottle nobody else wants them",
-        "person a could do with the chips after disc golf",
         "orders from earlier still stand person b is having the chips and person a the bottle",
         "pop the notebook into the box first and once its in there priya can have the stapler",
         "ruth is doing obs and needs the thermometer and mrs khan is bored so bring her the "

@@ -181,8 +181,9 @@ REFUSED = [
     ("bob is crisps so the apple to him", CELL),
     # (x) a pronoun that cannot be the one person named
     ("Mrs Ortiz would like the ruler put on his desk.", CLASSROOM),
-    # (y) a person, or a pronoun, after 'for'
-    ("Put the ruler on the desk for Noah.", CLASSROOM),
+    # (y) a person, or a pronoun, after 'for' (session 41, 12s: 'for' + the one person named after
+    # a placement is whom it is put there for, as blind23's and blind39's writers and reviewers
+    # read it: "Put the ruler on the desk for Noah." reads ruler@desk, test_phrasing_s41s)
     ("Put the ruler on the desk for it.", CLASSROOM),
     # (z) served first, with nothing given
     ("Serve Bob first, give him it.", CELL),

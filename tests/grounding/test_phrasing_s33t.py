@@ -264,9 +264,10 @@ test_placed_for = CASES.test(
         "cup_green@sink & bowl@sink & cup_white@sink & sponge@sink",
         LAB,
     ),
-    # a bare 'for P' after a placement (sessions 30, 31: may ask for P to get it); the person
-    # named again, a verb of the grammar, an object in the purpose
-    ("Would you put the black pen in the box for Priya?", None, OFFICE),
+    # a bare 'for P' after a placement: whom it is put there for (session 41, 12s; sessions 30 and
+    # 31 had refused it: may ask for P to get it); the person named again, a verb of the grammar,
+    # an object in the purpose
+    ("Would you put the black pen in the box for Priya?", "pen_black@box", OFFICE),
     ("Put the black pen in the box for Priya, and give Priya the stapler.", None, OFFICE),
     ("The two blocks in the high chair for Lily to give.", None, NURSERY),
     ("Person A needs the cup for rinsing the apple, and Person B wants the chips.", None, SQ),

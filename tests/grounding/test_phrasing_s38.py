@@ -246,6 +246,7 @@ def test_refused_without_the_rules(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS39S,
             *normalise._STEPS40S_FIRST,
             *normalise._STEPS40S,
+            *normalise._STEPS41S_FIRST,
         ),
         monkeypatch,
     )

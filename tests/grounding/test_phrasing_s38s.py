@@ -150,5 +150,11 @@ test_corrections_refused = CASES.test(
 def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     # (session 40's purpose rule, 12s, reads 'for her papier-mache volcano' too: taken out)
     CASES.refused_without(
-        (*normalise._STEPS38S, *normalise._STEPS38S_FIRST, *normalise._STEPS40S), monkeypatch
+        (
+            *normalise._STEPS38S,
+            *normalise._STEPS38S_FIRST,
+            *normalise._STEPS40S,
+            *normalise._STEPS41S_FIRST,
+        ),
+        monkeypatch,
     )

@@ -116,7 +116,10 @@ test_remarks_refused = CASES.test(
 
 
 def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    CASES.refused_without((*normalise._STEPS40S, *normalise._STEPS40S_FIRST), monkeypatch)
+    # (session 41: 12s's rules read some of them too)
+    CASES.refused_without(
+        (*normalise._STEPS40S, *normalise._STEPS40S_FIRST, *normalise._STEPS41S_FIRST), monkeypatch
+    )
 
 
 # -- session 39's remark rule widened where it is (_rewrites39s: a doing gone by without -ed,

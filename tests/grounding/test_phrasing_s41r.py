@@ -300,6 +300,75 @@ test_corrected_then = CASES.test(
 )
 
 
+test_turned_down = CASES.test(
+    # _turns_down41r: a person turning a thing down said as an idiom, beside a request
+    ("Sam can do without the stapler, pass him the notebook.", "notebook>B", OFFICE),
+    ("Lena's passing on the salt, give her the lemon.", "lemon>B", KITCHEN),
+    ("No hammer for Jess, hand her the torch.", "torch>B", WORKSHOP),
+    ("Emma can't stand the banana, give her the bowl.", "bowl>C", LAB),
+    ("Mr Lee has no use for the magazine, take him the jug.", "jug>B", WARD),
+    ("Ava isn't keen on the bib, give her the teddy.", "teddy>C", NURSERY),
+    ("Sam can do without the stapler, pass him the stapler.", None, OFFICE),
+    ("Sam can do without the stapler, pass it to him.", None, OFFICE),
+    ("The desk can do without the stapler, pass Sam the notebook.", None, OFFICE),
+    ("Sam can do without the stapler.", None, OFFICE),
+    # _rather_than_first41r: "Rather than X, …", "… in place of X"
+    ("Rather than the drill, hand Kofi the torch.", "torch>A", WORKSHOP),
+    ("Emma gets the bowl in place of the spoon.", "bowl>C", LAB),
+    ("Rather than the drill, hand Kofi the drill.", None, WORKSHOP),
+    # _of_your_choosing41r: "a block of your choosing", "one or other of the blocks"
+    ("Give Ava a block of your choosing.", "block_red>C | block_green>C", NURSERY),
+    ("Give Ava one or other of the blocks.", "block_red>C | block_green>C", NURSERY),
+    # _start_again41r: "…, let me start again (rephrase), <request>"
+    ("Give Lena the salt, let me start again, pass Marco the tongs.", "tongs>A", KITCHEN),
+    (
+        "Hand the knife to Marco, sorry, let me rephrase, the knife goes to Lena.",
+        "knife>B",
+        KITCHEN,
+    ),
+    ("Give Lena the salt, let me start again, pass them to Marco.", None, KITCHEN),
+    # _left_to_you41r: "any'll do"
+    ("Give the notebook to Priya or Sam, any'll do.", "notebook>A | notebook>B", OFFICE),
+    ("Give Sam the notebook, any'll do.", None, OFFICE),
+    # _shared_out41r: "One book each for P and Q: …", "Share the books between P and Q: …"
+    (
+        "One book each for Noah and Zoe: the red one to Noah and the green one to Zoe.",
+        "book_red>B & book_green>C",
+        CLASSROOM,
+    ),
+    (
+        "Share the books between Noah and Zoe: the red one to Noah and the green one to Zoe.",
+        "book_red>B & book_green>C",
+        CLASSROOM,
+    ),
+    (
+        "Divide the spanners between them: the small one to Kofi and the large one to Jess.",
+        "spanner_small>A & spanner_large>B",
+        WORKSHOP,
+    ),
+    (
+        "The cups are to be shared: the green one to Dana and the white one to Omar.",
+        "cup_green>A & cup_white>B",
+        LAB,
+    ),
+    (
+        "One book each for Noah and Zoe: the red one to Noah and the green one to Mrs Ortiz.",
+        None,
+        CLASSROOM,
+    ),
+    (
+        "Divide the spanners between them: the small one to Kofi and the drill to Jess.",
+        None,
+        WORKSHOP,
+    ),
+    (
+        "The cups are to be shared: the green one to Dana and the white one to Dana.",
+        None,
+        LAB,
+    ),
+)
+
+
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-41 (12r) steps taken out: each
     rule is what reads it."""

@@ -242,7 +242,8 @@ _LEFT_TO_YOU41R = (
     r"decide)(?: which(?: one)?| who)?|(?:you|just) pick(?: one| which)?|take your pick|"
     r"(?:grab|take|pick|use|bring) whichever(?: one)?(?: is|'s) (?:handy|closest|nearest|easiest|"
     r"to hand|nearer|quickest)|as you (?:like|please|see fit)|however you like|i'm easy|"
-    r"i don't mind which(?: one)?|either will do|any will do)(?P<end>\s*[.!]?)$"
+    r"i don't mind which(?: one)?|either will do|any will do|any ?(?:one)?'ll do|either'll do)"
+    r"(?P<end>\s*[.!]?)$"
 )
 
 
@@ -263,6 +264,7 @@ def _left_to_you41r(text: str, lexicon: Lexicon) -> str:
             "easy",
             "mind which",
             "will do",
+            "'ll do",
         )
     ):
         return text
@@ -395,11 +397,15 @@ def _one_of_them_gets41r(text: str, lexicon: Lexicon) -> str:
 # them out, one apiece: …", "Split the four things down the middle: …", "Each student gets a
 # book: …"
 _SHARED_OUT41R = (
-    r"^(?:(?P<a>(?:a|an|one) [a-z]+ (?:apiece|each)(?: for (?:the|both|all)[a-z' ]*)?)|"
-    r"(?P<b>(?:share|split|divide|dish|deal|hand|parcel) (?:them|these|those|the lot|it|"
-    r"(?:the|all|these) (?:(?P<n>two|three|four|five|six) )?(?:things|items|bits|lot))"
-    r"(?: out| up)?(?: between (?:them|the two|both|the pair)| down the middle| evenly| fairly)?"
+    r"^(?:(?P<a>(?:a|an|one) [a-z]+ (?:apiece|each)(?: for (?:the|both|all)[a-z' ]*|"
+    rf" for (?P<p1>{_NAME40R}) and (?P<p2>{_NAME40R}))?)|"
+    r"(?P<b>(?:share|split|divide|dish|deal|hand|parcel) (?:out |up )?(?:them|these|those|the lot|"
+    r"it|(?:the|all|these) (?:(?P<n>two|three|four|five|six) )?(?:things|items|bits|lot)|the "
+    r"(?P<kinds>[a-z]+s))(?: out| up)?(?: between (?:them|the two(?: of them)?|both(?: of them)?|"
+    rf"the pair|(?P<p3>{_NAME40R}) and (?P<p4>{_NAME40R}))| down the middle| evenly| fairly)?"
     r"(?:\s*,\s*(?:one|a thing|one thing) (?:apiece|each))?)|"
+    r"(?P<d>the (?P<kinds2>[a-z]+s) (?:are|is) to be (?:shared|split|divided)(?: out| up)?"
+    r"(?: between (?:them|the two|both))?)|"
     r"(?P<c>(?:each|every) (?P<role>[a-z]+) (?:gets|has|takes|is getting|is having) (?:a|an|one) "
     r"[a-z]+))\s*:\s*(?P<rest>\S.*)$"
 )
@@ -411,7 +417,10 @@ def _shared_out41r(text: str, lexicon: Lexicon) -> str:
     four things down the middle: …", "Each student gets a book: …") is the list, when the list
     reads as hand-overs that fit what was announced: 'apiece' / 'each' every person listed
     once and one object each; 'each <role>' every person the role names, and only them; a
-    split down the middle as many objects to each; a count, that many objects."""
+    split down the middle as many objects to each; a count, that many objects; "the mugs" (are to
+    be shared) every mug, and only them; "between P and Q", "for P and Q" those two people.
+    "One mug each for P and Q: …", "Share the mugs between P and Q: …", "The mugs are to be
+    shared: …" say the same."""
     if ":" not in text:
         return text
     m = re.match(_SHARED_OUT41R, text.strip(), _F)
@@ -440,6 +449,17 @@ def _shared_out41r(text: str, lexicon: Lexicon) -> str:
             return text
     if m["n"] is not None and len(objects) != _COUNT41R[m["n"].lower()]:
         return text
+    named = [(m["p1"], m["p2"]), (m["p3"], m["p4"])]
+    for p, q in named:
+        if p is not None and (
+            not _persons34r(lexicon, p, q) or set(people) != _ids(f"{p} and {q}", lexicon, "human")
+        ):
+            return text
+    kinds = m["kinds"] or m["kinds2"]
+    if kinds is not None:
+        ids = _ids(f"the {kinds}", lexicon, "object")
+        if len(ids) < 2 or set(objects) != ids:
+            return text
     return rest
 
 
@@ -930,6 +950,112 @@ def _not_picky41r(text: str, lexicon: Lexicon) -> str:
     return rest if node is not None and has_choice(node) else text
 
 
+# -- turning a thing down, said another way -------------------------------------------------------
+
+# "Alice can do without the crisps, …", "No crisps for Alice, …"
+_TURNS_DOWN41R = (
+    rf"(?:^|(?<=[.;!?]\s))(?:(?P<p>{_NAME40R})(?: can do without| can manage without| could do "
+    r"without|(?:'s| is) passing on| passes on|(?:'ll| will) pass on| can't stand| cannot stand|"
+    r" has no use for|(?:'s| has) got no use for| has no need (?:of|for)| doesn't fancy| does not "
+    r"fancy| doesn't care for| does not care for|(?: isn't| is not|'s not) keen on|(?:'s| has) "
+    r"turned down| turned down) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?)|no (?P<y>(?:the )?[a-z]+"
+    rf"(?: [a-z]+)?) for (?P<q>{_NAME40R}))\s*[,;]\s*(?=[a-z])"
+)
+
+
+def _turns_down41r(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12r): a person turning a thing down said as an idiom ("P can do without X",
+    "P's passing on X", "P can't stand X", "P has no use for X", "P doesn't fancy (care for) X",
+    "P isn't keen on X", "P's turned down X", "No X for P"), followed by another clause, is "P
+    doesn't want the X, …", read as before (session 39's `_not_wanted39r`: dropped beside a
+    request that names neither it nor 'it', else refused as a negation)."""
+    low = text.lower()
+    if not any(
+        w in low
+        for w in (
+            "without",
+            "passing",
+            "pass",
+            "stand",
+            "no use",
+            "no need",
+            "fancy",
+            "care for",
+            "keen",
+            "turned down",
+            "no ",
+        )
+    ):
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        who = m["p"] or m["q"]
+        what = m["x"] or m["y"]
+        the = what if what.lower().startswith("the ") else f"the {what}"
+        if not _only_person(who, lexicon) or not _whole_name(the, lexicon, "object"):
+            return m[0]
+        return f"{who} doesn't want {the}, "
+
+    return re.sub(_TURNS_DOWN41R, said, text, flags=_F)
+
+
+# "Rather than the crisps, give Alice the apple."; "… in place of the crisps"
+_RATHER_THAN_FIRST41R = r"^(?:rather than|in place of) (?=the [a-z]+(?: [a-z]+)?\s*,)"
+_IN_PLACE_OF41R = r"\bin place of (?=the )"
+
+
+def _rather_than_first41r(text: str, _lexicon: Lexicon) -> str:
+    """Session 41 (12r): "Rather than X, <request>" (in place of X) opening a request is "Instead
+    of X, <request>", and "… in place of X" inside one is "… instead of X" (the grammar's
+    leaving out)."""
+    low = text.lower()
+    if "rather than" not in low and "in place of" not in low:
+        return text
+    out = re.sub(_RATHER_THAN_FIRST41R, "Instead of ", text, flags=_F)
+    return re.sub(_IN_PLACE_OF41R, "instead of ", out, flags=_F)
+
+
+# "Give Carol a mug of your choosing."; "one or other of the mugs"
+_OF_YOUR_CHOOSING41R = (
+    r"\b(?P<a>an?|one) (?P<k>[a-z]+) of your (?:choosing|choice)(?P<end>\s*[.!]?)$"
+)
+_ONE_OR_OTHER41R = r"\bone or (?:the )?other of (?=the )"
+
+
+def _of_your_choosing41r(text: str, _lexicon: Lexicon) -> str:
+    """Session 41 (12r): "a mug of your choosing (choice)" closing a request is "a mug, your
+    call", and "one or other of the mugs" is "one of the mugs" (the choice then the grammar's)."""
+    low = text.lower()
+    if "of your" not in low and "or other" not in low and "or the other" not in low:
+        return text
+    out = re.sub(
+        _OF_YOUR_CHOOSING41R, lambda m: f"{m['a']} {m['k']}, your call{m['end']}", text, flags=_F
+    )
+    return re.sub(_ONE_OR_OTHER41R, "one of ", out, flags=_F)
+
+
+# "…, let me start again, give the crisps to Bob."
+_START_AGAIN41R = (
+    r"^(?P<head>.+?)\s*[,;.:!-]\s*(?:(?:sorry|oh|no|ok|okay|right),?\s*)*(?:let me|i'll|i will|"
+    r"let's) (?:start (?:again|over)|begin again|say (?:that|it) again|rephrase(?: that)?|"
+    r"try (?:that|this) again)\s*[,;.:!-]\s*(?P<rest>\S.*)$"
+)
+
+
+def _start_again41r(text: str, lexicon: Lexicon) -> str:
+    """Session 41 (12r): a request the speaker then restarts ("…, let me start again (start
+    over, say that again, rephrase), <request>") is the request after it, when that reads
+    alone (a 'them' there pointing back is refused)."""
+    low = text.lower()
+    if "again" not in low and "over" not in low and "rephrase" not in low:
+        return text
+    m = re.match(_START_AGAIN41R, text.strip(), _F)
+    if m is None:
+        return text
+    rest = _capital40r(m["rest"])
+    return rest if _reading(rest, lexicon) is not None else text
+
+
 # -- refusals that name the readings -------------------------------------------------------------
 
 # "Give the bottle to Person A, no, hang on, the other one, or was it? Not sure now."
@@ -1114,6 +1240,10 @@ _STEPS41R: tuple[Callable[[str, Lexicon], str], ...] = (
     _out_on41r,
     _one_going41r,
     _let_use41r,
+    _turns_down41r,
+    _rather_than_first41r,
+    _of_your_choosing41r,
+    _start_again41r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-40 ones)
 REFUSE41R: tuple[Callable[[str, Lexicon], None], ...] = (
