@@ -267,6 +267,138 @@ KNOWN_MISSES = frozenset(
         "Would you mind ever so much getting Bob his crisps, he's the washboard player?",
         "Can Person B take the apple and the chips off to the piquet table?",
         "Is Zoe alright to have the globe?",
+        # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
+        "No bother if not, but could the crisps go up on the shelf, out of the puppy's reach? "
+        "Thanks a million.",
+        "Evening, and sorry about the racket from the handpan group next door: the cup for "
+        "Person A and the chips for Person B, if you'd be so kind.",
+        "Pardon me for butting in on your ludo game, but could Person A get the apple? Thanks "
+        "ever so.",
+        "With many thanks from all of us at the carrom club: the bottle to Person A, please.",
+        "The topiarist next door sends her regards; in the meantime could Person B have the "
+        "bottle, please?",
+        "Tanemmirt, which is thanks in Tamazight, my first language. Now, kindly put the white "
+        "cup in the sink.",
+        "Alice is parched after her cyclocross race and would kill for the water bottle.",
+        "Bob's been pining for those crisps all morning long.",
+        "Alice fancies the bottle, and Bob's rather keen on the crisps.",
+        "Person A wouldn't say no to the chips if they were going spare.",
+        "The cup's what Person A is after, and Person B reckons he needs the bottle.",
+        "Person B needs that bottle more than anybody right now.",
+        "It's the chips that Person A has her heart set on, the poor thing.",
+        "Person A is absolutely dying of thirst over there; that bottle would save her life.",
+        "Mrs Khan is feeling the chill and would love the blue blanket.",
+        "Grandad's after the wipes, the little one's made a right mess.",
+        "Bob? Bottle. For him, yeah, that one.",
+        "Person A put in a word for the apple earlier, and Person B for the chips; sort them "
+        "both out, would you.",
+        "Person A has her eye on the chips, and as for Person B, it's the bottle he's hoping for.",
+        "Whose are the chips? Person B's. And the bottle? Also his, so take him both.",
+        "Person A left that bottle behind at the bus stop; it's hers, so she ought to get it back.",
+        "Person A mentioned she'd like it brought over, the bottle that is, before her "
+        "shakuhachi practice.",
+        "Person B wants the chips, and she wants the bottle; Person A, I mean.",
+        "Omar's after a spoon to stir his tea. Could you get him one?",
+        "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
+        "them both.",
+        "So Carol's having the apple and Bob's having the chips and as for the cup let's put "
+        "that up on the shelf while we're at it.",
+        "Bob was on about crisps all through the ice show and Alice wants her bottle can you "
+        "sort that",
+        "OK so I was thinking the chips for Person B to start with and once he's got those the "
+        "bottle can head over to Person A and then we're all square.",
+        "Bottle, that's Person A's. Apple, Person B's. Go.",
+        "Bottle over to Person A, chips over to Person B, and then you can put your feet up.",
+        "Start with Person B. He gets the chips. Person A after him, with the bottle.",
+        "Chips for Person B, he asked. Bottle for Person A, she asked too.",
+        "Mia wants the small box. The tape's for the conveyor, put it on there. Nothing else "
+        "today.",
+        "Noah's gluing and Zoe's cutting, so they need the glue stick and the scissors "
+        "respectively. Once they've got them, the red book back on the shelf.",
+        "Person A's to have the cup and Person B the apple, so each of them ends up with just "
+        "the one thing.",
+        "Person B can have the apple or the cup, whichever he likes; just take him one.",
+        "Person A's packing for the kalimba workshop and she'll take both, the bottle and the "
+        "chips.",
+        "Everybody gets a single item here: Person A is down for the bottle and the chips are "
+        "Person B's.",
+        "Either of the two things will keep Person B happy, so bring him one.",
+        "Either way, Person A gets the bottle in the end.",
+        "The chips go to one of them, I don't mind if it's Person A or Person B, so pick the "
+        "closer.",
+        "A cup for Dana, either one, really; not fussed.",
+        "For Sam, any one of the pens that isn't already lying on the desk, to sign the tile "
+        "setter's timesheet.",
+        "A blanket each for the two patients, any way round you like.",
+        "One of the boxes that aren't on the pallet goes on the conveyor, your choice which.",
+        "Both of the things we've got here, up onto the shelf with them, the cleaner's coming "
+        "through.",
+        "Person A's taking three of the things to her pyrography class: the cup, the apple and "
+        "the chips.",
+        "Hand over both the chips and the bottle, the two together, to Person A.",
+        "Just the one bottle in the room and it's promised to Person A.",
+        "Person A's walking the coast path later and a single bottle will see her through, the "
+        "one you've got.",
+        "Person B says he'll have both items, the chips as well as the bottle.",
+        "Tom should get the two boxes that aren't sitting on the pallet.",
+        "Bob isn't after the crisps at all; it's the bottle he wants.",
+        "The bottle's no good to Alice, she's brought her own; the crisps then.",
+        "Apart from the bottle, everything on offer goes to Person B.",
+        "It was never the cup for Person A; the apple's what she's having.",
+        "The chips aren't Person A's to have; they're going to Person B.",
+        "That bottle is strictly for Person A; no one else is to touch it.",
+        "Leave the chips alone; anything besides them is Person A's.",
+        "Emma won't want the white cup, it's chipped; pass her the green one.",
+        "Not the red pen and not the blue; Sam gets the black one.",
+        "Mr Novak says he can do without the knife, the lemon's all he's after.",
+        "Zoe's not to have the glue stick today, it's Noah's turn.",
+        "Leave everything on the bench where it is, except the big spanner, which goes in the "
+        "locker.",
+        "Bob's meant to get the cup; hold on, it's the apple he's meant to get, my mistake.",
+        "The bottle's going to Alice; ignore me, it's Bob who's having it.",
+        "Person A's getting the chips; no, I got that wrong, it's the cup she's getting.",
+        "Apple for Person B, I told you; I was wrong though, it's the bottle for him.",
+        "Person A gets the chips, or, let me put that right, the bottle.",
+        "I said bottle for Person B, didn't I? Slip of the tongue, I meant chips.",
+        "Bottle for, sorry, I keep saying Person B, Person A.",
+        "Person A asked for the bottle; my memory's terrible, it was the chips she asked for.",
+        "Bowl on the tray, please; oh hang on, Omar says it needs washing, so the sink.",
+        "Blue pen to Sam; no, the blue's on the desk, I mean the black.",
+        "The salt's going on the rack; no hold on, Marco wants it on the counter by the hob.",
+        "Kofi's getting the drill, I'd have said, but he's just shouted down that it's the "
+        "hammer he wants, not the drill.",
+        "carols had a long shift at the pawn shop so give her the chips and the red mug",
+        "stick the bottle up on the shelf would you im trying to tidy for the bouzouki players",
+        "bob keeps pointing at the crisps so i think hed like them go on",
+        "person b has dibs on the cup so the apple goes to person a",
+        "ever since balalaika practice person a keeps going on about wanting the bottle",
+        "person b gets both the chips and the bottle nobody else wants them",
+        "person a could do with the chips after disc golf",
+        "orders from earlier still stand person b is having the chips and person a the bottle",
+        "pop the notebook into the box first and once its in there priya can have the stapler",
+        "ruth is doing obs and needs the thermometer and mrs khan is bored so bring her the "
+        "magazine",
+        "marcos on the grill tonight and hes shouting for the tongs",
+        "mrs ortiz has asked for the scissors and says the globe can live on the shelf from now on",
+        "Alice asked for the boittle after her paddle on the lake.",
+        "Person B's having the cthips while he watches the match.",
+        "Person B left his botgtle here; could he have it back?",
+        "Drop the spoinge into the sink when you're passing.",
+        "Sam's taking minutes for the sugar crafter's guild, hand over the notebopk.",
+        "Set the scasnner down on the belt for the next shift to find.",
+        "Mr Novak's asked for the lemoin to go with his fish.",
+        "Could I trouble you to see that Bob gets the bottle?",
+        "While you're on your feet, would you be good enough to see Person A gets the bottle?",
+        "Is there any way Person B could get the chips this side of lunch?",
+        "How would it be if Person B had the cup and Person A the apple? Do that, please.",
+        "Is it too much bother to get Person A her bottle from over there?",
+        "Reckon you can get that bottle to Person A without spilling it?",
+        "Shall the chips go to Person B, then? Yes, let's do that.",
+        "Dana's sorting samples; is there room on the tray for the bowl, and could you put it "
+        "there?",
+        "Could Mr Novak trouble you for the salt shaker, do you suppose?",
+        "Could Grandad have the red block for Lily's tower?",
+        "Would you be a pal and lock the drill away in the locker before the armourer comes round?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -277,6 +409,14 @@ KNOWN_UNCLEAR = frozenset(
         # blind37 (tuned on in session 39)
         # blind38 (tuned on in session 40)
         # blind39 (tuned on in session 41)
+        # blind40 (tuned on in session 42)
+        "Marco needs a plate; he told me which one, but it's gone clean out of my head.",
+        "Noah and Zoe both asked for the ruler; give it to whichever of them asked first.",
+        "The torch, for whoever it was that rang down from the office.",
+        "One of the books is for Mrs Ortiz; she told me which this morning, but I've lost track.",
+        "Lily's asking for one block, just the one; she pointed, but I missed which.",
+        "Give the ruler to Noah. No, to the other one, or maybe it was Mrs Ortiz.",
+        "a box for tom, the one he asked for",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -353,9 +493,10 @@ KNOWN_UNCLEAR = frozenset(
 # rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind39" written in session 40 by another engineer and
 # committed alone, reviewed by a second one, measured once at the end of session 40 (0 wrong),
 # tuned on in session 41: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind40"
-# written in session 41 by another engineer and committed alone, measured once at the end of
-# session 41: not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind40"})
+# written in session 41 by another engineer and committed alone, reviewed by a second one, measured
+# once at the end of session 41 (1 wrong, fixed), tuned on in session 42: asserted now, the rest in
+# KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -130,8 +130,8 @@ test_posture_state = PhrasingCases().test(
 
 def test_posture_state_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
     """Without the refusal, a posture said of a thing reads as its placement."""
-    kept = tuple(r for r in offline._REFUSALS40 if r is not _rewrites40.posture_state40)
-    monkeypatch.setattr(offline, "_REFUSALS40", kept)
+    kept = tuple(r for r in offline._REFUSALS if r is not _rewrites40.posture_state40)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
     assert_reads("The red mug stands on the shelf.", "mug_red@shelf", CELL)
     assert_reads("The cup is standing on the counter.", "cup@table", CELL)
 

@@ -373,8 +373,8 @@ def test_refusals_name_nothing_without_these_rules(
     the rules are what name them."""
     monkeypatch.setattr(
         offline,
-        "_REFUSALS40",
-        tuple(r for r in offline._REFUSALS40 if r not in _rewrites40r.REFUSE40R),
+        "_REFUSALS",
+        tuple(r for r in offline._REFUSALS if r not in _rewrites40r.REFUSE40R),
     )
     with pytest.raises(GroundingError) as refused:
         offline.parse_instruction(text, scene)

@@ -148,8 +148,8 @@ def test_owner_refused(text: str, scene: object) -> None:
 
 def test_owner_refused_by_the_check(monkeypatch: pytest.MonkeyPatch) -> None:
     """Without the check each is read (the purpose taken off by the older rules)."""
-    kept = tuple(c for c in offline._CHECKS40 if c is not _rewrites40s._owner40s)
-    monkeypatch.setattr(offline, "_CHECKS40", kept)
+    kept = tuple(c for c in offline._CHECKS if c is not _rewrites40s._owner40s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
     for text, scene in OWNERS:
         assert tree(text, scene) is not None, text
 

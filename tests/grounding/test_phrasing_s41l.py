@@ -76,8 +76,8 @@ def test_each_read_without_the_rule(text: str, was: str, monkeypatch: pytest.Mon
 
     monkeypatch.setattr(
         offline,
-        "_REFUSALS41",
-        tuple(r for r in offline._REFUSALS41 if r is not _rewrites41l._done41l),
+        "_REFUSALS",
+        tuple(r for r in offline._REFUSALS if r is not _rewrites41l._done41l),
     )
     assert show_tree(offline.parse_instruction(text, CELL)) == was
 
@@ -137,8 +137,8 @@ def test_each_taken_back_reads_without_the_check(
 
     monkeypatch.setattr(
         offline,
-        "_CHECKS41",
-        tuple(c for c in offline._CHECKS41 if c is not _rewrites41l._taken_back41l),
+        "_CHECKS",
+        tuple(c for c in offline._CHECKS if c is not _rewrites41l._taken_back41l),
     )
     assert show_tree(offline.parse_instruction(text, CELL)) == was
 

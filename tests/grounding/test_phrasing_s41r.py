@@ -351,11 +351,11 @@ def test_refusals_need_these_rules(
     refused without its readings: the rules are what refuse them so."""
     monkeypatch.setattr(
         offline,
-        "_REFUSALS41",
-        tuple(r for r in offline._REFUSALS41 if r not in _rewrites41r.REFUSE41R),
+        "_REFUSALS",
+        tuple(r for r in offline._REFUSALS if r not in _rewrites41r.REFUSE41R),
     )
     monkeypatch.setattr(
-        offline, "_CHECKS41", tuple(c for c in offline._CHECKS41 if c not in _rewrites41r.CHECK41R)
+        offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in _rewrites41r.CHECK41R)
     )
     try:
         offline.parse_instruction(text, scene)

@@ -133,7 +133,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # 40 by another engineer and committed alone, never opened by the engineers who change the grounder
 # before its one measurement at the end of session 40; tuned on in session 41), blind40 (written
 # in session 41 by another engineer and committed alone, never opened by the engineers who change
-# the grounder before its one measurement at the end of session 41; tests do not assert it).
+# the grounder before its one measurement at the end of session 41; tuned on in session 42).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

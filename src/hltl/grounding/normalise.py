@@ -534,6 +534,9 @@ from hltl.grounding._rewrites40s import _STEPS40S, _STEPS40S_FIRST
 from hltl.grounding._rewrites41 import _STEPS41, _STEPS41_FIRST
 from hltl.grounding._rewrites41r import _STEPS41R, _STEPS41R_FIRST
 from hltl.grounding._rewrites41s import _STEPS41S, _STEPS41S_FIRST
+from hltl.grounding._rewrites42 import _STEPS42, _STEPS42_FIRST
+from hltl.grounding._rewrites42r import _STEPS42R, _STEPS42R_FIRST
+from hltl.grounding._rewrites42s import _STEPS42S, _STEPS42S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -856,6 +859,10 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S_FIRST,
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
+    # session 42 (12s, 12r, 12)
+    *_STEPS42S_FIRST,
+    *_STEPS42R_FIRST,
+    *_STEPS42_FIRST,
     # session 41 (12s, 12r, 12)
     *_STEPS41S_FIRST,
     *_STEPS41R_FIRST,
@@ -876,6 +883,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33T,
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
+    # session 42 (12r)
+    *_STEPS42R,
     # session 41 (12r)
     *_STEPS41R,
     # session 40 (12r)
@@ -908,6 +917,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S,
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
+    # session 42 (12s)
+    *_STEPS42S,
     # session 41 (12s)
     *_STEPS41S,
     # session 40 (12s)
@@ -987,6 +998,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _since28,
     # session 38 (12): blind36's kinds
     *_STEPS38,
+    # session 42 (12)
+    *_STEPS42,
     # session 41 (12)
     *_STEPS41,
     # session 40 (12)

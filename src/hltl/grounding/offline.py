@@ -19,6 +19,9 @@ from hltl.grounding import (
     _rewrites41l,
     _rewrites41r,
     _rewrites41s,
+    _rewrites42,
+    _rewrites42r,
+    _rewrites42s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -77,21 +80,32 @@ from hltl.grounding.update import ground_update
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene
 
-# session 40's refusals before the read and checks of the whole reading, one tuple per engineer's
-# module, so each adds its rules there (run in _parse and parse_instruction)
-_REFUSALS40 = (*_rewrites40.REFUSE40, *_rewrites40r.REFUSE40R, *_rewrites40s.REFUSE40S)
-_CHECKS40 = (*_rewrites40.CHECK40, *_rewrites40r.CHECK40R, *_rewrites40s.CHECK40S)
-_REFUSALS41 = (
+# the refusals of sessions 40 on, asked before the read, and their checks of the whole reading, one
+# tuple per engineer's module in session order, so each adds its rules there (run in _parse and
+# parse_instruction)
+_REFUSALS = (
+    *_rewrites40.REFUSE40,
+    *_rewrites40r.REFUSE40R,
+    *_rewrites40s.REFUSE40S,
     *_rewrites41.REFUSE41,
     *_rewrites41r.REFUSE41R,
     *_rewrites41s.REFUSE41S,
     *_rewrites41l.REFUSE41L,
+    *_rewrites42.REFUSE42,
+    *_rewrites42r.REFUSE42R,
+    *_rewrites42s.REFUSE42S,
 )
-_CHECKS41 = (
+_CHECKS = (
+    *_rewrites40.CHECK40,
+    *_rewrites40r.CHECK40R,
+    *_rewrites40s.CHECK40S,
     *_rewrites41.CHECK41,
     *_rewrites41r.CHECK41R,
     *_rewrites41s.CHECK41S,
     *_rewrites41l.CHECK41L,
+    *_rewrites42.CHECK42,
+    *_rewrites42r.CHECK42R,
+    *_rewrites42s.CHECK42S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -157,9 +171,7 @@ def parse_instruction(
             _after_that40l(text, node, lexicon)
             _too_after_remark40l(text, node, lexicon)
             _or_sentence40l(text, node, lexicon)
-            for check in _CHECKS40:
-                check(text, node, lexicon)
-            for check in _CHECKS41:
+            for check in _CHECKS:
                 check(text, node, lexicon)
         return node
     except GroundingError as refused:
@@ -643,9 +655,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         described_one38r(text, lexicon)
         _rewrites39.doubt_which39(text, lexicon)
         _rewrites39.usual39(text, lexicon)
-        for refuse in _REFUSALS40:
-            refuse(text, lexicon)
-        for refuse in _REFUSALS41:
+        for refuse in _REFUSALS:
             refuse(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
