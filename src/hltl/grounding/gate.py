@@ -14,9 +14,7 @@
 # A pattern's words are derived the first time it is met (session 39, 12p), from re's parse of
 # it, and the pattern is compiled from that same parse (re's own code generator on it: the
 # pattern re.compile returns). Until then a pattern had been compiled (parsed) the first time it
-# was met and parsed again for its words the second: two parses where one does. The code is
-# generated when the pattern is first run (session 42, 12p): on a part never seen, some two in
-# five of the patterns met are turned away by their words on every text and never run.
+# was met and parsed again for its words the second: two parses where one does.
 #
 # The functions take re's arguments and return what re returns; where the gate says no match is
 # possible they return what re returns for no match (the text unchanged, None, [], [text]).
@@ -132,17 +130,17 @@ def required(pattern: str, flags: int = 0) -> tuple[_Words, bool]:
 
 _Gate = tuple[tuple[str, ...], bool] | None
 _GATES: dict[tuple[str, int], _Gate] = {}
-# each pattern gated: re's parse its words were derived from, until it is first run (then
-# ``compiled`` compiles it from that parse and hands it to the caller, who keeps it)
-_BUILT: dict[tuple[str, int], Any] = {}
+# each pattern gated, compiled from the parse its words were derived from, until it is first run
+# (then kept by the caller: ``compiled`` hands it over)
+_BUILT: dict[tuple[str, int], re.Pattern[str]] = {}
 # flags whose patterns re.compile alone builds (it prints a pattern, or warns of it)
 _RE_ONLY = int(re.DEBUG) | int(getattr(re, "TEMPLATE", 0))
 
 
 def _gate(pattern: str, flags: int, *, build: bool = True) -> _Gate:
     """The words ``pattern`` needs and whether they are lower-cased, or None (always run),
-    derived from re's parse of it, which is kept to compile the pattern from when it is first
-    run (``compiled``; not where ``build`` is false: the caller has it compiled)."""
+    derived from re's parse of it, from which the pattern is compiled too (``compiled``; not
+    where ``build`` is false: the caller has it compiled)."""
     key = (pattern, flags)
     try:
         parsed = _parser.parse(pattern, int(flags))  # as re.compile parses it
@@ -155,7 +153,12 @@ def _gate(pattern: str, flags: int, *, build: bool = True) -> _Gate:
         if build and not flags & _RE_ONLY:
             if len(_BUILT) > 16384:
                 _BUILT.clear()
-            _BUILT[key] = parsed
+            # an error re raises where it compiles the pattern: raised there, as it was; and
+            # where re's private code generator is not what this Python's re has (_from_parse
+            # follows the re._compiler.compile of CPython 3.11, the version used here), re.compile
+            # builds the pattern as before
+            with contextlib.suppress(re.error, AttributeError, TypeError, ValueError):
+                _BUILT[key] = _from_parse(pattern, int(flags), parsed)
     if len(_GATES) > 16384:
         _GATES.clear()
     _GATES[key] = gate
@@ -181,17 +184,10 @@ def _from_parse(pattern: str, flags: int, parsed: Any) -> re.Pattern[str]:
 
 
 def compiled(pattern: str, flags: int = 0) -> re.Pattern[str]:
-    """What ``re.compile(pattern, flags)`` returns (an equal pattern): compiled from the parse
-    the gate kept, where it kept one (not kept here: the callers keep what they compile)."""
-    parsed = _BUILT.pop((pattern, flags), None)
-    if parsed is not None:
-        # an error re raises where it compiles the pattern: raised by re.compile below, as it
-        # was; and where re's private code generator is not what this Python's re has
-        # (_from_parse follows the re._compiler.compile of CPython 3.11, the version used here),
-        # re.compile builds the pattern as before
-        with contextlib.suppress(re.error, AttributeError, TypeError, ValueError):
-            return _from_parse(pattern, int(flags), parsed)
-    return re.compile(pattern, flags)
+    """What ``re.compile(pattern, flags)`` returns (an equal pattern): the one compiled when
+    the pattern was gated, where it was (not kept here: the callers keep what they compile)."""
+    built = _BUILT.pop((pattern, flags), None)
+    return re.compile(pattern, flags) if built is None else built
 
 
 # the last text checked and its lower case (None where it is not ASCII), replaced as one tuple
