@@ -2073,6 +2073,9 @@ def _reason_head35s(head: str, out: list[str], lexicon: Lexicon) -> bool:
     return bool(_REASON_HEAD35S.match(head)) and bool(_names("".join(out), lexicon))
 
 
+_REPHRASE42L = re.compile(r"(?:let me rephrase(?: that)?|i misspoke|i misspoke there)", _F)
+
+
 def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
     """The speaker's remarks (the rule above) and the session-15 clauses about the speaker, the
     hearer or the moment (_remark_clause), anywhere in the instruction, taken off when what is
@@ -2089,6 +2092,11 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
     for n in range(0, len(pieces), 2):
         piece = pieces[n]
         mark = pieces[n + 1] if n + 1 < len(pieces) else ""
+        if _REPHRASE42L.fullmatch(piece.strip()):
+            # session 42 (lead): "Let me rephrase:" / "I misspoke:" announce a correction: kept
+            # as its cue 'no' (taken off as a remark, "Take Mr Lee his jug? You're a star. Let
+            # me rephrase: the medication." read as adding the medication: 12c's turns fuzz)
+            piece = piece[: len(piece) - len(piece.lstrip())] + "no"
         # "… on the tray cheers, then i'll …" / "… the rota and I'll …": from a joining word
         # before the speaker to the mark
         cut = _rx(
