@@ -19,13 +19,16 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.bench.grounding import show_tree
 from hltl.errors import GroundingError
 from hltl.grounding import _normalise4, _rewrites42l, offline, phrasing
+from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
     NURSERY,
     OFFICE,
+    ROOT,
     WARD,
     PhrasingCases,
     assert_reads,
@@ -194,3 +197,19 @@ def test_let_me_rephrase_was_read_as_an_addition(monkeypatch: pytest.MonkeyPatch
     monkeypatch.setattr(_normalise4, "_REPHRASE42L", _normalise4.re.compile(r"(?!)"))
     text = "Could you take Mr Lee his water jug? You're a star. Let me rephrase: the medication."
     assert tree(text, WARD) is not None
+
+
+def test_a_word_of_order_is_no_trade() -> None:
+    """12c's final sweep: "…, bottle to person b the crofter after, …" read `chips>A & bottle>B`
+    (12s's `_trade41s` took 'the crofter after' for a trade, 'after' ending like one, so the order
+    was lost); the trade said before the order word still goes."""
+    scene = load_scene(ROOT / "examples/scenes/2-2.yaml")
+    text = "first the chips for person a, bottle to person b the crofter after, and thats your lot"
+    got = tree(text, scene)
+    assert got is None or show_tree(got) == "chips>A ; bottle>B"
+    assert_reads(
+        "first the chips for person a, bottle to person b, the crofter, after",
+        "chips>A ; bottle>B",
+        scene,
+    )
+    assert_reads("the chips for person a the crofter, please", "chips>A", scene)

@@ -278,6 +278,10 @@ def _all_for41s(text: str, lexicon: Lexicon) -> str:
 # person (he / she or a name) joined by 'and' to what they want or are: the trade taken off ("she
 # needs …", "he's starving", "it's the bottle she wants"). Each when what is left reads.
 _TRADE_WORD41S = (
+    # not a word of time or order that ends like a trade (12c's fuzz: "bottle to person b the
+    # crofter after" lost 'after', and with it the order)
+    r"(?!(?:after|later|never|ever|over|under|rather|together|either|neither|other|another|"
+    r"whether|sooner|for|nor|or|per|thereafter|hereafter|ago)\b)"
     r"[a-z]+(?:er|or|ist|ian|man|men|woman|women|lady|ladies|smith|wright|wife|maker|hand|"
     r"champion|champ|captain|chef|cook|fan|buff|nurse|lad|lass|guy|boss|rep|warden|keeper)s?"
 )
