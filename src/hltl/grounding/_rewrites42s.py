@@ -129,14 +129,19 @@ _INFERRED42S = re.compile(
 )
 
 
+def _fits42s(who: str, pronoun: str, lexicon: Lexicon) -> bool:
+    """Whether ``who`` names one person of the scene whom ``pronoun`` may be."""
+    if not _only_person(who, lexicon):
+        return False
+    (pid,) = _ids(who, lexicon, "human")
+    return _fit36(pid, pronoun, lexicon)
+
+
 def _inferred42s(text: str, lexicon: Lexicon) -> str:
     """Session 42 (12s): the inferred want above said plainly, when the pronoun may be the
     person, the thing is objects of the scene only, and what is left reads."""
     m = _INFERRED42S.match(text)
-    if m is None or not _only_person(m["who"], lexicon):
-        return text
-    (pid,) = _ids(m["who"], lexicon, "human")
-    if not _fit36(pid, m["pron"], lexicon):
+    if m is None or not _fits42s(m["who"], m["pron"], lexicon):
         return text
     obj = m["obj"]
     if (
@@ -583,12 +588,11 @@ def _middle_state42s(text: str, lexicon: Lexicon) -> str:
     if " so " not in text.lower():
         return text
     for m in _MIDDLE_STATE42S.finditer(text):
-        if m.start() == 0 or not _only_person(m["who"], lexicon):
+        if m.start() == 0 or not _fits42s(m["who"], m["pron"], lexicon):
             continue
         if not _names(text[: m.start()], lexicon) or not _remark_only42s(m["words"], lexicon):
             continue
-        (pid,) = _ids(m["who"], lexicon, "human")
-        if not _fit36(pid, m["pron"], lexicon) or _ids(m["rest"], lexicon, "human"):
+        if _ids(m["rest"], lexicon, "human"):
             continue
         out = f"{text[: m.start()]}; {m['verb']} {m['who']} {m['rest']}{text[m.end() :]}"
         if _reading(out, lexicon) is not None:
