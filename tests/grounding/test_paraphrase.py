@@ -257,15 +257,12 @@ KNOWN_MISSES = frozenset(
         "bottle, please?",
         "Tanemmirt, which is thanks in Tamazight, my first language. Now, kindly put the white "
         "cup in the sink.",
-        "Alice is parched after her cyclocross race and would kill for the water bottle.",
         "Bob's been pining for those crisps all morning long.",
         "Alice fancies the bottle, and Bob's rather keen on the crisps.",
         "The cup's what Person A is after, and Person B reckons he needs the bottle.",
         "Person B needs that bottle more than anybody right now.",
         "It's the chips that Person A has her heart set on, the poor thing.",
         "Person A is absolutely dying of thirst over there; that bottle would save her life.",
-        "Mrs Khan is feeling the chill and would love the blue blanket.",
-        "Grandad's after the wipes, the little one's made a right mess.",
         "Bob? Bottle. For him, yeah, that one.",
         "Person A put in a word for the apple earlier, and Person B for the chips; sort them "
         "both out, would you.",
@@ -277,41 +274,22 @@ KNOWN_MISSES = frozenset(
         "Omar's after a spoon to stir his tea. Could you get him one?",
         "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
         "them both.",
-        "So Carol's having the apple and Bob's having the chips and as for the cup let's put "
-        "that up on the shelf while we're at it.",
         "Bob was on about crisps all through the ice show and Alice wants her bottle can you "
         "sort that",
-        "OK so I was thinking the chips for Person B to start with and once he's got those the "
-        "bottle can head over to Person A and then we're all square.",
         "Bottle, that's Person A's. Apple, Person B's. Go.",
-        "Bottle over to Person A, chips over to Person B, and then you can put your feet up.",
         "Start with Person B. He gets the chips. Person A after him, with the bottle.",
         "Chips for Person B, he asked. Bottle for Person A, she asked too.",
-        "Mia wants the small box. The tape's for the conveyor, put it on there. Nothing else "
-        "today.",
         "Everybody gets a single item here: Person A is down for the bottle and the chips are "
         "Person B's.",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
         "Person B says he'll have both items, the chips as well as the bottle.",
-        "carols had a long shift at the pawn shop so give her the chips and the red mug",
-        "stick the bottle up on the shelf would you im trying to tidy for the bouzouki players",
-        "bob keeps pointing at the crisps so i think hed like them go on",
         "person b has dibs on the cup so the apple goes to person a",
         "ever since balalaika practice person a keeps going on about wanting the bottle",
-        "orders from earlier still stand person b is having the chips and person a the bottle",
-        "pop the notebook into the box first and once its in there priya can have the stapler",
-        "ruth is doing obs and needs the thermometer and mrs khan is bored so bring her the "
-        "magazine",
+        "person b has dibs on the cup so the apple goes to person a",
+        "ever since balalaika practice person a keeps going on about wanting the bottle",
         "marcos on the grill tonight and hes shouting for the tongs",
-        "mrs ortiz has asked for the scissors and says the globe can live on the shelf from now on",
-        "Alice asked for the boittle after her paddle on the lake.",
-        "Person B's having the cthips while he watches the match.",
         "Person B left his botgtle here; could he have it back?",
-        "Drop the spoinge into the sink when you're passing.",
-        "Sam's taking minutes for the sugar crafter's guild, hand over the notebopk.",
-        "Set the scasnner down on the belt for the next shift to find.",
-        "Mr Novak's asked for the lemoin to go with his fish.",
         "Could I trouble you to see that Bob gets the bottle?",
         "While you're on your feet, would you be good enough to see Person A gets the bottle?",
         "Is there any way Person B could get the chips this side of lunch?",
@@ -413,7 +391,7 @@ KNOWN_UNCLEAR = frozenset(
 # written in session 41 by another engineer and committed alone, reviewed by a second one, measured
 # once at the end of session 41 (1 wrong, fixed), tuned on in session 42: asserted now, the rest in
 # KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind41"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -519,6 +497,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind39"].entries}) >= 3
     assert len(CORPORA["blind40"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind40"].entries}) >= 3
+    assert len(CORPORA["blind41"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind41"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

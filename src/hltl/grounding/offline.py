@@ -20,6 +20,7 @@ from hltl.grounding import (
     _rewrites41r,
     _rewrites41s,
     _rewrites42,
+    _rewrites42l,
     _rewrites42r,
     _rewrites42s,
 )
@@ -94,6 +95,7 @@ _REFUSALS = (
     *_rewrites42.REFUSE42,
     *_rewrites42r.REFUSE42R,
     *_rewrites42s.REFUSE42S,
+    *_rewrites42l.REFUSE42L,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -106,6 +108,7 @@ _CHECKS = (
     *_rewrites42.CHECK42,
     *_rewrites42r.CHECK42R,
     *_rewrites42s.CHECK42S,
+    *_rewrites42l.CHECK42L,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
