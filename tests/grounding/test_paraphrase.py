@@ -228,91 +228,17 @@ KNOWN_MISSES = frozenset(
         "the crumhorn lady.",
         "the chips are person b's, he's a ditcher and starving",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
-        "No bother if not, but could the crisps go up on the shelf, out of the puppy's reach? "
-        "Thanks a million.",
-        "Person A wouldn't say no to the chips if they were going spare.",
-        "Grandad's after the wipes, the little one's made a right mess.",
-        "Person B wants the chips, and she wants the bottle; Person A, I mean.",
         "Omar's after a spoon to stir his tea. Could you get him one?",
         "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
         "them both.",
-        "So Carol's having the apple and Bob's having the chips and as for the cup let's put "
-        "that up on the shelf while we're at it.",
         "Bob was on about crisps all through the ice show and Alice wants her bottle can you "
         "sort that",
-        "OK so I was thinking the chips for Person B to start with and once he's got those the "
-        "bottle can head over to Person A and then we're all square.",
-        "Bottle over to Person A, chips over to Person B, and then you can put your feet up.",
-        "Mia wants the small box. The tape's for the conveyor, put it on there. Nothing else "
-        "today.",
-        "Noah's gluing and Zoe's cutting, so they need the glue stick and the scissors "
-        "respectively. Once they've got them, the red book back on the shelf.",
-        "Person A's to have the cup and Person B the apple, so each of them ends up with just "
-        "the one thing.",
-        "Person B can have the apple or the cup, whichever he likes; just take him one.",
-        "Person A's packing for the kalimba workshop and she'll take both, the bottle and the "
-        "chips.",
-        "Everybody gets a single item here: Person A is down for the bottle and the chips are "
-        "Person B's.",
-        "Either of the two things will keep Person B happy, so bring him one.",
-        "Either way, Person A gets the bottle in the end.",
-        "The chips go to one of them, I don't mind if it's Person A or Person B, so pick the "
-        "closer.",
-        "A cup for Dana, either one, really; not fussed.",
-        "For Sam, any one of the pens that isn't already lying on the desk, to sign the tile "
-        "setter's timesheet.",
-        "A blanket each for the two patients, any way round you like.",
-        "One of the boxes that aren't on the pallet goes on the conveyor, your choice which.",
-        "Both of the things we've got here, up onto the shelf with them, the cleaner's coming "
-        "through.",
-        "Person A's taking three of the things to her pyrography class: the cup, the apple and "
-        "the chips.",
-        "Hand over both the chips and the bottle, the two together, to Person A.",
-        "Just the one bottle in the room and it's promised to Person A.",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
-        "Tom should get the two boxes that aren't sitting on the pallet.",
-        "Bob isn't after the crisps at all; it's the bottle he wants.",
-        "The bottle's no good to Alice, she's brought her own; the crisps then.",
-        "Apart from the bottle, everything on offer goes to Person B.",
-        "It was never the cup for Person A; the apple's what she's having.",
-        "The chips aren't Person A's to have; they're going to Person B.",
-        "That bottle is strictly for Person A; no one else is to touch it.",
-        "Leave the chips alone; anything besides them is Person A's.",
-        "Emma won't want the white cup, it's chipped; pass her the green one.",
-        "Not the red pen and not the blue; Sam gets the black one.",
-        "Mr Novak says he can do without the knife, the lemon's all he's after.",
-        "Zoe's not to have the glue stick today, it's Noah's turn.",
-        "Leave everything on the bench where it is, except the big spanner, which goes in the "
-        "locker.",
-        "Bob's meant to get the cup; hold on, it's the apple he's meant to get, my mistake.",
-        "The bottle's going to Alice; ignore me, it's Bob who's having it.",
-        "Person A's getting the chips; no, I got that wrong, it's the cup she's getting.",
-        "Apple for Person B, I told you; I was wrong though, it's the bottle for him.",
-        "Person A gets the chips, or, let me put that right, the bottle.",
-        "I said bottle for Person B, didn't I? Slip of the tongue, I meant chips.",
-        "Bottle for, sorry, I keep saying Person B, Person A.",
-        "Person A asked for the bottle; my memory's terrible, it was the chips she asked for.",
-        "Bowl on the tray, please; oh hang on, Omar says it needs washing, so the sink.",
-        "Blue pen to Sam; no, the blue's on the desk, I mean the black.",
-        "The salt's going on the rack; no hold on, Marco wants it on the counter by the hob.",
-        "Kofi's getting the drill, I'd have said, but he's just shouted down that it's the "
-        "hammer he wants, not the drill.",
-        "carols had a long shift at the pawn shop so give her the chips and the red mug",
-        "stick the bottle up on the shelf would you im trying to tidy for the bouzouki players",
-        "bob keeps pointing at the crisps so i think hed like them go on",
-        "ever since balalaika practice person a keeps going on about wanting the bottle",
-        "person b gets both the chips and the bottle nobody else wants them",
-        "orders from earlier still stand person b is having the chips and person a the bottle",
-        "pop the notebook into the box first and once its in there priya can have the stapler",
         "marcos on the grill tonight and hes shouting for the tongs",
-        "Alice asked for the boittle after her paddle on the lake.",
-        "Person B's having the cthips while he watches the match.",
-        "Sam's taking minutes for the sugar crafter's guild, hand over the notebopk.",
-        "Set the scasnner down on the belt for the next shift to find.",
-        "Mr Novak's asked for the lemoin to go with his fish.",
         "Is there any way Person B could get the chips this side of lunch?",
-        "Reckon you can get that bottle to Person A without spilling it?",
+        "marcos on the grill tonight and hes shouting for the tongs",
+        "Is there any way Person B could get the chips this side of lunch?",
         "Could Grandad have the red block for Lily's tower?",
     }
 )
@@ -325,13 +251,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind38 (tuned on in session 40)
         # blind39 (tuned on in session 41)
         # blind40 (tuned on in session 42)
-        "Marco needs a plate; he told me which one, but it's gone clean out of my head.",
-        "Noah and Zoe both asked for the ruler; give it to whichever of them asked first.",
-        "The torch, for whoever it was that rang down from the office.",
-        "One of the books is for Mrs Ortiz; she told me which this morning, but I've lost track.",
-        "Lily's asking for one block, just the one; she pointed, but I missed which.",
-        "Give the ruler to Noah. No, to the other one, or maybe it was Mrs Ortiz.",
-        "a box for tom, the one he asked for",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -411,7 +330,7 @@ KNOWN_UNCLEAR = frozenset(
 # written in session 41 by another engineer and committed alone, reviewed by a second one, measured
 # once at the end of session 41 (1 wrong, fixed), tuned on in session 42: asserted now, the rest in
 # KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind41"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -517,6 +436,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind39"].entries}) >= 3
     assert len(CORPORA["blind40"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind40"].entries}) >= 3
+    assert len(CORPORA["blind41"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind41"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -133,7 +133,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # 40 by another engineer and committed alone, never opened by the engineers who change the grounder
 # before its one measurement at the end of session 40; tuned on in session 41), blind40 (written
 # in session 41 by another engineer and committed alone, never opened by the engineers who change
-# the grounder before its one measurement at the end of session 41; tuned on in session 42).
+# the grounder before its one measurement at the end of session 41; tuned on in session 42), blind41
+# (written in session 42 by another engineer and committed alone, never opened by the engineers who
+# change the grounder before its one measurement at the end of session 42; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -191,6 +193,7 @@ PARTS = (
     "blind38",
     "blind39",
     "blind40",
+    "blind41",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

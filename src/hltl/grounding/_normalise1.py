@@ -496,7 +496,11 @@ _NEGATIONS = re.compile(
 _COMMON = common_words() | frozenset(WORDS) | frozenset(VERBS)
 
 
+@functools.lru_cache(maxsize=64)
 def _known_words(lexicon: Lexicon) -> frozenset[str]:
+    """The words ``_plain_words`` knows in ``lexicon``'s scene: a union with the 20,000 common
+    words, built once per lexicon (session 42, 12p: it had been built again at every call, some
+    0.4 ms each; a lexicon's names do not change, and lexicons are kept, 64 at most)."""
     scene = lexicon.scene
     names = [
         *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),

@@ -1694,10 +1694,13 @@ def _trailing_remark32s(text: str, lexicon: Lexicon) -> str:
 # Session 32 (12s): a statement about one person opening the instruction, then a request whose
 # person is a pronoun ("Bob's had nothing since breakfast. Give him the apple, then the crisps.",
 # "Person A's over there mending the nets. Take her the bottle, will you.")
+# session 42 (12s): ' so' without a comma before the request too ("carols had a long shift at the
+# pawn shop so give her …")
 _OPENING_STATE32S = re.compile(
     r"^(?P<lead>(?:(?:oh|so|well|right|okay|ok)\s*,?\s+)*)(?:poor\s+)?(?P<who>[A-Za-z][\w]*(?: "
     r"[A-Za-z][\w]*)?)(?P<verb>'s|\s+(?:is|has|hasn't|has not|was|wasn't|isn't|is not|had|looks|"
     r"seems))\b(?P<words>[^.;!?,]*?)(?P<stop>[.;!]+\s+|,\s+(?=(?:so\s+)?(?:could|can|would|will|"
+    r"please|give|hand|pass|bring|take|get|let|pop|put)\b)|\s+(?=so\s+(?:could|can|would|will|"
     r"please|give|hand|pass|bring|take|get|let|pop|put)\b))(?P<rest>\S.*)$",
     _F,
 )
@@ -1788,7 +1791,7 @@ def _opening_state32s(text: str, lexicon: Lexicon) -> str:
         return text
     if len({PRONOUN_SEX[p] for p in pronouns}) > 1:
         return text  # 'he' and 'she': two people
-    stop = ". " if m["stop"].strip() != "," else ", "
+    stop = ". " if m["stop"].strip() not in (",", "") else ", "  # 42s: " so" as ", so"
     return f"{m['lead']}{m['who']} is waiting{stop}{m['rest']}"
 
 
@@ -2070,6 +2073,9 @@ def _reason_head35s(head: str, out: list[str], lexicon: Lexicon) -> bool:
     return bool(_REASON_HEAD35S.match(head)) and bool(_names("".join(out), lexicon))
 
 
+_REPHRASE42L = re.compile(r"(?:let me rephrase(?: that)?|i misspoke|i misspoke there)", _F)
+
+
 def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
     """The speaker's remarks (the rule above) and the session-15 clauses about the speaker, the
     hearer or the moment (_remark_clause), anywhere in the instruction, taken off when what is
@@ -2086,6 +2092,11 @@ def _speaker_remarks(text: str, lexicon: Lexicon) -> str:
     for n in range(0, len(pieces), 2):
         piece = pieces[n]
         mark = pieces[n + 1] if n + 1 < len(pieces) else ""
+        if _REPHRASE42L.fullmatch(piece.strip()):
+            # session 42 (lead): "Let me rephrase:" / "I misspoke:" announce a correction: kept
+            # as its cue 'no' (taken off as a remark, "Take Mr Lee his jug? You're a star. Let
+            # me rephrase: the medication." read as adding the medication: 12c's turns fuzz)
+            piece = piece[: len(piece) - len(piece.lstrip())] + "no"
         # "… on the tray cheers, then i'll …" / "… the rota and I'll …": from a joining word
         # before the speaker to the mark
         cut = _rx(
@@ -7655,6 +7666,15 @@ _PLAYED37 = re.compile(
     r"(?:[a-z]{3,}ing|practice|game|lesson|class|session|match|training|workout|club|rehearsal)$",
     _F,
 )
+# session 42 (12s): the clause just before the occasion an order ("Bob wants the cup, give it to
+# him after his match"): 'after' of an order puts it off (the time rules refuse it), whatever want
+# was said before
+_ORDER_LAST37 = re.compile(
+    r"(?:^|[.;:!?,]\s*|\s(?:and|so|then|but)\s+)(?:(?:please|kindly|just|now|so|then)[, ]+)*"
+    r"(?:give|hand|pass|bring|take|deliver|put|place|set|leave|send|get|fetch|pop|stick|move|"
+    r"carry|run|drop|let)\b[^.;:!?,]*$",
+    _F,
+)
 # "After his shift, Bob needs the cup.": the same, fronted, before a want of the one person
 _AFTER_HIS37 = re.compile(
     rf"^(?:after|following) (?P<pron>his|her|their) (?P<doing>{_DOING37}),\s*", _F
@@ -7693,6 +7713,8 @@ def _after_doing37(text: str, lexicon: Lexicon) -> str:
         people = _ids(before, lexicon, "human")
         if len(people) != 1 or not _WANT_FRAME37.search(before):
             continue
+        if _ORDER_LAST37.search(before):
+            continue  # "…, give it to him after his match": an order put off (session 42, 12s)
         if _IS_FOR37.search(before) and not _PLAYED37.search(doing):
             continue  # "The bottle is for Person A after her gymnastics": a time (12r, s35r)
         if not _ids(before, lexicon, "object") or _ids(before, lexicon, "surface"):

@@ -115,6 +115,20 @@ def _caused41s(prep: str, det: str, what: str, clause: str, lexicon: Lexicon) ->
     return last.endswith("ing")
 
 
+def _kept_if_owned41s(out: str, text: str, owners: list[str], lexicon: Lexicon) -> str:
+    """``out`` (``text`` with an occasion or a purpose taken off) when it reads and each his / her
+    said in what was taken off fits someone it hands something to; else ``text``."""
+    read = _reading(out, lexicon)
+    if read is None:
+        return text
+    given = {t.target for t in tasks(read) if t.kind == "deliver"}
+    if owners and not given:
+        return text
+    if any(not any(_fit36(p, w, lexicon) for p in given) for w in owners):
+        return text
+    return out
+
+
 def _occasion41s(text: str, lexicon: Lexicon) -> str:
     """Session 41 (12s): an occasion beside a want, a need or a remark, or a deadline of an
     order, taken off (above), when what is left reads and its his / her fits someone who gets
@@ -159,15 +173,7 @@ def _occasion41s(text: str, lexicon: Lexicon) -> str:
     out = _OCCASION41S.sub(cut, text)
     if out == text:
         return text
-    read = _reading(out, lexicon)
-    if read is None:
-        return text
-    given = {t.target for t in tasks(read) if t.kind == "deliver"}
-    if owners and not given:
-        return text
-    if any(not any(_fit36(p, w, lexicon) for p in given) for w in owners):
-        return text
-    return out
+    return _kept_if_owned41s(out, text, owners, lexicon)
 
 
 # -- session 41 (12s): a purpose 'for <an event>' where session 40's rule did not look -------------
@@ -236,15 +242,7 @@ def _purpose41s(text: str, lexicon: Lexicon) -> str:
     out = _PURPOSE41S.sub(cut, text)
     if out == text:
         return text
-    read = _reading(out, lexicon)
-    if read is None:
-        return text
-    given = {t.target for t in tasks(read) if t.kind == "deliver"}
-    if owners and not given:
-        return text
-    if any(not any(_fit36(p, w, lexicon) for p in given) for w in owners):
-        return text
-    return out
+    return _kept_if_owned41s(out, text, owners, lexicon)
 
 
 # "Give Bob the cup. It's all for the ramblers.": 'all' of a closing "it's / that's / they're all
@@ -280,6 +278,10 @@ def _all_for41s(text: str, lexicon: Lexicon) -> str:
 # person (he / she or a name) joined by 'and' to what they want or are: the trade taken off ("she
 # needs …", "he's starving", "it's the bottle she wants"). Each when what is left reads.
 _TRADE_WORD41S = (
+    # not a word of time or order that ends like a trade (12c's fuzz: "bottle to person b the
+    # crofter after" lost 'after', and with it the order)
+    r"(?!(?:after|later|never|ever|over|under|rather|together|either|neither|other|another|"
+    r"whether|sooner|for|nor|or|per|thereafter|hereafter|ago)\b)"
     r"[a-z]+(?:er|or|ist|ian|man|men|woman|women|lady|ladies|smith|wright|wife|maker|hand|"
     r"champion|champ|captain|chef|cook|fan|buff|nurse|lad|lass|guy|boss|rep|warden|keeper)s?"
 )

@@ -1910,6 +1910,7 @@ def _corrections(items: list[Item]) -> list[Item]:
                 before.pop()  # "… . No, put it on the table.": the sentence before is corrected
                 while before and _is(before[-1], ",", "-", "filler"):
                     before.pop()  # "Give Bob the bottle, please. Thanks, no, the crisps"
+                    _past_thanks42l(before)
                 whole = True
             elif after:
                 raise GroundingError(
@@ -2643,6 +2644,15 @@ def _is_verb_item(item: Item) -> bool:
     return item.kind == "word" and item.lemma.startswith("verb:")
 
 
+def _past_thanks42l(before: list[Item]) -> None:
+    """Session 42 (lead): "Give Bob the bottle? Thanks. Ah, not that one, the crisps" — a sentence
+    of thanks alone (fillers) between the request and the correction: its full stop is taken off
+    too, so the request before it is what is corrected (12c's turns fuzz: the crisps had been read
+    as added after the question mark)."""
+    if before and before[-1].kind == "punct" and before[-1].lemma in _END:
+        before.pop()
+
+
 def _but_after_place(items: list[Item]) -> list[Item]:
     """'Put every box on the pallet but the small one': 'but' + objects ending the clause, after
     the place or person of all the objects of a kind, leaves them out of those (it was read as
@@ -2663,11 +2673,33 @@ def _but_after_place(items: list[Item]) -> list[Item]:
         left = {r.id for r in items[j].refs}
         if not left < {r.id for r in items[m].refs}:
             continue  # not one of them
+        # session 42 (lead): a list left out ("but the red one and the blue one"; 12c's fuzz
+        # found it read as 'and' the two mugs, so every mug): each one of them, as one span
+        while True:
+            n = j + 1
+            if not (n < len(items) and _is(items[n], "and", ",", "or")):
+                break
+            p = _past_dets(items, n + 1)
+            if not (p < len(items) and _objects(items[p])):
+                break
+            if not {r.id for r in items[p].refs} <= {r.id for r in items[m].refs}:
+                # "every mug for Bob but the red one and the cup": 'but' had been read as 'and'
+                # (the red mug given too); left out and the cup added, or the cup left out too
+                raise GroundingError(
+                    f"{items[p].text!r} is not one of {items[m].text!r}, so 'but …' could leave "
+                    f"it out or add it: say what to leave out, and the {items[p].text} in a "
+                    "clause of its own"
+                )
+            j = p
         end = j + 1
         while end < len(items) and _is(items[end], ",", "filler"):
             end += 1
-        if end < len(items) and not (items[end].kind == "punct" and items[end].lemma in _END):
-            continue  # 'but the small one to Carol': a clause of its own
+        if (
+            end < len(items)
+            and not (items[end].kind == "punct" and items[end].lemma in _END)
+            and not (end > j + 1 and _is(items[end - 1], ",") and _is(items[end], "and"))
+        ):
+            continue  # 'but the small one to Carol': a clause of its own ('…, and' ends one)
         place = [x for x in items[m + 1 : k] if not _is(x, ",")]
         return [*items[: m + 1], *items[k : j + 1], *place, *items[j + 1 :]]
     return items
