@@ -237,8 +237,6 @@ KNOWN_MISSES = frozenset(
         "one you've got.",
         "marcos on the grill tonight and hes shouting for the tongs",
         "Is there any way Person B could get the chips this side of lunch?",
-        "marcos on the grill tonight and hes shouting for the tongs",
-        "Is there any way Person B could get the chips this side of lunch?",
         "Could Grandad have the red block for Lily's tower?",
     }
 )

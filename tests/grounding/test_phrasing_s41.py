@@ -22,6 +22,7 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_case,
 )
 
 # two people named only 'Person A' and 'Person B' (no sex), as blind39's duo and l24 scenes
@@ -116,6 +117,28 @@ test_asked_that = WANTS.test(
     ("Priya has requested that Sam go in the box.", None, OFFICE),
     ("Dana asked that the spoon not be put in the sink.", None, LAB),
 )
+
+
+# a singular verb after a list: only its last thing goes there, a clause of its own ("has asked
+# for the scissors and the globe goes on the shelf" had read both on the shelf with 12r's and 12s's
+# session-42 rules in front; session 43, lead)
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Mrs Ortiz has asked for the scissors and the globe goes on the shelf.",
+            "scissors>A & globe@shelf",
+        ),
+        ("noah has asked for the globe and the ruler goes on the desk", "globe>B & ruler@desk"),
+        (
+            "mrs ortiz has asked for the scissors and says the globe can live on the shelf from "
+            "now on",
+            "scissors>A & globe@shelf",
+        ),
+    ],
+)
+def test_asked_for_then_a_clause(text: str, want: str) -> None:
+    assert_case(text, want, CLASSROOM)
 
 
 def test_wants_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -174,7 +174,7 @@ def _will_do41(text: str, lexicon: Lexicon) -> str:
 _ASKED_THAT41 = re.compile(
     r"(?P<p>\b[A-Za-z][\w]*)(?:'s| has)? (?:asked|requested|asks|requests) "
     r"(?:that|for) (?P<x>(?:the|both|all|this|that|those|these) [^,;.!?]+?) (?:both |all |each |"
-    r"both of them |all of them )?(?:to )?(?:be |get |)(?:left|put|placed|set|stood|go|goes|got)"
+    r"both of them |all of them )?(?:to )?(?:be |get |)(?P<v>left|put|placed|set|stood|go|goes|got)"
     r"(?P<out> out| down| away)? (?P<prep>on|in|onto|into|on top of) (?P<s>the [a-z]+(?: [a-z]+)?)"
     r"(?=\s*(?:[,;.!?]|$| for | so | because | as ))",
     _F,
@@ -192,6 +192,8 @@ def _asked_that41(text: str, lexicon: Lexicon) -> str:
         start = m.end("p") - len(who)
         if not _objects_only(m["x"], lexicon) or not _only(m["s"], lexicon, "surface"):
             continue
+        if m["v"].lower() == "goes" and re.search(r"\b(?:and|or)\b", m["x"], _F):
+            continue  # 'asked for X and Y goes on S': Y alone goes there, a clause of its own
         said = f"{who} wants {m['x']} put{m['out'] or ''} {m['prep']} {m['s']}"
         text = text[:start] + said + text[m.end() :]
     return text
