@@ -23,6 +23,9 @@ from hltl.grounding import (
     _rewrites42l,
     _rewrites42r,
     _rewrites42s,
+    _rewrites43,
+    _rewrites43r,
+    _rewrites43s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -96,6 +99,9 @@ _REFUSALS = (
     *_rewrites42r.REFUSE42R,
     *_rewrites42s.REFUSE42S,
     *_rewrites42l.REFUSE42L,
+    *_rewrites43.REFUSE43,
+    *_rewrites43r.REFUSE43R,
+    *_rewrites43s.REFUSE43S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -109,6 +115,9 @@ _CHECKS = (
     *_rewrites42r.CHECK42R,
     *_rewrites42s.CHECK42S,
     *_rewrites42l.CHECK42L,
+    *_rewrites43.CHECK43,
+    *_rewrites43r.CHECK43R,
+    *_rewrites43s.CHECK43S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
