@@ -286,8 +286,6 @@ KNOWN_MISSES = frozenset(
         "Person B says he'll have both items, the chips as well as the bottle.",
         "person b has dibs on the cup so the apple goes to person a",
         "ever since balalaika practice person a keeps going on about wanting the bottle",
-        "person b has dibs on the cup so the apple goes to person a",
-        "ever since balalaika practice person a keeps going on about wanting the bottle",
         "marcos on the grill tonight and hes shouting for the tongs",
         "Person B left his botgtle here; could he have it back?",
         "Could I trouble you to see that Bob gets the bottle?",
