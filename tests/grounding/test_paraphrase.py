@@ -434,7 +434,7 @@ KNOWN_UNCLEAR = frozenset(
 # KNOWN_MISSES and KNOWN_UNCLEAR; "blind41" written in session 42 by another engineer and committed
 # alone, reviewed by a second one, measured once at the end of session 42 (0 wrong), tuned on in
 # session 43: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind42"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -542,6 +542,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind40"].entries}) >= 3
     assert len(CORPORA["blind41"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind41"].entries}) >= 3
+    assert len(CORPORA["blind42"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind42"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted
