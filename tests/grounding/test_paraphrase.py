@@ -248,8 +248,6 @@ KNOWN_MISSES = frozenset(
         "Would you mind ever so much getting Bob his crisps, he's the washboard player?",
         "Is Zoe alright to have the globe?",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
-        "No bother if not, but could the crisps go up on the shelf, out of the puppy's reach? "
-        "Thanks a million.",
         "Evening, and sorry about the racket from the handpan group next door: the cup for "
         "Person A and the chips for Person B, if you'd be so kind.",
         "Pardon me for butting in on your ludo game, but could Person A get the apple? Thanks "
@@ -261,7 +259,6 @@ KNOWN_MISSES = frozenset(
         "cup in the sink.",
         "Bob's been pining for those crisps all morning long.",
         "Alice fancies the bottle, and Bob's rather keen on the crisps.",
-        "Person A wouldn't say no to the chips if they were going spare.",
         "The cup's what Person A is after, and Person B reckons he needs the bottle.",
         "Person B needs that bottle more than anybody right now.",
         "It's the chips that Person A has her heart set on, the poor thing.",
@@ -274,7 +271,6 @@ KNOWN_MISSES = frozenset(
         "Person A left that bottle behind at the bus stop; it's hers, so she ought to get it back.",
         "Person A mentioned she'd like it brought over, the bottle that is, before her "
         "shakuhachi practice.",
-        "Person B wants the chips, and she wants the bottle; Person A, I mean.",
         "Omar's after a spoon to stir his tea. Could you get him one?",
         "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
         "them both.",
@@ -283,63 +279,13 @@ KNOWN_MISSES = frozenset(
         "Bottle, that's Person A's. Apple, Person B's. Go.",
         "Start with Person B. He gets the chips. Person A after him, with the bottle.",
         "Chips for Person B, he asked. Bottle for Person A, she asked too.",
-        "Noah's gluing and Zoe's cutting, so they need the glue stick and the scissors "
-        "respectively. Once they've got them, the red book back on the shelf.",
-        "Person A's to have the cup and Person B the apple, so each of them ends up with just "
-        "the one thing.",
-        "Person B can have the apple or the cup, whichever he likes; just take him one.",
-        "Person A's packing for the kalimba workshop and she'll take both, the bottle and the "
-        "chips.",
         "Everybody gets a single item here: Person A is down for the bottle and the chips are "
         "Person B's.",
-        "Either of the two things will keep Person B happy, so bring him one.",
-        "Either way, Person A gets the bottle in the end.",
-        "The chips go to one of them, I don't mind if it's Person A or Person B, so pick the "
-        "closer.",
-        "A cup for Dana, either one, really; not fussed.",
-        "For Sam, any one of the pens that isn't already lying on the desk, to sign the tile "
-        "setter's timesheet.",
-        "A blanket each for the two patients, any way round you like.",
-        "One of the boxes that aren't on the pallet goes on the conveyor, your choice which.",
-        "Both of the things we've got here, up onto the shelf with them, the cleaner's coming "
-        "through.",
-        "Person A's taking three of the things to her pyrography class: the cup, the apple and "
-        "the chips.",
-        "Hand over both the chips and the bottle, the two together, to Person A.",
-        "Just the one bottle in the room and it's promised to Person A.",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
         "Person B says he'll have both items, the chips as well as the bottle.",
-        "Tom should get the two boxes that aren't sitting on the pallet.",
-        "Bob isn't after the crisps at all; it's the bottle he wants.",
-        "The bottle's no good to Alice, she's brought her own; the crisps then.",
-        "Apart from the bottle, everything on offer goes to Person B.",
-        "It was never the cup for Person A; the apple's what she's having.",
-        "The chips aren't Person A's to have; they're going to Person B.",
-        "That bottle is strictly for Person A; no one else is to touch it.",
-        "Leave the chips alone; anything besides them is Person A's.",
-        "Emma won't want the white cup, it's chipped; pass her the green one.",
-        "Not the red pen and not the blue; Sam gets the black one.",
-        "Mr Novak says he can do without the knife, the lemon's all he's after.",
-        "Zoe's not to have the glue stick today, it's Noah's turn.",
-        "Leave everything on the bench where it is, except the big spanner, which goes in the "
-        "locker.",
-        "Bob's meant to get the cup; hold on, it's the apple he's meant to get, my mistake.",
-        "The bottle's going to Alice; ignore me, it's Bob who's having it.",
-        "Person A's getting the chips; no, I got that wrong, it's the cup she's getting.",
-        "Apple for Person B, I told you; I was wrong though, it's the bottle for him.",
-        "Person A gets the chips, or, let me put that right, the bottle.",
-        "I said bottle for Person B, didn't I? Slip of the tongue, I meant chips.",
-        "Bottle for, sorry, I keep saying Person B, Person A.",
-        "Person A asked for the bottle; my memory's terrible, it was the chips she asked for.",
-        "Bowl on the tray, please; oh hang on, Omar says it needs washing, so the sink.",
-        "Blue pen to Sam; no, the blue's on the desk, I mean the black.",
-        "The salt's going on the rack; no hold on, Marco wants it on the counter by the hob.",
-        "Kofi's getting the drill, I'd have said, but he's just shouted down that it's the "
-        "hammer he wants, not the drill.",
         "person b has dibs on the cup so the apple goes to person a",
         "ever since balalaika practice person a keeps going on about wanting the bottle",
-        "person b gets both the chips and the bottle nobody else wants them",
         "marcos on the grill tonight and hes shouting for the tongs",
         "Person B left his botgtle here; could he have it back?",
         "Could I trouble you to see that Bob gets the bottle?",
@@ -347,7 +293,6 @@ KNOWN_MISSES = frozenset(
         "Is there any way Person B could get the chips this side of lunch?",
         "How would it be if Person B had the cup and Person A the apple? Do that, please.",
         "Is it too much bother to get Person A her bottle from over there?",
-        "Reckon you can get that bottle to Person A without spilling it?",
         "Shall the chips go to Person B, then? Yes, let's do that.",
         "Dana's sorting samples; is there room on the tray for the bowl, and could you put it "
         "there?",
@@ -365,13 +310,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind38 (tuned on in session 40)
         # blind39 (tuned on in session 41)
         # blind40 (tuned on in session 42)
-        "Marco needs a plate; he told me which one, but it's gone clean out of my head.",
-        "Noah and Zoe both asked for the ruler; give it to whichever of them asked first.",
-        "The torch, for whoever it was that rang down from the office.",
-        "One of the books is for Mrs Ortiz; she told me which this morning, but I've lost track.",
-        "Lily's asking for one block, just the one; she pointed, but I missed which.",
-        "Give the ruler to Noah. No, to the other one, or maybe it was Mrs Ortiz.",
-        "a box for tom, the one he asked for",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -356,6 +356,7 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     CASES.refused_without(
         (
             *normalise._STEPS36R,
+            *normalise._STEPS42R,  # session 42 (12r): its rules of the same families read these too
             *normalise._STEPS39S_FIRST,
             *normalise._STEPS39S,
             _rewrites41r._shared_out41r,

@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites41r, offline
+from hltl.grounding import _rewrites41r, _rewrites42r, offline
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
@@ -372,7 +372,11 @@ test_turned_down = CASES.test(
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-41 (12r) steps taken out: each
     rule is what reads it."""
-    CASES.refused_without((*_rewrites41r._STEPS41R_FIRST, *_rewrites41r._STEPS41R), monkeypatch)
+    # session 42 (12r): `_negated_then42r` reads "P can do without X, pass him Y" as well
+    CASES.refused_without(
+        (*_rewrites41r._STEPS41R_FIRST, *_rewrites41r._STEPS41R, _rewrites42r._negated_then42r),
+        monkeypatch,
+    )
 
 
 # -- refusals that name the readings, and two wrong readings of main refused -----------------------
@@ -418,10 +422,15 @@ def test_refusals_need_these_rules(
 ) -> None:
     """Without the session-41 (12r) refusals and checks each of these sentences is read, or
     refused without its readings: the rules are what refuse them so."""
+    # session 42 (12r): `which_lost42r` names the readings of a forgotten choice too
     monkeypatch.setattr(
         offline,
         "_REFUSALS",
-        tuple(r for r in offline._REFUSALS if r not in _rewrites41r.REFUSE41R),
+        tuple(
+            r
+            for r in offline._REFUSALS
+            if r not in _rewrites41r.REFUSE41R and r is not _rewrites42r.which_lost42r
+        ),
     )
     monkeypatch.setattr(
         offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in _rewrites41r.CHECK41R)

@@ -634,6 +634,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             cleft is not None
             and _names_any30s(text[: cleft.start()], lexicon)
             and not _rewrites41r.left_out_only41r(text[: cleft.start()])
+            and not _rewrites42r.negated_head42r(text[: cleft.start()])
         ):
             raise GroundingError(
                 f"{cleft.group('said')!r} after a request could add to it or correct what it "
@@ -1722,7 +1723,7 @@ def _cut_off(text: str) -> GroundingError | None:
     """'The cup to Alice, sorry, the.': the words stop before what they were to name (the
     refusal), or None."""
     cue = _CUE_CUT_OFF.search(text)
-    if cue is not None:
+    if cue is not None and not _rewrites42r.pronoun_named42r(text):
         # "…, sorry, correction," / "…, no wait.": the correction the cue announces is not said
         return GroundingError(
             f"{cue.group(1)!r} starts a correction that names nothing: say what to change it to"
