@@ -115,7 +115,20 @@ apple" and "the mug that isn't the red one": every other object, the other one; 
 correction that could replace or add (with both objects as readings), a correction to a thing the
 scene lacks, a proposal dropped, a question that only asks whether, "the box that isn't the small
 one" of three (with the rest as readings) and every one of a kind left out; and a variant that
-reads said in lower case and with a typo.
+reads said in lower case and with a typo. A seventeenth family (session 43), said: a request framed
+the way people say it, by words blind41 does not use, over grounded entries: a reason or state of
+an entry's one person said before it ("Bob has been bell-ringing all evening, so …"): the entry;
+its one handover said by a comparison or hyperbole ("Bob would walk over hot coals for the
+apple."): that handover; a kind dealt out ("Alice and Bob get a mug apiece.", "The mugs: one for
+Alice and one for Bob."): each a different one, every way as a choice; two objects 'respectively'
+("Give Alice and Bob the cup and the apple respectively."): in that order; an object back to its
+owner or someone's object to another ("Take Bob's apple back to him.", "Take Carol's apple over to
+Bob."): that handover; and refused: the handover hung on a condition nobody can check ("If
+nobody's bagsied the apple, Bob can have it."), the hyperbole said against ("Bob wouldn't be seen
+dead with the apple."), a distribution the scene cannot satisfy (three people a mug apiece of two,
+three objects to two people 'respectively') and an owner who could be either of two ("Give the
+apple back to whichever of Alice and Bob had it."; both as readings); lower case and a typo as in
+turns.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -131,6 +144,7 @@ import sys
 from collections import Counter
 from collections.abc import Iterator
 from dataclasses import dataclass
+from itertools import permutations
 from pathlib import Path
 from typing import Literal, cast, get_args
 
@@ -1208,6 +1222,137 @@ TURN_FORMS = (
     "lower",
     "typo",
 )
+# said (session 43; blind41's refusals were, among others, want idioms, counts and distributions and
+# pronouns and possessives: 13, 16 and 13 of its 98 misses, many of them a request framed around the
+# person's reason or state; this session's tuners write rules for these kinds). So that a rule for a
+# kind is measured on forms it was not written on, the family says a request the way people frame
+# it, by words of its own (none of blind41's), each with the verdict it must get; a refusal is
+# always allowed. (a) For an entry of one handover to a person {p}: a reason or state of that person
+# said before it, a sentence of its own or joined by "so" (REASONS_BEFORE, `reason before`): the
+# entry; and, of a one-of-a-kind object {o}, that handover made to hang on a condition nobody can
+# check ("If nobody's bagsied the {o}, …"; CONDITIONS, `condition`): refused. (b) That handover said
+# as a want by a comparison or a hyperbole (HYPERBOLES, `hyperbole`: "{P} would walk over hot coals
+# for the {o}.", "The {o} would be just the ticket for {p}."): the handover; such a want said
+# against ("{P} wouldn't be seen dead with the {o}."; HYPERBOLES_AGAINST, `hyperbole against`):
+# refused. (c) A distribution of a kind the scene has several of ({c}, {cs}) among people ({ps}:
+# "Alice and Bob", "Alice, Bob and Carol") said with 'apiece' / 'each' (APIECE, `apiece`): each of
+# them one of the kind, a different one each (every way it can be done, as a choice); said as "one
+# for {p} and one for {q}" where the kind has as many as there are people (ONE_FOR, `one for`): the
+# same; two one-of-a-kind objects {x}, {y} to two people 'respectively' (RESPECTIVELY,
+# `respectively`): {x} to the first, {y} to the second; and refused, a distribution the scene cannot
+# satisfy: more people than the kind has objects, or a one-of-a-kind object to each of two (APIECE,
+# `apiece short`), three objects to two people 'respectively' (RESPECTIVELY_THREE, `respectively
+# short`). (d) An owner said by a possessive or a clause: a one-of-a-kind object back to its owner
+# (OWNER_BACK, `owner`: "Take {p}'s {o} back to {them}.", "The {o} {p} had earlier goes back to
+# {them}."; {them} "him" / "her" where the name says which, else the name): that handover; someone
+# else's object to a person (OWNER_OTHER, `owner other`: "Take {q}'s {o} over to {p}."): the
+# handover to {p}; and an owner that could be either of two people (OWNER_EITHER, `owner either`:
+# "The {o} is {p}'s or {q}'s, I forget which; take it back to its owner."): refused, both people as
+# readings. Then one variant that must read said all in lower case (`lower`) and one with a typo
+# (`typo`; as the turns family's): as it must.
+REASONS_BEFORE = (  # {P} the entry's one person, before the entry ("so": joined, lower case)
+    "{P} has been bell-ringing all evening, so ",
+    "{P}'s been on the go since six, so ",
+    "After a double shift, {p} is flagging, so ",
+    "{P} has had a rotten week. ",
+    "Poor {p} has been queueing all morning. ",
+    "{P} is just back from fell running, so ",
+    "{P}'s been stuck in meetings all day. ",
+    "{P} has been orienteering since dawn and is worn out, so ",
+    "What with the barn dance last night, {p} is shattered, so ",
+    "{P} has been up a ladder since breakfast. ",
+    "Having sung with the shanty choir all afternoon, {p} is parched, so ",
+    "{P} has been marking essays for hours. ",
+)
+CONDITIONS = (  # refused: the handover of {o} to {p} hangs on what nobody can check
+    "If nobody's bagsied the {o}, {p} can have it.",
+    "If the {o} is still going spare, {p} would like it.",
+    "Provided nobody has spoken for the {o}, it can go to {p}.",
+    "Unless someone's already nabbed the {o}, give it to {p}.",
+    "So long as no one else has dibs on the {o}, hand it to {p}.",
+    "Should the {o} still be up for grabs, {p} will take it.",
+)
+HYPERBOLES = (  # the handover of {o} to {p}
+    "{P} would walk over hot coals for the {o}.",
+    "The {o} would be just the ticket for {p}.",
+    "The {o} would hit the spot for {p}.",
+    "Nothing would please {p} more than the {o}.",
+    "{P}'s heart is set on the {o}.",
+    "The {o} is top of {p}'s wish list.",
+    "{P} would be over the moon with the {o}.",
+    "{P} would be chuffed to bits with the {o}.",
+    "The {o} would be a godsend for {p}.",
+    "{P} would bite your hand off for the {o}.",
+    "{P} would queue all night for the {o}.",
+    "{P} would swap just about anything for the {o}.",
+)
+HYPERBOLES_AGAINST = (  # refused: the want said against
+    "{P} wouldn't be seen dead with the {o}.",
+    "{P} wouldn't touch the {o} with a bargepole.",
+    "{P} would sooner starve than have the {o}.",
+    "Wild horses couldn't make {p} take the {o}.",
+    "{P} would rather go without than have the {o}.",
+)
+APIECE = (  # {ps} two or three people, {c} a kind ({a} "a" or "an")
+    "{Ps} get {a} {c} apiece.",
+    "{a} {c} apiece for {ps}.",
+    "{Ps} are to have one {c} each.",
+    "One {c} each for {ps}, please.",
+    "Give {ps} one {c} apiece.",
+    "{Ps} should get {a} {c} each.",
+)
+ONE_FOR = (  # {cs} the kind's plural, {each} "one for Alice and one for Bob"
+    "The {cs}: {each}.",
+    "Share out the {cs}, {each}.",
+    "The {cs} go {each}.",
+    "Split the {cs} between them, {each}.",
+)
+RESPECTIVELY = (  # {x} to {p}, {y} to {q}
+    "Give {p} and {q} the {x} and the {y} respectively.",
+    "The {x} and the {y} go to {p} and {q} respectively.",
+    "{P} and {q} get the {x} and the {y}, respectively.",
+    "Hand the {x} and the {y} to {p} and {q}, respectively.",
+)
+RESPECTIVELY_THREE = (  # refused: three objects for two people
+    "Give {p} and {q} the {x}, the {y} and the {z} respectively.",
+    "The {x}, the {y} and the {z} go to {p} and {q} respectively.",
+)
+OWNER_BACK = (  # the handover of {o} to its owner {p} ({them}: "him" / "her" / the name)
+    "Take {p}'s {o} back to {them}.",
+    "{P}'s {o} needs to go back to {them}.",
+    "The {o} {p} had earlier goes back to {them}.",
+    "Return the {o} {p} left behind to {them}.",
+    "Give {p} back the {o} {p} lent you.",
+    "The {o} belongs to {p}; give it back to {them}.",
+)
+OWNER_OTHER = (  # {q}'s object to {p}: the handover to {p}
+    "Take {q}'s {o} over to {p}.",
+    "{P} can borrow {q}'s {o}.",
+    "Pass {p} the {o} {q} was using.",
+    "Give {q}'s {o} to {p} for now.",
+)
+OWNER_EITHER = (  # refused, {p} and {q} as readings: whose it is is not known
+    "The {o} is {p}'s or {q}'s, I forget which; take it back to its owner.",
+    "Give the {o} back to whichever of {p} and {q} had it.",
+    "Take the {o} back to its owner, {p} or {q}, I'm not sure which.",
+    "Either {p} or {q} left the {o} here; return it to them.",
+)
+SAID_FORMS = (
+    "reason before",
+    "condition",
+    "hyperbole",
+    "hyperbole against",
+    "apiece",
+    "apiece short",
+    "one for",
+    "respectively",
+    "respectively short",
+    "owner",
+    "owner other",
+    "owner either",
+    "lower",
+    "typo",
+)
 Family = Literal[
     "wrappers",
     "takebacks",
@@ -1225,6 +1370,7 @@ Family = Literal[
     "purposes",
     "idioms",
     "turns",
+    "said",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -2853,6 +2999,152 @@ def turns(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator
             yield Variant(part, entry.scene, typo, v.want, "same", "turns", (), "typo")
 
 
+def _people_listed(names: list[str]) -> str:
+    """ "Alice and Bob", "Alice, Bob and Carol"."""
+    return ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def _dealt(ids: tuple[str, ...], people: tuple[str, ...]) -> Node:
+    """Each of ``people`` one of ``ids``, a different one each: every way it can be done, as a
+    choice (one way alone where there is one)."""
+    ways = tuple(
+        Group("and", tuple(Task("deliver", o, h) for o, h in zip(way, people, strict=True)))
+        for way in permutations(ids, len(people))
+    )
+    return ways[0] if len(ways) == 1 else Group("or", ways)
+
+
+def said_around(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The said variants of one grounded entry (SAID_FORMS; none of a refused one): a request
+    framed the way people say it, by words blind41 does not use. For an entry of one handover to
+    a person: a reason or state of that person said before it (`reason before`: the entry); of a
+    one-of-a-kind object, that handover made to hang on a condition nobody can check
+    (`condition`: refused), said as a want by a comparison or hyperbole (`hyperbole`: the
+    handover) and said against (`hyperbole against`: refused). For any grounded entry, requests
+    of the scene: a kind the scene has several of dealt out with 'apiece' / 'each' (`apiece`) or
+    as "one for P and one for Q" (`one for`): each person a different one, every way as a choice;
+    two one-of-a-kind objects to two people 'respectively' (`respectively`): in that order; a
+    distribution the scene cannot satisfy (`apiece short`, `respectively short`): refused; a
+    one-of-a-kind object back to its owner (`owner`) or someone's object to another person
+    (`owner other`): that handover; and an owner that could be either of two people (`owner
+    either`): refused, both as readings. Then one variant that must read in lower case (`lower`)
+    and one with a typo (`typo`): as it must. Only forms naming nothing of the scene but their
+    keys are said."""
+    want = entry.want
+    if want is None:
+        return
+    text = entry.text.strip()
+    made: list[Variant] = []
+
+    def variant(said: str, to: Node | None, form: str, readings: tuple[str, ...] = ()) -> Variant:
+        must: Must = "same" if to is not None else "refuse"
+        v = Variant(part, entry.scene, said, to, must, "said", readings, form)
+        made.append(v)
+        return v
+
+    def say(forms: tuple[str, ...], **keys: str) -> str | None:
+        fitting = [f for f in forms if _fits(f, scene)]
+        if not fitting:
+            return None
+        for k in ("p", "q", "ps"):
+            if k in keys:
+                keys[k[:1].upper() + k[1:]] = keys[k][:1].upper() + keys[k][1:]
+        said = rng.choice(fitting).format(**keys)
+        return said[:1].upper() + said[1:]
+
+    unique = _unique_objects(scene)
+    humans = [h.id for h in scene.humans]
+    one = (
+        want
+        if isinstance(want, Task) and want.kind == "deliver" and want.target is not None
+        else None
+    )
+    if one is not None and one.target is not None:
+        p = _name(scene, one.target)
+        fitting = [f for f in REASONS_BEFORE if _fits(f, scene)]
+        if fitting:
+            reason = rng.choice(fitting).format(p=p, P=p[:1].upper() + p[1:])
+            yield variant(
+                _after(reason[:1].upper() + reason[1:], text, scene), want, "reason before"
+            )
+        if one.obj in unique:
+            o = _name(scene, one.obj)
+            if (said := say(CONDITIONS, o=o, p=p)) is not None:
+                yield variant(said, None, "condition")
+            if (said := say(HYPERBOLES, o=o, p=p)) is not None:
+                yield variant(said, one, "hyperbole")
+            if (said := say(HYPERBOLES_AGAINST, o=o, p=p)) is not None:
+                yield variant(said, None, "hyperbole against")
+    plurals = _plurals(scene)
+    if plurals and len(humans) >= 2:
+        cs, (c, ids) = rng.choice(sorted(plurals.items()))
+        k = rng.choice([n for n in (2, 3) if n <= min(len(humans), len(ids))])
+        people = tuple(rng.sample(humans, k))
+        ps = _people_listed([_name(scene, h) for h in people])
+        a = "an" if c[:1] in "aeiou" else "a"
+        if (said := say(APIECE, ps=ps, c=c, a=a)) is not None:
+            yield variant(said, _dealt(ids, people), "apiece")
+        if len(ids) in (2, 3) and len(ids) <= len(humans):
+            people = tuple(rng.sample(humans, len(ids)))
+            each = _people_listed([f"one for {_name(scene, h)}" for h in people])
+            if (said := say(ONE_FOR, cs=cs, each=each)) is not None:
+                yield variant(said, _dealt(ids, people), "one for")
+        if len(humans) > len(ids):
+            people = tuple(rng.sample(humans, len(ids) + 1))
+            ps = _people_listed([_name(scene, h) for h in people])
+            if (said := say(APIECE, ps=ps, c=c, a=a)) is not None:
+                yield variant(said, None, "apiece short")
+    alone = [
+        o.category
+        for o in scene.objects
+        if o.id in unique
+        and _named(f"the {o.category}", scene, "object") == {o.id}
+        and _several(o.category) is not None
+    ]
+    if alone and len(humans) >= 2:
+        c = rng.choice(alone)
+        ps = _people_listed([_name(scene, h) for h in rng.sample(humans, 2)])
+        a = "an" if c[:1] in "aeiou" else "a"
+        if (said := say(APIECE, ps=ps, c=c, a=a)) is not None:
+            yield variant(said, None, "apiece short")
+    if len(unique) >= 2 and len(humans) >= 2:
+        xid, yid = rng.sample(unique, 2)
+        pid, qid = rng.sample(humans, 2)
+        keys = {"x": _name(scene, xid), "y": _name(scene, yid)}
+        keys |= {"p": _name(scene, pid), "q": _name(scene, qid)}
+        if (said := say(RESPECTIVELY, **keys)) is not None:
+            to = Group("and", (Task("deliver", xid, pid), Task("deliver", yid, qid)))
+            yield variant(said, to, "respectively")
+        if len(unique) >= 3:
+            zid = rng.choice([u for u in unique if u not in (xid, yid)])
+            if (said := say(RESPECTIVELY_THREE, z=_name(scene, zid), **keys)) is not None:
+                yield variant(said, None, "respectively short")
+    if unique:
+        if one is not None and one.target is not None and one.obj in unique:
+            oid, pid = one.obj, one.target
+        else:
+            oid, pid = rng.choice(unique), rng.choice(humans)
+        o, p = _name(scene, oid), _name(scene, pid)
+        them = {"his": "him", "her": "her"}.get(_pronoun_of(p) or "", p)
+        if (said := say(OWNER_BACK, o=o, p=p, them=them)) is not None:
+            yield variant(said, Task("deliver", oid, pid), "owner")
+        others = [h for h in humans if h != pid]
+        if others:
+            qid = rng.choice(others)
+            q = _name(scene, qid)
+            if (said := say(OWNER_OTHER, o=o, p=p, q=q)) is not None:
+                yield variant(said, Task("deliver", oid, pid), "owner other")
+            if (said := say(OWNER_EITHER, o=o, p=p, q=q)) is not None:
+                yield variant(said, None, "owner either", (pid, qid))
+    reading = [v for v in made if v.must == "same"]
+    if reading:
+        v = rng.choice(reading)
+        yield Variant(part, entry.scene, v.text.lower(), v.want, "same", "said", (), "lower")
+        v = rng.choice(reading)
+        if (typo := _typo(v.text, scene, rng)) is not None:
+            yield Variant(part, entry.scene, typo, v.want, "same", "said", (), "typo")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -2934,6 +3226,7 @@ def generated(
     rng_purposes = random.Random(f"purposes:{seed}")
     rng_idioms = random.Random(f"idioms:{seed}")
     rng_turns = random.Random(f"turns:{seed}")
+    rng_said = random.Random(f"said:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -2989,6 +3282,9 @@ def generated(
                     yield v, scene
             if "turns" in families:
                 for v in turns(part, entry, scene, rng_turns):
+                    yield v, scene
+            if "said" in families:
+                for v in said_around(part, entry, scene, rng_said):
                     yield v, scene
 
 

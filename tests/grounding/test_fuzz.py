@@ -43,8 +43,12 @@ lacks: refused; an exclusion idiom: every other one), the turn family of session
 handover said with a negation or exclusion, corrected, asked as a courtesy or proposed and agreed
 to: what it must read as; a correction that could replace or add, to a thing the scene lacks, a
 proposal dropped, a question only asking whether, an exclusion leaving several or nothing:
-refused; lower case and a typo: as it must), and the wrappers and take-backs of a seed unchanged by
-them."""
+refused; lower case and a typo: as it must), the said family of session 43 (a reason before an
+entry's one handover, that handover said by a hyperbole, a kind dealt out 'apiece' or "one for …
+and one for …", two objects 'respectively', an object back to its owner or someone's to another:
+what it must read as; a condition nobody can check, a hyperbole said against, a distribution the
+scene cannot satisfy, an owner who could be either of two: refused), and the wrappers and
+take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -225,6 +229,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "purposes",
         "idioms",
         "turns",
+        "said",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -244,7 +249,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert (
         "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts', " in err
     )
-    assert "'remarks', 'purposes', 'idioms', 'turns')" in err
+    assert "'remarks', 'purposes', 'idioms', 'turns', 'said')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -3109,3 +3114,252 @@ def test_over_the_corpus_each_turn_names_what_it_says() -> None:
                     assert v.want == entry.want
     # ("several left" needs a kind of three told apart: the depot's boxes, see above)
     assert kinds.pop("several left") == 0 and min(kinds.values()) >= 20, kinds
+
+
+# -- session 43: requests framed around a reason, a hyperbole, a distribution or an owner ---------
+
+_SAID_LISTS: dict[str, tuple[str, ...]] = {
+    "condition": fuzz.CONDITIONS,
+    "hyperbole": fuzz.HYPERBOLES,
+    "hyperbole against": fuzz.HYPERBOLES_AGAINST,
+    "apiece": fuzz.APIECE,
+    "apiece short": fuzz.APIECE,
+    "one for": fuzz.ONE_FOR,
+    "respectively": fuzz.RESPECTIVELY,
+    "respectively short": fuzz.RESPECTIVELY_THREE,
+    "owner": fuzz.OWNER_BACK,
+    "owner other": fuzz.OWNER_OTHER,
+    "owner either": fuzz.OWNER_EITHER,
+}
+_SAID_REFUSED = (
+    "condition",
+    "hyperbole against",
+    "apiece short",
+    "respectively short",
+    "owner either",
+)
+
+
+def _said(entry: Entry, scene: Scene, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.said_around("t", entry, scene, random.Random(seed)))
+
+
+def _said_of(v: fuzz.Variant, entry: str) -> tuple[str, dict[str, str]]:
+    """The form ``v`` says by its form (for `reason before`: the reason, ``entry`` after it) and
+    what its keys say ("P", "Ps" as "p", "ps"; names as said)."""
+    forms = _SAID_LISTS.get(v.form, ())
+    said = v.text
+    if v.form == "reason before":
+        body = entry[:1].lower() + entry[1:]
+        assert said.endswith((entry, body)), said
+        said = said[: -len(entry)]
+        forms = tuple(f[:1].upper() + f[1:] for f in fuzz.REASONS_BEFORE)
+    for form in forms:
+        pattern, seen = "", set()
+        for text, key in re.findall(r"([^{]*)(?:\{(\w+)\})?", form):
+            pattern += re.escape(text)
+            if key:
+                group = key.lower()
+                pattern += f"(?P<{group}>.+?)" if group not in seen else "(?:.+?)"
+                seen.add(group)
+        m = re.fullmatch(pattern, said[:1] + said[1:], flags=re.IGNORECASE if form[0] == "{" else 0)
+        if m:
+            return form, dict(m.groupdict())
+    raise AssertionError(f"{v.form}: {v.text!r} says no form of its kind")
+
+
+def _people_of(listed: str, scene: Scene) -> tuple[str, ...]:
+    """The people "Alice, Bob and Carol" names, in that order."""
+    return tuple(_one_named(n, scene, "human") for n in re.split(r", | and ", listed))
+
+
+def test_said_is_said_by_every_form_with_every_template() -> None:
+    """After an entry of one handover of a one-of-a-kind object to a person: every form, each as
+    its form and with what it must read as, and every template naming nothing of the cell scene."""
+    entry = _entry("cell", "Give Bob the apple, please.", "apple>B")
+    apple = parse_expectation("apple>B")
+    said: set[str] = set()
+    typos = 0
+    for seed in range(300):
+        made = _said(entry, CELL, seed)
+        forms = [v.form for v in made]
+        assert set(forms) - {"typo"} == set(fuzz.SAID_FORMS) - {"typo"}, forms
+        typos += "typo" in forms
+        for v in made:
+            assert v.family == "said"
+            refused = v.form in _SAID_REFUSED
+            assert (v.must == "refuse") is refused is (v.want is None)
+            assert (v.readings != ()) is (v.form == "owner either")
+            if v.form in ("lower", "typo"):
+                others = [u for u in made if u.form not in ("lower", "typo")]
+                if v.form == "lower":
+                    assert any(u.text.lower() == v.text and u.want == v.want for u in others)
+                else:
+                    assert any(
+                        len(u.text) == len(v.text) and _swapped(u.text, v.text) and u.want == v.want
+                        for u in others
+                    ), v.text
+                continue
+            form, keys = _said_of(v, entry.text)
+            said.add(form)
+            if v.form in ("reason before", "condition", "hyperbole", "hyperbole against", "owner"):
+                assert _one_named(keys["p"], CELL, "human") == "B"
+            if v.form in ("condition", "hyperbole", "hyperbole against", "owner", "owner other"):
+                assert _one_named(keys["o"], CELL, "object") == "apple"
+            if v.form in ("reason before", "hyperbole", "owner", "owner other"):
+                assert v.want == apple
+            if v.form == "owner":
+                assert keys.get("them", "him") == "him"
+            elif v.form in ("owner other", "owner either"):
+                q = _one_named(keys["q"], CELL, "human")
+                assert q in ("A", "C")
+                if v.form == "owner either":
+                    assert v.readings == ("B", q)
+            elif v.form in ("apiece", "one for"):
+                if v.form == "apiece":
+                    people = _people_of(keys["ps"], CELL)
+                    assert keys["c"] == "mug" and len(people) == 2
+                else:
+                    people = _people_of(keys["each"].replace("one for ", ""), CELL)
+                    assert keys["cs"] == "mugs" and len(people) == 2
+                a, b = people
+                assert v.want == Group(
+                    "or",
+                    (
+                        parse_expectation(f"mug_red>{a} & mug_blue>{b}"),
+                        parse_expectation(f"mug_blue>{a} & mug_red>{b}"),
+                    ),
+                )
+            elif v.form == "apiece short":
+                people = _people_of(keys["ps"], CELL)
+                assert (keys["c"], len(people)) == ("mug", 3) or (
+                    keys["c"] in ("cup", "apple", "bottle") and len(people) == 2
+                ), v.text
+            elif v.form in ("respectively", "respectively short"):
+                p, q = _one_named(keys["p"], CELL, "human"), _one_named(keys["q"], CELL, "human")
+                x, y = (_one_named(keys[k], CELL, "object") for k in ("x", "y"))
+                assert p != q and x != y
+                if v.form == "respectively":
+                    assert v.want == Group("and", (Task("deliver", x, p), Task("deliver", y, q)))
+                else:
+                    assert _one_named(keys["z"], CELL, "object") not in (x, y)
+    every = {f for forms in _SAID_LISTS.values() for f in forms}
+    every |= {f[:1].upper() + f[1:] for f in fuzz.REASONS_BEFORE}
+    assert said == every, every - said  # (every template fits the cell)
+    assert typos > 100, typos
+
+
+def test_a_distribution_is_every_way_it_can_be_done() -> None:
+    """In the office (three pens, two people): a pen apiece is any two different pens, one each
+    (six ways); "one for … and one for …" is not said of three pens for two people, and more
+    people than pens is never made; a one-of-a-kind object apiece is refused."""
+    entry = _entry("office", "Give Sam the stapler.", "stapler>B")
+    forms: set[str] = set()
+    for seed in range(40):
+        for v in _said(entry, OFFICE, seed):
+            forms.add(v.form)
+            if v.form == "apiece":
+                assert isinstance(v.want, Group) and v.want.op == "or"
+                assert len(v.want.children) == 6
+                assert all(len({t.obj for t in tasks(w)}) == 2 for w in v.want.children)
+            if v.form == "apiece short":
+                _, keys = _said_of(v, entry.text)
+                assert keys["c"] in ("stapler", "notebook"), v.text
+    assert "apiece" in forms and "apiece short" in forms and "one for" not in forms, forms
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # two handovers, a placement: no reason, condition or hyperbole of one handover
+        (
+            "Give Bob the cup and Alice the apple.",
+            "cup>B & apple>A",
+            "apiece, one for, apiece short, respectively, respectively short, owner, "
+            "owner other, owner either, lower, typo",
+        ),
+        (
+            "Put the cup on the shelf.",
+            "cup@shelf",
+            "apiece, one for, apiece short, respectively, respectively short, owner, "
+            "owner other, owner either, lower, typo",
+        ),
+        # one handover of one of two mugs: a reason before it, but no want of that one object
+        (
+            "Give Bob the red mug.",
+            "mug_red>B",
+            "reason before, apiece, one for, apiece short, respectively, respectively short, "
+            "owner, owner other, owner either, lower, typo",
+        ),
+    ],
+)
+def test_said_is_only_made_where_it_says_what_it_must(text: str, want: str, forms: str) -> None:
+    entry = _entry("cell", text, want)
+    made: set[str] = set()
+    for seed in range(30):
+        made |= {v.form for v in _said(entry, CELL, seed)}
+    assert made == set(forms.split(", ")), made
+
+
+def test_a_refused_entry_gets_nothing_said() -> None:
+    entry = Entry("cell", "Give her the mug.", None, ("mug_red", "mug_blue"))
+    assert all(_said(entry, CELL, seed) == [] for seed in range(10))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "form", "verdict"),
+    [
+        (
+            "Give Alice and Bob one mug apiece.",
+            "(mug_red>A & mug_blue>B) | (mug_blue>A & mug_red>B)",
+            "apiece",
+            "exact",
+        ),
+        ("Give Alice and Bob one mug apiece.", "mug_red>A & mug_blue>B", "apiece", "wrong"),
+        ("Alice, Bob and Carol get a mug apiece.", None, "apiece short", "refused"),
+        (
+            "Give Alice and Carol the cup and the apple respectively.",
+            "cup>A & apple>C",
+            "",
+            "exact",
+        ),
+        (
+            "Give Alice and Carol the cup and the apple respectively.",
+            "apple>A & cup>C",
+            "",
+            "wrong",
+        ),
+        ("Give Alice the cup.", None, "condition", "wrong"),  # read where it must refuse
+    ],
+)
+def test_said_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, form: str, verdict: str
+) -> None:
+    assert _judged(text, want, "said", form) == verdict
+
+
+def test_over_the_corpus_each_said_form_names_what_it_says() -> None:
+    """Every second entry of three parts: each variant says a template of its form, its refused
+    forms refused, and a form of the entry's one handover names its own object and person."""
+    kinds = dict.fromkeys(fuzz.SAID_FORMS, 0)
+    rng = random.Random("said:43")
+    for part in PARTS:
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        for entry in corpus.entries[::2]:
+            scene = corpus.scenes[entry.scene]
+            for v in fuzz.said_around(part, entry, scene, rng):
+                kinds[v.form] += 1
+                assert (v.must == "refuse") is (v.form in _SAID_REFUSED) is (v.want is None)
+                if v.form in ("lower", "typo"):
+                    continue
+                _, keys = _said_of(v, entry.text.strip())
+                if v.form == "reason before":
+                    assert isinstance(entry.want, Task) and v.want == entry.want
+                    assert _one_named(keys["p"], scene, "human") == entry.want.target
+                if v.form in ("condition", "hyperbole", "hyperbole against"):
+                    assert isinstance(entry.want, Task)
+                    assert _one_named(keys["o"], scene, "object") == entry.want.obj
+                    assert _one_named(keys["p"], scene, "human") == entry.want.target
+                if v.form == "hyperbole":
+                    assert v.want == entry.want
+    assert min(kinds.values()) >= 20, kinds
