@@ -135,7 +135,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # in session 41 by another engineer and committed alone, never opened by the engineers who change
 # the grounder before its one measurement at the end of session 41; tuned on in session 42), blind41
 # (written in session 42 by another engineer and committed alone, never opened by the engineers who
-# change the grounder before its one measurement at the end of session 42; tests do not assert it).
+# change the grounder before its one measurement at the end of session 42; tuned on in session 43),
+# blind42 (written in session 43 by another engineer and committed alone, never opened by the
+# engineers who change the grounder before its one measurement at the end of session 43; tests do
+# not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -194,6 +197,7 @@ PARTS = (
     "blind39",
     "blind40",
     "blind41",
+    "blind42",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
