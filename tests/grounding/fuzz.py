@@ -116,19 +116,20 @@ correction that could replace or add (with both objects as readings), a correcti
 scene lacks, a proposal dropped, a question that only asks whether, "the box that isn't the small
 one" of three (with the rest as readings) and every one of a kind left out; and a variant that
 reads said in lower case and with a typo. A seventeenth family (session 43), said: a request framed
-the way people say it, by words blind41 does not use, over grounded entries: a reason or state of
-an entry's one person said before it ("Bob has been bell-ringing all evening, so …"): the entry;
-its one handover said by a comparison or hyperbole ("Bob would walk over hot coals for the
-apple."): that handover; a kind dealt out ("Alice and Bob get a mug apiece.", "The mugs: one for
-Alice and one for Bob."): each a different one, every way as a choice; two objects 'respectively'
-("Give Alice and Bob the cup and the apple respectively."): in that order; an object back to its
-owner or someone's object to another ("Take Bob's apple back to him.", "Take Carol's apple over to
-Bob."): that handover; and refused: the handover hung on a condition nobody can check ("If
-nobody's bagsied the apple, Bob can have it."), the hyperbole said against ("Bob wouldn't be seen
-dead with the apple."), a distribution the scene cannot satisfy (three people a mug apiece of two,
-three objects to two people 'respectively') and an owner who could be either of two ("Give the
-apple back to whichever of Alice and Bob had it."; both as readings); lower case and a typo as in
-turns.
+the way people say it, by words blind41 does not use, over grounded entries: a reason or state of an
+entry's one person said before it ("Bob has been bell-ringing all evening, so …"): the entry; its
+one handover said by a comparison or hyperbole ("Bob would walk over hot coals for the apple.") or
+hung on a condition about others' claims, the speaker's hedge ("If nobody's bagsied the apple, Bob
+can have it."; the lead's decision, session 43): that handover; a kind dealt out ("Alice and Bob get
+a mug apiece.", "The mugs: one for Alice and one for Bob."): each a different one, every way as a
+choice; two objects 'respectively' ("Give Alice and Bob the cup and the apple respectively."): in
+that order; an object back to its owner or someone's object to another ("Take Bob's apple back to
+him.", "Take Carol's apple over to Bob."): that handover; and refused: the handover hung on an
+outside event or a later word ("If it stops raining, give Bob the apple."), the hyperbole said
+against ("Bob wouldn't be seen dead with the apple."), a distribution the scene cannot satisfy
+(three people a mug apiece of two, three objects to two people 'respectively') and an owner who
+could be either of two ("Give the apple back to whichever of Alice and Bob had it."; both as
+readings); lower case and a typo as in turns.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1229,10 +1230,13 @@ TURN_FORMS = (
 # it, by words of its own (none of blind41's), each with the verdict it must get; a refusal is
 # always allowed. (a) For an entry of one handover to a person {p}: a reason or state of that person
 # said before it, a sentence of its own or joined by "so" (REASONS_BEFORE, `reason before`): the
-# entry; and, of a one-of-a-kind object {o}, that handover made to hang on a condition nobody can
-# check ("If nobody's bagsied the {o}, …"; CONDITIONS, `condition`): refused. (b) That handover said
-# as a want by a comparison or a hyperbole (HYPERBOLES, `hyperbole`: "{P} would walk over hot coals
-# for the {o}.", "The {o} would be just the ticket for {p}."): the handover; such a want said
+# entry; and, of a one-of-a-kind object {o}, that handover hung on a condition about others' claims
+# ("If nobody's bagsied the {o}, …"; CONDITIONS, `condition`): the handover (the cell hears every
+# claim, since they are the requests it is given: the condition is the speaker's hedge; the lead's
+# decision of 08:20), and hung on an outside event or a later word ("If it stops raining, …", "… if
+# the supervisor says so."; CONDITIONS_OUTSIDE, `condition outside`): refused. (b) That handover
+# said as a want by a comparison or a hyperbole (HYPERBOLES, `hyperbole`: "{P} would walk over hot
+# coals for the {o}.", "The {o} would be just the ticket for {p}."): the handover; such a want said
 # against ("{P} wouldn't be seen dead with the {o}."; HYPERBOLES_AGAINST, `hyperbole against`):
 # refused. (c) A distribution of a kind the scene has several of ({c}, {cs}) among people ({ps}:
 # "Alice and Bob", "Alice, Bob and Carol") said with 'apiece' / 'each' (APIECE, `apiece`): each of
@@ -1264,13 +1268,20 @@ REASONS_BEFORE = (  # {P} the entry's one person, before the entry ("so": joined
     "Having sung with the shanty choir all afternoon, {p} is parched, so ",
     "{P} has been marking essays for hours. ",
 )
-CONDITIONS = (  # refused: the handover of {o} to {p} hangs on what nobody can check
+CONDITIONS = (  # the handover of {o} to {p}: a condition on others' claims is the speaker's hedge
     "If nobody's bagsied the {o}, {p} can have it.",
     "If the {o} is still going spare, {p} would like it.",
     "Provided nobody has spoken for the {o}, it can go to {p}.",
     "Unless someone's already nabbed the {o}, give it to {p}.",
     "So long as no one else has dibs on the {o}, hand it to {p}.",
     "Should the {o} still be up for grabs, {p} will take it.",
+)
+CONDITIONS_OUTSIDE = (  # refused: the handover hangs on an outside event or a later word
+    "If it stops raining, give {p} the {o}.",
+    "Give {p} the {o} if the supervisor says so.",
+    "If {p} asks for the {o} later, hand it over.",
+    "Should the doctor agree, the {o} can go to {p}.",
+    "Once the meeting finishes, and only then, {p} gets the {o}.",
 )
 HYPERBOLES = (  # the handover of {o} to {p}
     "{P} would walk over hot coals for the {o}.",
@@ -1340,6 +1351,7 @@ OWNER_EITHER = (  # refused, {p} and {q} as readings: whose it is is not known
 SAID_FORMS = (
     "reason before",
     "condition",
+    "condition outside",
     "hyperbole",
     "hyperbole against",
     "apiece",
@@ -3018,9 +3030,10 @@ def said_around(part: str, entry: Entry, scene: Scene, rng: random.Random) -> It
     """The said variants of one grounded entry (SAID_FORMS; none of a refused one): a request
     framed the way people say it, by words blind41 does not use. For an entry of one handover to
     a person: a reason or state of that person said before it (`reason before`: the entry); of a
-    one-of-a-kind object, that handover made to hang on a condition nobody can check
-    (`condition`: refused), said as a want by a comparison or hyperbole (`hyperbole`: the
-    handover) and said against (`hyperbole against`: refused). For any grounded entry, requests
+    one-of-a-kind object, that handover hung on a condition about others' claims (`condition`:
+    the handover) or on an outside event or a later word (`condition outside`: refused), said
+    as a want by a comparison or hyperbole (`hyperbole`: the handover) and said against
+    (`hyperbole against`: refused). For any grounded entry, requests
     of the scene: a kind the scene has several of dealt out with 'apiece' / 'each' (`apiece`) or
     as "one for P and one for Q" (`one for`): each person a different one, every way as a choice;
     two one-of-a-kind objects to two people 'respectively' (`respectively`): in that order; a
@@ -3070,7 +3083,9 @@ def said_around(part: str, entry: Entry, scene: Scene, rng: random.Random) -> It
         if one.obj in unique:
             o = _name(scene, one.obj)
             if (said := say(CONDITIONS, o=o, p=p)) is not None:
-                yield variant(said, None, "condition")
+                yield variant(said, one, "condition")
+            if (said := say(CONDITIONS_OUTSIDE, o=o, p=p)) is not None:
+                yield variant(said, None, "condition outside")
             if (said := say(HYPERBOLES, o=o, p=p)) is not None:
                 yield variant(said, one, "hyperbole")
             if (said := say(HYPERBOLES_AGAINST, o=o, p=p)) is not None:

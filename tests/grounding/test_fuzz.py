@@ -45,8 +45,9 @@ to: what it must read as; a correction that could replace or add, to a thing the
 proposal dropped, a question only asking whether, an exclusion leaving several or nothing:
 refused; lower case and a typo: as it must), the said family of session 43 (a reason before an
 entry's one handover, that handover said by a hyperbole, a kind dealt out 'apiece' or "one for …
-and one for …", two objects 'respectively', an object back to its owner or someone's to another:
-what it must read as; a condition nobody can check, a hyperbole said against, a distribution the
+and one for …", two objects 'respectively', an object back to its owner or someone's to another,
+a condition on others' claims: what it must read as; a condition on an outside event, a hyperbole
+said against, a distribution the
 scene cannot satisfy, an owner who could be either of two: refused), and the wrappers and
 take-backs of a seed unchanged by them."""
 
@@ -3120,6 +3121,7 @@ def test_over_the_corpus_each_turn_names_what_it_says() -> None:
 
 _SAID_LISTS: dict[str, tuple[str, ...]] = {
     "condition": fuzz.CONDITIONS,
+    "condition outside": fuzz.CONDITIONS_OUTSIDE,
     "hyperbole": fuzz.HYPERBOLES,
     "hyperbole against": fuzz.HYPERBOLES_AGAINST,
     "apiece": fuzz.APIECE,
@@ -3132,7 +3134,7 @@ _SAID_LISTS: dict[str, tuple[str, ...]] = {
     "owner either": fuzz.OWNER_EITHER,
 }
 _SAID_REFUSED = (
-    "condition",
+    "condition outside",
     "hyperbole against",
     "apiece short",
     "respectively short",
@@ -3202,11 +3204,12 @@ def test_said_is_said_by_every_form_with_every_template() -> None:
                 continue
             form, keys = _said_of(v, entry.text)
             said.add(form)
-            if v.form in ("reason before", "condition", "hyperbole", "hyperbole against", "owner"):
+            one = ("condition", "condition outside", "hyperbole", "hyperbole against")
+            if v.form in ("reason before", "owner", *one):
                 assert _one_named(keys["p"], CELL, "human") == "B"
-            if v.form in ("condition", "hyperbole", "hyperbole against", "owner", "owner other"):
+            if v.form in ("owner", "owner other", *one):
                 assert _one_named(keys["o"], CELL, "object") == "apple"
-            if v.form in ("reason before", "hyperbole", "owner", "owner other"):
+            if v.form in ("reason before", "condition", "hyperbole", "owner", "owner other"):
                 assert v.want == apple
             if v.form == "owner":
                 assert keys.get("them", "him") == "him"
@@ -3329,7 +3332,7 @@ def test_a_refused_entry_gets_nothing_said() -> None:
             "",
             "wrong",
         ),
-        ("Give Alice the cup.", None, "condition", "wrong"),  # read where it must refuse
+        ("Give Alice the cup.", None, "condition outside", "wrong"),  # read where it must refuse
     ],
 )
 def test_said_is_judged_by_what_the_grounder_reads(
@@ -3356,10 +3359,10 @@ def test_over_the_corpus_each_said_form_names_what_it_says() -> None:
                 if v.form == "reason before":
                     assert isinstance(entry.want, Task) and v.want == entry.want
                     assert _one_named(keys["p"], scene, "human") == entry.want.target
-                if v.form in ("condition", "hyperbole", "hyperbole against"):
+                if v.form in ("condition", "condition outside", "hyperbole", "hyperbole against"):
                     assert isinstance(entry.want, Task)
                     assert _one_named(keys["o"], scene, "object") == entry.want.obj
                     assert _one_named(keys["p"], scene, "human") == entry.want.target
-                if v.form == "hyperbole":
+                if v.form in ("condition", "hyperbole"):
                     assert v.want == entry.want
     assert min(kinds.values()) >= 20, kinds
