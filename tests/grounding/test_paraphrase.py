@@ -213,92 +213,130 @@ KNOWN_MISSES = frozenset(
         "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
         "Could you hang the tongs on the plate rack, Marco's done with them?",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
-        "Rakhmat, as my Bashkir gran would say, and would you set the red mug on the shelf, "
-        "please.",
         "Ta ever so, Person B's been on the sackbut all morning and could murder that bottle.",
-        "Beg pardon for the fuss, the tablets go to Mrs Khan, bless you.",
-        "Person A's after something to drink out of, the cup will do her.",
-        "Person A would be glad of the bottle, her spinet lesson ran long, and Person B could "
-        "use the chips.",
         "The bottle's a must for Person B after bocce, and Person A's set on the chips.",
-        "Priya's in want of the stapler and the notebook for her scrivener's guild minutes.",
-        "Chef's asked that the tongs and the knife both get left out on the counter for the "
-        "terrazzo crew's lunch.",
-        "The crisps? Those are Alice's. And Bob, he can have the bottle.",
         "The bottle, that's Person A's. The chips, Person B has those, he called them after "
         "the dulcimer.",
         "Person A's down for the chips. Person B? The bottle, he said, after the hornpipe.",
-        "Person B said he'd take the chips, so they're his.",
-        "That bottle's hers, Person A's.",
-        "The chips are going Person A's way and the remaining thing ends up with Person B.",
-        "Those work gloves, Mia wants them on the belt.",
-        "Ava's been eyeing the sippy cup since the treasure hunt; let her take it.",
         "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
         "Person B's a reed cutter and takes anything, so any of the four things will do him.",
         "Sam can take whatever pen he likes so long as it isn't the red one, the etcher "
         "borrowed that.",
         "Just one bottle, Person A's, she's a papermaker and needs the one only.",
-        "Lock both the spanners away in the locker now that the wainwright's gone.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
         "Tablets across to Mr Lee, oh, silly me, Mrs Khan's the one they're prescribed for, "
         "the crumhorn lady.",
         "the chips are person b's, he's a ditcher and starving",
-        "person a's got to have the bottle ahead of her boggle night",
-        "the waitress is after the knife plus the tongs, sort her out",
-        "Would you mind ever so much getting Bob his crisps, he's the washboard player?",
-        "Is Zoe alright to have the globe?",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
-        "Evening, and sorry about the racket from the handpan group next door: the cup for "
-        "Person A and the chips for Person B, if you'd be so kind.",
-        "Pardon me for butting in on your ludo game, but could Person A get the apple? Thanks "
-        "ever so.",
-        "With many thanks from all of us at the carrom club: the bottle to Person A, please.",
-        "The topiarist next door sends her regards; in the meantime could Person B have the "
-        "bottle, please?",
-        "Tanemmirt, which is thanks in Tamazight, my first language. Now, kindly put the white "
-        "cup in the sink.",
-        "Bob's been pining for those crisps all morning long.",
-        "Alice fancies the bottle, and Bob's rather keen on the crisps.",
-        "The cup's what Person A is after, and Person B reckons he needs the bottle.",
-        "Person B needs that bottle more than anybody right now.",
-        "It's the chips that Person A has her heart set on, the poor thing.",
-        "Person A is absolutely dying of thirst over there; that bottle would save her life.",
-        "Bob? Bottle. For him, yeah, that one.",
-        "Person A put in a word for the apple earlier, and Person B for the chips; sort them "
-        "both out, would you.",
-        "Person A has her eye on the chips, and as for Person B, it's the bottle he's hoping for.",
-        "Whose are the chips? Person B's. And the bottle? Also his, so take him both.",
-        "Person A left that bottle behind at the bus stop; it's hers, so she ought to get it back.",
-        "Person A mentioned she'd like it brought over, the bottle that is, before her "
-        "shakuhachi practice.",
         "Omar's after a spoon to stir his tea. Could you get him one?",
         "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
         "them both.",
         "Bob was on about crisps all through the ice show and Alice wants her bottle can you "
         "sort that",
-        "Bottle, that's Person A's. Apple, Person B's. Go.",
-        "Start with Person B. He gets the chips. Person A after him, with the bottle.",
-        "Chips for Person B, he asked. Bottle for Person A, she asked too.",
-        "Everybody gets a single item here: Person A is down for the bottle and the chips are "
-        "Person B's.",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
-        "Person B says he'll have both items, the chips as well as the bottle.",
-        "person b has dibs on the cup so the apple goes to person a",
-        "ever since balalaika practice person a keeps going on about wanting the bottle",
         "marcos on the grill tonight and hes shouting for the tongs",
-        "Person B left his botgtle here; could he have it back?",
-        "Could I trouble you to see that Bob gets the bottle?",
-        "While you're on your feet, would you be good enough to see Person A gets the bottle?",
         "Is there any way Person B could get the chips this side of lunch?",
-        "How would it be if Person B had the cup and Person A the apple? Do that, please.",
-        "Is it too much bother to get Person A her bottle from over there?",
-        "Shall the chips go to Person B, then? Yes, let's do that.",
-        "Dana's sorting samples; is there room on the tray for the bowl, and could you put it "
-        "there?",
-        "Could Mr Novak trouble you for the salt shaker, do you suppose?",
         "Could Grandad have the red block for Lily's tower?",
-        "Would you be a pal and lock the drill away in the locker before the armourer comes round?",
+        # blind41 (tuned on in session 43): refusals left at its one measurement (docs/grounding.md)
+        "If you'd be so good as to carry the chips across to Person A, she's been at her cajon "
+        'all afternoon.',
+        'Er, sorry, hate to interrupt, but could the bottle make its way to Person A? Lovely '
+        'stuff.',
+        'Much obliged if Person B ended up with the chips.',
+        "Morning, Omar's the one the sponge is for, thanks a bunch.",
+        'Sagrai, as Lezgian speakers put it, for taking the stapler over to Priya.',
+        "With thanks, the drill to Kofi, he's just back from his mbira lesson.",
+        "After a morning on the piling rig, Bob's gasping and the water bottle would save his "
+        'life.',
+        'Alice would sell her soul for the crisps right now.',
+        "The bottle's what Bob has been angling for all morning.",
+        "Person A fancies the bottle now her qigong session's over.",
+        'The chips would go down a treat with Person A.',
+        "Person B keeps glancing at the bottle; I reckon he'd love it, the poor lamb.",
+        'If nobody else has claimed the bottle, Person A would gladly take it off your hands.',
+        'Honestly, the chips are the thing Person B needs more than anything.',
+        'Lena says nothing will do but the white plate for her dessert round.',
+        "Noah can't do his etching without the ruler.",
+        "Without the tin of screws, Jess can't finish mending the gate.",
+        "Where's Bob... ah, there. The bottle's his; he's waited long enough.",
+        'Those crisps? Alice has been after them, so over to her they go.',
+        "Person A's apple needs taking to her, and her bottle as well.",
+        "The cup? That's Person B's. The apple? Person A's. Off they go to them.",
+        "Person B's having the chips, and ditto the apple.",
+        'Person B put his name down for the chips, so he gets them.',
+        "Dana's after a spoon, plus the green cup to go with it.",
+        "The scissors are Zoe's to borrow, and Noah's having the glue.",
+        "Put Lily's sippy cup on the high chair for her.",
+        "Shelf first, for the cup. After that, Bob's to get the red mug.",
+        'Person A needs her apple Person B wants the bottle and Person A would like chips as well',
+        'Person A has asked for the bottle. The chips are spoken for by Person B. Right, go.',
+        "Person B's bottle comes before anything else and once he's holding it Person A can "
+        'have the chips',
+        "Bowl in the sink. Spoon in with it. After that, Emma's banana.",
+        'The thermometer to Ruth and the magazine on the locker for Mr Lee he likes a read',
+        "Grandad needs the wipes and Lily needs her bib because she's a mucky pup and Ava "
+        'would like the teddy',
+        "Clear the drill and the screws onto the bench. When they're down, Kofi gets the torch.",
+        'Alice and Bob get something apiece, her the bottle and him the crisps.',
+        "Person A will take whatever's going, so pick any one of the bottle, the chips, the "
+        'cup or the apple for her.',
+        'Person B is owed two things, the cup and the apple; see he gets both.',
+        'Give them one thing each, the way they asked: Person B wanted the bottle, Person A '
+        'the chips.',
+        "If there's a bottle about, any bottle at all, Person A would like it.",
+        "Person B isn't bothered whether it's the chips or the bottle, so one of those for him.",
+        "Sam's happy with a black pen or a red one, whichever comes to hand first.",
+        'The students get a book apiece, red for Noah and green for Zoe.',
+        "There's only the one bottle on the go; Bob can have it.",
+        'Person B gets the whole lot, all four of them: bottle, chips, cup and apple.',
+        "Just a solitary apple for Person A, she's on a diet before her kantele concert.",
+        'Person A has a pair of requests, namely the bottle and the cup.',
+        'Both bits on offer, the pair of them, are for Person A.',
+        'Person B asked for a bottle, just one, nothing more.',
+        'One bag of chips is plenty for Person A.',
+        "Set both of Lily's blocks up on her high chair.",
+        'Jess wants a full set of the spanners, meaning the small and the big.',
+        'Put the lot on the shelf, only leave the mugs where they are.',
+        "Alice turned her nose up at the bottle; she'll have the crisps.",
+        "Bar the apple, the lot is Person A's to take.",
+        "Person A's had her turn with the cup, it's Person B who gets it now.",
+        "Person B has no use for the cup or the apple; it's the bottle he's after.",
+        "Person A won't be having the apple, it's going to Person B.",
+        'Person A never asked for the chips; Person B did, so take them to him.',
+        "There's no reason to hold back; Person A gets the bottle.",
+        'Nothing fancy, only the bottle to Person A and not a thing besides.',
+        "Person B's gone off the bottle, so it's the chips that go to him.",
+        'Omar will take any cup going except the green one, which he hates.',
+        "Mr Lee won't thank you for the blue blanket; bring him the grey.",
+        "Bob gets the apple... hold on, I've muddled them, it's Carol's.",
+        'Bottle on the shelf, er, scratch that, bottle to Bob.',
+        "Person B gets the bottle, hmm, no, rewind, he's meant to have the chips.",
+        "Apple across to Person B; change of plan, it's Person A who's having it.",
+        "Person A was down for the chips but she's changed her order to the bottle.",
+        "Bottle to Person A, except that's wrong, it's Person B who gets it.",
+        "Chips to Person B. Wait, it's the other way round: chips to Person A.",
+        'Emma gets the spoon, um, did I say Emma? Dana, sorry.',
+        "Tablets for Mr Lee; whoops, I'm reading the wrong chart, they're Mrs Khan's.",
+        'The small box on the conveyor; wait, I meant the middle-sized one.',
+        'Lena needs the knife, well, not the knife actually, the tongs.',
+        "Torch over to Jess, my bad, it's meant to go in the locker.",
+        "shelf's the spot for the bottle, and alice is having the crisps",
+        'chips go across to person b and person a takes the cup',
+        "person b's drinking so the bottle is his, person a's snacking so she takes the chips",
+        "Stick the bottfle high up on the shelf where Bob's puppy can't chew it.",
+        'Plerson B keeps nagging about the cup, so let him have it.',
+        "Persohn A left her bottle with you earlier; she'd like it returned.",
+        'Poor Person B skipped his dinner break, so the chipqs are his.',
+        "Pack the staopler away in the box, we're done with it.",
+        'Any chance of the crisps going up high on the shelf, out of sight of the grandkids?',
+        'Any hope of Person A getting the chips before her newt survey?',
+        'Could you spare a minute to hand Person B the apple?',
+        'Would it be a pain to take Person A the cup?',
+        'Does Person B want the chips? He does, so give them to him.',
+        'Could you make sure Person A ends up with her bottle?',
+        'Is it possible to get Omar both his banana and a bowl for it?',
+        "Grandad's changing Lily; can you pass him the baby wipes?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -310,6 +348,11 @@ KNOWN_UNCLEAR = frozenset(
         # blind38 (tuned on in session 40)
         # blind39 (tuned on in session 41)
         # blind40 (tuned on in session 42)
+        # blind41 (tuned on in session 43)
+        'Give Person A one of them, you know the one I mean.',
+        "One of the patients asked for the magazine; can't remember which.",
+        "mr lee's blanket back to him please, the one he had on",
+        "Could you give Person B whatever he asked for yesterday? I've forgotten what it was.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -388,8 +431,10 @@ KNOWN_UNCLEAR = frozenset(
 # tuned on in session 41: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind40"
 # written in session 41 by another engineer and committed alone, reviewed by a second one, measured
 # once at the end of session 41 (1 wrong, fixed), tuned on in session 42: asserted now, the rest in
-# KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind41"})
+# KNOWN_MISSES and KNOWN_UNCLEAR; "blind41" written in session 42 by another engineer and committed
+# alone, reviewed by a second one, measured once at the end of session 42 (0 wrong), tuned on in
+# session 43: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -135,17 +135,20 @@ def test_near_forms_of_leave_on_read_as_before(text: str, want: str) -> None:
 # -- an owner said alone (offline.py _owner_only33s) ---------------------------------------------
 
 
-@pytest.mark.parametrize(
-    "text", ["The drill is Jess's.", "The drill's Jess's.", "The spanners are Jess's!"]
-)
+@pytest.mark.parametrize("text", ["The spanners are Jess's!", "The spanners are Jess's."])
 def test_an_owner_said_alone_is_refused_with_both_readings(text: str) -> None:
-    # the drill was read as drill>B
+    # several things: whose both are, or that both go to Jess (session 42: one thing reads)
     assert_refused(text, WORKSHOP, match="could say whose the .* (is|are) .* or that the")
 
 
 @pytest.mark.parametrize(
     ("text", "want"),
     [
+        # session 42 (the lead's possession policy, 2026-12-06): one scene thing said to be one
+        # scene person's is a handover to the owner (three blind writers read it so; session 33
+        # had refused it naming both readings)
+        ("The drill is Jess's.", "drill>B"),
+        ("The drill's Jess's.", "drill>B"),
         ("The drill is Jess's, please.", "drill>B"),
         # beside another part it allots (blind30)
         (

@@ -207,7 +207,7 @@ test_negation = CASES.test(
     # "The X's P's, not Q's": said against another, who is to have it
     ("The magazine's Mrs Khan's, not Mr Lee's.", "magazine>C", WARD),
     ("The tongs are Marco's, not Lena's.", "tongs>A", KITCHEN),
-    ("The magazine's Mrs Khan's.", None, WARD),  # whose it is, alone
+    # session 42: said alone it is a handover (the lead's possession policy): test_phrasing_s42
     ("The magazine's Mrs Khan's, not Mrs Khan's.", None, WARD),
     ("The blanket's Mrs Khan's, not Mr Lee's.", None, WARD),  # two blankets
     # "P doesn't need X any more / no longer needs X, just Y"

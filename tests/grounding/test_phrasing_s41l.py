@@ -113,9 +113,12 @@ test_a_want_taken_back_is_refused = CASES.test(
 )
 
 test_a_want_idiom_with_after_is_no_time_gone_by = CASES.test(
-    ("Give Bob the cup. Carol is hankering after the apple.", None, CELL),
-    ("Give Bob the cup, he's been hankering after the chips.", None, CELL),
-    ("Hand Marco the knife, Lena is pining after the tongs.", None, KITCHEN),
+    # session 42 (12): 12's session-41 want idioms (_rewrites41._want_idiom41, landed after this)
+    # read 'is hankering after' as 'wants', as 'Carol is after the apple' is read beside a request:
+    # the want, not a time gone by
+    ("Give Bob the cup. Carol is hankering after the apple.", "cup>B & apple>C", CELL),
+    ("Give Bob the cup, he's been hankering after the chips.", "cup>B & chips>B", CELL),
+    ("Hand Marco the knife, Lena is pining after the tongs.", "knife>A & tongs>B", KITCHEN),
     # a time gone by after a remark: dropped as before
     ("Give Bob the cup, he's tired after his shift.", "cup>B", CELL),
 )

@@ -135,7 +135,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # in session 41 by another engineer and committed alone, never opened by the engineers who change
 # the grounder before its one measurement at the end of session 41; tuned on in session 42), blind41
 # (written in session 42 by another engineer and committed alone, never opened by the engineers who
-# change the grounder before its one measurement at the end of session 42; tests do not assert it).
+# change the grounder before its one measurement at the end of session 42; tuned on in session 43).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -183,7 +183,10 @@ _WORDS: tuple[tuple[str, str], ...] = (
         r"\b(ask(?:ed|ing) for [^.;!?,]*?) (?:twice|three times|several times|a few times|again|"
         r"already|ages ago|a while ago|a bit ago|earlier|this morning|this afternoon|yesterday|"
         r"last night|(?:an|one|two|ten|twenty|half an) (?:minutes?|hours?) ago|just now|all day|"
-        r"all morning|all afternoon)(?: now| today| already)?(?=\s*(?:[.,;!?]|$))",
+        r"all morning|all afternoon|all evening|all week|all lesson|all class|all shift|all "
+        r"session|all practice|all rehearsal|all meeting|all match)(?: long)?"
+        r"(?: now| today| already)?"
+        r"(?=\s*(?:[.,;!?]|$))",
         r"\1",
     ),
     (r",?\s*\b(?:sharpish|pronto|asap|chop chop|on the double)\b", ""),
@@ -3995,7 +3998,11 @@ _FOR_WHAT = (
     (r"\b(?:says|said|reckons|tells me) (?:he|she|they) (needs|wants|would like)\b", r"\1"),
     # "… been wanting the drill for ages / all morning"
     (r"(?:'s| has| have) been wanting\b", " wants"),
-    (r"\s+(?:for ages|all (?:morning|day|afternoon|week)|for a while|since this morning)\b", ""),
+    (
+        r"\s+(?:for ages|all (?:morning|day|afternoon|evening|week|lesson|class|shift|session)"
+        r"(?: long)?|for a while|since this morning)\b",
+        "",
+    ),
     # "a bit of salt": the salt
     (r"\b(?:a bit|a drop|a little|a spot) of (?:the )?", "the "),
 )

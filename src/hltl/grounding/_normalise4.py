@@ -7742,6 +7742,7 @@ _IN_NEED37 = re.compile(
     r"have| (?:wouldn't|would not) say no to|(?:'s| has) been on at (?:me|us) (?:about|for)|"
     r"(?:'s| is) on at (?:me|us) (?:about|for)| would kill for| could (?:really |just )?go for) "
     r"(?=(?:the|that|this|those|these|her|his|their) )",
+    _F,  # session 41: case-blind ("person a's got to have the bottle"); P is checked as a person
 )
 # "Emma would quite fancy the green cup": an adverb between 'would' and the want
 _WOULD_QUITE37 = re.compile(

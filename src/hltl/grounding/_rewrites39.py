@@ -200,14 +200,17 @@ def _order39(text: str, lexicon: Lexicon) -> str:
 # "As for Person A, the cup", "As for Mr Novak, he's had his eye on the lemon": the person said
 # first, then what is for them
 _AS_FOR39 = re.compile(
-    r"(?:^|(?<=[.;!?]\s))as for (?P<p>[A-Za-z][\w ]*?),\s*(?:(?P<pron>he|she)(?=(?:'s| is| has| "
-    r"wants| needs| would)\b)|(?=(?:the|that|this|those|these) ))",
+    r"(?:^|(?<=[.;!?]\s))(?P<and>and )?as (?:for|to|regards) (?P<p>[A-Za-z][\w ]*?),\s*"
+    r"(?:(?P<pron>he|she)(?=(?:'s|'ll|'d| is| has| wants| needs| would| can| could| will| "
+    r"should| gets)\b)|(?P<v>give|hand|pass|bring) (?P<obj>him|her)\b|"
+    r"(?=(?:the|that|this|those|these) ))",
     _F,
 )
 # "The crisps? Alice's.", "The bottle? That's Bob's.": whose each thing is, said as an answer
 _WHOSE39 = re.compile(
-    r"(?P<x>(?:^|(?<=[.;!?]\s))(?:[Tt]he|[Tt]hat|[Tt]his) [a-z]+(?: [a-z]+)?)\?\s+"
-    r"(?:[Tt]hat's |[Tt]hat is |[Ii]t's |[Ii]t is )?(?P<p>[A-Z][\w ]*?)'s(?=\s*(?:[.;!,]|$))",
+    r"(?P<x>(?:^|(?<=[.;!?]\s))(?:[Tt]he|[Tt]hat|[Tt]his|[Tt]hose|[Tt]hese) [a-z]+(?: [a-z]+)?)"
+    r"\?\s+(?:[Tt]hat's |[Tt]hat is |[Ii]t's |[Ii]t is |[Tt]hose are |[Tt]hese are |[Tt]hey're |"
+    r"[Tt]hey are )?(?P<p>[A-Z][\w ]*?)'s(?=\s*(?:[.;!,]|$))",
 )
 # "The bottle's Person A's, if you would": whose it is, said as a request by the courtesy after it
 _WHOSE_PLEASE39 = re.compile(
@@ -222,16 +225,22 @@ def _pronouns39(text: str, lexicon: Lexicon) -> str:
     objects of the scene only, P one person); "The X's P's, if you would" said 'The X to P, if
     you would' (the courtesy makes whose it is a request to hand it over)."""
     low = text.lower()
-    if "as for " in low:
+    if "as for " in low or "as to " in low or "as regards " in low:
         m = _AS_FOR39.search(text)
         if m is not None and _only_person(m["p"], lexicon):
             pid = next(iter(_ids(m["p"], lexicon, "human")))
-            if m["pron"] is None:
-                name = m["p"][0].upper() + m["p"][1:]
-                text = f"{text[: m.start()]}{name}, {text[m.end() :]}"
-            elif _fit36(pid, m["pron"], lexicon):
-                name = m["p"][0].upper() + m["p"][1:]
-                text = f"{text[: m.start()]}{name}{text[m.end() :]}"
+            name = m["p"][0].upper() + m["p"][1:]
+            head = text[: m.start()] + (m["and"] or "")
+            said = m["pron"] or m["obj"]
+            if said is None:
+                text = f"{head}{name}, {text[m.end() :]}"
+            elif _fit36(pid, said, lexicon):
+                # session 41: 'give him' after the topic: 'give <P>'; 'he'll' kept as 'P will'
+                name = f"{m['v']} {name}" if m["v"] else name
+                rest = text[m.end() :]
+                if m["pron"] and rest.startswith("'ll"):
+                    rest = " will" + rest[3:]
+                text = f"{head}{name}{rest}"
     if "?" in text:
 
         def answered(m: re.Match[str]) -> str:
@@ -262,6 +271,8 @@ def _name_s39(text: str, lexicon: Lexicon) -> str:
         word = m[0]
         if word in VERBS or not _only_person(m["n"], lexicon):
             return word
+        if word in {a.lower() for h in lexicon.scene.humans for a in (h.name, *h.aliases)}:
+            return word  # session 41: a name in its own right ('waitress', not 'waitres' + s)
         if not _ids(word, lexicon) <= _ids(m["n"], lexicon, "human"):
             return word  # a name of its own ('chips'), or of someone else
         return f"{m['n']}'s"

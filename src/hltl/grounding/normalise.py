@@ -537,6 +537,9 @@ from hltl.grounding._rewrites41s import _STEPS41S, _STEPS41S_FIRST
 from hltl.grounding._rewrites42 import _STEPS42, _STEPS42_FIRST
 from hltl.grounding._rewrites42r import _STEPS42R, _STEPS42R_FIRST
 from hltl.grounding._rewrites42s import _STEPS42S, _STEPS42S_FIRST
+from hltl.grounding._rewrites43 import _STEPS43, _STEPS43_FIRST
+from hltl.grounding._rewrites43r import _STEPS43R, _STEPS43R_FIRST
+from hltl.grounding._rewrites43s import _STEPS43S, _STEPS43S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -859,6 +862,10 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S_FIRST,
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
+    # session 43 (12s, 12r, 12)
+    *_STEPS43S_FIRST,
+    *_STEPS43R_FIRST,
+    *_STEPS43_FIRST,
     # session 42 (12s, 12r, 12)
     *_STEPS42S_FIRST,
     *_STEPS42R_FIRST,
@@ -883,6 +890,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33T,
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
+    # session 43 (12r)
+    *_STEPS43R,
     # session 42 (12r)
     *_STEPS42R,
     # session 41 (12r)
@@ -917,6 +926,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S,
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
+    # session 43 (12s)
+    *_STEPS43S,
     # session 42 (12s)
     *_STEPS42S,
     # session 41 (12s)
@@ -998,6 +1009,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _since28,
     # session 38 (12): blind36's kinds
     *_STEPS38,
+    # session 43 (12)
+    *_STEPS43,
     # session 42 (12)
     *_STEPS42,
     # session 41 (12)

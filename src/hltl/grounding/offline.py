@@ -23,6 +23,9 @@ from hltl.grounding import (
     _rewrites42l,
     _rewrites42r,
     _rewrites42s,
+    _rewrites43,
+    _rewrites43r,
+    _rewrites43s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -96,6 +99,9 @@ _REFUSALS = (
     *_rewrites42r.REFUSE42R,
     *_rewrites42s.REFUSE42S,
     *_rewrites42l.REFUSE42L,
+    *_rewrites43.REFUSE43,
+    *_rewrites43r.REFUSE43R,
+    *_rewrites43s.REFUSE43S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -109,6 +115,9 @@ _CHECKS = (
     *_rewrites42r.CHECK42R,
     *_rewrites42s.CHECK42S,
     *_rewrites42l.CHECK42L,
+    *_rewrites43.CHECK43,
+    *_rewrites43r.CHECK43R,
+    *_rewrites43s.CHECK43S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -1239,7 +1248,11 @@ def _owner_only33s(text: str, lexicon: Lexicon) -> None:
     """Session 33 (12s): 'The drill is Jess's.' as the whole instruction says whose the drill
     is (nothing to do) or, as "The drill is Jess's, the torch goes in the locker" does, allots
     it (the grammar had read drill>B): refused naming both readings. Said with 'please' or
-    thanks, or beside another part, it allots and is read as before."""
+    thanks, or beside another part, it allots and is read as before. Session 42 (the lead's
+    possession policy, 2026-12-06): said to the cell, whose one scene thing is one scene
+    person's is a handover to the owner (three blind writers read it so): "The drill is Jess's."
+    reads drill>B. Only several things ("The spanners are Jess's!": both, or the one Jess owns?)
+    or several owners stay refused here."""
     if _ASKED32S.search(text):
         return
     try:
@@ -1258,6 +1271,8 @@ def _owner_only33s(text: str, lexicon: Lexicon) -> None:
         and all(r.kind == "human" for r in owner.refs)
         and mark.text == "'s"
     ):
+        if len({r.id for r in items[k].refs}) == 1 and len({r.id for r in owner.refs}) == 1:
+            return  # session 42: one thing, one owner: the handover (the grammar's reading)
         obj = _text(items[: k + 1]).lower()
         be, go = ("are", "go") if verb.text == "are" else ("is", "goes")
         raise GroundingError(
