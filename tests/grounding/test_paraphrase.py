@@ -219,10 +219,8 @@ KNOWN_MISSES = frozenset(
         "the dulcimer.",
         "Person A's down for the chips. Person B? The bottle, he said, after the hornpipe.",
         "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
-        "Person B's a reed cutter and takes anything, so any of the four things will do him.",
         "Sam can take whatever pen he likes so long as it isn't the red one, the etcher "
         "borrowed that.",
-        "Just one bottle, Person A's, she's a papermaker and needs the one only.",
         "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
         "Tablets across to Mr Lee, oh, silly me, Mrs Khan's the one they're prescribed for, "
         "the crumhorn lady.",
@@ -275,26 +273,7 @@ KNOWN_MISSES = frozenset(
         "Grandad needs the wipes and Lily needs her bib because she's a mucky pup and Ava "
         'would like the teddy',
         "Clear the drill and the screws onto the bench. When they're down, Kofi gets the torch.",
-        'Alice and Bob get something apiece, her the bottle and him the crisps.',
-        "Person A will take whatever's going, so pick any one of the bottle, the chips, the "
-        'cup or the apple for her.',
-        'Person B is owed two things, the cup and the apple; see he gets both.',
-        'Give them one thing each, the way they asked: Person B wanted the bottle, Person A '
-        'the chips.',
-        "If there's a bottle about, any bottle at all, Person A would like it.",
-        "Person B isn't bothered whether it's the chips or the bottle, so one of those for him.",
-        "Sam's happy with a black pen or a red one, whichever comes to hand first.",
-        'The students get a book apiece, red for Noah and green for Zoe.',
-        "There's only the one bottle on the go; Bob can have it.",
-        'Person B gets the whole lot, all four of them: bottle, chips, cup and apple.',
-        "Just a solitary apple for Person A, she's on a diet before her kantele concert.",
-        'Person A has a pair of requests, namely the bottle and the cup.',
-        'Both bits on offer, the pair of them, are for Person A.',
-        'Person B asked for a bottle, just one, nothing more.',
-        'One bag of chips is plenty for Person A.',
         "Set both of Lily's blocks up on her high chair.",
-        'Jess wants a full set of the spanners, meaning the small and the big.',
-        'Omar will take any cup going except the green one, which he hates.',
         "shelf's the spot for the bottle, and alice is having the crisps",
         'chips go across to person b and person a takes the cup',
         "person b's drinking so the bottle is his, person a's snacking so she takes the chips",
@@ -323,10 +302,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind39 (tuned on in session 41)
         # blind40 (tuned on in session 42)
         # blind41 (tuned on in session 43)
-        'Give Person A one of them, you know the one I mean.',
-        "One of the patients asked for the magazine; can't remember which.",
-        "mr lee's blanket back to him please, the one he had on",
-        "Could you give Person B whatever he asked for yesterday? I've forgotten what it was.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
