@@ -835,10 +835,11 @@ def _group43r(words: str, lexicon: Lexicon) -> list[str] | None:
         ]
         return ids if len(ids) >= 2 else None
     parts = [p.strip() for p in re.split(r",|\band\b", w, flags=_F) if p.strip()]
-    ids = [_person42r(p, lexicon) for p in parts]
-    if len(ids) < 2 or any(i is None for i in ids) or len(set(ids)) != len(ids):
+    said = [_person42r(p, lexicon) for p in parts]
+    found = [i for i in said if i is not None]
+    if len(found) < 2 or len(found) != len(said) or len(set(found)) != len(found):
         return None
-    return [i for i in ids if i is not None]
+    return found
 
 
 def _share43r(
