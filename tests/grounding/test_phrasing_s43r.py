@@ -323,6 +323,12 @@ test_choices = CASES.test(
     ("Mr Lee and Mrs Khan get something each, him the jug and him the magazine.", None, WARD),
     ("Lena and Marco get something each, him the tongs and her the salt.", None, KITCHEN),
     ("The students get a book apiece, red for Noah.", None, CLASSROOM),
+    (
+        "Both of them get one thing each: the jug to Ruth, the pills to Mr Lee, the magazine to "
+        "Mrs Khan.",
+        None,
+        WARD,
+    ),
     ("The students get a book apiece, red for Noah and red for Zoe.", None, CLASSROOM),
     # _any_will_do43r: content with any thing, the choice left to the robot
     (
@@ -371,6 +377,7 @@ test_choices = CASES.test(
         OFFICE,
     ),
     ("Whichever comes to hand first.", None, OFFICE),
+    ("Give Sam the stapler, whichever comes to hand first.", None, OFFICE),
     # _if_there_is43r: a condition on the scene, which the scene answers
     ("If there's a globe about, any globe at all, Noah would love it.", "globe>B", CLASSROOM),
     ("If you've got a lemon handy, give it to Marco.", "lemon>A", KITCHEN),
@@ -420,7 +427,6 @@ UNCLEAR: list[tuple[str, Scene, tuple[str, ...]]] = [
         CLASSROOM,
         ("Person B", "Person C"),
     ),
-    ("Either of them asked for the tape, no idea which.", DEPOT, ("Person A", "Person B")),
     ("one of the patients asked for the jug, can't remember which", WARD, ("Person B", "Person C")),
     # meant_one_refused43r
     ("Give Zoe one of the books, you know the one I mean.", CLASSROOM, ("book_red", "book_green")),

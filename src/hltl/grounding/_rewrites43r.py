@@ -826,8 +826,10 @@ def _group43r(words: str, lexicon: Lexicon) -> list[str] | None:
     """The people a group ``words`` names ("Alice and Bob", "the students", "them": everyone of
     the scene), or None."""
     w = words.strip()
-    if re.fullmatch(r"them|they|the two of them|the pair of them|both of them", w, _F):
-        return [h.id for h in lexicon.scene.humans]
+    if re.fullmatch(r"them|they|the two of them|the pair of them|both of them|both", w, _F):
+        everyone = [h.id for h in lexicon.scene.humans]
+        two = re.search(r"\b(?:two|pair|both)\b", w, _F) is not None
+        return None if two and len(everyone) != 2 else everyone
     m = re.fullmatch(r"(?:the )?(?P<r>[a-z]+)s", w, _F)
     if m is not None:
         ids = [
@@ -995,9 +997,17 @@ def _to_hand43r(text: str, lexicon: Lexicon) -> str:
     nearest, whichever is handiest): the choice left to the robot, "…, whichever"."""
     if "whichever" not in text.lower() and "whatever" not in text.lower():
         return text
-    out = re.sub(_TO_HAND43R, r"\g<w>", text.strip(), flags=_F)
-    if out == text.strip():
+    m = re.search(_TO_HAND43R, text.strip(), _F)
+    if m is None:
         return text
+    said = text.strip()[: m.start()]
+    if " or " not in said.lower() and " one" not in said.lower():
+        return text
+    if len(_ids(said, lexicon, "object")) < 2 and not re.search(
+        r"\b(?:an?|one of the)\b", said, _F
+    ):
+        return text  # "Give Bob (or Carol) the cup, whichever comes to hand": no choice of things
+    out = re.sub(_TO_HAND43R, r"\g<w>", text.strip(), flags=_F)
     return out if _reading(out, lexicon) is not None else text
 
 
@@ -1052,11 +1062,10 @@ def which_person_lost43r(text: str, lexicon: Lexicon) -> None:
     m = re.search(_WHICH_PERSON43R, text, _F)
     if m is None:
         return
-    if m["r"]:
-        role = m["r"].lower()
-        ids = [h.id for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)]
-    else:
-        ids = [h.id for h in lexicon.scene.humans]
+    if not m["r"]:
+        return  # "one of them …, no idea which": session 33's refusal names everyone
+    role = m["r"].lower()
+    ids = [h.id for h in lexicon.scene.humans if role in (a.lower() for a in h.aliases)]
     if len(ids) < 2:
         return
     people = " or ".join(person_name(i, lexicon) for i in ids)
