@@ -639,5 +639,13 @@ test_corrected_away = CASES.test(
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-33 (12r) steps taken out
     (but 'Any one of the boxes onto the belt', phrasing.py's): each rule is what reads it."""
-    # session 42 (12r): its rules of the same families read these too
-    CASES.refused_without((*normalise._STEPS33R, *normalise._STEPS42R), monkeypatch)
+    # sessions 42 and 43 (12r): their rules of the same families read these too
+    CASES.refused_without(
+        (
+            *normalise._STEPS33R,
+            *normalise._STEPS42R,
+            *normalise._STEPS43R_FIRST,
+            *normalise._STEPS43R,
+        ),
+        monkeypatch,
+    )

@@ -382,6 +382,9 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS40S,
             *normalise._STEPS41S_FIRST,
             *normalise._STEPS42R,
+            # session 43 (12r): its rules of the same families read these too
+            *normalise._STEPS43R_FIRST,
+            *normalise._STEPS43R,
         ),
         monkeypatch,
     )

@@ -522,6 +522,10 @@ def test_the_part2_rules_are_what_reads_them(monkeypatch: pytest.MonkeyPatch) ->
     # (session 41: 12s's occasion rule reads some of them too)
     with verbs_out(*POSTURE_VERBS):
         CASES2.refused_without(
-            normalise._STEPS37S + normalise._STEPS37S_FIRST + normalise._STEPS41S_FIRST,
+            # session 43 (12r): its 'middle-sized' rule reads 'the middle-sized box' too
+            normalise._STEPS37S
+            + normalise._STEPS37S_FIRST
+            + normalise._STEPS41S_FIRST
+            + normalise._STEPS43R_FIRST,
             monkeypatch,
         )

@@ -155,6 +155,9 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS38S_FIRST,
             *normalise._STEPS40S,
             *normalise._STEPS41S_FIRST,
+            # session 43 (12r): its corrections read some of these too
+            *normalise._STEPS43R_FIRST,
+            *normalise._STEPS43R,
         ),
         monkeypatch,
     )

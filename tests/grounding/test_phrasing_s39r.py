@@ -286,7 +286,16 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     # session 40: the lexicon's posture verbs read 'Stand both of the blocks up on the mat' too
     with verbs_out(*POSTURE_VERBS):
         # session 42 (12r): its rules of the same families read these too
-        CASES.refused_without((*normalise._STEPS39R, *normalise._STEPS42R), monkeypatch)
+        # session 43 (12r): its rules of the same families read these too
+        CASES.refused_without(
+            (
+                *normalise._STEPS39R,
+                *normalise._STEPS42R,
+                *normalise._STEPS43R_FIRST,
+                *normalise._STEPS43R,
+            ),
+            monkeypatch,
+        )
 
 
 def test_not_wanted_names_what_is_refused() -> None:

@@ -198,6 +198,9 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS39,
             *normalise._STEPS40S,
             *normalise._STEPS40S_FIRST,
+            # session 43 (12r): its corrections read some of these too
+            *normalise._STEPS43R_FIRST,
+            *normalise._STEPS43R,
         ),
         monkeypatch,
     )

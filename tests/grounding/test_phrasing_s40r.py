@@ -9,7 +9,7 @@ import re
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites40r, _rewrites42r, offline
+from hltl.grounding import _rewrites40r, _rewrites42r, _rewrites43r, offline
 from hltl.grounding._normalise4 import _placed_then34r, _where_was_i36r
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
@@ -291,7 +291,16 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-40 (12r) steps taken out: each
     rule is what reads it."""
     # session 42 (12r): its rules of the same families read these too
-    CASES.refused_without((*_rewrites40r._STEPS40R, *_rewrites42r._STEPS42R), monkeypatch)
+    # session 43 (12r): its rules of the same families read these too
+    CASES.refused_without(
+        (
+            *_rewrites40r._STEPS40R,
+            *_rewrites42r._STEPS42R,
+            *_rewrites43r._STEPS43R_FIRST,
+            *_rewrites43r._STEPS43R,
+        ),
+        monkeypatch,
+    )
 
 
 def test_a_sentence_opening_correction_keeps_its_blame() -> None:

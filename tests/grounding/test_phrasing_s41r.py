@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites41r, _rewrites42r, offline
+from hltl.grounding import _rewrites41r, _rewrites42r, _rewrites43r, offline
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
@@ -374,7 +374,14 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     rule is what reads it."""
     # session 42 (12r): `_negated_then42r` reads "P can do without X, pass him Y" as well
     CASES.refused_without(
-        (*_rewrites41r._STEPS41R_FIRST, *_rewrites41r._STEPS41R, _rewrites42r._negated_then42r),
+        (
+            *_rewrites41r._STEPS41R_FIRST,
+            *_rewrites41r._STEPS41R,
+            _rewrites42r._negated_then42r,
+            # session 43 (12r): its rules of the same families read these too
+            *_rewrites43r._STEPS43R_FIRST,
+            *_rewrites43r._STEPS43R,
+        ),
         monkeypatch,
     )
 

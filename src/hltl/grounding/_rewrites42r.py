@@ -148,6 +148,18 @@ def negated_head42r(said: str) -> bool:
     crisps at all;") only says a person does not want a thing, so that the cleft after it
     ("it's the bottle he wants") says what is wanted instead (session 31's refusal of a cleft
     after a request, offline._parse, asks this; `_negated_then42r` reads the two together)."""
+    # session 43 (12r): not wanting said as an idiom ("has gone off X"), and a list of things
+    # not wanted ("has no use for the cup or the apple")
+    # why: _rewrites43r imports this module, so it is imported where it is used
+    from hltl.grounding._rewrites43r import said_as_not_wanted43r
+
+    said = re.sub(
+        r"(\bthe [a-z]+)(?:(?:,| or| and| nor) the [a-z]+)+(?=\s*[,;:.]\s*$)",
+        r"\1",
+        said,
+        flags=_F,
+    )
+    said = said_as_not_wanted43r(said)
     return re.match(rf"^\s*{_NEG_HEAD42R}{_WHY42R}\s*[,;:.]\s*$", said, _F) is not None
 
 

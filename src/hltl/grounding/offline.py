@@ -1738,7 +1738,11 @@ def _cut_off(text: str) -> GroundingError | None:
     """'The cup to Alice, sorry, the.': the words stop before what they were to name (the
     refusal), or None."""
     cue = _CUE_CUT_OFF.search(text)
-    if cue is not None and not _rewrites42r.pronoun_named42r(text):
+    if (
+        cue is not None
+        and not _rewrites42r.pronoun_named42r(text)
+        and not _rewrites43r.meant_one43r(text)
+    ):
         # "…, sorry, correction," / "…, no wait.": the correction the cue announces is not said
         return GroundingError(
             f"{cue.group(1)!r} starts a correction that names nothing: say what to change it to"
