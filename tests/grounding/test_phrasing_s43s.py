@@ -116,6 +116,20 @@ def test_run_on_wants_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     RUN_ON.refused_without((r43s._run_on_wants43s,), monkeypatch)
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Zoe gets the ruler; the glue is Noah's.",
+        "the glue is noah's, zoe wants the ruler",
+        "Give Zoe the ruler, the glue is Noah's",
+    ],
+)
+def test_run_on_wants_leaves_possessives(text: str) -> None:
+    """A possessive after a thing is no new clause: no comma put in ("the chips are, Person B's"
+    had made a corrected blind39 request unreadable)."""
+    assert r43s._run_on_wants43s(text, lx.Lexicon.of(CLASSROOM)) == text
+
+
 # -- a reason per person, then 'so' + what they get (_so_reason43s) --------------------------------
 
 SO_REASON = PhrasingCases()
@@ -247,10 +261,18 @@ test_liking = LIKING.test(
         CLASSROOM,
     ),
 )
+test_liking_need = LIKING.test(
+    # what they are and a need of theirs, or the need alone
+    ("the tongs are marco's, he's a grill cook and starving", "tongs>A", KITCHEN),
+    ("The tongs are Marco's, he's the night porter.", "tongs>A", KITCHEN),
+    ("The tnogs are Marco's, he's parched.", "tongs>A", KITCHEN),
+)
 test_liking_refused = LIKING.test(
     # a pronoun that cannot be the person named before it; a thing of the scene in it
     ("Give Lena the knife and the ruler to Zoe he loves a slice", None, CLASSROOM),
     ("Give Lena the knife and the lemon to Marco, he loves the tongs", None, KITCHEN),
+    ("The tongs are Marco's, she's parched.", None, KITCHEN),
+    ("The tongs are Marco's, he's the salt.", None, KITCHEN),
 )
 
 
@@ -345,6 +367,45 @@ def test_in_with_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     IN_WITH.refused_without((r43s._in_with43s,), monkeypatch)
 
 
+# -- a thing, then whose it is, as a sentence of its own (_whose_after43s) -------------------------
+
+WHOSE = PhrasingCases()
+test_whose_after = WHOSE.test(
+    ("Tape first. That's Tom's. After that, Mia's scanner.", "tape>B ; scanner>A", DEPOT),
+    ("tape first. tom's. after that, mia's scanner", "tape>B ; scanner>A", DEPOT),
+    ("Glvoes first. That's Tom's. After that, Mia's scanner.", "gloves>B ; scanner>A", DEPOT),
+)
+test_whose_after_refused = WHOSE.test(
+    # a surface, two people
+    ("The pallet first. Tom's.", None, DEPOT),
+    ("Tape first. Tom's and Mia's.", None, DEPOT),
+)
+
+
+def test_whose_after_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHOSE.refused_without((r43s._whose_after43s,), monkeypatch)
+
+
+# -- a second thing 'to go with it' (_go_with_it43s) -----------------------------------------------
+
+GO_WITH_IT = PhrasingCases()
+test_go_with_it = GO_WITH_IT.test(
+    ("Give Zoe the glue and the ruler to go with it.", "glue>C & ruler>C", CLASSROOM),
+    ("zoe needs the glue, plus the ruler to go with it", "glue>C & ruler>C", CLASSROOM),
+    ("Zoe needs the glue, plus the rular to go with it.", "glue>C & ruler>C", CLASSROOM),
+)
+test_go_with_it_refused = GO_WITH_IT.test(
+    # two people, a placement, one thing only: what does it go with?
+    ("Give Zoe the glue and Noah the ruler to go with it.", None, CLASSROOM),
+    ("Put the glue on the shelf and the ruler to go with it.", None, CLASSROOM),
+    ("Give Zoe the glue to go with it.", None, CLASSROOM),
+)
+
+
+def test_go_with_it_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    GO_WITH_IT.refused_without((r43s._go_with_it43s,), monkeypatch)
+
+
 # -- 'when they're down', 'once he's holding it' (_once_there42s, widened) -------------------------
 
 ONCE = PhrasingCases()
@@ -366,8 +427,14 @@ test_once_holding = ONCE.test(
     ),
 )
 test_once_holding_refused = ONCE.test(
-    # nothing before it to be down
+    # nothing before it to be down; nothing after it (which is 'it', and when?)
     ("When it's down, give Kofi the drill.", None, WORKSHOP),
+    (
+        "Put the tape and the gloves on the belt, and give Tom the scanner once it's there",
+        None,
+        DEPOT,
+    ),
+    ("Give Mia the tape and put the scanner on the pallet when it's there", None, DEPOT),
 )
 
 

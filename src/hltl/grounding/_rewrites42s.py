@@ -437,7 +437,12 @@ def _once_there42s(text: str, lexicon: Lexicon) -> str:
             out = said
     if "once " in out.lower():
         m = _ONCE_THERE42S.search(out)
-        if m is not None and m.start() > 0 and _names(out[: m.start()], lexicon):
+        if (
+            m is not None
+            and m.start() > 0
+            and _names(out[: m.start()], lexicon)
+            and _names(out[m.end() :], lexicon)  # a task after it ('… once it's there': which?)
+        ):
             out = out[: m.start()] + "then" + out[m.end() :]
     if " head " in low:
         h = _HEAD_TO42S.search(out)

@@ -97,8 +97,9 @@ def _and_takes43s(text: str, lexicon: Lexicon) -> str:
 # "zoe wants the ruler noah needs the glue": a thing of the scene, then straight on another
 # person of the scene and what they want: a comma between (each clause a want of its own).
 _WANTER43S = re.compile(
-    rf"(?<=[a-z]) (?P<who>{_P42S})(?:'s| (?:wants|needs|would like|would love|'d like|fancies|"
-    r"is after|is having|gets|could use|could do with|has asked for|asked for))\b",
+    rf"(?<=[a-z]) (?P<who>{_P42S})(?:'s (?:after|having|getting)| (?:wants|needs|would like|"
+    r"would love|'d like|fancies|is after|is having|gets|could use|could do with|has asked for|"
+    r"asked for))\b",
     _F,
 )
 
@@ -112,10 +113,8 @@ def _run_on_wants43s(text: str, lexicon: Lexicon) -> str:
             continue
         before = out[: m.start()]
         last = before.split()[-1] if before.split() else ""
-        if last.lower() in ("and", "or", "so", "but", "then", "to", "for", "give", "with"):
-            continue
-        if not _ids(" ".join(before.split()[-3:]), lexicon, "object"):
-            continue
+        if not _ids(last, lexicon, "object"):
+            continue  # the clause before ends with a thing of the scene
         if not _WANT_SAID41S.search(before) and not re.search(r"\bgets\b", before, _F):
             continue
         out = before + "," + out[m.start() :]
@@ -249,15 +248,21 @@ def _found_person43s(text: str, lexicon: Lexicon) -> str:
 
 
 # "… the magazine on the locker for Mr Lee he likes a read", "Lily needs her bib because she's a
-# mucky pup and Ava …", "…, she loves a puzzle": what the person named just before likes, or what
-# they are ('a …'), closing a request or before 'and' (with or without 'because' / 'as' /
-# 'since'): asks nothing (words naming nothing of the scene, no want): taken off, when the pronoun
-# may be that person and what is left reads.
+# mucky pup and Ava …", "…, she loves a puzzle", "…, he's a ditcher and starving", "…, he's
+# starving": what the person named just before likes, what they are ('a …', 'the …'; and a need
+# of theirs) or their need alone, closing a request or before 'and' (with or without 'because' /
+# 'as' / 'since'): asks nothing (words naming nothing of the scene, no want): taken off, when the
+# pronoun may be that person and what is left reads.
+_NEED43S = (
+    r"(?:(?:so|really|very|absolutely|proper|just) )?(?:starving|famished|ravenous|peckish|hungry|"
+    r"thirsty|parched|gasping)"
+)
 _LIKING43S = re.compile(
-    r"(?P<sep>\s*[,;]?\s+(?:(?:because|as|since|cos|'cause)\s+)?)(?P<pron>he|she)(?: (?:likes|"
-    r"loves|enjoys|adores|is fond of|'s fond of|never says no to)|(?:'s| is) (?:a|an|such a|a bit "
-    r"of a|a real|a right|a proper|a big|a great)) (?P<words>(?:(?:a|an|his|her|the|good) )?"
-    r"[a-z-]+(?: [a-z-]+){0,2}?)(?P<end>\s*[.!]*\s*$|(?=,?\s+and\s))",
+    r"(?P<sep>\s*[,;]?\s+(?:(?:because|as|since|cos|'cause)\s+)?)(?P<pron>he|she)(?:(?: (?:likes|"
+    r"loves|enjoys|adores|is fond of|'s fond of|never says no to)|(?:'s| is) (?:a|an|the|such a|a "
+    r"bit of a|a real|a right|a proper|a big|a great)) (?P<words>(?:(?:a|an|his|her|the|good) )?"
+    rf"[a-z-]+(?: [a-z-]+){{0,2}}?)(?: and {_NEED43S})?|(?:'s| is) {_NEED43S})"
+    r"(?P<end>\s*[.!]*\s*$|(?=,?\s+and\s))",
     _F,
 )
 
@@ -267,7 +272,7 @@ def _liking_remark43s(text: str, lexicon: Lexicon) -> str:
     if " he" not in text.lower() and " she" not in text.lower():
         return text
     for m in _LIKING43S.finditer(text):
-        if m.start() == 0 or not _remark_only42s(m["words"], lexicon):
+        if m.start() == 0 or not _remark_only42s(m["words"] or "", lexicon):
             continue
         before = text[: m.start()]
         people = [it for it in _names(before, lexicon) if any(r.kind == "human" for r in it.refs)]
@@ -423,6 +428,63 @@ def _in_with43s(text: str, lexicon: Lexicon) -> str:
         return text
     placed = [t for t in tasks(read) if t.kind == "place"]
     if len(placed) < 2 or any(t.target != sid for t in placed):
+        return text
+    return out
+
+
+# "Chips first. Person B's. After those, …", "The globe. Zoe's.", "Tape first. That's Tom's.": a
+# thing of the scene said alone (first, or not), then, as a sentence of its own, whose it is:
+# the thing to that person.
+_WHOSE43S = re.compile(
+    r"(?:^|(?<=[.;!?] ))(?P<x>(?:(?:the|that|this|those|these) )?[a-z]+(?: [a-z]+)?)(?P<first> "
+    r"first)?\s*[.;]\s+(?:(?:that's|that is|it's|it is|they're|they are|those are|that one's)\s+)?"
+    rf"(?P<who>{_P42S})'s\s*(?P<end>[.;!]|$)",
+    _F,
+)
+
+
+def _whose_after43s(text: str, lexicon: Lexicon) -> str:
+    """Session 43 (12s): the thing and whose it is above said as '<thing> to <person>', when the
+    thing is objects of the scene only, the person one of it, and what is left reads."""
+    m = _WHOSE43S.search(text)
+    if m is None or not _only_person(m["who"], lexicon):
+        return text
+    x = m["x"]
+    if not _ids(x, lexicon, "object") or _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
+        return text
+    said = f"{x} to {m['who']}{m['first'] or ''}{m['end'] or ''}"
+    out = text[: m.start()] + said + text[m.end() :]
+    read = _reading(out, lexicon)
+    if read is None or not any(t.target in _ids(m["who"], lexicon, "human") for t in tasks(read)):
+        return text
+    return out
+
+
+# "Dana's after a spoon, plus the green cup to go with it", "Give Zoe the glue and the ruler to go
+# with it": a second thing said to go with the first, both to one person: what it goes with is
+# what she gets already (whichever 'it' is), so the purpose is taken off.
+_GO_WITH_IT43S = re.compile(
+    r"(?P<sep>\s*,?\s+)to (?:go with|go alongside|go along with|have with|eat with|drink with|"
+    r"use with|match) (?:it|them|that|those|the first|the other)(?P<end>\s*(?:,\s*(?:please|"
+    r"thanks|ta|cheers))?\s*[.!]*)\s*$",
+    _F,
+)
+
+
+def _go_with_it43s(text: str, lexicon: Lexicon) -> str:
+    """Session 43 (12s): 'to go with it' after a second thing taken off, when what is left reads
+    as two or more things handed to one person only."""
+    m = _GO_WITH_IT43S.search(text)
+    if m is None or m.start() == 0:
+        return text
+    out = text[: m.start()] + m["end"].strip()
+    read = _reading(out, lexicon)
+    if read is None:
+        return text
+    done = list(tasks(read))
+    if len(done) < 2 or any(t.kind != "deliver" for t in done):
+        return text
+    if len({t.target for t in done}) != 1:
         return text
     return out
 
@@ -625,6 +687,8 @@ _STEPS43S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _placed_for43s,
     _opening_doer43s,
     _in_with43s,
+    _whose_after43s,
+    _go_with_it43s,
     _placed_aside43s,
     _height43s,
     _after_spell43s,
