@@ -435,6 +435,8 @@ test_once_holding_refused = ONCE.test(
         DEPOT,
     ),
     ("Give Mia the tape and put the scanner on the pallet when it's there", None, DEPOT),
+    # 'he' who holds it cannot be Mia, who was given it
+    ("give mia the tape and once he's holding it tom can have the scanner", None, DEPOT),
 )
 
 

@@ -412,8 +412,8 @@ _ONCE_THERE42S = re.compile(
     r"(?: (?:ones|one))?"
     # session 43 (12s): 'when they're down', 'once he's holding it', 'as soon as she has it'
     r"|(?:it's|its|it is|they're|theyre|they are) (?:down|in|on|away|in place|there)"
-    r"|(?:he|she)(?:'s| is) holding (?:it|them|that|those|both)|(?:he|she) has (?:it|them|that|"
-    r"those|both))(?!\s+(?:on|in|to|for|with|from|at)\b),?",
+    r"|(?P<holder>he|she)(?:'s| is) holding (?:it|them|that|those|both)|(?P<haver>he|she) has "
+    r"(?:it|them|that|those|both))(?!\s+(?:on|in|to|for|with|from|at)\b),?",
     _F,
 )
 # session 43 (12s): 'when' / 'as soon as' open the same clause (as 'once' does)
@@ -423,6 +423,16 @@ _HEAD_TO42S = re.compile(
     r"is to|'s to|are to) head (?:(?:over|across|off|on|back) )?to\b",
     _F,
 )
+
+
+def _holder_fits43s(before: str, pron: str | None, lexicon: Lexicon) -> bool:
+    """Session 43 (12s): whether the he / she who holds it ('once he's holding it') may be the
+    one person the task before hands something to (no pronoun: True)."""
+    if pron is None:
+        return True
+    read = _reading(re.sub(r"[\s,]*(?:\band|\bthen)?\s*$", "", before, flags=_F), lexicon)
+    given = {t.target for t in tasks(read) if t.kind == "deliver"} if read is not None else set()
+    return len(given) == 1 and _fit36(next(iter(given)), pron, lexicon)
 
 
 def _once_there42s(text: str, lexicon: Lexicon) -> str:
@@ -442,6 +452,7 @@ def _once_there42s(text: str, lexicon: Lexicon) -> str:
             and m.start() > 0
             and _names(out[: m.start()], lexicon)
             and _names(out[m.end() :], lexicon)  # a task after it ('… once it's there': which?)
+            and _holder_fits43s(out[: m.start()], m["holder"] or m["haver"], lexicon)
         ):
             out = out[: m.start()] + "then" + out[m.end() :]
     if " head " in low:
