@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites41, _rewrites42
+from hltl.grounding import _rewrites41, _rewrites42, _rewrites42s
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -72,7 +72,8 @@ test_elided_want = ELIDED.test(
 
 
 def test_elided_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    ELIDED.refused_without((_rewrites42._elided_want42,), monkeypatch)
+    # with 12s's session-42 rule of the same kind out too (both read these cases; session 43)
+    ELIDED.refused_without((_rewrites42._elided_want42, _rewrites42s._state_and42s), monkeypatch)
 
 
 # all morning long: how long it was asked for (session 11's words, _normalise1._WORDS)
@@ -312,6 +313,7 @@ def test_pronouns_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             _rewrites42._so_pronoun42,
             _rewrites42._that_is42,
             _rewrites41._said_tag41,
+            _rewrites42s._middle_state42s,
         ),
         monkeypatch,
     )
@@ -494,4 +496,8 @@ test_says_placed = SAID.test(
 
 
 def test_said_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    SAID.refused_without((_rewrites42._own_thing42, _rewrites42._says_placed42), monkeypatch)
+    # with 12s's session-42 rule of the same kind out too (both read these cases; session 43)
+    SAID.refused_without(
+        (_rewrites42._own_thing42, _rewrites42._says_placed42, _rewrites42s._lives_on42s),
+        monkeypatch,
+    )
