@@ -495,7 +495,8 @@ def _go_with_it43s(text: str, lexicon: Lexicon) -> str:
 # chips are his", "Omar's washing up so the sponge is his": what one person is or does (words
 # naming nothing of the scene, no want, no negation, nothing counted or pointed back at), then
 # 'so' + a clause whose one he / his / him / she / her may be them: their name said in its place,
-# the reason gone.
+# the reason gone. Only a clause that says who has what ('the bottle is his', 'she takes the
+# chips'): an order ('so give him …', 'so let her have …') is session 32's and 42's state rules'.
 _SO_REASON43S = re.compile(
     rf"(?:^|(?<=[,;.] )|(?<=\band ))(?:(?:poor|dear|little|old) )?(?P<who>{_P42S})"
     r"(?P<words>(?:'s|\s)[^.;:!?,]{2,60}?),?\s+so\s+(?P<clause>[^.;:!?,]+)",
@@ -514,6 +515,8 @@ def _so_reason43s(text: str, lexicon: Lexicon) -> str:
     named: set[str] = set()
     for _ in range(4):
         for m in _SO_REASON43S.finditer(out):
+            if _ORDER41S.search(m["clause"]) or re.match(r"\s*let\b", m["clause"], _F):
+                continue  # 'so give him …': session 32's and 42's state rules read orders
             if not _fits42s(m["who"], m["clause"], lexicon):
                 continue
             words = re.sub(r"^(?:'s|\s)\s*", "", m["words"])
@@ -526,7 +529,6 @@ def _so_reason43s(text: str, lexicon: Lexicon) -> str:
             who = m["who"]
             said = {"his": f"{who}'s", "hers": f"{who}'s"}.get(prons[0].lower(), who)
             clause = _PRON43S.sub(said, m["clause"], count=1)
-            clause = re.sub(r"^(?:let|make sure|see that)\s+", "", clause, flags=_F)
             if m.start() == 0:
                 clause = clause[:1].upper() + clause[1:]
             named |= _ids(who, lexicon, "human")
