@@ -265,13 +265,15 @@ test_liking_need = LIKING.test(
     # what they are and a need of theirs, or the need alone
     ("the tongs are marco's, he's a grill cook and starving", "tongs>A", KITCHEN),
     ("The tongs are Marco's, he's the night porter.", "tongs>A", KITCHEN),
-    ("The tnogs are Marco's, he's parched.", "tongs>A", KITCHEN),
+    ("The tnogs are Marco's, he's a grill cook.", "tongs>A", KITCHEN),
 )
 test_liking_refused = LIKING.test(
     # a pronoun that cannot be the person named before it; a thing of the scene in it
     ("Give Lena the knife and the ruler to Zoe he loves a slice", None, CLASSROOM),
     ("Give Lena the knife and the lemon to Marco, he loves the tongs", None, KITCHEN),
-    ("The tongs are Marco's, she's parched.", None, KITCHEN),
+    ("The tongs are Marco's, she's a grill cook.", None, KITCHEN),
+    # a need alone may ask for something to eat or drink: left to the older rules
+    ("Give Lena the knife and Zoe the lemon because she's hungry", None, KITCHEN),
     ("The tongs are Marco's, he's the salt.", None, KITCHEN),
 )
 

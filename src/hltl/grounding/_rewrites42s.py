@@ -410,8 +410,10 @@ _ONCE_THERE42S = re.compile(
     r"\bonce (?:(?:it's|its|it is|they're|theyre|they are|that's|thats|that is) (?:in|on|up|over|"
     r"down) there|(?P<pron>he|she)(?:'s| has|s) got (?:it|them|those|that|these|this|one|both)"
     r"(?: (?:ones|one))?"
-    # session 43 (12s): 'when they're down', 'once he's holding it', 'as soon as she has it'
-    r"|(?:it's|its|it is|they're|theyre|they are) (?:down|in|on|away|in place|there)"
+    # session 43 (12s): 'when they're down' (after placements), 'once he's holding it', 'as
+    # soon as she has it' (he / she the one given it)
+    r"|(?P<placed>it's|its|it is|they're|theyre|they are) (?:down|in|on|away|in place)(?=\s*,|\s+"
+    r"(?!(?:the|a|an|that|this|those|these|his|her|their|top|there|then)\b))"
     r"|(?P<holder>he|she)(?:'s| is) holding (?:it|them|that|those|both)|(?P<haver>he|she) has "
     r"(?:it|them|that|those|both))(?!\s+(?:on|in|to|for|with|from|at)\b),?",
     _F,
@@ -435,6 +437,13 @@ def _holder_fits43s(before: str, pron: str | None, lexicon: Lexicon) -> bool:
     return len(given) == 1 and _fit36(next(iter(given)), pron, lexicon)
 
 
+def _placed_before43s(before: str, lexicon: Lexicon) -> bool:
+    """Session 43 (12s): whether the task before 'when it's down' reads as placements only (a
+    thing handed over is nowhere to be 'down' or 'in': session 35's conditions at a place)."""
+    read = _reading(re.sub(r"[\s,]*(?:\band|\bthen)?\s*$", "", before, flags=_F), lexicon)
+    return read is not None and all(t.kind == "place" for t in tasks(read))
+
+
 def _once_there42s(text: str, lexicon: Lexicon) -> str:
     """Session 42 (12s): 'once it's in there' / 'once he's got those' after a task said as
     'then', and a thing that 'can head over to' a person as 'can go to' them, when what is left
@@ -453,6 +462,11 @@ def _once_there42s(text: str, lexicon: Lexicon) -> str:
             and _names(out[: m.start()], lexicon)
             and _names(out[m.end() :], lexicon)  # a task after it ('… once it's there': which?)
             and _holder_fits43s(out[: m.start()], m["holder"] or m["haver"], lexicon)
+            and (m["placed"] is None or _placed_before43s(out[: m.start()], lexicon))
+            and not (  # 'then, once he has them': which waits for which? (session 7's refusal)
+                (m["placed"] or m["holder"] or m["haver"])
+                and re.search(r"\bthen\W*$", out[: m.start()], _F)
+            )
         ):
             out = out[: m.start()] + "then" + out[m.end() :]
     if " head " in low:

@@ -64,7 +64,7 @@ def _person_typo43s(text: str, lexicon: Lexicon) -> str:
 # the glue": a person who 'takes' a thing with no place or person after it, in a clause after a
 # request, gets it (as `_elided` reads it opening a sentence).
 _AND_TAKES43S = re.compile(
-    rf"(?P<sep>(?:,\s*|\s+)and\s+|,\s+|;\s*)(?P<who>{_P42S})\s+(?P<modal>(?:can |will |should |"
+    rf"(?P<sep>(?:,\s*|\s+)and\s+)(?P<who>{_P42S})\s+(?P<modal>(?:can |will |should |"
     r"may |could )?)takes?\s+(?P<obj>(?:the|that|this|those|these|his|her|their) [a-z][a-z ]*?)"
     r"(?=\s*(?:[.,;!?]|$|\s+(?:and|please|too|as well)\b))",
     _F,
@@ -248,11 +248,11 @@ def _found_person43s(text: str, lexicon: Lexicon) -> str:
 
 
 # "… the magazine on the locker for Mr Lee he likes a read", "Lily needs her bib because she's a
-# mucky pup and Ava …", "…, she loves a puzzle", "…, he's a ditcher and starving", "…, he's
-# starving": what the person named just before likes, what they are ('a …', 'the …'; and a need
-# of theirs) or their need alone, closing a request or before 'and' (with or without 'because' /
-# 'as' / 'since'): asks nothing (words naming nothing of the scene, no want): taken off, when the
-# pronoun may be that person and what is left reads.
+# mucky pup and Ava …", "…, she loves a puzzle", "…, he's a ditcher and starving": what the person
+# named just before likes or what they are ('a …', 'the …'; and a need of theirs), closing a
+# request or before 'and' (with or without 'because' / 'as' / 'since'): asks nothing (words naming
+# nothing of the scene, no want): taken off, when the pronoun may be that person and what is left
+# reads. A need alone ("…, because she's hungry") may ask for food: left to the older rules.
 _NEED43S = (
     r"(?:(?:so|really|very|absolutely|proper|just) )?(?:starving|famished|ravenous|peckish|hungry|"
     r"thirsty|parched|gasping)"
@@ -261,7 +261,7 @@ _LIKING43S = re.compile(
     r"(?P<sep>\s*[,;]?\s+(?:(?:because|as|since|cos|'cause)\s+)?)(?P<pron>he|she)(?:(?: (?:likes|"
     r"loves|enjoys|adores|is fond of|'s fond of|never says no to)|(?:'s| is) (?:a|an|the|such a|a "
     r"bit of a|a real|a right|a proper|a big|a great)) (?P<words>(?:(?:a|an|his|her|the|good) )?"
-    rf"[a-z-]+(?: [a-z-]+){{0,2}}?)(?: and {_NEED43S})?|(?:'s| is) {_NEED43S})"
+    rf"[a-z-]+(?: [a-z-]+){{0,2}}?)(?: and {_NEED43S})?)"
     r"(?P<end>\s*[.!]*\s*$|(?=,?\s+and\s))",
     _F,
 )
@@ -281,7 +281,12 @@ def _liking_remark43s(text: str, lexicon: Lexicon) -> str:
         last = {r.id for r in people[-1].refs if r.kind == "human"}
         if len(last) != 1 or not _fit36(next(iter(last)), m["pron"], lexicon):
             continue
-        out = before + (m["end"] or "").strip() + text[m.end() :]
+        after = text[m.end() :]
+        if after.strip() and not _ids(
+            " ".join(re.split(r"\s+", after.strip())[1:4]), lexicon, "human"
+        ):
+            continue  # '… and needs it' says more of them (session 41's trades): 'and <person> …'
+        out = before + (m["end"] or "").strip() + after
         read = _reading(out, lexicon)
         if read is None:
             continue
@@ -325,7 +330,7 @@ def _one_for43s(text: str, lexicon: Lexicon) -> str:
 # else a thing is for ("… on the shelf for Bob and the apple for Carol": a handover?), nor when
 # the person gets something too.
 _PLACED_FOR43S = re.compile(
-    r"(?:^|(?<=[,;.] )|(?<=\band ))(?P<clause>(?:(?:put|place|set|leave|pop|stick|stand|lay) )?"
+    r"(?:(?<=[,;.] )|(?<=\band ))(?P<clause>"
     r"(?:the|that|this|those|these) [a-z]+(?: [a-z]+)? (?:on|onto|in|into|on top of|inside) (?:the|"
     rf"that) [a-z]+(?: [a-z]+)?) for (?P<who>{_P42S})(?=\s*(?:[.,;!?]|$))",
     _F,
@@ -503,6 +508,18 @@ _SO_REASON43S = re.compile(
     _F,
 )
 _PRON43S = re.compile(r"\b(?:he|she|his|her|hers|him)\b", _F)
+# a clause that says who has what: 'the bottle is his', 'she takes the chips' ('so she gets …':
+# session 41's middle remarks)
+_HAS43S = re.compile(
+    r"\s*(?:(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?(?:'s|'re| is| are) (?:his|hers)\b|"
+    r"(?:he|she) takes (?:the|that|this|those|these) )",
+    _F,
+)
+_LATER43S = re.compile(
+    r"\b(?:tomorrow|later|tonight|next|soon|this (?:afternoon|evening|morning)|after|before|"
+    r"when|until|till)\b",
+    _F,
+)
 
 
 def _so_reason43s(text: str, lexicon: Lexicon) -> str:
@@ -515,8 +532,8 @@ def _so_reason43s(text: str, lexicon: Lexicon) -> str:
     named: set[str] = set()
     for _ in range(4):
         for m in _SO_REASON43S.finditer(out):
-            if _ORDER41S.search(m["clause"]) or re.match(r"\s*let\b", m["clause"], _F):
-                continue  # 'so give him …': session 32's and 42's state rules read orders
+            if not _HAS43S.match(m["clause"]) or _LATER43S.search(m["words"]):
+                continue  # 'so give him …', 'so she needs …': the older state rules
             if not _fits42s(m["who"], m["clause"], lexicon):
                 continue
             words = re.sub(r"^(?:'s|\s)\s*", "", m["words"])
@@ -529,6 +546,8 @@ def _so_reason43s(text: str, lexicon: Lexicon) -> str:
             who = m["who"]
             said = {"his": f"{who}'s", "hers": f"{who}'s"}.get(prons[0].lower(), who)
             clause = _PRON43S.sub(said, m["clause"], count=1)
+            # 'Noah takes the ruler' after a clause is 'Noah gets the ruler' (takes it: gets it)
+            clause = re.sub(rf"^(\s*{re.escape(who)}) takes\b", r"\1 gets", clause, flags=_F)
             if m.start() == 0:
                 clause = clause[:1].upper() + clause[1:]
             named |= _ids(who, lexicon, "human")
@@ -607,13 +626,13 @@ def _height43s(text: str, lexicon: Lexicon) -> str:
 # the quarry, Mia could murder the tea", "Following a hard day in the fields, …": a spell of time
 # spent somewhere (naming nothing of the scene) before the want of one person: why they want it,
 # taken off (as session 37's 'after his <doing>'). Before an order ('After a long day, put …')
-# it says when: kept.
+# it says when: kept; without the place ("After his shift, …") it is session 37's event (when).
 _SPELL43S = re.compile(
     r"^(?:after|following) (?:a|an|the|his|her|their|that) (?:(?:long|hard|busy|whole|full|"
     r"tough|rough|gruelling|hot|cold|wet|late|early|heavy|endless|solid) ){0,2}(?:morning|day|"
     r"afternoon|evening|night|week|shift|stint|spell|stretch|session|hour|hours|weekend|"
-    r"fortnight|month|lesson|practice)(?P<place> (?:on|at|in|with|of|out|up|down|over|round|"
-    r"behind|under) [^.;:!?,]{1,40}?)?,\s*(?P<rest>\S.*)$",
+    r"fortnight|month|lesson|practice)(?P<place> (?:on|at|in|out|up|down|over|round|behind|"
+    r"under) [^.;:!?,]{1,40}?),\s*(?P<rest>\S.*)$",
     _F,
 )
 
