@@ -201,7 +201,6 @@ KNOWN_MISSES = frozenset(
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
         # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
         "Omar needs the sponge to clean up after the moth trap.",
-        "Bottle's hers, Person A's, she's the organ builder.",
         "Person A's having the cup and Person B the apple and the chips go to Person B too.",
         "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
         "crisps.",
@@ -218,13 +217,10 @@ KNOWN_MISSES = frozenset(
         "The bottle, that's Person A's. The chips, Person B has those, he called them after "
         "the dulcimer.",
         "Person A's down for the chips. Person B? The bottle, he said, after the hornpipe.",
-        "Chips first. Person B's. After those, Person A's bottle, she's the withy weaver.",
         "Sam can take whatever pen he likes so long as it isn't the red one, the etcher "
         "borrowed that.",
-        "The notebook goes to Priya, no hang on, it's Sam's, and Priya takes the stapler.",
         "Tablets across to Mr Lee, oh, silly me, Mrs Khan's the one they're prescribed for, "
         "the crumhorn lady.",
-        "the chips are person b's, he's a ditcher and starving",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
         "Omar's after a spoon to stir his tea. Could you get him one?",
         "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
@@ -242,54 +238,30 @@ KNOWN_MISSES = frozenset(
         'Er, sorry, hate to interrupt, but could the bottle make its way to Person A? Lovely '
         'stuff.',
         'Much obliged if Person B ended up with the chips.',
-        "Morning, Omar's the one the sponge is for, thanks a bunch.",
         'Sagrai, as Lezgian speakers put it, for taking the stapler over to Priya.',
         "With thanks, the drill to Kofi, he's just back from his mbira lesson.",
         "After a morning on the piling rig, Bob's gasping and the water bottle would save his "
         'life.',
         'Alice would sell her soul for the crisps right now.',
         "The bottle's what Bob has been angling for all morning.",
-        "Person A fancies the bottle now her qigong session's over.",
         'The chips would go down a treat with Person A.',
-        "Person B keeps glancing at the bottle; I reckon he'd love it, the poor lamb.",
         'If nobody else has claimed the bottle, Person A would gladly take it off your hands.',
         'Honestly, the chips are the thing Person B needs more than anything.',
-        "Where's Bob... ah, there. The bottle's his; he's waited long enough.",
         'Those crisps? Alice has been after them, so over to her they go.',
         "Person A's apple needs taking to her, and her bottle as well.",
         "The cup? That's Person B's. The apple? Person A's. Off they go to them.",
         "Person B's having the chips, and ditto the apple.",
         'Person B put his name down for the chips, so he gets them.',
-        "Dana's after a spoon, plus the green cup to go with it.",
         "The scissors are Zoe's to borrow, and Noah's having the glue.",
         "Put Lily's sippy cup on the high chair for her.",
-        "Shelf first, for the cup. After that, Bob's to get the red mug.",
-        'Person A needs her apple Person B wants the bottle and Person A would like chips as well',
-        'Person A has asked for the bottle. The chips are spoken for by Person B. Right, go.',
-        "Person B's bottle comes before anything else and once he's holding it Person A can "
-        'have the chips',
-        "Bowl in the sink. Spoon in with it. After that, Emma's banana.",
-        'The thermometer to Ruth and the magazine on the locker for Mr Lee he likes a read',
-        "Grandad needs the wipes and Lily needs her bib because she's a mucky pup and Ava "
-        'would like the teddy',
-        "Clear the drill and the screws onto the bench. When they're down, Kofi gets the torch.",
         "Set both of Lily's blocks up on her high chair.",
-        "shelf's the spot for the bottle, and alice is having the crisps",
-        'chips go across to person b and person a takes the cup',
-        "person b's drinking so the bottle is his, person a's snacking so she takes the chips",
-        "Stick the bottfle high up on the shelf where Bob's puppy can't chew it.",
-        'Plerson B keeps nagging about the cup, so let him have it.',
         "Persohn A left her bottle with you earlier; she'd like it returned.",
-        'Poor Person B skipped his dinner break, so the chipqs are his.',
-        "Pack the staopler away in the box, we're done with it.",
-        'Any chance of the crisps going up high on the shelf, out of sight of the grandkids?',
         'Any hope of Person A getting the chips before her newt survey?',
         'Could you spare a minute to hand Person B the apple?',
         'Would it be a pain to take Person A the cup?',
         'Does Person B want the chips? He does, so give them to him.',
         'Could you make sure Person A ends up with her bottle?',
         'Is it possible to get Omar both his banana and a bowl for it?',
-        "Grandad's changing Lily; can you pass him the baby wipes?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -119,12 +119,16 @@ def _state_and42s(text: str, lexicon: Lexicon) -> str:
 _INFERRED42S = re.compile(
     rf"^(?P<who>{_P42S})\s+(?:keeps|kept|has been|'s been|is|was)\s+(?:(?:pointing|gesturing|"
     r"nodding) (?:at|to|towards)|reaching (?:out )?for|eyeing(?: up)?|eying(?: up)?|looking at|"
-    r"staring at|gazing at|grabbing at|glancing at|asking about|going on about|on about)\s+"
-    r"(?P<obj>(?:the|that|those|this|these) [^,.;:!?]+?)\s*,?\s+(?:(?:and|so)\s+)?(?:(?:i|we)\s+"
-    r"(?:think|reckon|guess|suppose|bet|imagine|expect|'d say|would say)\s+|i'd say\s+|"
-    r"(?:pretty sure|probably|clearly|obviously|i'm guessing|im guessing)\s+)?(?P<pron>he|she)"
-    r"(?:'d|d| would)?\s+(?:like|love|want|wants|fancies|is after|'s after|needs)\s+(?:it|them|"
-    r"those|that|one)\b(?P<tail>.*)$",
+    r"staring at|gazing at|grabbing at|glancing at|asking about|going on about|on about|"
+    # session 43 (12s): asking again and again ('nagging about the cup, so let him have it')
+    r"nagging (?:me |us )?(?:about|for)|pestering (?:me |us )?(?:about|for)|banging on about|"
+    r"asking for|begging for|angling for|hinting at|hinting about)\s+"
+    r"(?P<obj>(?:the|that|those|this|these) [^,.;:!?]+?)\s*[,;]?\s+(?:(?:and|so)\s+)?(?:(?:i|we)"
+    r"\s+(?:think|reckon|guess|suppose|bet|imagine|expect|'d say|would say)\s+|i'd say\s+|"
+    r"(?:pretty sure|probably|clearly|obviously|i'm guessing|im guessing)\s+)?(?:(?P<pron>he|she)"
+    r"(?:'d|d| would)?\s+(?:like|love|want|wants|fancies|is after|'s after|needs)|let (?P<let>him|"
+    r"her) have|(?P<can>he|she) (?:can|may|should) have)\s+(?:it|them|those|that|one)\b"
+    r"(?P<tail>.*)$",
     _F,
 )
 
@@ -141,7 +145,7 @@ def _inferred42s(text: str, lexicon: Lexicon) -> str:
     """Session 42 (12s): the inferred want above said plainly, when the pronoun may be the
     person, the thing is objects of the scene only, and what is left reads."""
     m = _INFERRED42S.match(text)
-    if m is None or not _fits42s(m["who"], m["pron"], lexicon):
+    if m is None or not _fits42s(m["who"], m["pron"] or m["let"] or m["can"], lexicon):
         return text
     obj = m["obj"]
     if (
@@ -405,14 +409,39 @@ def _for_surface42s(text: str, lexicon: Lexicon) -> str:
 _ONCE_THERE42S = re.compile(
     r"\bonce (?:(?:it's|its|it is|they're|theyre|they are|that's|thats|that is) (?:in|on|up|over|"
     r"down) there|(?P<pron>he|she)(?:'s| has|s) got (?:it|them|those|that|these|this|one|both)"
-    r"(?: (?:ones|one))?),?",
+    r"(?: (?:ones|one))?"
+    # session 43 (12s): 'when they're down' (after placements), 'once he's holding it', 'as
+    # soon as she has it' (he / she the one given it)
+    r"|(?P<placed>it's|its|it is|they're|theyre|they are) (?:down|in|on|away|in place)(?=\s*,|\s+"
+    r"(?!(?:the|a|an|that|this|those|these|his|her|their|top|there|then)\b))"
+    r"|(?P<holder>he|she)(?:'s| is) holding (?:it|them|that|those|both)|(?P<haver>he|she) has "
+    r"(?:it|them|that|those|both))(?!\s+(?:on|in|to|for|with|from|at)\b),?",
     _F,
 )
+# session 43 (12s): 'when' / 'as soon as' open the same clause (as 'once' does)
+_WHEN_ONCE43S = re.compile(r"\b(?:when|as soon as)(?= (?:it|its|they|theyre|he|she)\b)", _F)
 _HEAD_TO42S = re.compile(
     r"(?P<x>(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?) (?P<modal>can|could|should|will|"
     r"is to|'s to|are to) head (?:(?:over|across|off|on|back) )?to\b",
     _F,
 )
+
+
+def _holder_fits43s(before: str, pron: str | None, lexicon: Lexicon) -> bool:
+    """Session 43 (12s): whether the he / she who holds it ('once he's holding it') may be the
+    one person the task before hands something to (no pronoun: True)."""
+    if pron is None:
+        return True
+    read = _reading(re.sub(r"[\s,]*(?:\band|\bthen)?\s*$", "", before, flags=_F), lexicon)
+    given = {t.target for t in tasks(read) if t.kind == "deliver"} if read is not None else set()
+    return len(given) == 1 and _fit36(next(iter(given)), pron, lexicon)
+
+
+def _placed_before43s(before: str, lexicon: Lexicon) -> bool:
+    """Session 43 (12s): whether the task before 'when it's down' reads as placements only (a
+    thing handed over is nowhere to be 'down' or 'in': session 35's conditions at a place)."""
+    read = _reading(re.sub(r"[\s,]*(?:\band|\bthen)?\s*$", "", before, flags=_F), lexicon)
+    return read is not None and all(t.kind == "place" for t in tasks(read))
 
 
 def _once_there42s(text: str, lexicon: Lexicon) -> str:
@@ -421,9 +450,24 @@ def _once_there42s(text: str, lexicon: Lexicon) -> str:
     reads."""
     low = text.lower()
     out = text
-    if "once " in low:
+    if "when " in low or "as soon as " in low:
+        said = _WHEN_ONCE43S.sub("once", out)
+        if _ONCE_THERE42S.search(said):
+            out = said
+    if "once " in out.lower():
         m = _ONCE_THERE42S.search(out)
-        if m is not None and m.start() > 0 and _names(out[: m.start()], lexicon):
+        if (
+            m is not None
+            and m.start() > 0
+            and _names(out[: m.start()], lexicon)
+            and _names(out[m.end() :], lexicon)  # a task after it ('… once it's there': which?)
+            and _holder_fits43s(out[: m.start()], m["holder"] or m["haver"], lexicon)
+            and (m["placed"] is None or _placed_before43s(out[: m.start()], lexicon))
+            and not (  # 'then, once he has them': which waits for which? (session 7's refusal)
+                (m["placed"] or m["holder"] or m["haver"])
+                and re.search(r"\bthen\W*$", out[: m.start()], _F)
+            )
+        ):
             out = out[: m.start()] + "then" + out[m.end() :]
     if " head " in low:
         h = _HEAD_TO42S.search(out)

@@ -209,6 +209,11 @@ for _lemma, _forms in {
     "stand": ("stands", "standing"),  # not "stood", "sat": "we've been stood here for ages"
     "hang": ("hangs", "hanging", "hung"),
     "sit": ("sits", "sitting"),
+    # session 43 (12s): putting things away or out of the way onto a place ("pack the stapler
+    # away in the box", "clear the drill and the screws onto the bench"); not 'packing' ('packing
+    # tape'), 'packed' or 'cleared' (said of a state: "the box is packed")
+    "pack": ("packs",),
+    "clear": ("clears",),
 }.items():
     _verb(_lemma, "put", *_forms)
 # session 40 (12): 'drop' is a placing verb in its other forms ("dropping the spoon in the
