@@ -2,21 +2,23 @@
 
 from __future__ import annotations
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.lexicon import Lexicon, person_name
 
-# -- session 43 (lead): another person's thing handed to the person the clause names -----------
+# -- session 43 (lead): another person's thing named beside the one who gets it -------------------
 #
 # 12c's `said` fuzz: "Carol gets Bob's crisps." read `chips>B`: the grammar takes "'s" for 'is'
 # and the last person before the object as the one it goes to, so the owner took the subject's
-# place ("Carol can have Bob's crisps", "Could Carol have Bob's cup?", "Carol can borrow Bob's
-# cup" the same). The clause says who gets it (the subject of a want or possession verb, or the
-# person after a handing verb); the owner only says which thing: "Q's X" is said "the X", which
-# the scene must still single out (two bags of crisps stay refused). The owner and the one who
-# gets it must be two people of the scene; "Bob wants Bob's crisps" and pronouns are left as said.
-# The grammar reads the first form without a refusal, so this runs before the first read
-# (offline._parse, with the other canonical rewrites), not among the normaliser's steps.
+# place ("Could Carol have Bob's cup?", "Carol can borrow Bob's cup", "Let Carol have Bob's apple"
+# the same). Since session 7 a person's possessive names whom the thing is for ("Do Carol's bottle
+# first and then Bob's chips": `bottle>C ; chips>B`) and "Give Bob Carol's bottle" is refused
+# (whose it is is not who gets it); the subject's form is the same clash, so it is refused naming
+# both people: the clause's person (the thing being the owner's) or the owner (their order). P and
+# Q must be two people of the scene and X a scene object; "Bob wants Bob's crisps" and pronouns are
+# left as said. The grammar reads the first form without a refusal, so this is asked before the
+# first read (offline._parse, with the canonical rewrites), not among the normaliser's steps.
 _WHO43L = r"(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
 _MODAL43L = r"(?:can|could|may|might|should|shall|will|would|must|'d|'ll|’d|’ll)"
 _OWNED_OTHER43L = re.compiled(
@@ -29,19 +31,23 @@ _OWNED_OTHER43L = re.compiled(
 )
 
 
-def owned_other43l(text: str, lexicon: Lexicon) -> str:
-    """Session 43: "P <gets/wants/can have …> Q's X" and "<give …> P Q's X" → "… the X" (above)."""
+def owned_other43l(text: str, lexicon: Lexicon) -> None:
+    """Session 43: "P <gets/wants/can have …> Q's X" and "<give …> P Q's X" refused naming P and Q
+    (above)."""
     if "'s" not in text and "’s" not in text:
-        return text
-    for m in list(_OWNED_OTHER43L.finditer(text))[::-1]:
-        who = m["p"] or m["p2"]
-        owner = m["q"]
+        return
+    for m in _OWNED_OTHER43L.finditer(text):
+        who, owner = m["p"] or m["p2"], m["q"]
         if not _only_person(who, lexicon) or not _only_person(owner, lexicon):
             continue
-        if _ids(who, lexicon) == _ids(owner, lexicon):
+        p, q = sorted(_ids(who, lexicon)), sorted(_ids(owner, lexicon))
+        if p == q:
             continue
         first = m["x"].split()[0]
         if not (_objects_only(m["x"], lexicon) or _objects_only(first, lexicon)):
             continue
-        text = text[: m.start("q")] + "the " + text[m.start("x") :]
-    return text
+        raise GroundingError(
+            f"\"{owner}'s {m['x']}\" beside {who!r}: whose it is does not say who gets it; it "
+            f"could go to {person_name(p[0], lexicon)} or to {person_name(q[0], lexicon)}: say "
+            "who gets it"
+        )

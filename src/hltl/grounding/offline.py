@@ -619,7 +619,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             object_repairs33l(subject_repairs33l(repairs32l(text, lexicon), lexicon), lexicon),
             lexicon,
         )
-        text = _rewrites43l.owned_other43l(text, lexicon)
+        _rewrites43l.owned_other43l(text, lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
