@@ -58,3 +58,23 @@ def test_owner_beside_another_read_without(
 )
 def test_owner_kept(text: str, want: str | None, scene: Scene) -> None:
     assert_case(text, want, scene)
+
+
+# -- a correction to a place said as a reason ('…, sorry, it's meant to go on the shelf, thanks.'):
+# 12c's fuzz found the first handover read with anything after it (`_cue_reason28r` and
+# `_cue_reason29r` took the place for a reason); a scene place in the 'reason' keeps it now
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Cup over to Bob, sorry, it's meant to go on the shelf, thanks.", CELL),
+        ("Give Carol the cup, sorry, it's meant to go on the shelf, thanks.", CELL),
+        ("Hammer over to Kofi, sorry, it's meant to go in the locker, thanks.", WORKSHOP),
+        ("Give Jess the torch, sorry, it's meant to go in the locker, cheers.", WORKSHOP),
+    ],
+)
+def test_place_in_a_correction_is_no_reason(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_a_reason_without_a_place_still_comes_off() -> None:
+    assert_case("Give the bottle to Bob, no wait, Bob's got one, to Alice", "bottle>A", CELL)
