@@ -755,6 +755,16 @@ _PRONOUN28R = re.compile(r"\b(?:he|she|him|her|they|them|his|their)\b", _F)
 _IT_IS_WHO31 = re.compile(r"(?:it|that)(?:'s| is| was) ", _F)
 
 
+# a 'reason' that says where the thing goes ("it's meant to go on the shelf", "it belongs in the
+# locker", "that lives on the rack"): a correction to a place, not a reason (session 43, lead)
+_PLACED_WHY43L = re.compile(
+    r"\b(?:(?:meant|supposed|has|needs|ought|got) to (?:go|be|live|sit|stay)|should (?:go|be|"
+    r"live|sit|stay)|goes|belongs|lives|sits|stays|go|belong)\b(?: back)?(?: up| down| away)?"
+    r"\s+(?:on|in|onto|into|on top of|under)\b",
+    _F,
+)
+
+
 def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
     """Session 28 (12r): a reason stated between a correction's cue and the corrected words
     ("Give the bottle to Bob, no wait, Bob's got one, to Alice") says why, and is taken off, so
@@ -770,6 +780,8 @@ def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
         return text
+    if _PLACED_WHY43L.search(why) and _ids(why, lexicon, "surface"):
+        return text  # where the thing goes, not a reason (session 43, as _cue_reason29r)
     if (re.search(r"\bfor\b", why, _F) or _IT_IS_WHO31.match(why)) and _ids(why, lexicon, "human"):
         # "…. Sorry, my mistake, it's for Tom, no wait, the gloves": whom it is for is the
         # correction itself, no reason (session 30, engineer 12: the wrappers fuzz had read the
@@ -2805,6 +2817,10 @@ def _cue_reason29r(text: str, lexicon: Lexicon) -> str:
     if not _STATEMENT28R.fullmatch(why) or _NOT_REASON28R.search(why):
         return text
     if _ids(why, lexicon, "object") or _PRONOUN28R.search(after):
+        return text
+    if _PLACED_WHY43L.search(why) and _ids(why, lexicon, "surface"):
+        # session 43 (lead, 12c's fuzz): "Cup over to Bob, sorry, it's meant to go on the shelf,
+        # thanks." — a 'reason' saying the thing goes on a place of the scene is the correction
         return text
     people = _ids(why, lexicon, "human")
     if people and (len(people) != 1 or people != _ids(after, lexicon, "human")):

@@ -24,6 +24,7 @@ from hltl.grounding import (
     _rewrites42r,
     _rewrites42s,
     _rewrites43,
+    _rewrites43l,
     _rewrites43r,
     _rewrites43s,
 )
@@ -618,6 +619,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             object_repairs33l(subject_repairs33l(repairs32l(text, lexicon), lexicon), lexicon),
             lexicon,
         )
+        _rewrites43l.owned_other43l(text, lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
