@@ -22,6 +22,8 @@ OWNER_OTHER = [
     ("Sam can borrow Priya's stapler.", OFFICE, ("Person B", "Person A")),
     ("Priya needs Sam's notebook.", OFFICE, ("Person A", "Person B")),
     ("Kofi can borrow Jess's hammer.", WORKSHOP, ("Person A", "Person B")),
+    # the thing in three words (12c's final sweep: "… Kofi's tin of screws" read for Kofi)
+    ("Jess can borrow Kofi's tin of screws.", WORKSHOP, ("Person B", "Person A")),
     ("Priya would like Sam's notebok.", OFFICE, ("Person A", "Person B")),
 ]
 # refused by the grammar too (two people in one clause), now with both named

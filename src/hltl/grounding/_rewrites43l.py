@@ -26,7 +26,8 @@ _OWNED_OTHER43L = re.compiled(
     r"(?:have|get|gets|take|takes|want|wants|need|needs|like|likes|borrow|borrows|receive|"
     r"receives|'d like|’d like)"
     rf"|\b(?:give|hand|pass|bring|fetch|get|take|lend|send)\s+(?P<p2>{_WHO43L}))"
-    rf"\s+(?P<q>{_WHO43L})(?:'s|’s)\s+(?P<x>[a-z]+(?:\s+[a-z]+)?)",
+    rf"\s+(?P<q>{_WHO43L})(?:'s|’s)\s+(?P<x>[a-z]+(?:\s+(?!(?:and|or|nor|but|to|for|with|"
+    r"from|please|then|too|as|if)\b)[a-z]+){0,2})",
     _F,
 )
 
@@ -43,11 +44,20 @@ def owned_other43l(text: str, lexicon: Lexicon) -> None:
         p, q = sorted(_ids(who, lexicon)), sorted(_ids(owner, lexicon))
         if p == q:
             continue
-        first = m["x"].split()[0]
-        if not (_objects_only(m["x"], lexicon) or _objects_only(first, lexicon)):
+        words = m["x"].split()
+        # the thing in one to three words ("cup", "red mug", "tin of screws")
+        thing = next(
+            (
+                " ".join(words[:n])
+                for n in range(len(words), 0, -1)
+                if _objects_only(" ".join(words[:n]), lexicon)
+            ),
+            None,
+        )
+        if thing is None:
             continue
         raise GroundingError(
-            f"\"{owner}'s {m['x']}\" beside {who!r}: whose it is does not say who gets it; it "
+            f'"{owner}\'s {thing}" beside {who!r}: whose it is does not say who gets it; it '
             f"could go to {person_name(p[0], lexicon)} or to {person_name(q[0], lexicon)}: say "
             "who gets it"
         )

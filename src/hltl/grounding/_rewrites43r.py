@@ -17,7 +17,7 @@ from hltl.grounding._rewrites42r import (
     _person42r,
     _thing42r,
 )
-from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, person_name
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, _one_edit, person_name
 from hltl.grounding.tree import Node, tasks
 
 # the separator before or after a spoken aside ("...", ",", ";", "—")
@@ -1174,22 +1174,6 @@ _CUE_WORDS43R = ("actually", "instead")
 _NOT_CUE_TYPOS43R = frozenset({"factually", "actual"})
 
 
-def _one_edit43r(a: str, b: str) -> bool:
-    """Whether ``a`` is one insertion, deletion, substitution or swap of neighbours from ``b``."""
-    if a == b or abs(len(a) - len(b)) > 1:
-        return False
-    if len(a) == len(b):
-        diff = [k for k in range(len(a)) if a[k] != b[k]]
-        return len(diff) == 1 or (
-            len(diff) == 2
-            and diff[1] == diff[0] + 1
-            and a[diff[0]] == b[diff[1]]
-            and a[diff[1]] == b[diff[0]]
-        )
-    short, long = (a, b) if len(a) < len(b) else (b, a)
-    return any(long[:k] + long[k + 1 :] == short for k in range(len(long)))
-
-
 def _cue_typo43r(text: str, lexicon: Lexicon) -> str:
     """Session 43 (12r): a correction word with a one-edit typo ("the magazine actulaly",
     "insted"): the word, so that what it corrects is read as a correction (12c's session-42
@@ -1201,7 +1185,7 @@ def _cue_typo43r(text: str, lexicon: Lexicon) -> str:
         if word.lower() in _NOT_CUE_TYPOS43R:
             return word
         for cue in _CUE_WORDS43R:
-            if _one_edit43r(word.lower(), cue):
+            if _one_edit(word.lower(), cue):
                 return cue
         return word
 
