@@ -5,6 +5,7 @@ from __future__ import annotations
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person
+from hltl.grounding._rewrites42r import _WHO42R
 from hltl.grounding.lexicon import Lexicon, person_name
 
 # -- session 43 (lead): another person's thing named beside the one who gets it -------------------
@@ -19,14 +20,13 @@ from hltl.grounding.lexicon import Lexicon, person_name
 # Q must be two people of the scene and X a scene object; "Bob wants Bob's crisps" and pronouns are
 # left as said. The grammar reads the first form without a refusal, so this is asked before the
 # first read (offline._parse, with the canonical rewrites), not among the normaliser's steps.
-_WHO43L = r"(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
 _MODAL43L = r"(?:can|could|may|might|should|shall|will|would|must|'d|'ll|’d|’ll)"
 _OWNED_OTHER43L = re.compiled(
-    rf"(?:\b(?P<p>{_WHO43L})(?:\s+{_MODAL43L})?(?:\s+(?:also|just|really|then|now))?\s+"
+    rf"(?:\b(?P<p>{_WHO42R})(?:\s+{_MODAL43L})?(?:\s+(?:also|just|really|then|now))?\s+"
     r"(?:have|get|gets|take|takes|want|wants|need|needs|like|likes|borrow|borrows|receive|"
     r"receives|'d like|’d like)"
-    rf"|\b(?:give|hand|pass|bring|fetch|get|take|lend|send)\s+(?P<p2>{_WHO43L}))"
-    rf"\s+(?P<q>{_WHO43L})(?:'s|’s)\s+(?P<x>[a-z]+(?:\s+(?!(?:and|or|nor|but|to|for|with|"
+    rf"|\b(?:give|hand|pass|bring|fetch|get|take|lend|send)\s+(?P<p2>{_WHO42R}))"
+    rf"\s+(?P<q>{_WHO42R})(?:'s|’s)\s+(?P<x>[a-z]+(?:\s+(?!(?:and|or|nor|but|to|for|with|"
     r"from|please|then|too|as|if)\b)[a-z]+){0,2})",
     _F,
 )
