@@ -2371,6 +2371,24 @@ def first_name_sex36s(pid: str, lexicon: Lexicon) -> str | None:
     return next(iter(sexes)) if len(sexes) == 1 else None
 
 
+# session 44 (lead): the paraphrase corpus's convention for the paper's generic labels (every
+# part's header since blind18: "in the generic scenes Person A is 'she' and Person B 'he'")
+_GENERIC_SEX44L = {"person a": "f", "person b": "m"}
+
+
+def unnamed_sex44l(pid: str, lexicon: Lexicon) -> str | None:
+    """Session 44 (lead): 'm' or 'f' when the scene says person ``pid``'s sex by a title, a word
+    of kin, a first name of one sex, or the corpus's convention for 'Person A' / 'Person B', and
+    no two of these disagree; used only to rule the one person of a scene out for a he / she the
+    instruction names no one for ("Once you've got the bottle, hand it to him." with Person A
+    alone, blind42; "Give him the bottle." with Alice alone)."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    sexes = {said_sex35s(pid, lexicon), first_name_sex36s(pid, lexicon)}
+    sexes |= {_GENERIC_SEX44L.get(a.lower()) for a in (human.name, *human.aliases)}
+    sexes.discard(None)
+    return next(iter(sexes)) if len(sexes) == 1 else None
+
+
 def said_sex35s(pid: str, lexicon: Lexicon) -> str | None:
     """Session 35 (12s): 'm' or 'f' when the scene names person ``pid`` with a title or a word
     of kin ('Mr Lee', 'Grandad'); what resolving a he / she / him / her as a person of the

@@ -25,6 +25,7 @@ from hltl.grounding.lexicon import (
     said_sex35s,
     sex_said_by35s,
     title_sex,
+    unnamed_sex44l,
 )
 
 _END = frozenset({".", ";", "!", "?", ":"})
@@ -3264,8 +3265,19 @@ def _sole_person32s(
     ("Take the bottle to Oerson A, she's …", "Tell Bob she can have it"): the pronoun may be
     that person, and the refusal says so."""
     humans = lexicon.scene.humans
-    if len(humans) != 1 or title_sex(humans[0].id, lexicon) not in (None, sex):
+    if len(humans) != 1 or (sex is None and title_sex(humans[0].id, lexicon) is not None):
         return []
+    said_sex = {title_sex(humans[0].id, lexicon), unnamed_sex44l(humans[0].id, lexicon)} - {None}
+    if sex is not None and said_sex and sex not in said_sex:
+        # session 44 (lead): nor when a first name, a word of kin or the corpus's convention for
+        # 'Person A' ('she') / 'Person B' ('he') rules it out: "Once you've got the bottle, hand
+        # it to him." with Person A alone had read bottle>A (blind42's one wrong reading); the
+        # refusal says why (a title's had said "it could mean Mr Lee")
+        said = "she" if sex == "m" else "he"
+        raise GroundingError(
+            f"{pronoun.text!r} is not resolved: no one is named for it, and the scene's one "
+            f"person, {_or([humans[0].id], lexicon)}, is a {said}; name the person"
+        )
     for k, it in enumerate(items):
         if it.kind != "unknown":
             continue
