@@ -1370,6 +1370,9 @@ class Lexicon:
         # function of the text and this lexicon's names, so what is kept stays right; emptied
         # when it holds _LEXED_KEPT texts
         self._lexed: dict[str, tuple[Item, ...]] = {}
+        # the scene's names each text lexed names (the normaliser's _names), kept and emptied as
+        # the texts lexed are (session 44, 12b: the rules ask it of the same words many times)
+        self.named: dict[str, tuple[Item, ...]] = {}
         # the grammar's reading (a tree, or the refusal) of each text read for this instruction
         self.readings: dict[str, object] = {}
         # the normaliser's rewrite of each text (or its refusal), by rewrite, for this instruction
@@ -1509,6 +1512,8 @@ class Lexicon:
         instruction starts), and the texts lexed once they are many."""
         if len(self._lexed) > _LEXED_KEPT:
             self._lexed.clear()
+        if len(self.named) > _LEXED_KEPT:
+            self.named.clear()
         if len(self._matches) > _LEXED_KEPT:
             self._matches.clear()
         self.readings.clear()
