@@ -1,5 +1,6 @@
 """Session 44 (12b): _people's patterns built once per lexicon and skipped where the text lacks
-the name, and _fillers19's cheap tests first, give what the work they replace gave."""
+the name, _fillers19's cheap tests first, _names kept per text, and phrasing passes run only
+where their word is said, give what the work they replace gave."""
 
 from __future__ import annotations
 
@@ -11,8 +12,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import CORPUS_DIR, load_corpus
-from hltl.grounding import _normalise1
-from hltl.grounding.lexicon import Lexicon
+from hltl.errors import GroundingError
+from hltl.grounding import _normalise1, phrasing
+from hltl.grounding.lexicon import Lexicon, lex
 from tests.grounding.helpers import ROOT
 
 # tuning parts only (a held-back part is never read by a test)
@@ -121,3 +123,29 @@ def test_names_kept_per_text_are_what_lexing_names() -> None:
             assert again == first and again is not first  # a list of its own each time
             again.clear()
             assert _normalise1._names(said, lexicon) == first
+
+
+def test_gated_passes_give_what_the_passes_give_at_every_step() -> None:
+    gated = [step for step in phrasing._PASSES if hasattr(step, "__wrapped__")]
+    assert len(gated) >= 8
+    skipped = 0
+    for text, lexicon in _ENTRIES:
+        try:
+            items = lex(text, lexicon)
+        except GroundingError:
+            continue
+        for step in phrasing._PASSES:
+            plain = getattr(step, "__wrapped__", step)
+            outcomes: list[object] = []
+            for run in (plain, step):
+                try:
+                    outcomes.append(run(list(items), lexicon))
+                except GroundingError as exc:
+                    outcomes.append(f"refused: {exc}")
+            assert outcomes[0] == outcomes[1], (text, plain)
+            if plain is not step and step(items, lexicon) is items:
+                skipped += 1
+            if isinstance(outcomes[0], str):
+                break
+            items = outcomes[0]  # type: ignore[assignment]
+    assert skipped > 1000  # the gates do skip
