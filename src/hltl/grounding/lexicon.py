@@ -1370,6 +1370,9 @@ class Lexicon:
         # function of the text and this lexicon's names, so what is kept stays right; emptied
         # when it holds _LEXED_KEPT texts
         self._lexed: dict[str, tuple[Item, ...]] = {}
+        # the scene's names each text lexed names (the normaliser's _names), kept and emptied as
+        # the texts lexed are (session 44, 12b: the rules ask it of the same words many times)
+        self.named: dict[str, tuple[Item, ...]] = {}
         # the grammar's reading (a tree, or the refusal) of each text read for this instruction
         self.readings: dict[str, object] = {}
         # the normaliser's rewrite of each text (or its refusal), by rewrite, for this instruction
@@ -1509,6 +1512,8 @@ class Lexicon:
         instruction starts), and the texts lexed once they are many."""
         if len(self._lexed) > _LEXED_KEPT:
             self._lexed.clear()
+        if len(self.named) > _LEXED_KEPT:
+            self.named.clear()
         if len(self._matches) > _LEXED_KEPT:
             self._matches.clear()
         self.readings.clear()
@@ -2367,6 +2372,24 @@ def first_name_sex36s(pid: str, lexicon: Lexicon) -> str | None:
     person out."""
     human = next(h for h in lexicon.scene.humans if h.id == pid)
     sexes = {name_sexes().get(a.lower()) for a in (human.name, *human.aliases) if " " not in a}
+    sexes.discard(None)
+    return next(iter(sexes)) if len(sexes) == 1 else None
+
+
+# session 44 (lead): the paraphrase corpus's convention for the paper's generic labels (every
+# part's header since blind18: "in the generic scenes Person A is 'she' and Person B 'he'")
+_GENERIC_SEX44L = {"person a": "f", "person b": "m"}
+
+
+def unnamed_sex44l(pid: str, lexicon: Lexicon) -> str | None:
+    """Session 44 (lead): 'm' or 'f' when the scene says person ``pid``'s sex by a title, a word
+    of kin, a first name of one sex, or the corpus's convention for 'Person A' / 'Person B', and
+    no two of these disagree; used only to rule the one person of a scene out for a he / she the
+    instruction names no one for ("Once you've got the bottle, hand it to him." with Person A
+    alone, blind42; "Give him the bottle." with Alice alone)."""
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    sexes = {said_sex35s(pid, lexicon), first_name_sex36s(pid, lexicon)}
+    sexes |= {_GENERIC_SEX44L.get(a.lower()) for a in (human.name, *human.aliases)}
     sexes.discard(None)
     return next(iter(sexes)) if len(sexes) == 1 else None
 

@@ -540,6 +540,9 @@ from hltl.grounding._rewrites42s import _STEPS42S, _STEPS42S_FIRST
 from hltl.grounding._rewrites43 import _STEPS43, _STEPS43_FIRST
 from hltl.grounding._rewrites43r import _STEPS43R, _STEPS43R_FIRST
 from hltl.grounding._rewrites43s import _STEPS43S, _STEPS43S_FIRST
+from hltl.grounding._rewrites44 import _STEPS44, _STEPS44_FIRST
+from hltl.grounding._rewrites44r import _STEPS44R, _STEPS44R_FIRST
+from hltl.grounding._rewrites44s import _STEPS44S, _STEPS44S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -862,6 +865,10 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S_FIRST,
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
+    # session 44 (12s, 12r, 12)
+    *_STEPS44S_FIRST,
+    *_STEPS44R_FIRST,
+    *_STEPS44_FIRST,
     # session 43 (12s, 12r, 12)
     *_STEPS43S_FIRST,
     *_STEPS43R_FIRST,
@@ -890,6 +897,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS33T,
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
+    # session 44 (12r)
+    *_STEPS44R,
     # session 43 (12r)
     *_STEPS43R,
     # session 42 (12r)
@@ -926,6 +935,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     *_STEPS37S,
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
+    # session 44 (12s)
+    *_STEPS44S,
     # session 43 (12s)
     *_STEPS43S,
     # session 42 (12s)
@@ -1009,6 +1020,8 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     _since28,
     # session 38 (12): blind36's kinds
     *_STEPS38,
+    # session 44 (12)
+    *_STEPS44,
     # session 43 (12)
     *_STEPS43,
     # session 42 (12)

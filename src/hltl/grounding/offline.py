@@ -27,6 +27,9 @@ from hltl.grounding import (
     _rewrites43l,
     _rewrites43r,
     _rewrites43s,
+    _rewrites44,
+    _rewrites44r,
+    _rewrites44s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -103,6 +106,9 @@ _REFUSALS = (
     *_rewrites43.REFUSE43,
     *_rewrites43r.REFUSE43R,
     *_rewrites43s.REFUSE43S,
+    *_rewrites44.REFUSE44,
+    *_rewrites44r.REFUSE44R,
+    *_rewrites44s.REFUSE44S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -119,6 +125,9 @@ _CHECKS = (
     *_rewrites43.CHECK43,
     *_rewrites43r.CHECK43R,
     *_rewrites43s.CHECK43S,
+    *_rewrites44.CHECK44,
+    *_rewrites44r.CHECK44R,
+    *_rewrites44s.CHECK44S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})

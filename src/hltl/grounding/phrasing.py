@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from collections.abc import Callable, Sequence
@@ -25,6 +26,7 @@ from hltl.grounding.lexicon import (
     said_sex35s,
     sex_said_by35s,
     title_sex,
+    unnamed_sex44l,
 )
 
 _END = frozenset({".", ";", "!", "?", ":"})
@@ -73,6 +75,25 @@ def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
 def _plain(step: Callable[[list[Item]], list[Item]]) -> Callable[[list[Item], Lexicon], list[Item]]:
     """A pass that does not need the scene's names, as one of _PASSES."""
     return lambda items, _lexicon: step(items)
+
+
+_Pass = Callable[[list[Item], Lexicon], list[Item]]
+
+
+def _only_with(needs: Callable[[Item], bool], step: _Pass) -> _Pass:
+    """``step`` run only where some item passes ``needs`` (session 44, 12b: most passes look for
+    a word most instructions lack, and walked every item to find it). ``needs`` must hold of an
+    item wherever ``step`` would change the items or refuse: where no item passes it, the items
+    go on as they are (``__wrapped__`` is the pass itself)."""
+
+    @functools.wraps(step)
+    def gated(items: list[Item], lexicon: Lexicon) -> list[Item]:
+        for it in items:
+            if needs(it):
+                return step(items, lexicon)
+        return items
+
+    return gated
 
 
 # the last items split into sentences and their spans, replaced as one tuple (threads may ground
@@ -3264,8 +3285,19 @@ def _sole_person32s(
     ("Take the bottle to Oerson A, she's …", "Tell Bob she can have it"): the pronoun may be
     that person, and the refusal says so."""
     humans = lexicon.scene.humans
-    if len(humans) != 1 or title_sex(humans[0].id, lexicon) not in (None, sex):
+    if len(humans) != 1 or (sex is None and title_sex(humans[0].id, lexicon) is not None):
         return []
+    said_sex = {title_sex(humans[0].id, lexicon), unnamed_sex44l(humans[0].id, lexicon)} - {None}
+    if sex is not None and said_sex and sex not in said_sex:
+        # session 44 (lead): nor when a first name, a word of kin or the corpus's convention for
+        # 'Person A' ('she') / 'Person B' ('he') rules it out: "Once you've got the bottle, hand
+        # it to him." with Person A alone had read bottle>A (blind42's one wrong reading); the
+        # refusal says why (a title's had said "it could mean Mr Lee")
+        said = "she" if sex == "m" else "he"
+        raise GroundingError(
+            f"{pronoun.text!r} is not resolved: no one is named for it, and the scene's one "
+            f"person, {_or([humans[0].id], lexicon)}, is a {said}; name the person"
+        )
     for k, it in enumerate(items):
         if it.kind != "unknown":
             continue
@@ -5960,21 +5992,21 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_definite_ones35l),
     _plain(_two_names29),
     _plain(_for_me_alone),
-    _plain(_any_described),
-    _plain(_described_then_corrected),
+    _only_with(lambda it: _is(it, "q:some"), _plain(_any_described)),
+    _only_with(lambda it: _is(it, *_MEASURES), _plain(_described_then_corrected)),
     _plain(_choice_restated),
     _plain(_any_order),
     _plain(_closing_also),
     _people_named,
     _plain(_restated),
     _plain(_notes),
-    _plain(_surface_notes),
-    _plain(_in_between),
-    _plain(_last_opening),
+    _only_with(_is_surface, _plain(_surface_notes)),
+    _only_with(lambda it: _is(it, "between"), _plain(_in_between)),
+    _only_with(lambda it: _is(it, "last"), _plain(_last_opening)),
     _plain(_wanted_done),
     _wanted_on,
     _purpose,
-    _plain(_bare_notes),
+    _only_with(_humans, _plain(_bare_notes)),  # a note needs two people
     _plain(_floating_all),
     _plain(_listed_subjects),
     _plain(_ellipsis),
@@ -5983,7 +6015,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_run_ons),
     _plain(_let),
     _plain(_both_people),
-    _plain(_sources),
+    _only_with(_is_surface, _plain(_sources)),
     _plain(_then_inside),
     _plain(_do_whose),
     _plain(_wished_for),
@@ -5998,7 +6030,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_superlatives),
     _places_named,
     _rest,
-    _whatever_near,
+    _only_with(lambda it: _is(it, "whatever"), _whatever_near),
     _plain(_any_restated),
     _whichever_nearer,
     _plain(_whichever),

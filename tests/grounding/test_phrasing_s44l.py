@@ -1,0 +1,104 @@
+"""Phrasings the session-44 lead rules refuse or read (docs/grounding.md, Session 44 (lead))."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from hltl.grounding import phrasing
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import ROOT, assert_reads, assert_refused
+
+# -- a he / she no name is said for, in a scene of one person (phrasing._sole_person32s with
+# lexicon.unnamed_sex44l): blind42's one wrong reading, "Once you've got the bottle, hand it to
+# him." with Person A alone, read bottle>A; the corpus's parts say Person A is 'she' and Person B
+# 'he' in the generic scenes, and a first name, a title or a word of kin says the same
+
+ONE = load_scene(ROOT / "examples/scenes/1-2.yaml")
+
+
+def _alone(name: str, *aliases: str) -> Scene:
+    """The one-person scene 1-2 with its person called ``name``."""
+    person = dataclasses.replace(ONE.humans[0], name=name, aliases=aliases)
+    return dataclasses.replace(ONE, humans=(person,))
+
+
+HIM = ("him", "he", "He")
+HER = ("her", "she", "She")
+SAID = {
+    "Person A": "f",
+    "Person B": "m",
+    "Alice": "f",
+    "Bob": "m",
+    "Mrs Khan": "f",
+    "Mr Lee": "m",
+}
+FORMS = [
+    "Once you've got the bottle, hand it to {obj}.",
+    "Give {obj} the bottle.",
+    "Pick up the bottle, then hand it to {obj}.",
+    "See that bottle? {Subj}'d like it.",
+]
+
+
+def _said(form: str, sex: str) -> str:
+    obj, subj = ("him", "He") if sex == "m" else ("her", "She")
+    return form.format(obj=obj, Subj=subj)
+
+
+@pytest.mark.parametrize("name", sorted(SAID))
+@pytest.mark.parametrize("form", FORMS)
+def test_pronoun_agreeing_with_the_one_person_reads(name: str, form: str) -> None:
+    assert_reads(_said(form, SAID[name]), "bottle>A", _alone(name))
+
+
+@pytest.mark.parametrize("name", sorted(SAID))
+@pytest.mark.parametrize("form", FORMS)
+def test_pronoun_the_one_person_is_not_refused(name: str, form: str) -> None:
+    other = "m" if SAID[name] == "f" else "f"
+    assert_refused(_said(form, other), _alone(name), match="not resolved: no one is named for it")
+
+
+def test_blind42_wrong_reading_refused_naming_the_person() -> None:
+    assert_refused(
+        "Once you've got the bottle, hand it to him.",
+        ONE,
+        match="the scene's one person, Person A, is a she; name the person",
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Person A is thirsty, give him the bottle.",  # named first: the named person (blind23)
+        "Give Person A the bottle, he's thirsty.",
+        "Person A wants the bottle, she's thirsty.",
+    ],
+)
+def test_named_person_still_reads(text: str) -> None:
+    assert_reads(text, "bottle>A", ONE)
+
+
+@pytest.mark.parametrize("name", ["Dana", "Person C", "Jess", "the visitor"])
+def test_no_sex_said_reads_either_pronoun(name: str) -> None:
+    for form in FORMS:
+        assert_reads(_said(form, "m"), "bottle>A", _alone(name))
+        assert_reads(_said(form, "f"), "bottle>A", _alone(name))
+
+
+@given(st.sampled_from(sorted(SAID)), st.sampled_from(FORMS), st.booleans())
+def test_agreement_decides(name: str, form: str, agree: bool) -> None:
+    sex = SAID[name] if agree else ("m" if SAID[name] == "f" else "f")
+    if agree:
+        assert_reads(_said(form, sex), "bottle>A", _alone(name))
+    else:
+        assert_refused(_said(form, sex), _alone(name))
+
+
+def test_refused_without_the_check(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(phrasing, "unnamed_sex44l", lambda pid, lexicon: None)
+    assert_reads("Once you've got the bottle, hand it to him.", "bottle>A", ONE)
+    assert_reads("Give him the bottle.", "bottle>A", _alone("Alice"))
