@@ -347,17 +347,9 @@ KNOWN_MISSES = frozenset(
         "No scissors for Noah, give him the ruler instead.",
         "Lily's only allowed her beaker just now, nothing else, so pass that to her.",
         "Crisps on the shelf, I mean the bottle, the crisps stay out.",
-        "Bottle to Person A. Ooh wait, she's got one, make it Person B.",
-        "Chips for Person A; hang on, my mistake, she's out on the pilot boat, they're for "
-        "Person B.",
         "The bottle should go to Person B... sorry, I misspoke there, to Person A, who's got the "
         "frame drum gig.",
         "Put the bottle down, no, you know what, hand it to Person A straight off.",
-        "The chips to Person A, oh hold on, no chips here, I must have meant the bottle, hers "
-        "then.",
-        "Drop the spoon on the tray, oh hang about, it's mucky, the sink's better.",
-        "Thermometer to Mr Lee, correction, Ruth's doing the rounds so it's hers.",
-        "Gloves to Mia. No hang on, she's got her own, Tom should have them.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
         "shelve the crisps first and when that's done bob can have the bottle",

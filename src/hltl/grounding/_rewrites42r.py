@@ -231,6 +231,10 @@ def _not_list_first42r(text: str, lexicon: Lexicon) -> str:
     x = _thing42r(m["x"], None, lexicon)
     if x is None:
         return text
+    if re.search(r",\s*(?!(?:and|or|nor|not)\b)\S[^,]*$", m["more"] or "", _F):
+        # session 44 (12r): "Not X, Y, (oh, and Z) for P" closes on a thing after a bare comma:
+        # Y in X's place (a correction), not a second thing left out
+        return text
     out_of = [x]
     for said in re.findall(rf"(?:not )?((?:{_THING42R})|the [a-z]+)", m["more"] or "", _F):
         y = _thing42r(said, None, lexicon)
