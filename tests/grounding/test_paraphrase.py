@@ -334,17 +334,13 @@ KNOWN_MISSES = frozenset(
         "A single packet of crisps is all Person A asked for before her shamisen lesson.",
         "The mugs can stay where they are; everything else goes on the table for the "
         "ringmaster's picnic.",
-        "Bob's not thirsty after the unicycling club, so skip the bottle and give him the crisps.",
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
         "The apple goes to Person A; Person B had one at the tea picker stall already.",
         "Any one thing apart from the bottle for Person B, he's off water after sheep shearing.",
-        "Person B said to leave the bottle, he's only after the crisps.",
         "I'm fine for water thanks, it's Person A who should have the bottle.",
-        "Person A, not the bloke from the tea picker tour, gets the bottle.",
         "Person A's off sugary drinks for her stilt walking, so the crisps, leaving the bottle be.",
         "Sam's keeping the blue pen out for doodling, the other pens can go in the box.",
         "Mr Lee says the grey one itches, so he's to have the other blanket.",
-        "No scissors for Noah, give him the ruler instead.",
         "Lily's only allowed her beaker just now, nothing else, so pass that to her.",
         "Crisps on the shelf, I mean the bottle, the crisps stay out.",
         "The bottle should go to Person B... sorry, I misspoke there, to Person A, who's got the "

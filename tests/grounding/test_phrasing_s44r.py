@@ -9,8 +9,10 @@ import pytest
 
 from hltl.grounding import _rewrites44r
 from tests.grounding.helpers import (
+    DEPOT,
     KITCHEN,
     LAB,
+    NURSERY,
     OFFICE,
     WARD,
     WORKSHOP,
@@ -48,6 +50,55 @@ test_reason_fix = CASES.test(
     ("Salt to Marco. Wait, the knife's there too, make it Lena.", None, KITCHEN),
     ("Salt to Marco. Wait, he's got some, and make it Lena.", None, KITCHEN),
     ("Tongs to Lena, correction, Marco's at the grill so they're hers.", None, KITCHEN),
+)
+
+
+# -- negation and exclusion ------------------------------------------------------------------------
+
+test_no_for = CASES.test(
+    # _no_for44r: a thing P is not to have, then what P is to have
+    ("No salt for Mr Novak, pass him the lemon instead.", "lemon>C", KITCHEN),
+    ("No teddy for Lily, give her the beaker instead.", "beaker>A", NURSERY),
+    ("No stapler for Sam, hand him the notebook instead.", "notebook>B", OFFICE),
+    ("no salt for mr novak, pass him the lemon instead", "lemon>C", KITCHEN),
+    # near forms: another person, the same thing, a pronoun that is not the person
+    ("No salt for Mr Novak, pass Lena the lemon instead.", None, KITCHEN),
+    ("No salt for Mr Novak, pass him the salt instead.", None, KITCHEN),
+    ("No salt for Mr Novak, pass her the lemon instead.", None, KITCHEN),
+)
+
+test_not_aside = CASES.test(
+    # _not_aside44r: who does not get it, said as an aside after the person who does
+    ("Marco, not the new lad on the pass, gets the tongs.", "tongs>A", KITCHEN),
+    ("Lena, not the chap from table six, should have the lemon.", "lemon>B", KITCHEN),
+    ("Mrs Khan, not the lady in the next bed, gets the jug.", "jug>C", WARD),
+    ("marco, not the new lad on the pass, gets the tongs", "tongs>A", KITCHEN),
+    # near forms: the aside names a thing, or the person
+    ("Marco, not the knife, gets the tongs.", None, KITCHEN),
+    ("Marco, not Marco, gets the tongs.", None, KITCHEN),
+)
+
+test_said_leave = CASES.test(
+    # _said_leave44r: a person saying to leave a thing, then what they are after
+    ("Lena says to skip the salt, she's only after the lemon.", "lemon>B", KITCHEN),
+    ("Mr Lee said to leave the jug, he's only after the magazine.", "magazine>B", WARD),
+    ("Tom says to skip the tape, he's only after the gloves.", "gloves>B", DEPOT),
+    ("tom says to skip the tape, he's only after the gloves", "gloves>B", DEPOT),
+    # near forms: a pronoun that is not the person, a place
+    ("Mr Lee said to leave the jug, she's only after the magazine.", None, WARD),
+    ("Lena said to leave the salt on the counter.", None, KITCHEN),
+)
+
+test_skip_and = CASES.test(
+    # _skip_and44r: "skip X and <request>", maybe after a remark about the request's person
+    ("Lena's not hungry, so skip the lemon and pass her the salt.", "salt>B", KITCHEN),
+    ("Mr Lee's not thirsty, so forget the jug and give him the magazine.", "magazine>B", WARD),
+    ("Skip the tape and give Tom the gloves.", "gloves>B", DEPOT),
+    ("mr lee's not thirsty, so forget the jug and give him the magazine", "magazine>B", WARD),
+    # near forms: the thing skipped is the one given, a pronoun that is not the person, more after
+    ("Lena's not hungry, so skip the lemon and pass her the lemon.", None, KITCHEN),
+    ("Mr Lee's not thirsty, so forget the jug and give her the magazine.", None, WARD),
+    ("Skip the lemon and pass Lena the salt, then the knife.", None, KITCHEN),
 )
 
 

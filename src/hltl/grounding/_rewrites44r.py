@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
-from hltl.grounding._rewrites42r import _WHO42R, _fits42r, _person42r
+from hltl.grounding._rewrites40r import _capital40r
+from hltl.grounding._rewrites42r import _WHO42R, _fits42r, _person42r, _thing42r
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, tasks
 
@@ -48,11 +49,17 @@ _FIX_PRO44R = {"hers": "she", "his": "he"}
 
 
 def _agrees44r(pid: str, pronoun: str, lexicon: Lexicon) -> bool:
-    """Whether ``pronoun`` may be person ``pid``: as ``_fits42r`` has it, and not against the sex
-    the scene's names or the corpus's Person A / B convention give (``unnamed_sex44l``)."""
+    """Whether ``pronoun`` may be person ``pid``: as ``_fits42r`` has it, and, for a person the
+    scene names only 'Person A' / 'Person B', not against the corpus's convention
+    (``unnamed_sex44l``)."""
     pro = _FIX_PRO44R.get(pronoun.lower(), pronoun.lower())
+    if not _fits42r(pid, pro, lexicon):
+        return False
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    if human.aliases:
+        return True  # named otherwise than 'Person A': the convention is not what says the sex
     sex = unnamed_sex44l(pid, lexicon)
-    return _fits42r(pid, pro, lexicon) and (sex is None or sex == PRONOUN_SEX.get(pro, sex))
+    return sex is None or sex == PRONOUN_SEX.get(pro, sex)
 
 
 def _fix44r(fix: str, lexicon: Lexicon) -> str | None:
@@ -105,10 +112,178 @@ def _reason_fix44r(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# -- negation and exclusion ------------------------------------------------------------------------
+
+# a thing as these rules take it ("the bottle", "scissors", "the blue pen"), checked after
+_THING44R = r"(?:(?:the|that|this|those|these|any) )?[a-z]+(?: [a-z]+)?"
+
+
+def _whole_thing44r(words: str, lexicon: Lexicon) -> str | None:
+    """``words`` as "the <name>" when it names one object of the scene whole, or None."""
+    said = re.sub(r"^(?:the|that|this|those|these|any) ", "", words.strip(), flags=_F)
+    the = f"the {said}"
+    ids = _ids(the, lexicon, "object")
+    if len(ids) != 1 or _thing42r(the, None, lexicon) is None:
+        return None
+    return the
+
+
+def _only_to44r(out: str, pid: str, left: set[str], lexicon: Lexicon) -> bool:
+    """Whether ``out`` reads, every task of it for person ``pid`` and none of ``left``'s
+    objects."""
+    node = _reading(out, lexicon)
+    if node is None:
+        return False
+    done = list(tasks(node))
+    return bool(done) and all(t.target == pid and t.obj not in left for t in done)
+
+
+def _pronoun_to44r(rest: str, who: str, pid: str, lexicon: Lexicon) -> str | None:
+    """``rest`` with its one him / her said as ``who`` when it may be person ``pid`` (``rest``
+    as it is when it has none), or None."""
+    said = re.findall(_PRO44R, rest, _F)
+    if not said:
+        return rest
+    if len(said) != 1 or not _agrees44r(pid, said[0], lexicon):
+        return None
+    return re.sub(r"\b(?:him|her)\b", who, rest, count=1, flags=_F)
+
+
+# a he / she / him / her
+_PRO44R = r"\b(?:him|her|he|she)\b"
+# "No scissors for Noah, give him the ruler instead."
+_NO_FOR44R = (
+    rf"^no (?P<x>{_THING44R}) for (?P<p>{_WHO42R})\s*(?:,|;|\.|:|—)\s*(?:so |just )?"
+    r"(?P<rest>[^,;.]+?)(?:,? instead)?(?P<end>\s*[.!]?)$"
+)
+
+
+def _no_for44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "No X for P, give him Y instead" (a thing P is not to have, then what
+    P is to have) is "<give P Y>, not X": every task of it for P, the him / her P."""
+    if not re.match(r"^\s*no\b", text, _F):
+        return text
+    m = re.match(_NO_FOR44R, text.strip(), _F)
+    if m is None:
+        return text
+    x, pid = _whole_thing44r(m["x"], lexicon), _person42r(m["p"], lexicon)
+    if x is None or pid is None:
+        return text
+    rest = _pronoun_to44r(m["rest"], m["p"], pid, lexicon)
+    if rest is None:
+        return text
+    out = f"{_capital40r(rest)}, not {x}{m['end'] or '.'}"
+    return out if _only_to44r(out, pid, _ids(x, lexicon), lexicon) else text
+
+
+# "Person A, not the bloke from the tea picker tour, gets the bottle."
+_NOT_ASIDE44R = (
+    rf"^(?P<p>{_WHO42R})\s*,\s*(?:and )?not (?P<aside>[^,]+?)\s*,\s*(?P<vp>(?:gets|is getting|'s "
+    r"getting|should (?:get|have)|has|can have|is having|'s having|wants|needs|is to have|'s to "
+    r"have|is after|'s after) .+)$"
+)
+
+
+def _not_aside44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "P, not the bloke from the tour (not Q), gets X": the aside says who
+    does not get it, and names no object or place of the scene, nor P: "P gets X"."""
+    if ", not " not in text.lower() and ", and not " not in text.lower():
+        return text
+    m = re.match(_NOT_ASIDE44R, text.strip(), _F)
+    if m is None:
+        return text
+    pid = _person42r(m["p"], lexicon)
+    if pid is None or _ids(m["aside"], lexicon) - _ids(m["aside"], lexicon, "human"):
+        return text
+    if pid in _ids(m["aside"], lexicon) or re.search(r"\b(?:and|or|but)\b", m["aside"], _F):
+        return text
+    out = f"{m['p']} {m['vp']}"
+    return out if _only_to44r(out, pid, set(), lexicon) else text
+
+
+# "Person B said to leave the bottle, he's only after the crisps."
+_SAID_LEAVE44R = (
+    rf"^(?P<p>{_WHO42R}) (?:said|says|told me|has said|'s said) (?:to |we should |you should |"
+    r"you can )?(?:leave|skip|forget(?: about)?|never mind|hold off on|not bother with) "
+    rf"(?P<x>{_THING44R})(?P<rest>\s*[,;:]\s*.+)$"
+)
+
+
+def _said_leave44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "P said to leave (skip, forget) X, he's only after Y" is "P doesn't want
+    X, …", as session 42's `_negated_then42r` reads it (Y for P, or X to another)."""
+    if not re.search(r"\b(?:said|says|told me)\b", text, _F):
+        return text
+    m = re.match(_SAID_LEAVE44R, text.strip(), _F)
+    if m is None:
+        return text
+    x, pid = _whole_thing44r(m["x"], lexicon), _person42r(m["p"], lexicon)
+    if x is None or pid is None:
+        return text
+    if not all(_agrees44r(pid, w, lexicon) for w in re.findall(_PRO44R, m["rest"], _F)):
+        return text  # 'he' after Lena: someone else
+    rest = re.sub(
+        r"^(\s*[,;:]\s*(?:he|she)(?:'s| is)) only after ", r"\1 after ", m["rest"], flags=_F
+    )
+    rest = re.sub(r"^(\s*[,;:]\s*(?:he|she)) (?:just|only) wants ", r"\1 wants ", rest, flags=_F)
+    out = f"{m['p']} doesn't want {x}{rest}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# a request's verb (a remark before a request has none)
+_ASKED44R = r"\b(?:give|hand|pass|bring|take|put|place|fetch|get|deliver|drop|stick|pop)\b"
+# "…, so skip the bottle and give him the crisps."
+_SKIP_AND44R = (
+    r"^(?P<head>.*?)(?P<so>(?:^|,\s*|;\s*)(?:so |and )?)(?:skip|forget(?: about)?|leave out|never "
+    rf"mind|don't bother with|hold off on|pass on) (?P<x>{_THING44R}) and (?:just )?"
+    r"(?P<rest>(?:give|hand|pass|bring|take|get|fetch) [^,;.]+?)(?P<end>\s*[.!]?)$"
+)
+
+
+def _skip_and44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "(P's not thirsty, so) skip X and give him Y" is "<give him Y>, not X"
+    after what was said before (which says who 'him' is, when the request does not)."""
+    if not re.search(r"\b(?:skip|forget|leave out|never mind|bother|hold off|pass on)\b", text, _F):
+        return text
+    m = re.match(_SKIP_AND44R, text.strip(), _F)
+    if m is None:
+        return text
+    x = _whole_thing44r(m["x"], lexicon)
+    if x is None or _ids(x, lexicon) & _ids(m["rest"], lexicon):
+        return text
+    rest = f"{m['rest']}, not {x}{m['end'] or '.'}"
+    head = m["head"].strip()
+    out = f"{head}{m['so']}{rest}" if head else _capital40r(rest)
+    said = _ids(head, lexicon)
+    if (
+        len(said) == 1
+        and said <= _ids(head, lexicon, "human")
+        and not re.search(_ASKED44R, head, _F)
+    ):
+        # "Bob's not thirsty after the unicycling club, so …": a remark about the one person
+        # the request's him / her then is (and that only says why)
+        (pid,) = said
+        who = re.match(rf"^(?P<w>{_WHO42R}?)(?:'s|'|\s)", head, _F)
+        named = _pronoun_to44r(rest, who["w"], pid, lexicon) if who else None
+        if who is None or _person42r(who["w"], lexicon) != pid or named in (None, rest):
+            return text
+        out = _capital40r(named)
+    node = _reading(out, lexicon)
+    if node is None or any(t.obj in _ids(x, lexicon) for t in tasks(node)):
+        return text
+    return out
+
+
 # the normaliser's rewrites run before the session-43 ones (wired into normalise._STEPS19)
 _STEPS44R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-43 ones)
-_STEPS44R: tuple[Callable[[str, Lexicon], str], ...] = (_reason_fix44r,)
+_STEPS44R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _reason_fix44r,
+    _no_for44r,
+    _not_aside44r,
+    _said_leave44r,
+    _skip_and44r,
+)
 # refusals asked of the text before it is read (offline._parse, after the session-43 ones)
 REFUSE44R: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-43 ones)
