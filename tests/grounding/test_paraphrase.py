@@ -332,16 +332,7 @@ KNOWN_MISSES = frozenset(
         "There's one bottle going and Person A's the one to have it, she's been at the guzheng "
         "all morning.",
         "A single packet of crisps is all Person A asked for before her shamisen lesson.",
-        "The mugs can stay where they are; everything else goes on the table for the "
-        "ringmaster's picnic.",
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
-        "The apple goes to Person A; Person B had one at the tea picker stall already.",
-        "Any one thing apart from the bottle for Person B, he's off water after sheep shearing.",
-        "I'm fine for water thanks, it's Person A who should have the bottle.",
-        "Person A's off sugary drinks for her stilt walking, so the crisps, leaving the bottle be.",
-        "Sam's keeping the blue pen out for doodling, the other pens can go in the box.",
-        "Mr Lee says the grey one itches, so he's to have the other blanket.",
-        "Lily's only allowed her beaker just now, nothing else, so pass that to her.",
         "Crisps on the shelf, I mean the bottle, the crisps stay out.",
         "The bottle should go to Person B... sorry, I misspoke there, to Person A, who's got the "
         "frame drum gig.",

@@ -8,17 +8,22 @@ from __future__ import annotations
 import pytest
 
 from hltl.grounding import _rewrites44r
+from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     DEPOT,
     KITCHEN,
     LAB,
     NURSERY,
     OFFICE,
+    ROOT,
     WARD,
     WORKSHOP,
     PhrasingCases,
     assert_case,
 )
+
+# the one-person, one-object scene of blind42's "one" entries
+T11 = load_scene(ROOT / "examples/scenes/1-1.yaml")
 
 CASES = PhrasingCases()
 
@@ -99,6 +104,117 @@ test_skip_and = CASES.test(
     ("Lena's not hungry, so skip the lemon and pass her the lemon.", None, KITCHEN),
     ("Mr Lee's not thirsty, so forget the jug and give her the magazine.", None, WARD),
     ("Skip the lemon and pass Lena the salt, then the knife.", None, KITCHEN),
+)
+
+
+test_other_of = CASES.test(
+    # _other_of44r: a remark naming one thing of a kind, then "the other K(s)"
+    (
+        "Jess is using the small spanner, the other spanner can go in the locker.",
+        "spanner_large@locker",
+        WORKSHOP,
+    ),
+    (
+        "Kofi says the big one's blunt, so he's to have the other spanner.",
+        "spanner_small>A",
+        WORKSHOP,
+    ),
+    (
+        "Lily keeps chewing the red block, so Ava can have the other block.",
+        "block_green>C",
+        NURSERY,
+    ),
+    (
+        "Mia's keeping the small box for returns, the other boxes can go on the pallet.",
+        "box_medium@pallet & box_large@pallet",
+        DEPOT,
+    ),
+    ("lily keeps chewing the red block, so ava can have the other block", "block_green>C", NURSERY),
+    # near forms: 'the other box' of two left, 'the other plates' of one left, a pronoun that is
+    # not the person, a request first
+    ("Mia's keeping the small box for returns, the other box can go on the pallet.", None, DEPOT),
+    ("Marco's keeping the white plate back, the other plates can go on the rack.", None, KITCHEN),
+    ("Mr Lee says the grey one itches, so she's to have the other blanket.", None, WARD),
+)
+
+test_leaving = CASES.test(
+    # _leaving44r: a request, then "leaving X be"
+    ("Give Lena the salt, leaving the lemon be.", "salt>B", KITCHEN),
+    ("Put the drill in the locker, leaving the hammer alone.", "drill@locker", WORKSHOP),
+    ("give lena the salt, leaving the lemon be", "salt>B", KITCHEN),
+    # near form: the thing left is the one asked for
+    ("Give Lena the salt, leaving the salt be.", None, KITCHEN),
+)
+
+test_one_thing_but = CASES.test(
+    # _one_thing_but44r: "any one thing apart from X for P", maybe a remark on what P is off
+    (
+        "Any one thing apart from the tape for Tom, he's off tape after the ice road run.",
+        "box_small>B | scanner>B | box_medium>B | gloves>B | box_large>B",
+        DEPOT,
+    ),
+    (
+        "any one thing apart from the tape for tom",
+        "box_small>B | scanner>B | box_medium>B | gloves>B | box_large>B",
+        DEPOT,
+    ),
+    # near forms: the remark names another thing, or its pronoun is not the person
+    ("Any one thing apart from the tape for Tom, he's off scanners after the run.", None, DEPOT),
+    ("Any one thing apart from the tape for Tom, she's off tape.", None, DEPOT),
+)
+
+test_stay_rest = CASES.test(
+    # _stay_rest44r: what stays, then everything else somewhere
+    (
+        "The spanners can stay where they are; everything else goes in the locker.",
+        "drill@locker & hammer@locker & screws@locker & torch@locker",
+        WORKSHOP,
+    ),
+    (
+        "Leave the drill where it is; everything else goes on the bench.",
+        "spanner_small@bench & hammer@bench & screws@bench & torch@bench & spanner_large@bench",
+        WORKSHOP,
+    ),
+    (
+        "the spanners can stay where they are; everything else goes in the locker",
+        "drill@locker & hammer@locker & screws@locker & torch@locker",
+        WORKSHOP,
+    ),
+    # near forms: a person, not a place; a thing named after
+    ("The spanners can stay where they are; everything else goes to Kofi.", None, WORKSHOP),
+    (
+        "The spanners can stay where they are; everything else goes in the locker with the drill.",
+        None,
+        WORKSHOP,
+    ),
+)
+
+test_fine_for = CASES.test(
+    # _fine_for44r: the speaker needing nothing, then the request
+    ("I'm fine for water thanks, it's Person A who should have the bottle.", "bottle>A", T11),
+    ("I'm fine for water, it's Person A who should have the bottle.", "bottle>A", T11),
+    ("i'm fine for water thanks, it's person a who should have the bottle", "bottle>A", T11),
+    # near form: 'it' then stands for nothing said
+    ("I'm fine for the jug, thanks; it's Mrs Khan who should have it.", None, WARD),
+)
+
+test_had_one = CASES.test(
+    # _had_one44r: a request, then another person had one already
+    ("The banana goes to Emma; Omar had one at lunch already.", "banana>C", LAB),
+    ("Give Dana the spoon, Emma's had one already.", "spoon>A", LAB),
+    ("Give Dana the spoon; Omar's got his own already.", "spoon>A", LAB),
+    ("the banana goes to emma; omar had one at lunch already", "banana>C", LAB),
+    # near form: what was had is named
+    ("The banana goes to Emma; Omar had the sponge already.", None, LAB),
+)
+
+test_only_allowed = CASES.test(
+    # _only_allowed44r: "P's only allowed X, so pass that to her"
+    ("Omar's only allowed the spoon today, nothing else, so hand that to him.", "spoon>B", LAB),
+    ("Emma's only allowed her banana right now, so pass that to her.", "banana>C", LAB),
+    ("omar's only allowed the spoon today, nothing else, so hand that to him", "spoon>B", LAB),
+    # near form: the pronoun is not the person
+    ("Mr Lee's only allowed the jug today, nothing else, so hand that to her.", None, WARD),
 )
 
 

@@ -274,6 +274,266 @@ def _skip_and44r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# a remark before a request that says nothing is wanted or goes anywhere
+_WANTS44R = (
+    r"\b(?:wants?|needs?|gets?|would like|'d like|goes|go|give|hand|pass|bring|take|put|place|"
+    r"fetch|deliver|asked|ordered|for (?:him|her)|is for|'s for|to have|have|having|has|had|and|"
+    r"or|but|not|no)\b"
+)
+# "…, so he's to have the other blanket", "the other pens can go in the box"
+_OTHER44R = r"\bthe other (?P<k>[a-z]+)\b"
+_REMARK_THEN44R = r"^(?P<r>[^,;.]+?)\s*(?:[,;.]\s*(?:so |and so |which means )?|,? so )(?P<s>.+)$"
+
+
+def _kind_of44r(word: str, lexicon: Lexicon) -> tuple[str, bool] | None:
+    """The object category ``word`` says ('pens' -> ('pen', True)) and whether it is plural."""
+    cats = {o.category for o in lexicon.scene.objects}
+    low = word.lower()
+    for k, many in ((low, False), (low[:-1], True), (low[:-2], True)):
+        if k in cats and (not many or low[len(k) :] in ("s", "es")):
+            return k, many
+    return None
+
+
+def _other_of44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): a remark naming one thing of a kind that is not wanted or stays ("Sam's
+    keeping the blue pen out for doodling", "Mr Lee says the grey one itches"), then a request for
+    "the other K(s)": the other K is the scene's one K besides it, the other Ks all of them (two
+    or more); the remark, which names no other thing and wants nothing, is dropped, and a him /
+    her in the request is its one person."""
+    if "other" not in text.lower():
+        return text
+    m = re.match(_REMARK_THEN44R, text.strip(), _F)
+    if m is None:
+        return text
+    remark, rest = m["r"], m["s"]
+    found = list(re.finditer(_OTHER44R, rest, _F))
+    if len(found) != 1 or re.search(r"\bother\b", remark, _F) or re.search(_WANTS44R, remark, _F):
+        return text
+    kind = _kind_of44r(found[0]["k"], lexicon)
+    if kind is None:
+        return text
+    cat, many = kind
+    of_kind = [o.id for o in lexicon.scene.objects if o.category == cat]
+    named = {
+        o
+        for o in of_kind
+        if any(re.search(rf"\b{re.escape(w)}\b", remark, _F) for w in _names_of44r(o, lexicon)[:-1])
+    }
+    if _ids(remark, lexicon, "object") - set(of_kind):
+        return text  # the remark names a thing of another kind
+    if not named:
+        # 'the grey one' said before the kind is
+        adj = re.search(r"\bthe ([a-z]+) one\b", remark, _F)
+        the = f"the {adj[1]} {cat}" if adj else ""
+        named = _ids(the, lexicon, "object") if adj and _thing42r(the, None, lexicon) else set()
+    if len(named) != 1 or not named <= set(of_kind):
+        return text
+    left = [o for o in of_kind if o not in named]
+    if (many and len(left) < 2) or (not many and len(left) != 1):
+        return text
+    names = [f"the {next(iter(_names_of44r(o, lexicon)))}" for o in left]
+    said = " and ".join(names)
+    rest = f"{rest[: found[0].start()]}{said}{rest[found[0].end() :]}"
+    people = _ids(remark, lexicon, "human")
+    if len(people) > 1 or _ids(remark, lexicon, "surface"):
+        return text
+    if people:
+        (pid,) = people
+        who = next(w for w in _names_of44r(pid, lexicon) if w.lower() in remark.lower())
+        named_rest = _pronoun_to44r(rest, who, pid, lexicon)
+        if named_rest is None:
+            return text
+        rest = re.sub(r"^(?:he|she)(?:'s| is) to have\b", f"{who} gets", named_rest, flags=_F)
+        rest = re.sub(r"^(?:he|she)\b", who, rest, flags=_F)
+    out = _capital40r(rest)
+    node = _reading(out, lexicon)
+    if node is None or any(t.obj in named for t in tasks(node)):
+        return text
+    return out
+
+
+def _names_of44r(eid: str, lexicon: Lexicon) -> list[str]:
+    """The names the scene gives ``eid`` (an object's aliases first, as 'blue pen'; a person's
+    name and aliases)."""
+    for o in lexicon.scene.objects:
+        if o.id == eid:
+            return [*o.aliases, o.id.replace("_", " ")]
+    for h in lexicon.scene.humans:
+        if h.id == eid:
+            return [h.name, *h.aliases]
+    return []
+
+
+# "…, so the crisps, leaving the bottle be."
+_LEAVING44R = (
+    r"^(?P<head>.+?)(?:,\s*|\s+)(?:and )?leaving (?P<x>{T}) (?:be|alone|where (?:it is|they are)|"
+    r"untouched|aside|out)(?: for now)?(?P<end>\s*[.!]?)$"
+).replace("{T}", _THING44R)
+
+
+def _leaving44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): a request, then "leaving X be (alone, where it is)", X not in it, is
+    "<request>, not X" (the grammar's leaving out)."""
+    if "leaving" not in text.lower():
+        return text
+    m = re.match(_LEAVING44R, text.strip(), _F)
+    if m is None:
+        return text
+    x = _whole_thing44r(m["x"], lexicon)
+    if x is None or _ids(x, lexicon) & _ids(m["head"], lexicon):
+        return text
+    out = f"{m['head']}, not {x}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.obj in _ids(x, lexicon) for t in tasks(node)):
+        return text
+    return out
+
+
+# "Any one thing apart from the bottle for Person B, he's off water after sheep shearing."
+_ONE_THING_BUT44R = (
+    r"\b(?P<any>any|just|only)? ?one (?:thing|item)(?= (?:apart from|except(?: for)?|but|besides|"
+    r"other than|bar) )"
+)
+# a closing remark on what the person will not have ("he's off water after sheep shearing")
+_OFF_REMARK44R = (
+    r"\s*[,;]\s*(?P<pro>he|she)(?:'s| is) (?:off|not after|not keen on|allergic to|sick of|fed up "
+    r"with|gone off|not bothered about|not fussed about) [^,;.!?]+(?P<end>[.!]?)$"
+)
+
+
+def _one_thing_but44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "(Any) one thing apart from (except, but) X for P" is "Any one of the
+    things apart from X for P" (the choice the grammar reads), and a closing remark on what P will
+    not have ("he's off water after sheep shearing"), naming nothing of the scene, the he / she P,
+    is dropped."""
+    if not re.search(r"\bone (?:thing|item)\b", text, _F):
+        return text
+    out = re.sub(_ONE_THING_BUT44R, "any one of the things", text.strip(), count=1, flags=_F)
+    if out == text.strip():
+        return text
+    off = re.search(_OFF_REMARK44R, out, _F)
+    if off is not None:
+        people = _ids(out[: off.start()], lexicon, "human")
+        said = _ids(out[off.start() :], lexicon)
+        if len(people) != 1 or said - _ids(out[: off.start()], lexicon, "object"):
+            return text  # the remark names what the request does not
+        if not _agrees44r(next(iter(people)), off["pro"], lexicon):
+            return text
+        out = f"{out[: off.start()]}{off['end'] or '.'}"
+    return _capital40r(out) if _reading(out, lexicon) is not None else text
+
+
+# "The mugs can stay where they are; everything else goes on the table."
+# a thing said before what is said of it ("the mugs can stay")
+_SAID_THING44R = (
+    r"(?:the|that|this|those|these) [a-z]+(?: (?!(?:can|should|will|must|are|is|stay|stays|remain|"
+    r"remains|be|stop|stops|where)\b)[a-z]+)?"
+)
+_STAY_REST44R = (
+    r"^(?:(?:leave|keep) (?P<x>{T}(?:(?:,| and) {T})*) (?:where (?:it is|they are)|as (?:it is|"
+    r"they are)|put|be|alone)|(?P<x2>{T}(?:(?:,| and) {T})*) (?:can |should |will |must |are to |"
+    r"is to )?(?:stay|stays|remain|remains|be left|stop|stops)(?: (?:where (?:it is|they are)|put|"
+    r"as (?:it is|they are)|behind|here|there))?)\s*[;,.:]\s*(?:but |and )?(?:everything|anything|"
+    r"all the rest|the rest|all the other things|the other things)(?: else)? (?P<vp>(?:goes|can go|"
+    r"should go|go|is to go|gets put|moves|can move) (?:on|in|onto|into|up on|over to|across to) "
+    r".+)$"
+).replace("{T}", _SAID_THING44R)
+
+
+def _stay_rest44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "X can stay where they are (stays put, leave X be); everything else goes
+    on S" is "Everything except X goes on S" (the grammar's leaving out)."""
+    if not re.search(r"\b(?:else|rest|other things)\b", text, _F):
+        return text
+    m = re.match(_STAY_REST44R, text.strip(), _F)
+    if m is None:
+        return text
+    said = [w.strip() for w in re.split(r",| and ", m["x"] or m["x2"]) if w.strip()]
+    if not said or not all(_ids(w, lexicon, "object") for w in said):
+        return text
+    if _ids(m["vp"], lexicon, "object") or _ids(m["vp"], lexicon, "human"):
+        return text
+    out = f"Everything except {' and '.join(w.lower() for w in said)} {m['vp']}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "I'm fine for water thanks, it's Person A who should have the bottle."
+_FINE_FOR44R = (
+    r"^(?:i'm|i am|i'll be|we're|we are) (?:fine|ok|okay|alright|all right|good|sorted|set)(?: for "
+    r"[a-z ]+?)?(?:,? thanks| thank you)?\s*[,;.:]\s*(?P<rest>\S.+)$"
+)
+
+
+def _fine_for44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): the speaker saying they need nothing ("I'm fine for water thanks",
+    "I'm sorted, thanks"), naming nothing of the scene, before a request: the request."""
+    if not re.match(r"^\s*(?:i|we)(?:'m|'ll| am|'re| are)\b", text, _F):
+        return text
+    m = re.match(_FINE_FOR44R, text.strip(), _F)
+    said = text.strip()[: len(text.strip()) - len(m["rest"])]
+    if m is None or _ids(said, lexicon) - _ids(said, lexicon, "object"):
+        return text  # "I'm fine for water": a thing the speaker declines, no one and nowhere
+    out = _capital40r(m["rest"])
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "…; Person B had one at the tea picker stall already."
+_HAD_ONE44R = (
+    rf"\s*[,;.]\s*(?:and |as )?(?P<q>{_WHO42R})(?: had|'s had| has had| has already had|'s "
+    r"already had| already had| got|'s got| has got) (?:one|some|his|hers|theirs|his own|her own|"
+    r"one of (?:his|her) own)(?: [^,;.!?]+?)? already(?P<end>[.!]?)$"
+)
+
+
+def _had_one44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): a request, then "Q had one (at the stall) already" of another person,
+    naming nothing else of the scene: the request (why Q is not given one)."""
+    if "already" not in text.lower():
+        return text
+    m = re.search(_HAD_ONE44R, text.strip(), _F)
+    if m is None:
+        return text
+    qid = _person42r(m["q"], lexicon)
+    head = text.strip()[: m.start()]
+    said = _ids(m.group(0), lexicon)
+    if qid is None or said != {qid} or qid in _ids(head, lexicon):
+        return text
+    out = f"{head}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.target == qid for t in tasks(node)):
+        return text
+    return out
+
+
+# "Lily's only allowed her beaker just now, nothing else, so pass that to her."
+_ONLY_ALLOWED44R = (
+    rf"^(?P<p>{_WHO42R})(?:'s| is) only (?:allowed|permitted|meant to have|supposed to have)(?: to "
+    r"have)? (?P<x>(?:her |his |the )?[a-z]+(?: (?!just|right|now|today|for|at)[a-z]+)?)"
+    r"(?: (?:just now|right now|now|today|for now|at the moment))?(?:,? (?:and )?nothing else)?"
+    r"\s*[,;]\s*so (?P<verb>pass|give|hand|bring|take) (?:that|it) (?:to|over to) "
+    r"(?P<pro>him|her)(?P<end>\s*[.!]?)$"
+)
+
+
+def _only_allowed44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "P's only allowed (her) X (just now), nothing else, so pass that to
+    her" is "Pass X to P", the her P."""
+    if "only" not in text.lower():
+        return text
+    m = re.match(_ONLY_ALLOWED44R, text.strip(), _F)
+    if m is None:
+        return text
+    pid = _person42r(m["p"], lexicon)
+    x = _whole_thing44r(re.sub(r"^(?:her|his) ", "", m["x"], flags=_F), lexicon)
+    if pid is None or x is None or not _agrees44r(pid, m["pro"], lexicon):
+        return text
+    if re.match(r"^(?:her|his) ", m["x"], _F) and not _agrees44r(pid, m["x"].split()[0], lexicon):
+        return text
+    out = f"{m['verb'].capitalize()} {x} to {m['p']}{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
 # the normaliser's rewrites run before the session-43 ones (wired into normalise._STEPS19)
 _STEPS44R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-43 ones)
@@ -283,6 +543,13 @@ _STEPS44R: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_aside44r,
     _said_leave44r,
     _skip_and44r,
+    _other_of44r,
+    _leaving44r,
+    _one_thing_but44r,
+    _stay_rest44r,
+    _fine_for44r,
+    _had_one44r,
+    _only_allowed44r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-43 ones)
 REFUSE44R: tuple[Callable[[str, Lexicon], None], ...] = ()
