@@ -9,7 +9,7 @@ from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites40r import _capital40r
 from hltl.grounding._rewrites42r import _WHO42R, _fits42r, _person42r, _thing42r
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
-from hltl.grounding.tree import Node, tasks
+from hltl.grounding.tree import Node, has_choice, tasks
 
 # -- corrections -----------------------------------------------------------------------------------
 
@@ -534,6 +534,293 @@ def _only_allowed44r(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# -- choices and distributions ---------------------------------------------------------------------
+
+_N44R = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "both": 2, "pair": 2}
+
+
+def _objects44r(lexicon: Lexicon) -> list[str]:
+    """The scene's objects, each as "the <name>" (its first alias, or its id)."""
+    return [f"the {_names_of44r(o.id, lexicon)[0]}" for o in lexicon.scene.objects]
+
+
+# "…, either one suits her fine."
+_EITHER_SUITS44R = (
+    r"(?P<sep>,\s*)(?:either|any|whichever)(?: one| of them| of the two)? (?:suits|will suit|would "
+    r"suit|does|will do|would do|'ll do|pleases|keeps) (?:her|him|them)(?: (?:fine|nicely|well|"
+    r"just fine|happy))?(?P<end>\s*[.!]?)$"
+)
+# "…, red or green, no odds."
+_NO_ODDS44R = (
+    r"(?P<sep>,\s*)(?:(?:it )?(?:makes )?no odds|(?:it )?(?:makes|is) no (?:odds|difference)|no "
+    r"matter which|(?:it )?doesn't matter(?: which)?|either's fine|"
+    r"either is fine)(?P<end>\s*[.!]?)$"
+)
+
+
+def _either_suits44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): a choice closed by "either one suits her fine" or "no odds" ("it doesn't
+    matter", "either's fine") is the choice closed by "whichever"; taken only when that reads as
+    a choice."""
+    low = text.lower()
+    if not any(
+        w in low for w in ("suit", "does ", "do ", "please", "keeps", "odds", "matter", "fine")
+    ):
+        return text
+    out = re.sub(_EITHER_SUITS44R, r"\g<sep>whichever\g<end>", text.strip(), count=1, flags=_F)
+    out = re.sub(_NO_ODDS44R, r"\g<sep>whichever\g<end>", out, count=1, flags=_F)
+    if out == text.strip():
+        return text
+    node = _reading(out, lexicon)
+    return out if node is not None and has_choice(node) else text
+
+
+# "Whichever of the two you grab first, get it to Alice."
+_GRAB_FIRST44R = (
+    r"^whichever (?:(?:one )?of (?:the|those|these) (?P<n>two|three|four|five|"
+    r"six)(?: (?!you\b)(?P<k>[a-z]+))?"
+    r"|one|thing) (?:you )?(?:grab|get|find|reach|pick up|lay hands on|come to|can reach)"
+    r"(?: first)?\s*,\s*(?P<verb>get|give|bring|take|hand|pass|carry) (?:it|that|that one) to "
+    rf"(?P<p>{_WHO42R})(?P<end>\s*[.!]?)$"
+)
+
+
+def _grab_first44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "Whichever of the two (things, Ks) you grab first, get it to P" is "Give
+    P X or Y, whichever": the scene's objects (of kind K) when they are that many."""
+    if not re.match(r"^\s*whichever\b", text, _F):
+        return text
+    m = re.match(_GRAB_FIRST44R, text.strip(), _F)
+    if m is None or m["n"] is None or _person42r(m["p"], lexicon) is None:
+        return text
+    kind = (
+        _kind_of44r(m["k"], lexicon)
+        if m["k"] and m["k"].lower() not in ("things", "items")
+        else None
+    )
+    if m["k"] and m["k"].lower() not in ("things", "items") and kind is None:
+        return text
+    objs = [
+        f"the {_names_of44r(o.id, lexicon)[0]}"
+        for o in lexicon.scene.objects
+        if kind is None or o.category == kind[0]
+    ]
+    if len(objs) != _N44R[m["n"].lower()]:
+        return text
+    out = f"Give {m['p']} {', '.join(objs[:-1])} or {objs[-1]}, whichever{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "The chips are up for grabs between Person A and Person B, so you decide who gets them."
+_UP_FOR_GRABS44R = (
+    rf"^(?P<x>{_THING44R})(?: is| are|'s|'re) (?:up for grabs|going spare|going begging) (?:between|"
+    rf"for) (?P<p>{_WHO42R}) (?:and|or) (?P<q>{_WHO42R})(?:\s*,?\s*(?:so )?(?:you (?:decide|choose|"
+    r"pick|can decide|can choose)|your (?:call|choice)|up to you)(?: who (?:gets|has|should have) "
+    r"(?:it|them))?)?(?P<end>\s*[.!]?)$"
+)
+
+
+def _up_for_grabs44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "X is up for grabs between P and Q(, so you decide who gets it)" is "X
+    goes to P or Q, whichever"."""
+    if (
+        "grabs" not in text.lower()
+        and "spare" not in text.lower()
+        and "begging" not in text.lower()
+    ):
+        return text
+    m = re.match(_UP_FOR_GRABS44R, text.strip(), _F)
+    if m is None:
+        return text
+    pid, qid = _person42r(m["p"], lexicon), _person42r(m["q"], lexicon)
+    if pid is None or qid is None or pid == qid or not _ids(m["x"], lexicon, "object"):
+        return text
+    out = f"{_capital40r(m['x'])} go to {m['p']} or {m['q']}, whichever{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "After a long day on the shuttering job Person B deserves the pair, so hand over both."
+_DESERVES44R = (
+    rf"^(?:after [^,]+?,? )?(?P<p>{_WHO42R}) (?:deserves|has earned|'s earned|has got to have|"
+    rf"should "
+    r"get) (?P<x>the pair|both(?: things| of them)?|the lot|the two(?: things)?|everything)\s*,?\s*"
+    r"(?:so )?(?:hand|give|pass|bring) (?:over )?(?:both|them|the pair|the lot|them both|both of "
+    r"them)(?: over)?(?: to (?:him|her))?(?P<end>\s*[.!]?)$"
+)
+
+
+def _deserves44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "(After a long day …) P deserves the pair (both, the lot), so hand over
+    both" is "Give P <every object>", the scene's objects two for 'the pair' and 'both'."""
+    if "deserve" not in text.lower() and "earned" not in text.lower():
+        return text
+    m = re.match(_DESERVES44R, text.strip(), _F)
+    if m is None or _person42r(m["p"], lexicon) is None:
+        return text
+    objs = _objects44r(lexicon)
+    said = m["x"].lower()
+    if (said.startswith(("the pair", "both", "the two")) or "both" in text.lower()) and len(
+        objs
+    ) != 2:
+        return text
+    out = f"Give {m['p']} {', '.join(objs[:-1])} and {objs[-1]}{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "Any one of them for Person A, bottle or crisps, doesn't matter."
+_ANY_OF_THEM44R = (
+    r"^(?:any|either)(?: one)? of (?:them|those|the two)(?: things)? (?P<to>for|to) "
+    rf"(?P<p>{_WHO42R})\s*,\s*(?P<x>[a-z]+(?: [a-z]+)?) or (?P<y>[a-z]+(?: [a-z]+)?)"
+    r"(?:\s*,\s*(?:(?:it )?doesn't matter(?: which)?|no matter which|either's fine|no odds|"
+    r"whichever))?(?P<end>\s*[.!]?)$"
+)
+
+
+def _any_of_them44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "Any one of them for P, X or Y(, doesn't matter)" is "The X or the Y
+    for P, whichever"."""
+    if not re.match(r"^\s*(?:any|either)\b", text, _F):
+        return text
+    m = re.match(_ANY_OF_THEM44R, text.strip(), _F)
+    if m is None or _person42r(m["p"], lexicon) is None:
+        return text
+    x, y = _whole_thing44r(m["x"], lexicon), _whole_thing44r(m["y"], lexicon)
+    if x is None or y is None or _ids(x, lexicon) == _ids(y, lexicon):
+        return text
+    out = f"{_capital40r(x)} or {y} {m['to']} {m['p']}, whichever{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "Either of those to Person B, he'll take what he's given, but do it now."
+_EITHER_THOSE44R = (
+    r"^(?:either|any|one) of (?:those|them|these|the two)(?: (?:things|two))? (?P<to>to|for) "
+    rf"(?P<p>{_WHO42R})(?P<rest>(?:\s*,\s*(?:(?:but |and )?(?:do it|be quick|quick|now|sharpish|"
+    r"(?:please )?do it now|right away)|(?:he|she)(?:'ll| will) (?:take|have) (?:what|whatever) "
+    r"(?:he|she)(?:'s| is) given|(?:he|she)(?:'s| is)(?: not|n't) (?:fussy|bothered|fussed)))*)"
+    r"(?P<end>\s*[.!]?)$"
+)
+
+
+def _either_those44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "Either of those to P, he'll take what he's given(, but do it now)", in a
+    scene of two things, is "Either of the two things to P": what P says of the choice (the he /
+    she P) and the hurry dropped."""
+    if not re.match(r"^\s*(?:either|any|one) of\b", text, _F):
+        return text
+    m = re.match(_EITHER_THOSE44R, text.strip(), _F)
+    if m is None or len(lexicon.scene.objects) != 2:
+        return text
+    pid = _person42r(m["p"], lexicon)
+    if pid is None:
+        return text
+    if not all(_agrees44r(pid, w, lexicon) for w in re.findall(_PRO44R, m["rest"], _F)):
+        return text
+    out = f"Either of the two things {m['to']} {m['p']}{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# -- counts ----------------------------------------------------------------------------------------
+
+# "There's only a lone bottle knocking about and Bob's to have it."
+_LONE_GOING44R = (
+    r"^there(?:'s| is) (?:only |just )?(?:a lone|a single|one|the one|a solitary|just the one|the "
+    r"single) (?P<x>[a-z]+(?: (?!(?:knocking|going|about|around|left|on|here|in|to)\b)[a-z]+)?) "
+    r"(?:knocking about|knocking around|going|about|around|left|on the go|here|in the room|to be "
+    rf"had)\s*(?:,|;|and|, and)\s*(?P<p>{_WHO42R})(?:(?:'s| is) (?:to have it|the one to have it|"
+    r"the one who gets it|having it|getting it|to get it|the one it's for|the one for it)| (?:gets|"
+    r"can have|should have|should get) it)(?P<end>\s*[.!]?)$"
+)
+
+
+def _lone_going44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "There's only a lone (one, a single) X knocking about (going) and P's to
+    have it (the one to have it)" is "The X goes to P" when the scene has one X."""
+    if not re.match(r"^\s*there", text, _F):
+        return text
+    m = re.match(_LONE_GOING44R, text.strip(), _F)
+    if m is None or _person42r(m["p"], lexicon) is None:
+        return text
+    x = _whole_thing44r(m["x"], lexicon)
+    if x is None:
+        return text
+    out = f"{_capital40r(x)} goes to {m['p']}{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "Out of the four, give Person B three for the ice road run: bottle, cup and apple."
+_OUT_OF44R = (
+    r"^(?:out of (?:the|these|those) (?P<all>two|three|four|five|six)(?: things)?\s*,\s*)?"
+    rf"(?P<verb>give|hand|pass|bring|take) (?P<p>{_WHO42R}) (?P<n>two|three|four|five|six)(?: "
+    r"things| items| of them| of the things)?(?: for [^:,;]+?)?\s*:\s*(?P<list>[a-z ,]+?)"
+    r"(?P<end>\s*[.!]?)$"
+)
+
+
+def _out_of44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "(Out of the four,) give P three (for the run): X, Y and Z" is "Give P
+    the X, the Y and the Z", the count the list's and the first the scene's."""
+    if ":" not in text:
+        return text
+    m = re.match(_OUT_OF44R, text.strip(), _F)
+    if m is None or _person42r(m["p"], lexicon) is None:
+        return text
+    if m["all"] is not None and _N44R[m["all"].lower()] != len(lexicon.scene.objects):
+        return text
+    said = [w.strip() for w in re.split(r",|\band\b", m["list"], flags=_F) if w.strip()]
+    things = [_whole_thing44r(w, lexicon) for w in said]
+    if None in things or len({t for t in things}) != _N44R[m["n"].lower()]:
+        return text
+    names = [t for t in things if t is not None]
+    out = f"{m['verb'].capitalize()} {m['p']} {', '.join(names[:-1])} and {names[-1]}"
+    out += m["end"] or "."
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "Everything there is, which is two things, to Person B."
+_WHICH_IS_N44R = (
+    r"^(?P<all>everything(?: there is)?|all of it|the lot)\s*,\s*which (?:is|makes|comes to) "
+    r"(?P<n>two|three|four|five|six)(?: things| items| in all)?\s*,\s*(?P<rest>(?:to|for|"
+    r"goes to) .+)$"
+)
+
+
+def _which_is_n44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "Everything there is, which is two things, to P" is "Everything there
+    is to P" when the scene has that many objects."""
+    if "which" not in text.lower():
+        return text
+    m = re.match(_WHICH_IS_N44R, text.strip(), _F)
+    if m is None or _N44R[m["n"].lower()] != len(lexicon.scene.objects):
+        return text
+    out = f"{_capital40r(m['all'])} {m['rest']}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "A single packet of crisps is all Person A asked for before her shamisen lesson."
+_IS_ALL44R = (
+    r"^(?:a single|a lone|one|just one|only one|the one|a|the) (?P<x>[a-z]+(?: of [a-z]+|"
+    r" [a-z]+)?) "
+    rf"is all (?P<p>{_WHO42R}) (?P<v>asked for|wants|needs|is after|'s after|ordered|wanted|would "
+    r"like|needed)(?: before [^,;.]+| after [^,;.]+)?(?P<end>\s*[.!]?)$"
+)
+
+
+def _is_all44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "A single (one) X is all P asked for (before her lesson)" is "P wants
+    X" when the scene has one X."""
+    if " is all " not in text.lower():
+        return text
+    m = re.match(_IS_ALL44R, text.strip(), _F)
+    if m is None or _person42r(m["p"], lexicon) is None:
+        return text
+    said = re.sub(r"^(?:packet|bag|bottle|box|tin|cup|mug|bar) of ", "", m["x"], flags=_F)
+    x = _whole_thing44r(said, lexicon) or _whole_thing44r(m["x"], lexicon)
+    if x is None:
+        return text
+    out = f"{m['p']} wants {x}{m['end'] or '.'}"
+    return out if _reading(out, lexicon) is not None else text
+
+
 # the normaliser's rewrites run before the session-43 ones (wired into normalise._STEPS19)
 _STEPS44R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-43 ones)
@@ -550,6 +837,16 @@ _STEPS44R: tuple[Callable[[str, Lexicon], str], ...] = (
     _fine_for44r,
     _had_one44r,
     _only_allowed44r,
+    _either_suits44r,
+    _grab_first44r,
+    _up_for_grabs44r,
+    _deserves44r,
+    _any_of_them44r,
+    _either_those44r,
+    _lone_going44r,
+    _out_of44r,
+    _which_is_n44r,
+    _is_all44r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-43 ones)
 REFUSE44R: tuple[Callable[[str, Lexicon], None], ...] = ()
