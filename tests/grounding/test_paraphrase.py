@@ -311,32 +311,15 @@ KNOWN_MISSES = frozenset(
         "Sam needs the red pen Priya the notebook just hand them over.",
         "Mr Lee's finished his magazine. Mrs Khan wants it next. Take it to her.",
         "Tongs to Marco he's at the grill, the knife to Lena she's on lemons.",
-        "Carol's making tea for the solar installer; get her a mug, either one suits her fine.",
-        "Whichever of the two you grab first, get it to Alice.",
         "Clear both things off the floor and up onto the shelf, bottle and crisps alike, the "
         "pavers are coming through.",
         "Person A and Person B each want one thing: her the apple, him the bottle.",
-        "The chips are up for grabs between Person A and Person B, so you decide who gets them.",
-        "After a long day on the shuttering job Person B deserves the pair, so hand over both.",
-        "Any one of them for Person A, bottle or crisps, doesn't matter.",
         "The bottle, or whatever's there, Person A isn't fussy.",
-        "Either of those to Person B, he'll take what he's given, but do it now.",
         "Zoe and Noah each need one: the scissors for her, the ruler for him.",
-        "Lily's teething and will gnaw on anything, so give her a block, red or green, no odds.",
-        "There's only a lone bottle knocking about and Bob's to have it.",
         "He's got a twelve-hour stoker shift ahead, so Person B is to have the cup plus the chips.",
-        "Out of the four, give Person B three for the ice road run: bottle, cup and apple.",
         "Person A only wants a single thing off you today and it's the crisps, she's on the "
         "trapeze after.",
-        "Everything there is, which is two things, to Person B.",
-        "There's one bottle going and Person A's the one to have it, she's been at the guzheng "
-        "all morning.",
-        "A single packet of crisps is all Person A asked for before her shamisen lesson.",
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
-        "Crisps on the shelf, I mean the bottle, the crisps stay out.",
-        "The bottle should go to Person B... sorry, I misspoke there, to Person A, who's got the "
-        "frame drum gig.",
-        "Put the bottle down, no, you know what, hand it to Person A straight off.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
         "shelve the crisps first and when that's done bob can have the bottle",
@@ -373,7 +356,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind42 (tuned on in session 44)
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
-        "The cup to Person A, no, the other thing she asked for.",
         "Give Person B the one he pointed at earlier, the cup or the botftle, I didn't see which.",
     }
 )

@@ -7,9 +7,12 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites44r
-from hltl.world.scene import load_scene
+from hltl.errors import GroundingError
+from hltl.grounding import _rewrites44r, offline
+from hltl.grounding.offline import parse_instruction
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
+    CELL,
     DEPOT,
     KITCHEN,
     LAB,
@@ -24,6 +27,8 @@ from tests.grounding.helpers import (
 
 # the one-person, one-object scene of blind42's "one" entries
 T11 = load_scene(ROOT / "examples/scenes/1-1.yaml")
+T21, T41 = (load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("2-1", "4-1"))
+TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
 
 CASES = PhrasingCases()
 
@@ -57,6 +62,25 @@ test_reason_fix = CASES.test(
     ("Tongs to Lena, correction, Marco's at the grill so they're hers.", None, KITCHEN),
 )
 
+
+test_after_cue = CASES.test(
+    # _after_cue44r: "no, you know what, …" and "sorry, I misspoke there, …"
+    ("Put the drill on the bench, no, you know what, hand it to Jess.", "drill>B", WORKSHOP),
+    ("The bowl should go to Omar, sorry, I misspoke there, to Emma.", "bowl>C", LAB),
+    ("put the drill on the bench, no, you know what, hand it to jess", "drill>B", WORKSHOP),
+    # near form: no correction before it
+    ("You know what, give Omar the bowl.", None, LAB),
+)
+
+test_stays_out = CASES.test(
+    # _stays_out44r: a correction, then the thing taken out "stays out"
+    ("Salt on the counter, I mean the lemon, the salt stays out.", "lemon@counter", KITCHEN),
+    ("Hammer in the locker, I mean the torch, the hammer stays out.", "torch@locker", WORKSHOP),
+    ("hammer in the locker, i mean the torch, the hammer stays out", "torch@locker", WORKSHOP),
+    # near forms: another thing stays out, or no correction
+    ("Hammer in the locker, I mean the torch, the drill stays out.", None, WORKSHOP),
+    ("Hammer in the locker and the torch, the hammer stays out.", None, WORKSHOP),
+)
 
 # -- negation and exclusion ------------------------------------------------------------------------
 
@@ -218,6 +242,106 @@ test_only_allowed = CASES.test(
 )
 
 
+# -- choices and distributions ---------------------------------------------------------------------
+
+test_either_suits = CASES.test(
+    # _either_suits44r: a choice closed by "either one suits him fine" or "no odds"
+    ("Bob's parched; get him a mug, either one suits him fine.", "mug_red>B | mug_blue>B", CELL),
+    ("Give Ava a block, red or green, no odds.", "block_red>C | block_green>C", NURSERY),
+    ("give ava a block, red or green, no odds", "block_red>C | block_green>C", NURSERY),
+    # near form: no choice to close
+    ("Give Ava the teddy, no odds.", None, NURSERY),
+)
+
+test_grab_first = CASES.test(
+    # _grab_first44r: "whichever of the N (Ks) you grab first, get it to P"
+    (
+        "Whichever of the two spanners you reach first, hand it to Jess.",
+        "spanner_small>B | spanner_large>B",
+        WORKSHOP,
+    ),
+    (
+        "Whichever of the three pens you grab first, get it to Sam.",
+        "pen_black>B | pen_blue>B | pen_red>B",
+        OFFICE,
+    ),
+    ("whichever of the two you grab first, get it to alice", "bottle>A | chips>A", TWO),
+    # near form: the count is not the scene's
+    ("Whichever of the two pens you grab first, get it to Sam.", None, OFFICE),
+)
+
+test_up_for_grabs = CASES.test(
+    # _up_for_grabs44r: "X is up for grabs between P and Q"
+    (
+        "The lemon is up for grabs between Marco and Lena, so you decide who gets it.",
+        "lemon>A | lemon>B",
+        KITCHEN,
+    ),
+    (
+        "The magazine's going spare for Mr Lee or Mrs Khan, your call.",
+        "magazine>B | magazine>C",
+        WARD,
+    ),
+    (
+        "the lemon is up for grabs between marco and lena, so you decide who gets it",
+        "lemon>A | lemon>B",
+        KITCHEN,
+    ),
+    # near form: one person twice
+    ("The lemon is up for grabs between Marco and Marco.", None, KITCHEN),
+)
+
+test_deserves = CASES.test(
+    # _deserves44r: "P deserves the pair, so hand over both"
+    (
+        "After the night shift Alice deserves the pair, so hand over both.",
+        "bottle>A & chips>A",
+        TWO,
+    ),
+    ("Bob has earned both things, so give them to him.", "bottle>B & chips>B", TWO),
+    # near form: not two things in the scene
+    ("After service Marco deserves the pair, so hand over both.", None, KITCHEN),
+)
+
+test_any_of_them = CASES.test(
+    # _any_of_them44r and _either_those44r: "any one of them for P, X or Y", "either of those to
+    # P, he's not fussy"
+    ("Either of them to Alice, bottle or crisps, doesn't matter.", "bottle>A | chips>A", TWO),
+    ("Either of those for Bob, he'll take whatever he's given.", "bottle>B | chips>B", TWO),
+    ("Either of those to Person A, she's not fussy.", "bottle>A | chips>A", T21),
+    # near forms: one thing twice, a pronoun that is not the person, more than two things
+    ("Any one of them for Alice, bottle or bottle, doesn't matter.", None, TWO),
+    ("Either of those for Bob, she'll take whatever she's given.", None, TWO),
+    ("Either of those to Sam, he's not fussy.", None, OFFICE),
+)
+
+# -- counts ----------------------------------------------------------------------------------------
+
+test_counts = CASES.test(
+    # _lone_going44r: "there's only a lone X knocking about and P's to have it"
+    ("There's only a lone lemon knocking about and Lena's to have it.", "lemon>B", KITCHEN),
+    ("There's just the one knife going, and Marco's the one to have it.", "knife>A", KITCHEN),
+    ("There's only a lone plate knocking about and Lena's to have it.", None, KITCHEN),
+    ("There's only a lone lemon knocking about and Lena's to have the salt.", None, KITCHEN),
+    # _out_of44r: "(out of the four,) give P three: X, Y and Z"
+    ("Out of the four, give Person A two for the trip: chips and cup.", "chips>A & cup>A", T41),
+    (
+        "Give Jess three for the job: drill, hammer and torch.",
+        "drill>B & hammer>B & torch>B",
+        WORKSHOP,
+    ),
+    ("Give Jess two for the job: drill, hammer and torch.", None, WORKSHOP),
+    ("Out of the three, give Person A two: chips and cup.", None, T41),
+    # _which_is_n44r: "everything, which is two things, to P"
+    ("Everything, which makes two things, to Alice.", "bottle>A & chips>A", TWO),
+    ("Everything there is, which is two things, to Person A.", None, T41),
+    # _is_all44r: "a single X is all P asked for"
+    ("A single spoon is all Omar asked for before his shift.", "spoon>B", LAB),
+    ("One lemon is all Lena wants.", "lemon>B", KITCHEN),
+    ("A single plate is all Lena wants.", None, KITCHEN),
+)
+
+
 def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
     """Each case that reads is read by these rules: refused without them."""
     CASES.refused_without((*_rewrites44r._STEPS44R_FIRST, *_rewrites44r._STEPS44R), monkeypatch)
@@ -240,3 +364,38 @@ def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
 )
 def test_not_then_thing(text: str, want: str, scene: object) -> None:
     assert_case(text, want, scene)  # type: ignore[arg-type]
+
+
+# -- refusals that name their readings -------------------------------------------------------------
+
+UNCLEAR: list[tuple[str, Scene, tuple[str, ...]]] = [
+    # other_asked44r
+    (
+        "The stapler to Sam, no, the other thing he asked for.",
+        OFFICE,
+        ("pen_black", "notebook", "pen_blue", "pen_red"),
+    ),
+    (
+        "Give Mrs Khan the jug, no, the other one she wanted.",
+        WARD,
+        ("blanket_blue", "pills", "thermometer", "blanket_grey", "magazine"),
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), UNCLEAR)
+def test_refusals_name_readings(text: str, scene: Scene, readings: tuple[str, ...]) -> None:
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, scene)
+    assert all(r in str(refused.value) for r in readings), str(refused.value)
+
+
+def test_refusals_are_these(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without these refusals, none of those refusals names all its readings."""
+    mine = set(_rewrites44r.REFUSE44R)
+    monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in mine))
+    for text, scene, readings in UNCLEAR:
+        try:
+            parse_instruction(text, scene)
+        except GroundingError as refused:
+            assert not all(r in str(refused) for r in readings), text

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites40r import _capital40r
@@ -110,6 +111,57 @@ def _reason_fix44r(text: str, lexicon: Lexicon) -> str:
             return text  # "…, hers then": the request's one person
     out = f"{head}, no, {said}{m['end'] or '.'}"
     return out if _reading(out, lexicon) is not None else text
+
+
+# "…, no, you know what, hand it to Person A"; "sorry, I misspoke there, to Person A"
+_AFTER_CUE44R = (
+    r"\b(?P<cue>no|sorry|actually|wait|hang on|hold on)\s*,\s*(?:you know what|on second thoughts?|"
+    r"come to think of it|thinking about it|now i think about it)\s*[,;]\s*"
+)
+
+
+def _after_cue44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): a correction cue followed by "you know what" ("on second thought",
+    "come to think of it") is the cue alone, and "I misspoke there" is "I misspoke" (session 43's
+    slip): "Put the bottle down, no, you know what, hand it to Person A" is "…, no, hand it to
+    Person A"."""
+    low = text.lower()
+    if not any(w in low for w in ("know what", "second thought", "think", "misspoke there")):
+        return text
+    out = re.sub(_AFTER_CUE44R, r"\g<cue>, ", text.strip(), flags=_F)
+    out = re.sub(r"\bi misspoke there\b", "I misspoke", out, flags=_F)
+    if out == text.strip():
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "Crisps on the shelf, I mean the bottle, the crisps stay out."
+_STAYS_OUT44R = (
+    r"\s*[,;]\s*(?:and )?(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:stays?|can stay|should stay|"
+    r"remains?|are staying|is staying)(?: (?:out|put|where (?:it is|they are)|here|there|behind|"
+    r"down|on the side))?(?P<end>\s*[.!]?)$"
+)
+
+
+def _stays_out44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): a correction that puts one thing in another's place, then "the X stay
+    out (put, where they are)" of the thing taken out: the correction (X then goes nowhere)."""
+    if "stay" not in text.lower() and "remain" not in text.lower():
+        return text
+    m = re.search(_STAYS_OUT44R, text.strip(), _F)
+    if m is None:
+        return text
+    head = text.strip()[: m.start()]
+    x = _whole_thing44r(m["x"], lexicon)
+    if x is None or not _ids(x, lexicon) & _ids(head, lexicon):
+        return text  # X said before: what the correction took out
+    if not re.search(r"\b(?:i mean|i meant|no|sorry|not|rather|instead|actually)\b", head, _F):
+        return text
+    out = f"{head}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.obj in _ids(x, lexicon) for t in tasks(node)):
+        return text
+    return out
 
 
 # -- negation and exclusion ------------------------------------------------------------------------
@@ -613,7 +665,8 @@ def _grab_first44r(text: str, lexicon: Lexicon) -> str:
 
 # "The chips are up for grabs between Person A and Person B, so you decide who gets them."
 _UP_FOR_GRABS44R = (
-    rf"^(?P<x>{_THING44R})(?: is| are|'s|'re) (?:up for grabs|going spare|going begging) (?:between|"
+    rf"^(?P<x>{_THING44R})(?: is| are|'s|'re) (?:up for grabs|going spare|"
+    rf"going begging) (?:between|"
     rf"for) (?P<p>{_WHO42R}) (?:and|or) (?P<q>{_WHO42R})(?:\s*,?\s*(?:so )?(?:you (?:decide|choose|"
     r"pick|can decide|can choose)|your (?:call|choice)|up to you)(?: who (?:gets|has|should have) "
     r"(?:it|them))?)?(?P<end>\s*[.!]?)$"
@@ -821,11 +874,42 @@ def _is_all44r(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+# -- refusals that name their readings -------------------------------------------------------------
+
+# "The cup to Person A, no, the other thing she asked for."
+_OTHER_ASKED44R = (
+    r"\b(?:no|sorry|i mean|i meant|actually|wait)\s*,?\s*(?P<said>(?:the|that) other (?:thing|one|"
+    r"item)(?: (?:she|he|they|you) (?:asked for|wanted|meant|ordered|said|mentioned|wants|"
+    r"needs)))\b"
+)
+
+
+def other_asked44r(text: str, lexicon: Lexicon) -> None:
+    """Session 44 (12r): a request for one thing corrected to "the other thing she asked for": the
+    scene's other things are each that other thing, so the request is refused naming them."""
+    if "other" not in text.lower():
+        return
+    m = re.search(_OTHER_ASKED44R, text, _F)
+    if m is None:
+        return
+    named = _ids(text[: m.start()], lexicon, "object")
+    if len(named) != 1:
+        return
+    rest = [o.id for o in lexicon.scene.objects if o.id not in named]
+    if len(rest) < 2:
+        return  # the one other thing: left to the grammar
+    raise GroundingError(
+        f"{m['said']!r}: which thing is meant is not said; it could be {', '.join(rest[:-1])} or "
+        f"{rest[-1]}: name the thing"
+    )
+
+
 # the normaliser's rewrites run before the session-43 ones (wired into normalise._STEPS19)
-_STEPS44R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS44R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_after_cue44r,)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-43 ones)
 _STEPS44R: tuple[Callable[[str, Lexicon], str], ...] = (
     _reason_fix44r,
+    _stays_out44r,
     _no_for44r,
     _not_aside44r,
     _said_leave44r,
@@ -849,6 +933,6 @@ _STEPS44R: tuple[Callable[[str, Lexicon], str], ...] = (
     _is_all44r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-43 ones)
-REFUSE44R: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE44R: tuple[Callable[[str, Lexicon], None], ...] = (other_asked44r,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-43 ones)
 CHECK44R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
