@@ -523,8 +523,10 @@ def _fine_for44r(text: str, lexicon: Lexicon) -> str:
     if not re.match(r"^\s*(?:i|we)(?:'m|'ll| am|'re| are)\b", text, _F):
         return text
     m = re.match(_FINE_FOR44R, text.strip(), _F)
+    if m is None:
+        return text
     said = text.strip()[: len(text.strip()) - len(m["rest"])]
-    if m is None or _ids(said, lexicon) - _ids(said, lexicon, "object"):
+    if _ids(said, lexicon) - _ids(said, lexicon, "object"):
         return text  # "I'm fine for water": a thing the speaker declines, no one and nowhere
     out = _capital40r(m["rest"])
     return out if _reading(out, lexicon) is not None else text
