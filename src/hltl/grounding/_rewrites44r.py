@@ -7,6 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
+from hltl.grounding._rewrites39r import _not_wanted39r
 from hltl.grounding._rewrites40r import _capital40r
 from hltl.grounding._rewrites42r import _WHO42R, _fits42r, _person42r, _thing42r
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
@@ -167,7 +168,10 @@ def _stays_out44r(text: str, lexicon: Lexicon) -> str:
 # -- negation and exclusion ------------------------------------------------------------------------
 
 # a thing as these rules take it ("the bottle", "scissors", "the blue pen"), checked after
-_THING44R = r"(?:(?:the|that|this|those|these|any) )?[a-z]+(?: [a-z]+)?"
+_THING44R = (
+    r"(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|"
+    r"because|as|on|in|so|and|or|but|is|are|was|were|be)\b)[a-z]+)?"
+)
 
 
 def _whole_thing44r(words: str, lexicon: Lexicon) -> str | None:
@@ -588,6 +592,131 @@ def _only_allowed44r(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
+def _remark44r(words: str, lexicon: Lexicon) -> bool:
+    """Whether clause ``words`` is a remark: it names nothing of the scene, asks for nothing and
+    says no 'not'."""
+    return not _ids(words, lexicon) and not re.search(
+        rf"{_ASKED44R}|\b(?:not|no|n't|never|wants?|needs?|for (?:him|her|them))\b", words, _F
+    )
+
+
+# "Priya doesn't want the red pen, she's signing forms for the fete and wants the black one."
+_NOT_WANT_REMARK44R = (
+    rf"^(?P<head>(?P<p>{_WHO42R}) (?:doesn't|does not|won't|will not) want (?P<x>{_THING44R}))"
+    r"(?P<rest>\s*[,;].+?)(?P<end>\s*[.!]?)$"
+)
+
+
+def _not_want_remark44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "P doesn't want X, <remarks that name nothing> (and|;) <what P has
+    instead: 'wants the black one', 'the crisps are for her', 'take him the grey blanket', 'he's
+    after the chips (after his round of …)'>" is "P doesn't want X, <that>", read by session 42's
+    `_negated_then42r` (session 39's `_not_wanted39r` says 'P's not having X' so first)."""
+    said = _not_wanted39r(text, lexicon)
+    m = re.match(_NOT_WANT_REMARK44R, said.strip(), _F)
+    if m is None:
+        return text
+    pid, x = _person42r(m["p"], lexicon), _whole_thing44r(m["x"], lexicon)
+    if pid is None or x is None:
+        return text
+    parts = [w.strip() for w in re.split(r"[,;]|\band\b", m["rest"], flags=_F) if w.strip()]
+    if not parts or not all(_remark44r(w, lexicon) for w in parts[:-1]):
+        return text
+    last = parts[-1]
+    for cut in re.finditer(r"\s+(?:after|at|from|since) ", parts[-1], _F):
+        if not _ids(parts[-1][cut.start() :], lexicon):
+            last = parts[-1][: cut.start()]  # "… after his round of beetle drive": when
+            break
+    if re.match(r"^(?:wants|would like|'d like|is after|needs) ", last, _F):
+        last = f"she {last}" if _agrees44r(pid, "she", lexicon) else f"he {last}"
+    out = f"{m['head']}, {last}{m['end'] or '.'}"
+    if " ".join(out.split()) == " ".join(said.split()):
+        return text  # nothing dropped: the text as it is (and no reading of it again)
+    return out if _only_to44r(out, pid, _ids(x, lexicon), lexicon) else text
+
+
+# "Noah isn't allowed the scissors after what happened with the bunting, so the glue stick goes to
+# him."
+_NOT_ALLOWED44R = (
+    rf"^(?P<p>{_WHO42R}) (?:isn't|is not|'s not) (?:allowed|permitted|meant to have|supposed to "
+    rf"have)(?: to have)? (?P<x>{_THING44R})(?P<why> [^,;]+)?\s*[,;]\s*(?:so )?(?P<rest>[^,;.]+?)"
+    r"(?P<end>\s*[.!]?)$"
+)
+
+
+def _not_allowed44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "P isn't allowed X (after what happened …), so Y goes to him (give him
+    Y)" is "<that>, not X", the him / her P, every task P's."""
+    if (
+        "allowed" not in text.lower()
+        and "meant" not in text.lower()
+        and "supposed" not in text.lower()
+    ):
+        return text
+    m = re.match(_NOT_ALLOWED44R, text.strip(), _F)
+    if m is None:
+        return text
+    pid, x = _person42r(m["p"], lexicon), _whole_thing44r(m["x"], lexicon)
+    if pid is None or x is None or (m["why"] and _ids(m["why"], lexicon)):
+        return text
+    rest = _pronoun_to44r(m["rest"], m["p"], pid, lexicon)
+    if rest is None:
+        return text
+    out = f"{_capital40r(rest)}, not {x}{m['end'] or '.'}"
+    return out if _only_to44r(out, pid, _ids(x, lexicon), lexicon) else text
+
+
+# "Person A can have all of it bar the apple, she's gone off them since the scrumping trip."
+_ALL_BAR44R = (
+    rf"^(?P<p>{_WHO42R}) (?P<v>can have|gets|is having|'s having|should have) (?:all of it|the lot|"
+    rf"everything|the whole lot) (?:bar|barring|save|but|except|apart from) (?P<x>{_THING44R})"
+    r"(?:\s*,\s*(?P<pro>he|she)(?:'s| has) (?:gone off|gone right off|had enough of|gone "
+    r"off of|gone cold on) (?:them|it|those|that)(?: [^,;.]+)?)?(?P<end>\s*[.!]?)$"
+)
+
+
+def _all_bar44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "P can have all of it (the lot) bar X(, she's gone off them since …)" is
+    "P can have everything except X", the she P."""
+    if not re.search(r"\b(?:bar|barring|save|but|except|apart)\b", text, _F):
+        return text
+    m = re.match(_ALL_BAR44R, text.strip(), _F)
+    if m is None:
+        return text
+    pid, x = _person42r(m["p"], lexicon), _whole_thing44r(m["x"], lexicon)
+    if pid is None or x is None or (m["pro"] and not _agrees44r(pid, m["pro"], lexicon)):
+        return text
+    out = f"{m['p']} {m['v']} everything except {x}{m['end'] or '.'}"
+    return out if _only_to44r(out, pid, _ids(x, lexicon), lexicon) else text
+
+
+# "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping."
+_NOT_HERS44R = (
+    rf"^(?P<x>{_THING44R})(?:'s| is|'re| are) not (?P<p>{_WHO42R})'s\s*[,;]\s*(?:it|they) "
+    rf"(?:belongs? to|(?:'s|is|'re|are) for|(?:'s|is|'re|are)) (?P<q>{_WHO42R})(?:'s)?"
+    r"(?:\s*[,;]\s*(?P<pro>he|she) [^,;.]+)?(?P<end>\s*[.!]?)$"
+)
+
+
+def _not_hers44r(text: str, lexicon: Lexicon) -> str:
+    """Session 44 (12r): "X's not P's, it belongs to (it's) Q(, he brought it back from …)" is
+    "Give X to Q, not P", the he Q and the remark naming nothing else."""
+    if " not " not in text.lower():
+        return text
+    m = re.match(_NOT_HERS44R, text.strip(), _F)
+    if m is None:
+        return text
+    pid, qid = _person42r(m["p"], lexicon), _person42r(m["q"], lexicon)
+    x = _whole_thing44r(m["x"], lexicon)
+    if pid is None or qid is None or pid == qid or x is None:
+        return text
+    tail = text.strip()[m.end("q") :]
+    if m["pro"] and (not _agrees44r(qid, m["pro"], lexicon) or _ids(tail, lexicon)):
+        return text
+    out = f"Give {x} to {m['q']}, not {m['p']}{m['end'] or '.'}"
+    return out if _only_to44r(out, qid, set(), lexicon) else text
+
+
 # -- choices and distributions ---------------------------------------------------------------------
 
 _N44R = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "both": 2, "pair": 2}
@@ -923,6 +1052,10 @@ _STEPS44R: tuple[Callable[[str, Lexicon], str], ...] = (
     _fine_for44r,
     _had_one44r,
     _only_allowed44r,
+    _not_want_remark44r,
+    _not_allowed44r,
+    _all_bar44r,
+    _not_hers44r,
     _either_suits44r,
     _grab_first44r,
     _up_for_grabs44r,
