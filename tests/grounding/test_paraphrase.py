@@ -184,17 +184,7 @@ KNOWN_MISSES = frozenset(
         "All three of the pens into the box, Priya's had enough of the doodling.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
         "pool.",
-        "Alice doesn't want the bottle, she's had her fill at the cream tea; the crisps are "
-        "for her.",
-        "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
-        "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
-        "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
         "The bottle's for Person A and for no one else, she's earned it at the fun run.",
-        "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
-        "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
-        "blanket.",
-        "Noah isn't allowed the scissors after what happened with the bunting, so the glue "
-        "stick goes to him.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         "about, so give it her.",
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",

@@ -13,6 +13,7 @@ from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
     KITCHEN,
     LAB,
@@ -29,6 +30,7 @@ from tests.grounding.helpers import (
 T11 = load_scene(ROOT / "examples/scenes/1-1.yaml")
 T21, T41 = (load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("2-1", "4-1"))
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
+SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 
 CASES = PhrasingCases()
 
@@ -241,6 +243,67 @@ test_only_allowed = CASES.test(
     ("Mr Lee's only allowed the jug today, nothing else, so hand that to her.", None, WARD),
 )
 
+
+test_blind37_negation = CASES.test(
+    # _not_want_remark44r: "P doesn't want X, <remark>, <what instead>"
+    (
+        "Lena doesn't want the salt, she's been on her feet all night and wants the lemon.",
+        "lemon>B",
+        KITCHEN,
+    ),
+    (
+        "Tom doesn't want the tape, he's after the gloves after his run to the coast.",
+        "gloves>B",
+        DEPOT,
+    ),
+    (
+        "lena doesn't want the salt, she's been on her feet all night and wants the lemon",
+        "lemon>B",
+        KITCHEN,
+    ),
+    ("Lena doesn't want the salt, she's been at the counter and wants the lemon.", None, KITCHEN),
+    (
+        "Lena doesn't want the salt, he's been on his feet all night and wants the salt.",
+        None,
+        KITCHEN,
+    ),
+    # _not_allowed44r: "P isn't allowed X (after …), so Y goes to him"
+    (
+        "Omar isn't allowed the banana after what happened last week, so the spoon goes to him.",
+        "spoon>B",
+        LAB,
+    ),
+    ("Zoe isn't allowed the glue after the mess, so give her the ruler.", "ruler>C", CLASSROOM),
+    (
+        "omar isn't allowed the banana after what happened last week, so the spoon goes to him",
+        "spoon>B",
+        LAB,
+    ),
+    ("Omar isn't allowed the banana, so the banana goes to him.", None, LAB),
+    # _all_bar44r: "P can have the lot bar X(, he's gone off them)"
+    (
+        "Person B can have the lot bar the chips, he's gone off them since the scrumping trip.",
+        "bottle>B & cup>B & apple>B",
+        SQ,
+    ),
+    (
+        "person b can have the lot bar the chips, he's gone off them since the scrumping trip",
+        "bottle>B & cup>B & apple>B",
+        SQ,
+    ),
+    (
+        "Person B can have the lot bar the chips, she's gone off them since the scrumping trip.",
+        None,
+        SQ,
+    ),
+    # _not_hers44r: "X's not P's, it belongs to Q, she brought it in"
+    (
+        "The stapler's not Sam's, it belongs to Priya, she brought it in from home.",
+        "stapler>A",
+        OFFICE,
+    ),
+    ("The stapler's not Sam's, it belongs to Sam.", None, OFFICE),
+)
 
 # -- choices and distributions ---------------------------------------------------------------------
 
