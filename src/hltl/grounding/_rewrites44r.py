@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _reading
+from hltl.grounding._normalise1 import _F, _ids, _names, _reading
 from hltl.grounding._rewrites39r import _not_wanted39r
 from hltl.grounding._rewrites40r import _capital40r
 from hltl.grounding._rewrites42r import _WHO42R, _fits42r, _person42r, _thing42r
@@ -77,8 +77,25 @@ def _fix44r(fix: str, lexicon: Lexicon) -> str | None:
             pid = _person42r(said, lexicon)
             if pid is None or not _agrees44r(pid, pro, lexicon):
                 return None
+        if re.match(rf"{_ASKED44R}|(?:it|them|that|to|for|on|in)\b", said, _F):
+            return None  # "I meant hand it to Ava": a request of its own, not a name
         return said
     return None
+
+
+def _number_fits44r(fix: str, head: str, lexicon: Lexicon) -> bool:
+    """Whether a 'they' / 'them' / 'those' of the corrected request ``fix`` may be the request's
+    thing as ``head`` names it (a plural word: 'chips', 'tongs', 'gloves'), and an 'it' one said
+    in the singular."""
+    many = re.search(r"\b(?:they|they're|them|those)\b", fix, _F)
+    one = re.search(r"\b(?:it|it's)\b", fix, _F)
+    if not many and not one:
+        return True
+    said = [n.text.lower() for n in _names(head, lexicon) if n.refs and n.refs[0].kind == "object"]
+    if len(said) != 1:
+        return False
+    plural = said[0].endswith("s")
+    return bool(many) == plural or (bool(one) and plural)
 
 
 def _reason_fix44r(text: str, lexicon: Lexicon) -> str:
@@ -101,6 +118,12 @@ def _reason_fix44r(text: str, lexicon: Lexicon) -> str:
     said = _fix44r(m["fix"], lexicon)
     if said is None or re.search(r"\b(?:and|also|too|as well|plus|then|instead)\b", why, _F):
         return text
+    if m["sep"] in (".", "!") and not re.search(
+        r"\b(?:wait|hang on|hold on|hang about|correction|no)\b", m["cue"], _F
+    ):
+        return text  # "Chips to Alice. Sorry, …": a new sentence after a bare apology
+    if _ids(said, lexicon) <= _ids(head, lexicon) or not _number_fits44r(m["fix"], head, lexicon):
+        return text  # the same person again, or 'they' for one thing: not a correction of it
     if not _ids(said, lexicon) or _ids(why, lexicon) - _ids(head, lexicon):
         return text  # the reason names something the request does not: more than a reason
     first = _reading(head, lexicon)
@@ -602,7 +625,7 @@ def _remark44r(words: str, lexicon: Lexicon) -> bool:
 
 # "Priya doesn't want the red pen, she's signing forms for the fete and wants the black one."
 _NOT_WANT_REMARK44R = (
-    rf"^(?P<head>(?P<p>{_WHO42R}) (?:doesn't|does not|won't|will not) want (?P<x>{_THING44R}))"
+    rf"^(?P<head>(?P<p>{_WHO42R}) (?:doesn't|does not) want (?P<x>{_THING44R}))"
     r"(?P<rest>\s*[,;].+?)(?P<end>\s*[.!]?)$"
 )
 
