@@ -360,8 +360,6 @@ KNOWN_MISSES = frozenset(
         "Gloves to Mia. No hang on, she's got her own, Tom should have them.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
-        "shelve the crisps first and when that's done bob can have the bottle",
-        "person b's asking for the cup, also the apple if it's going spare",
         "emma spilt her tea and wants the sponge to mop it",
         "marco's plating up on blue so that plate's his and lena has the white",
         "our ramp agent keeps treading on the crisops, so stick them up on the shelf",
