@@ -264,15 +264,8 @@ KNOWN_MISSES = frozenset(
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
         "Suksma, robot — my Balinese gran taught me that word — could you bring Carol the red mug?",
-        "Right, erm, before my fibre splicer shift starts, pop the crisps up on the shelf for "
-        "me, would you, ta.",
         "With all due respect, machine, Person A needs the bottle, thanking you kindly.",
         "Chettirdim, friend, that's Tuvan for thanks; would you carry the crisps to Person A?",
-        "Sorry to be a pest, Omar's back from rug hooking club and would like the white cup, "
-        "please and thank you.",
-        "Morning Mia! Um, so, the packing tape onto the conveyor, lovely, ta.",
-        "Zoe's got shodo practice after this, so be a sweetheart and give her the glue stick, "
-        "thanks ever so.",
         "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
         "Alice could really do with a drink, she's been spinning fire poi for an hour.",
         "What Bob fancies right now is a packet of crisps.",
@@ -286,8 +279,6 @@ KNOWN_MISSES = frozenset(
         "Noah's desperate for a ruler to finish drawing his xiangqi board.",
         "Lily's all sticky, she needs the baby wipes, she does.",
         "Those crisps Alice left out, stick them on the shelf.",
-        "Person B's back from his kora lesson; the cup's for him, and so's the apple.",
-        "Person A's after the chips; Person B, back from his rice paddy survey, the cup.",
         "The apple, Person A said she'd have it.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
         "her.",
@@ -296,20 +287,6 @@ KNOWN_MISSES = frozenset(
         "Person A's waiting. Take it to her, the bottle.",
         "Those crisps are the ones Person B knocked off his lap during the gritter briefing, so "
         "return them to him.",
-        "Mr Novak's salad needs seasoning; pass him the salt.",
-        "Grandad's reading to Lily; give him the teddy, he'll do the voices.",
-        "Kofi's cleared a space on the workbench. Put the drill there.",
-        "Cup goes up on the shelf and when that's sorted Alice is having the crisps and after "
-        "her Bob has the apple that's everything.",
-        "Shelf for the bottle first, and after that Alice wants the crisps so give them to her.",
-        "Person A gets the bottle Person B gets the chips they've both been doing the line "
-        "painter course no fuss.",
-        "Person A had a long night on ramp agent duty she'd like the bottle the chips can go to "
-        "Person B.",
-        "Start with the banana, tray please. Spoon to the sink after. Last of all Dana's green "
-        "cup goes back to her.",
-        "Sam needs the red pen Priya the notebook just hand them over.",
-        "Mr Lee's finished his magazine. Mrs Khan wants it next. Take it to her.",
         "Tongs to Marco he's at the grill, the knife to Lena she's on lemons.",
         "Carol's making tea for the solar installer; get her a mug, either one suits her fine.",
         "Whichever of the two you grab first, get it to Alice.",
@@ -362,13 +339,6 @@ KNOWN_MISSES = frozenset(
         "the go club",
         "emma spilt her tea and wants the sponge to mop it",
         "marco's plating up on blue so that plate's his and lena has the white",
-        "our ramp agent keeps treading on the crisops, so stick them up on the shelf",
-        "Alice has been stuck on an escalator callout all shift, so the bvottle goes to her.",
-        "Person B's had a long turbine tech shift, the chmips are his.",
-        "Person A did the whole steelpan set, give her the cnhips",
-        "Emma skipped breakfast and asked if she could have the baqnana.",
-        "Drop the srtapler into the box, people keep walking off with it.",
-        "Lily won't settle for her nap without the tevddy.",
         "Could the apple go on the counter, next to where Alice does her cross-stitch?",
         "Would there be any chance of getting the crisps to Alice before she starts her mime "
         "workshop?",
@@ -393,7 +363,6 @@ KNOWN_UNCLEAR = frozenset(
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         "The cup to Person A, no, the other thing she asked for.",
-        "Give Person B the one he pointed at earlier, the cup or the botftle, I didn't see which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
