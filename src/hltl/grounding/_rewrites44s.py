@@ -8,6 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
 from hltl.grounding._normalise4 import _fit36
+from hltl.grounding._rewrites39 import doubt_which39
 from hltl.grounding._rewrites41s import _ORDER41S, _WANT_SAID41S
 from hltl.grounding._rewrites42s import _P42S, _fits42s, _remark_only42s
 from hltl.grounding._rewrites43s import _LATER43S, _PRON43S
@@ -943,31 +944,26 @@ def _done_with44s(text: str, lexicon: Lexicon) -> str:
 # "Give Person B the one he pointed at earlier, the cup or the bottle, I didn't see which": as
 # session 39's "I can't remember which" (`doubt_which39`), the speaker does not know which of two
 # things is meant: refused naming both readings (it had been refused on 'I', naming none).
-_UNSEEN_WHICH44S = re.compile(
-    r"(?P<a>\b(?:the|a|an) [a-z]+(?: [a-z]+)?) or (?P<b>(?:the|a|an) [a-z]+(?: [a-z]+)?)"
-    r"(?:,|\.|;|\s*-)?\s*(?:but |and )?I (?:didn't|did not|couldn't|could not|can't|cannot|"
-    r"wasn't able to|never) (?:see|catch|notice|spot|hear|make out|tell|quite see)(?: properly| "
-    r"exactly)? which\b",
+_UNSEEN44S = re.compile(
+    r"(?<=\bI )(?:didn't|did not|couldn't|could not|can't|cannot|wasn't able to|never) (?:see|"
+    r"catch|notice|spot|hear|make out|tell|quite see)(?: properly| exactly)?(?= which\b)",
     _F,
 )
 
 
 def unseen_which44s(text: str, lexicon: Lexicon) -> None:
-    """Session 44 (12s): the doubt above refused naming both things, when each names one thing
-    of the scene and they differ."""
+    """Session 44 (12s): the doubt above asked as session 39's `doubt_which39` asks "I can't
+    remember which" (its refusal names both things), the speaker's own words quoted."""
     if "which" not in text.lower():
         return
-    m = _UNSEEN_WHICH44S.search(text)
+    m = _UNSEEN44S.search(text)
     if m is None:
         return
-    a, b = _ids(m["a"], lexicon), _ids(m["b"], lexicon)
-    if len(a) != 1 or len(b) != 1 or a == b:
-        return
-    (x,), (y,) = a, b
-    raise GroundingError(
-        f"{m[0]!r}: the speaker does not know which is meant, {m['a']} ({x}) or {m['b']} ({y}); "
-        "say which"
-    )
+    said = text[: m.start()] + "can't remember" + text[m.end() :]
+    try:
+        doubt_which39(said, lexicon)
+    except GroundingError as refused:
+        raise GroundingError(str(refused).replace("can't remember", m.group(0), 1)) from None
 
 
 # the normaliser's rewrites run before the session-43 ones (wired into normalise._STEPS19)
