@@ -41,7 +41,6 @@ KNOWN_MISSES = frozenset(
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
         # blind4: "<objects> will do for <person>"
         # blind5 (tuned on in session 7): a surface name used as the verb
-        "Shelf the bottle please",
         # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
         # way round, and Carol the apple"): the swap is read only as the last words
         "Give Alice the cup and Bob the chips, or the other way round, and Carol the apple",
@@ -209,8 +208,6 @@ KNOWN_MISSES = frozenset(
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "The applie goes on the shelf for now.",
-        "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
-        "Could you hang the tongs on the plate rack, Marco's done with them?",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
         "Ta ever so, Person B's been on the sackbut all morning and could murder that bottle.",
         "The bottle's a must for Person B after bocce, and Person A's set on the chips.",
@@ -247,10 +244,8 @@ KNOWN_MISSES = frozenset(
         "The chips would go down a treat with Person A.",
         "If nobody else has claimed the bottle, Person A would gladly take it off your hands.",
         "Honestly, the chips are the thing Person B needs more than anything.",
-        "Those crisps? Alice has been after them, so over to her they go.",
         "Person A's apple needs taking to her, and her bottle as well.",
         "The cup? That's Person B's. The apple? Person A's. Off they go to them.",
-        "Person B's having the chips, and ditto the apple.",
         "Person B put his name down for the chips, so he gets them.",
         "The scissors are Zoe's to borrow, and Noah's having the glue.",
         "Put Lily's sippy cup on the high chair for her.",

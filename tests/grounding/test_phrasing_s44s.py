@@ -530,6 +530,8 @@ test_opening_remark = OPENING.test(
     ("Priya's coffee needs stirring; pass her the notebook.", "notebook>A", OFFICE),
 )
 test_opening_remark_refused = OPENING.test(
+    # an answer to no question (causes8: does what?)
+    ("Bob does, give him the chips", None, CELL),
     # a pronoun not the person, a time to come, another person named
     (
         "Tom has been stuck on a freight recall all shift, so the scanner goes to her.",

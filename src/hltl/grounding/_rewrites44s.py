@@ -469,6 +469,8 @@ def _opening_remark44s(text: str, lexicon: Lexicon) -> str:
     if m is None or not _only_person(m["who"], lexicon):
         return text
     words = re.sub(r"^(?:'s|\s)\s*", "", m["words"])
+    if len(words.split()) < 2:
+        return text  # "Bob does, give him the chips" (causes8): does what? an answer to no one
     # "Zoe's got shodo practice after this, so give her …": when her practice is, not the task
     # (an order only); "Mr Novak's salad needs seasoning; …": the need of a thing of theirs
     if _ORDER41S.match(m["rest"]) and re.match(r"got ", words, _F):
