@@ -75,8 +75,10 @@ test_name_corrected = NAME_FIXED.test(
     ),
 )
 test_name_corrected_refused = NAME_FIXED.test(
-    # a list of people before the cue: which name does it take back?
+    # a list of people before the cue: which name does it take back? without a comma after a
+    # handover, Bob may get the cup too
     ("Give the bottle to Alice and Bob, sorry, Alice is having the crisps.", None, TWO),
+    ("Give Alice the cup and Bob, sorry, Carol is having the apple.", None, CELL),
 )
 
 

@@ -1964,7 +1964,7 @@ def _not_a_list_for_a_list(before: list[Item], after: list[Item], marker: Item) 
 
 
 def _name_after_clause44s(before: list[Item], start: int) -> int | None:
-    """Where a name said alone after ', and' (or 'and' after a name of another kind) closing
+    """Where a name said alone after ', and' (or 'and' after a surface) closing
     ``before`` starts, when a clause comes before it in the sentence (from ``start``); None
     otherwise ("…, and Bob, sorry, Alice is having the crisps": 'Bob' is what 'sorry' takes
     back; "to Alice and Bob, sorry, …" is a list, left to the rules below)."""
@@ -1975,8 +1975,10 @@ def _name_after_clause44s(before: list[Item], start: int) -> int | None:
     if m - 1 <= start or not _is(before[m - 1], "and"):
         return None
     if not _is(before[m - 2], ","):
+        # without a comma only after a place ("Put the globe on the shelf and Noah, sorry, …"):
+        # "Give Alice the cup and Bob, sorry, …" may hand the cup to Bob too (refused, as before)
         prev = next((x for x in reversed(before[start : m - 1]) if x.kind == "ent"), None)
-        if prev is None or {x.kind for x in prev.refs} & {x.kind for x in before[-1].refs}:
+        if prev is None or any(x.kind != "surface" for x in prev.refs):
             return None
     if not any(x.kind == "ent" for x in before[start : m - 1]):
         return None
