@@ -870,8 +870,9 @@ test_ditto = DITTO.test(
     ("Give Tom the gloves, ditto the tape.", "gloves>B & tape>B", DEPOT),
 )
 test_ditto_refused = DITTO.test(
-    # a surface
+    # a surface; two people before it (ditto whose?)
     ("Marco gets the knife, and ditto the rack.", None, KITCHEN),
+    ("Give Bob the cup and Alice the apple, ditto the chips.", None, CELL),
 )
 
 

@@ -904,6 +904,9 @@ def _ditto44s(text: str, lexicon: Lexicon) -> str:
     x = m["x"]
     if not _ids(x, lexicon, "object") or _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
         return text
+    before = _reading(text[: m.start()], lexicon)
+    if before is None or len({t.target for t in tasks(before)}) != 1:
+        return text  # "Give Bob the cup and Alice the apple, ditto the chips": ditto whose?
     out = text[: m.start()] + f", and {x} too" + (m["end"] or "").strip()
     return out if _reading(out, lexicon) is not None else text
 
