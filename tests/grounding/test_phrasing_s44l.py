@@ -92,11 +92,21 @@ def test_named_person_still_reads(text: str) -> None:
     assert_reads(text, "bottle>A", ONE)
 
 
-@pytest.mark.parametrize("name", ["Dana", "Person C", "Jess", "the visitor"])
-def test_no_sex_said_reads_either_pronoun(name: str) -> None:
+@pytest.mark.parametrize(
+    ("name", "aliases"),
+    [("Dana", ()), ("Person C", ()), ("Jess", ()), ("the visitor", ()), ("Person A", ("Kofi",))],
+)
+def test_no_sex_said_reads_either_pronoun(name: str, aliases: tuple[str, ...]) -> None:
+    # the generic label's convention holds only for a person called by it alone: the paraphrase
+    # scenes call Kofi 'Person A' too
     for form in FORMS:
-        assert_reads(_said(form, "m"), "bottle>A", _alone(name))
-        assert_reads(_said(form, "f"), "bottle>A", _alone(name))
+        assert_reads(_said(form, "m"), "bottle>A", _alone(name, *aliases))
+        assert_reads(_said(form, "f"), "bottle>A", _alone(name, *aliases))
+
+
+def test_a_first_name_beside_the_label_rules_out() -> None:
+    assert_refused("Give him the bottle.", _alone("Person A", "Alice"), match="is a she")
+    assert_reads("Give him the bottle.", "bottle>A", _alone("Person A", "Bob"))
 
 
 @given(st.sampled_from(sorted(SAID)), st.sampled_from(FORMS), st.booleans())
@@ -160,3 +170,25 @@ def test_held_beside_a_request_read_without(
 )
 def test_shares_and_times_read_as_before(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
+
+
+# -- a bare comma between two things after 'Not' is a correction, not a list of things left out
+# (_rewrites42r._NOT_LIST42R): 12c's fuzz found "Not the apple, the cup, and it's for Alice. Alice
+# wouldn't say no to the crisps." read chips>A, the cup dropped
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Not the apple, the cup, and it's for Alice. Alice wouldn't say no to the crisps.",
+            "cup>A & chips>A",
+        ),
+        ("Not the apple and not the cup; Bob gets the chips.", "chips>B"),
+        ("Not the apple, not the cup: Bob gets the chips.", "chips>B"),
+        ("Not the apple, nor the cup: Bob gets the chips.", "chips>B"),
+        ("Not the red mug, not the blue; Bob gets the cup.", "cup>B"),
+    ],
+)
+def test_not_then_a_bare_comma(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)
