@@ -51,12 +51,13 @@ FORMS = [
     "Give {obj} the bottle.",
     "Pick up the bottle, then hand it to {obj}.",
     "See that bottle? {Subj}'d like it.",
+    "Give the bottle to {obj}, {subj}'s thirsty.",  # session 32's, with 'him' for Person A
 ]
 
 
 def _said(form: str, sex: str) -> str:
     obj, subj = ("him", "He") if sex == "m" else ("her", "She")
-    return form.format(obj=obj, Subj=subj)
+    return form.format(obj=obj, Subj=subj, subj=subj.lower())
 
 
 @pytest.mark.parametrize("name", sorted(SAID))
