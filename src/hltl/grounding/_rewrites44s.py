@@ -365,6 +365,30 @@ _RUN_ON_NEXT44S = re.compile(
 )
 
 
+_SAYING44S = frozenset(
+    {
+        "says",
+        "said",
+        "say",
+        "thinks",
+        "thought",
+        "reckons",
+        "reckoned",
+        "mentioned",
+        "told",
+        "tells",
+        "knows",
+        "hopes",
+        "feels",
+        "believes",
+        "guesses",
+        "that",
+        "claims",
+        "swears",
+    }
+)
+
+
 def _run_on_pronoun44s(text: str, lexicon: Lexicon) -> str:
     """Session 44 (12s): the commas above put in, when each pronoun fits the one person named
     before it, the word before the next clause is a thing of the scene, and what is left reads
@@ -378,6 +402,16 @@ def _run_on_pronoun44s(text: str, lexicon: Lexicon) -> str:
         ids = {r.id for it in people for r in it.refs}
         if len(ids) != 1 or not _only_fit44s(next(iter(ids)), text[m.end() :].split()[0], lexicon):
             return text
+        before = text[: m.start()].split()
+        if before and before[-1].lower() in _SAYING44S:
+            return text  # "Person A says she's after the bottle, …": what she says (session 28)
+        want = re.match(
+            r"\S+\s+(?:\S+\s+)?(?:after|like|love|use|with|wants|needs)\s+(\S+(?: \S+)?)",
+            text[m.end() :],
+            _F,
+        )
+        if want is None or not _ids(want[1], lexicon, "object"):
+            return text  # "give the bottle to bob he's after it": what it wants is no thing said
         cuts.append(m.start())
     if not cuts:
         return text
