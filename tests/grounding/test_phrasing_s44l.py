@@ -13,6 +13,7 @@ from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     KITCHEN,
+    LAB,
     OFFICE,
     ROOT,
     WARD,
@@ -155,6 +156,56 @@ def test_held_beside_a_request_read_without(
     assert tree(text, scene) is not None  # the grammar reads it as a share
 
 
+# 12c's `holds` fuzz family: a remark that the person already holds / still has / has had / has
+# their own thing, beside a request, had its thing read as a later 'it' or handed over
+HOLDS = [
+    ("Bob has his own crisps already. Put the cup on the shelf and then give it to Bob", CELL),
+    ("Bob already has the crisps, so give Bob any mug, it doesn't matter which", CELL),
+    ("Lena's got the tongs already, so the lemon should go on the counter.", KITCHEN),
+    ("Jess still has the tin of screws from earlier, so put the hammer on the bench.", WORKSHOP),
+    ("Jess has her own power drill already. Put the hammer on the bench", WORKSHOP),
+    ("Omar is already holding the spoon. Either give Omar the banana or put it on the tray", LAB),
+    ("Mrs Khan already has the medication, so take Mr Lee the magazine.", WARD),
+    ("Carol's still holding the red mug, give her the apple too.", CELL),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HOLDS)
+def test_held_already_beside_a_request_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="already holds or had: it asks for nothing")
+
+
+# the fuzz's own sentences, which the grammar read wrongly
+HOLDS_READ = [
+    HOLDS[0],
+    HOLDS[1],
+    (
+        "Lena's got the tongs already, so the lemon should go on the counter and the salt should "
+        "go to Lena once it's there",
+        KITCHEN,
+    ),
+    (
+        "Jess still has the tin of screws from earlier, so put the hammer on the bench and give "
+        "Jess the torch once it's there",
+        WORKSHOP,
+    ),
+    HOLDS[5],
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HOLDS + HOLDS_READ[2:4])
+def test_held_already_beside_a_request_refused_too(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="already holds or had: it asks for nothing")
+
+
+@pytest.mark.parametrize(("text", "scene"), HOLDS_READ)
+def test_held_already_read_without(
+    text: str, scene: Scene, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(_rewrites44l, "held_beside44l", lambda text, lexicon: None)
+    assert tree(text, scene) is not None  # read (12c: with the thing misplaced or handed over)
+
+
 @pytest.mark.parametrize(
     ("text", "want", "scene"),
     [
@@ -167,6 +218,7 @@ def test_held_beside_a_request_read_without(
         ("Give Alice the apple after Bob has the cup.", "cup>B ; apple>A", CELL),
         # 'her' not before a scene object
         ("Carol has her hands full, so put the apple on the shelf.", "apple@shelf", CELL),
+        ("Bob still wants the apple, give it to him.", "apple>B", CELL),
     ],
 )
 def test_shares_and_times_read_as_before(text: str, want: str, scene: Scene) -> None:

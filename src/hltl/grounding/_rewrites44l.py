@@ -19,9 +19,13 @@ from hltl.grounding.lexicon import Lexicon
 # speaker does mean it as a share, a handover; refused naming both readings, as session 32 refuses
 # the sentence alone. Asked before the first read (offline._parse), as the grammar reads it.
 _HELD44L = re.compiled(
-    rf"(?:^|[.;,:!?]\s*|\band\s+)(?P<who>{_WHO42R})(?:'s got|’s got|\s+has got|\s+has)\s+"
-    r"(?P<whose>his|her|their|the)\s+(?P<x>[a-z]+(?:\s+(?!(?:and|or|so|but|now|already|"
-    r"there|here|with|on|in)\b)[a-z]+){0,2})\s*(?P<after>,?\s*\bso\b|[.;,:!?]|$)",
+    rf"(?:^|[.;,:!?]\s*|\band\s+)(?P<who>{_WHO42R})\s*(?P<adv1>(?:already|still)\s+)?"
+    r"(?P<verb>'s got|’s got|\s*has got|\s*has had|'s had|’s had|\s*has|(?:'s|’s|\s+is)\s+"
+    r"(?:already\s+|still\s+)?holding)\s+(?P<adv2>(?:already|still)\s+)?"
+    r"(?P<whose>his|her|their|the)\s+(?P<own>own\s+)?(?P<x>[a-z]+(?:\s+(?!(?:and|or|so|but|now|"
+    r"already|still|from|there|here|with|on|in)\b)[a-z]+){0,2})\s*"
+    r"(?P<tail>(?:already|still|from earlier|from before|as it is)\s*)?"
+    r"(?P<after>,?\s*\bso\b|[.;,:!?]|$)",
     _F,
 )
 _OWN44L = frozenset({"his", "her", "their"})
@@ -30,10 +34,18 @@ _OWN44L = frozenset({"his", "her", "their"})
 def held_beside44l(text: str, lexicon: Lexicon) -> None:
     """Session 44: "P's got her X; give Q …", "P has the X so give Q …" refused naming both
     readings (above). A 'the' thing with no 'so' after it keeps session 32's reading (a share)."""
-    if "has" not in text and "got" not in text:
+    if "has" not in text and "got" not in text and "holding" not in text:
         return
     for m in _HELD44L.finditer(text):
-        if m["whose"].lower() not in _OWN44L and not m["after"].lower().endswith("so"):
+        verb = " ".join(m["verb"].lower().replace("’", "'").split())
+        state = bool(
+            m["adv1"] or m["adv2"] or m["own"] or m["tail"] or verb.endswith(("had", "holding"))
+        )
+        if (
+            not state
+            and m["whose"].lower() not in _OWN44L
+            and not m["after"].lower().endswith("so")
+        ):
             continue
         who = m["who"]
         if not _only_person(who, lexicon):
@@ -49,7 +61,15 @@ def held_beside44l(text: str, lexicon: Lexicon) -> None:
         )
         if thing is None or len(thing.split()) != len(words):
             continue
-        said = text[m.start("who") : m.end("x")]
+        said = text[m.start("who") : m.end("tail") if m["tail"] else m.end("x")].strip()
+        if state:
+            # session 44 (12c's `holds` fuzz family): "Bob has his own crisps already. Put the cup
+            # on the shelf and then give it to Bob" had read chips>B (the remark's thing taken for
+            # the 'it'), "Bob already has the crisps, so give Bob any mug" … & chips>B
+            raise GroundingError(
+                f"{said!r} says what {who} already holds or had: it asks for nothing; leave it "
+                f"out, or say 'give {who} the {thing}' to have it handed over"
+            )
         raise GroundingError(
             f"{said!r} beside a request could say what {who} already holds (nothing to do for "
             f"it) or that {who} is to get the {thing}: say 'give {who} the {thing}' "
