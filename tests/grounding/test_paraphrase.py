@@ -41,7 +41,6 @@ KNOWN_MISSES = frozenset(
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
         # blind4: "<objects> will do for <person>"
         # blind5 (tuned on in session 7): a surface name used as the verb
-        "Shelf the bottle please",
         # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
         # way round, and Carol the apple"): the swap is read only as the last words
         "Give Alice the cup and Bob the chips, or the other way round, and Carol the apple",
@@ -199,8 +198,6 @@ KNOWN_MISSES = frozenset(
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "The applie goes on the shelf for now.",
-        "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
-        "Could you hang the tongs on the plate rack, Marco's done with them?",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
         "Ta ever so, Person B's been on the sackbut all morning and could murder that bottle.",
         "The bottle's a must for Person B after bocce, and Person A's set on the chips.",
@@ -237,10 +234,8 @@ KNOWN_MISSES = frozenset(
         "The chips would go down a treat with Person A.",
         "If nobody else has claimed the bottle, Person A would gladly take it off your hands.",
         "Honestly, the chips are the thing Person B needs more than anything.",
-        "Those crisps? Alice has been after them, so over to her they go.",
         "Person A's apple needs taking to her, and her bottle as well.",
         "The cup? That's Person B's. The apple? Person A's. Off they go to them.",
-        "Person B's having the chips, and ditto the apple.",
         "Person B put his name down for the chips, so he gets them.",
         "The scissors are Zoe's to borrow, and Noah's having the glue.",
         "Put Lily's sippy cup on the high chair for her.",
@@ -254,15 +249,8 @@ KNOWN_MISSES = frozenset(
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
         "Suksma, robot — my Balinese gran taught me that word — could you bring Carol the red mug?",
-        "Right, erm, before my fibre splicer shift starts, pop the crisps up on the shelf for "
-        "me, would you, ta.",
         "With all due respect, machine, Person A needs the bottle, thanking you kindly.",
         "Chettirdim, friend, that's Tuvan for thanks; would you carry the crisps to Person A?",
-        "Sorry to be a pest, Omar's back from rug hooking club and would like the white cup, "
-        "please and thank you.",
-        "Morning Mia! Um, so, the packing tape onto the conveyor, lovely, ta.",
-        "Zoe's got shodo practice after this, so be a sweetheart and give her the glue stick, "
-        "thanks ever so.",
         "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
         "Alice could really do with a drink, she's been spinning fire poi for an hour.",
         "What Bob fancies right now is a packet of crisps.",
@@ -276,8 +264,6 @@ KNOWN_MISSES = frozenset(
         "Noah's desperate for a ruler to finish drawing his xiangqi board.",
         "Lily's all sticky, she needs the baby wipes, she does.",
         "Those crisps Alice left out, stick them on the shelf.",
-        "Person B's back from his kora lesson; the cup's for him, and so's the apple.",
-        "Person A's after the chips; Person B, back from his rice paddy survey, the cup.",
         "The apple, Person A said she'd have it.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
         "her.",
@@ -286,20 +272,6 @@ KNOWN_MISSES = frozenset(
         "Person A's waiting. Take it to her, the bottle.",
         "Those crisps are the ones Person B knocked off his lap during the gritter briefing, so "
         "return them to him.",
-        "Mr Novak's salad needs seasoning; pass him the salt.",
-        "Grandad's reading to Lily; give him the teddy, he'll do the voices.",
-        "Kofi's cleared a space on the workbench. Put the drill there.",
-        "Cup goes up on the shelf and when that's sorted Alice is having the crisps and after "
-        "her Bob has the apple that's everything.",
-        "Shelf for the bottle first, and after that Alice wants the crisps so give them to her.",
-        "Person A gets the bottle Person B gets the chips they've both been doing the line "
-        "painter course no fuss.",
-        "Person A had a long night on ramp agent duty she'd like the bottle the chips can go to "
-        "Person B.",
-        "Start with the banana, tray please. Spoon to the sink after. Last of all Dana's green "
-        "cup goes back to her.",
-        "Sam needs the red pen Priya the notebook just hand them over.",
-        "Mr Lee's finished his magazine. Mrs Khan wants it next. Take it to her.",
         "Tongs to Marco he's at the grill, the knife to Lena she's on lemons.",
         "Clear both things off the floor and up onto the shelf, bottle and crisps alike, the "
         "pavers are coming through.",
@@ -312,17 +284,8 @@ KNOWN_MISSES = frozenset(
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
-        "shelve the crisps first and when that's done bob can have the bottle",
-        "person b's asking for the cup, also the apple if it's going spare",
         "emma spilt her tea and wants the sponge to mop it",
         "marco's plating up on blue so that plate's his and lena has the white",
-        "our ramp agent keeps treading on the crisops, so stick them up on the shelf",
-        "Alice has been stuck on an escalator callout all shift, so the bvottle goes to her.",
-        "Person B's had a long turbine tech shift, the chmips are his.",
-        "Person A did the whole steelpan set, give her the cnhips",
-        "Emma skipped breakfast and asked if she could have the baqnana.",
-        "Drop the srtapler into the box, people keep walking off with it.",
-        "Lily won't settle for her nap without the tevddy.",
         "Could the apple go on the counter, next to where Alice does her cross-stitch?",
         "Would there be any chance of getting the crisps to Alice before she starts her mime "
         "workshop?",
@@ -346,7 +309,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind42 (tuned on in session 44)
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
-        "Give Person B the one he pointed at earlier, the cup or the botftle, I didn't see which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

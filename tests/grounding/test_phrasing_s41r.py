@@ -8,7 +8,14 @@ from __future__ import annotations
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites41r, _rewrites42r, _rewrites43r, _rewrites44r, offline
+from hltl.grounding import (
+    _rewrites41r,
+    _rewrites42r,
+    _rewrites43r,
+    _rewrites44r,
+    _rewrites44s,
+    offline,
+)
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
@@ -384,6 +391,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 44 (12r): its rules of the same families read some of these too
             *_rewrites44r._STEPS44R_FIRST,
             *_rewrites44r._STEPS44R,
+            # session 44 (12s): 'last of all' said as 'lastly' reads these too
+            _rewrites44s._after_end44s,
         ),
         monkeypatch,
     )
