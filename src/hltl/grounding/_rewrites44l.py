@@ -37,6 +37,8 @@ def held_beside44l(text: str, lexicon: Lexicon) -> None:
     if "has" not in text and "got" not in text and "holding" not in text:
         return
     for m in _HELD44L.finditer(text):
+        if not re.search(r"[a-z]", text[: m.start("who")] + text[m.end() :], _F):
+            continue  # alone it is session 32's sentence (offline._state_only32s says what it is)
         verb = " ".join(m["verb"].lower().replace("’", "'").split())
         state = bool(
             m["adv1"] or m["adv2"] or m["own"] or m["tail"] or verb.endswith(("had", "holding"))
