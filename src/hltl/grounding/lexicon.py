@@ -2389,7 +2389,10 @@ def unnamed_sex44l(pid: str, lexicon: Lexicon) -> str | None:
     alone, blind42; "Give him the bottle." with Alice alone)."""
     human = next(h for h in lexicon.scene.humans if h.id == pid)
     sexes = {said_sex35s(pid, lexicon), first_name_sex36s(pid, lexicon)}
-    sexes |= {_GENERIC_SEX44L.get(a.lower()) for a in (human.name, *human.aliases)}
+    if all(a.lower() in _GENERIC_SEX44L for a in (human.name, *human.aliases)):
+        # only a person the scene calls by the generic label alone: the paraphrase scenes name
+        # Kofi 'Person A' too (12's note)
+        sexes.add(_GENERIC_SEX44L.get(human.name.lower()))
     sexes.discard(None)
     return next(iter(sexes)) if len(sexes) == 1 else None
 

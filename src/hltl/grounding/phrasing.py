@@ -1983,6 +1983,28 @@ def _not_a_list_for_a_list(before: list[Item], after: list[Item], marker: Item) 
         )
 
 
+def _name_after_clause44s(before: list[Item], start: int) -> int | None:
+    """Where a name said alone after ', and' (or 'and' after a surface) closing
+    ``before`` starts, when a clause comes before it in the sentence (from ``start``); None
+    otherwise ("…, and Bob, sorry, Alice is having the crisps": 'Bob' is what 'sorry' takes
+    back; "to Alice and Bob, sorry, …" is a list, left to the rules below)."""
+    n = len(before)
+    if n < 3 or before[-1].kind != "ent":
+        return None
+    m = _past_dets_back(before, n - 1)
+    if m - 1 <= start or not _is(before[m - 1], "and"):
+        return None
+    if not _is(before[m - 2], ","):
+        # without a comma only after a place ("Put the globe on the shelf and Noah, sorry, …"):
+        # "Give Alice the cup and Bob, sorry, …" may hand the cup to Bob too (refused, as before)
+        prev = next((x for x in reversed(before[start : m - 1]) if x.kind == "ent"), None)
+        if prev is None or any(x.kind != "surface" for x in prev.refs):
+            return None
+    if not any(x.kind == "ent" for x in before[start : m - 1]):
+        return None
+    return m
+
+
 def _past_dets_back(items: list[Item], k: int) -> int:
     while k > 0 and _is(items[k - 1], "det"):
         k -= 1
@@ -2119,6 +2141,16 @@ def _apply_correction(
     while r < len(after) and _is(after[r], "det", "to", "for", "on", "filler"):
         r += 1
     if _clause_opens(after, r):
+        named = _name_after_clause44s(before, start)
+        if (
+            named is not None
+            and after[r].kind == "ent"
+            and {x.kind for x in after[r].refs} == {x.kind for x in before[-1].refs}
+        ):
+            # "The bottle goes on the shelf, and Bob, sorry, Alice is having the crisps": the
+            # name said alone after a clause is what is corrected, the clause after the cue its
+            # own (session 44, 12s: the whole first clause had been taken back)
+            return before[:named] + list(after)
         # a whole new clause replaces the last clause (from its verb back to the separator
         # before it: its subject too); "it" keeps meaning what that clause moved
         verbs = [k for k in range(start, len(before)) if _is_verb_item(before[k])]
