@@ -52,17 +52,9 @@ def held_beside44l(text: str, lexicon: Lexicon) -> None:
         who = m["who"]
         if not _only_person(who, lexicon):
             continue
-        words = m["x"].split()
-        thing = next(
-            (
-                " ".join(words[:n])
-                for n in range(len(words), 0, -1)
-                if _objects_only(" ".join(words[:n]), lexicon)
-            ),
-            None,
-        )
-        if thing is None or len(thing.split()) != len(words):
-            continue
+        thing = " ".join(m["x"].split())
+        if not _objects_only(thing, lexicon):
+            continue  # exactly a scene object, said in up to three words
         said = text[m.start("who") : m.end("tail") if m["tail"] else m.end("x")].strip()
         if state:
             # session 44 (12c's `holds` fuzz family): "Bob has his own crisps already. Put the cup
