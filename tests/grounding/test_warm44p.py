@@ -3,6 +3,7 @@ and a pattern the list lacks still works (gated and compiled when first met)."""
 
 from __future__ import annotations
 
+import argparse
 import re
 
 import pytest
@@ -38,13 +39,29 @@ def test_a_pattern_the_list_lacks_is_gated_when_first_met(monkeypatch: pytest.Mo
         assert gate.sub(pattern, r"<\1>", text, flags=re.I) == want
 
 
-def test_the_first_instruction_of_a_process_warms_up(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_an_instruction_does_not_warm_up(monkeypatch: pytest.MonkeyPatch) -> None:
+    """One ``hltl ground`` compiles only what its instruction meets: parse_instruction never
+    calls the warm-up (the bench does, before its parts)."""
     from hltl.grounding.offline import parse_instruction
     from tests.grounding.helpers import CELL
 
     monkeypatch.setattr(warm, "_DONE", False)
-    for pattern, flags, _ in PATTERNS[:3]:
-        gate.forget(pattern, flags)
     parse_instruction("Give Alice the cup", CELL)
-    assert warm._DONE
-    assert all(p in gate._GATES[f] for p, f, _ in PATTERNS[:3])
+    assert not warm._DONE
+
+
+def test_the_bench_warms_up_unless_told_cold(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from hltl.bench.grounding import Corpus, Score
+    from hltl.cli import bench
+
+    calls: list[int] = []
+    monkeypatch.setattr(bench, "warm_up", lambda: len(calls.append(1) or ()))
+    monkeypatch.setattr(bench, "score", lambda corpus, ground: Score(corpus.name, ()))
+    monkeypatch.setattr(bench, "load_corpus", lambda path, root: Corpus("tuning", {}, ()))
+    for cold in (False, True):
+        args = argparse.Namespace(parts="tuning", write=None, show=False, cold=cold)
+        assert bench.run_grounding(args) == 0
+    assert calls == [1]
+    assert capsys.readouterr().err.count("warm-up:") == 1

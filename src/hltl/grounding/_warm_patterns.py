@@ -11,6 +11,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("'(?:s|ll|re|d|ve|m)$", 0, True),
     ("'(?:s|ll|re|d|ve|m)\\b|n't\\b", 0, True),
     ("'(?:s|re|ve|m)$", 0, True),
+    ("'.*$", 0, True),
     ("'s$", 0, True),
     ("'s,? and (?:no one|no-one|nobody|not anybody|not anyone) else's\\b", 2, True),
     (
@@ -55,11 +56,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "(,\\s*(?:and )?(?:then |after that |afterwards |next )?)(Person\\ B),?\\s+for (?=the |a |an )",
-        2,
-        True,
-    ),
-    (
-        "(,\\s*(?:and )?(?:then |after that |afterwards |next )?)(Person\\ C),?\\s+for (?=the |a |an )",
         2,
         True,
     ),
@@ -617,6 +613,16 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("(?P<on>\\b(?:on|onto|in|into) the [a-z]+) with (?:it|them)(?=\\s*(?:[,.;!]|$))", 2, True),
     (
+        "(?P<sep>,\\s*)(?:(?:it )?(?:makes )?no odds|(?:it )?(?:makes|is) no (?:odds|difference)|no matter which|(?:it )?doesn't matter(?: which)?|either's fine|either is fine)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "(?P<sep>,\\s*)(?:either|any|whichever)(?: one| of them| of the two)? (?:suits|will suit|would suit|does|will do|would do|'ll do|pleases|keeps) (?:her|him|them)(?: (?:fine|nicely|well|just fine|happy))?(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
         "(?P<state>(?:'s|'re|\\bis|\\bare|\\bwas|\\bwere) (?:really |so |very |absolutely |proper |well |just )?(?:thirsty|hungry|parched|gasping|peckish|starving|famished|ravenous|cold|freezing|frozen|tired|knackered|shattered|exhausted|worn out|sore|sticky|filthy|soaked|drenched|dry|boiling|roasting|sweaty|dusty)) (?P<cause>(?:after|from) [a-z' -]+?)(?=\\s*(?:[,.;!?]|$))",
         2,
         True,
@@ -815,6 +821,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("(^|(?<=[.;!?] ))lastly\\b", 2, True),
     (
         "(^|(?<=[.;!?])\\s*)(?:(?:hi|hello|hey|oh),?\\s+)?(?:(?:i'm|i am) )?(?:so |really |very |terribly |awfully |ever so |truly )*sorry (?:to (?:bother|interrupt|trouble|disturb|pester|hassle|ask|nag|be (?:a |such a )?(?:pain|nuisance|bother|pest))(?: you)?(?: again)?(?: all)?|for (?:the )?(?:bother|interrupting|interruption|bothering you|troubling you|asking))\\b\\s*(?:[,.!]+\\s*(?:but\\b)?|\\s+but\\b)?\\s*",
         2,
@@ -930,7 +937,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("(^|(?<=[.;])\\s*)(?:for|to) (Bob)\\s*:", 2, True),
     ("(^|(?<=[.;])\\s*)(?:for|to) (Person\\ A)\\s*:", 2, True),
     ("(^|(?<=[.;])\\s*)(?:for|to) (Person\\ B)\\s*:", 2, True),
-    ("(^|(?<=[.;])\\s*)(?:for|to) (Person\\ C)\\s*:", 2, True),
     (
         "(^|,\\s*)(?:and )?with (?:the (?:greatest|utmost|deepest) |all (?:due )?)respect,\\s*",
         2,
@@ -958,6 +964,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("(^|[.;]\\s*)that one ([a-z]+)\\b", 2, True),
     ("(^|\\s)sort ([a-z]+(?: [a-z]+)?) out with\\b", 2, True),
     ("(^|\\s+)(?:new line|next line|new paragraph)\\b\\s*", 2, True),
+    ("(he|she)\\b", 2, True),
     (",? (?:as well as|plus|along with) ", 2, True),
     (",? (?:straight|right) off(?P<end>\\s*[.!]?)$", 2, True),
     (",? and |, ", 2, True),
@@ -1277,6 +1284,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("[,;:]", 0, True),
     ("[,;:]$", 0, True),
     ("[,;:—–]|\\s-\\s", 0, True),
+    ("[,;]|\\band\\b", 2, True),
     ("[.!?;:]", 0, True),
     ("[.!?;]", 0, True),
     ("[.!?;]*\\s*$", 0, True),
@@ -1284,7 +1292,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("[.!?;]\\s+\\S", 0, True),
     ("[.!?]", 0, True),
     ("[.!?]\\s", 0, True),
-    ("[.;!?]\\s+", 0, True),
+    ("[.;!?]\\s+\\S", 0, True),
     ("[.;:!?,]\\s|\\s(?:and|so|then|but)\\s", 0, True),
     ("[A-Za-z']+", 0, True),
     ("[A-Za-z]+", 0, True),
@@ -1307,6 +1315,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("\\S+\\s+(?:\\S+\\s+)?(?:after|like|love|use|with|wants|needs)\\s+(\\S+(?: \\S+)?)", 2, True),
     (
         "\\b((?:actually|no|sorry|wait),?\\s*)(?:reverse that|swap that(?: round| around)?|the other way (?:round|around)|flip that)\\s*,\\s*(?=(?:the )?[a-z ]+ first\\b)",
         2,
@@ -1412,6 +1421,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:after|since|following)\\b", 2, True),
     ("\\b(?:all|everything|any|anything|each|every|either|or|rest|other|others)\\b", 2, True),
     ("\\b(?:alongside|next to|beside)\\b", 0, True),
+    ("\\b(?:and|also|too|as well|plus|then|instead)\\b", 2, True),
     ("\\b(?:and|or)\\b", 0, True),
     ("\\b(?:and|or|the|one)\\b", 0, True),
     ("\\b(?:and|then|and then|but)\\s*$", 2, True),
@@ -1423,7 +1433,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\b(?:a|an|one|any|either)\\s+([a-z]+)\\b", 2, True),
     ("\\b(?:a|an|that|this) (?:[a-z]+ )?pair of ([a-z]+s)\\b", 2, True),
-    ("\\b(?:a|an|the)\\b", 2, True),
     ("\\b(?:a|one) (?:solitary|lone|single solitary|sole|lonely) (?=[a-z])", 2, True),
     (
         "\\b(?:a|the) (?:full|whole|complete) set of (?:the )?(?P<k>[a-z]+)s\\s*,\\s*(?:meaning|that is|i mean|namely|so)\\s+the (?P<a>[a-z]+) and the (?P<b>[a-z]+)(?: ones?)?(?=\\s*[.!]?\\s*$)",
@@ -1431,6 +1440,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(?:back )?(?:in|into|onto) (?=the )", 2, True),
+    ("\\b(?:bar|barring|save|but|except|apart)\\b", 2, True),
     (
         "\\b(?:both|all (?:two|three|four|five|six)) of (?:them|these|those)\\b([^,.;!?]*),\\s*((?:the |a |an )?[^,.;!?]+?(?:,\\s*(?:and\\s+)?|\\s+and\\s+)(?:the |a |an )?[^.;!?]+?)\\s*([.!]?)$",
         2,
@@ -1454,9 +1464,15 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:do you|d'you|d you|did you) reckon (?:that )?you (could|can)\\b", 2, True),
     ("\\b(?:done|finished|complete|completed)\\b", 2, True),
     ("\\b(?:each|every)\\b", 2, True),
+    ("\\b(?:else|rest|other things)\\b", 2, True),
     ("\\b(?:except|but|apart from|other than|bar|save|minus|excluding|not)\\b", 2, True),
     ("\\b(?:get|got)\\b", 0, True),
     ("\\b(?:give|hand|pass|bring|take|fetch|get)\\b", 2, True),
+    (
+        "\\b(?:give|hand|pass|bring|take|put|place|fetch|get|deliver|drop|stick|pop)\\b|(?:it|them|that|to|for|on|in)\\b",
+        2,
+        True,
+    ),
     ("\\b(?:good|great|nice|lovely) one\\b", 0, True),
     ("\\b(?:had|got|was|were|gave|took|brought|handed|passed|did|went|came)\\b", 2, True),
     ("\\b(?:has to|have to|should|must|needs? to) end up (on|in|onto)\\b", 2, True),
@@ -1478,10 +1494,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:he|him|his|she|her|hers|they|them|their)\\b", 2, True),
     ("\\b(?:he|him|she|her)\\b", 2, True),
     ("\\b(?:he|she|his|her)\\b", 0, True),
+    ("\\b(?:him|her)\\b", 2, True),
     ("\\b(?:him|her|he|she)\\b", 2, True),
-    ("\\b(?:him|her|them|me|us|you)\\b", 2, True),
     ("\\b(?:his|her)\\b", 2, True),
     ("\\b(?:his|her|their) [a-z]+", 2, True),
+    ("\\b(?:his|her|their)\\b", 0, True),
     ("\\b(?:his|her|their)\\b", 2, True),
     ("\\b(?:his|her|their|all (?:day|morning|afternoon|evening|night|week))\\b", 2, True),
     (
@@ -1495,6 +1512,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:is|are|was|were)\\b|'s\\b|'re\\b", 2, True),
     ("\\b(?:is|are|was|were|am) to be\\b", 2, True),
     ("\\b(?:it )?(?:doesn't|does not) bother me (?=which\\b)", 2, True),
+    ("\\b(?:it|it's)\\b", 2, True),
     ("\\b(?:it|them)\\b", 2, True),
     ("\\b(?:kindly |please )?do the needful,?\\s+and\\s+", 2, True),
     ("\\b(?:many|big|huge) thanks\\b", 2, True),
@@ -1523,6 +1541,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(?:no|not|n't)\\b(?! expert| bother)", 2, True),
+    (
+        "\\b(?:no|sorry|i mean|i meant|actually|wait)\\s*,?\\s*(?P<said>(?:the|that) other (?:thing|one|item)(?: (?:she|he|they|you) (?:asked for|wanted|meant|ordered|said|mentioned|wants|needs)))\\b",
+        2,
+        True,
+    ),
     ("\\b(?:no|sorry|wait|actually|scratch|hang on|hold on|i mean|rather)\\b", 2, True),
     ("\\b(?:oh|no|hang|hold|wait|sorry|scratch|actually|correction)\\b", 2, True),
     (
@@ -1532,10 +1555,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\b(?:one|any|either|whichever|each)\\b", 2, True),
     ("\\b(?:or|not|n't|unless)\\b", 2, True),
+    ("\\b(?:said|says|told me)\\b", 2, True),
     ("\\b(?:says|said|reckons|tells me) (?:he|she|they) (needs|wants|would like)\\b", 2, True),
     ("\\b(?:scratch that|strike that|silly me|daft me|my bad)\\b|^(?:oh|ah),?\\s*wait$", 2, True),
     ("\\b(?:see to it that|make sure that|make sure) ([A-Z][\\w ]*?) (?:receives|gets) ", 2, True),
     ("\\b(?:should|must|is to) be (?:furnished|provided|supplied) with\\b", 2, True),
+    ("\\b(?:skip|forget|leave out|never mind|bother|hold off|pass on)\\b", 2, True),
     ("\\b(?:so |very )?sorry to (?:interrupt|butt in|bother you)\\s*,\\s*", 2, True),
     ("\\b(?:straight |right )?into (?P<p>[a-z][\\w ]*?)'s hands\\b", 2, True),
     ("\\b(?:straight|right|directly|immediately) (after|afterwards)(?=\\s*(?:[,.;!?]|$))", 2, True),
@@ -1564,6 +1589,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:them|those|these)\\b", 2, True),
     ("\\b(?:thereafter|thereupon)\\b", 2, True),
     ("\\b(?:there|here)\\b", 2, True),
+    ("\\b(?:they|they're|them|those)\\b", 2, True),
     ("\\b(?:the|and|them|it|him|her)\\b", 0, True),
     ("\\b(?:the|a|an|to|on|in|into|onto|my|his|her|their)\\s*$", 2, True),
     ("\\b(?:this|that) (?:morning|afternoon|evening|week|year)\\b", 2, True),
@@ -1573,6 +1599,13 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:too|also|as well|instead of)\\b", 2, True),
     ("\\b(?:too|as well|also|and|plus)\\b", 2, True),
     ("\\b(?:very|so|ever so|most|really) (kindly|gently|quickly|carefully)\\b", 2, True),
+    ("\\b(?:wait|hang on|hold on|hang about|correction|my mistake|no|sorry)\\b", 2, True),
+    ("\\b(?:wait|hang on|hold on|hang about|correction|no)\\b", 2, True),
+    (
+        "\\b(?:wants?|needs?|gets?|would like|'d like|goes|go|give|hand|pass|bring|take|put|place|fetch|deliver|asked|ordered|for (?:him|her)|is for|'s for|to have|have|having|has|had|and|or|but|not|no)\\b",
+        2,
+        True,
+    ),
     ("\\b(?:wants?|needs?|would like|'d like)\\b", 2, True),
     (
         "\\b(?:whatever(?:'s| is) (?:here|there|about|around|on hand)|everything (?:here|there))(?:,)? (?:apart from|bar|other than|but|except for|except) (?=the |a |an )",
@@ -1589,6 +1622,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("\\b(?:will|'ll|going to|gonna)\\b", 2, True),
     (
         "\\b(?:y'?all|ya'?ll|you-all|youse|yous|you guys|you lot|you two)\\b(?=\\s*(?:[,.!:;]|$|(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|be|please|could|can|would|will|need|have|should|must|go|just)\\b))",
         2,
@@ -1602,6 +1636,16 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "\\b(?P<all>(?:both|all(?: (?:two|three|four))?) of the (?:things|items|bits))(?: (?:that )?(?:we've got|we have|you've got|you have|there are)(?: here| there)?| here| on offer| about)(?=\\s*[,:])",
+        2,
+        True,
+    ),
+    (
+        "\\b(?P<any>any|just|only)? ?one (?:thing|item)(?= (?:apart from|except(?: for)?|but|besides|other than|bar) )",
+        2,
+        True,
+    ),
+    (
+        "\\b(?P<cue>no|sorry|actually|wait|hang on|hold on)\\s*,\\s*(?:you know what|on second thoughts?|come to think of it|thinking about it|now i think about it)\\s*[,;]\\s*",
         2,
         True,
     ),
@@ -1637,12 +1681,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b(?P<p>Person\\ B|Person\\ A) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ A|Person\\ B) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
     (
-        "\\b(?P<p>Person\\ B|Person\\ A|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ A|Person\\ B|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
@@ -1724,7 +1768,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(Bob) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
     ("\\b(Person\\ A) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
     ("\\b(Person\\ B) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
-    ("\\b(Person\\ C) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
     ("\\b([A-Z][\\w ]*?),\\s*(?:she|he|they) (needs|wants|gets|would like)\\b", 2, True),
     ("\\b([A-Z][a-z]+), the ([a-z]+),(?= )", 2, True),
     ("\\b([a-z]+) (the [a-z]+)\\b", 2, True),
@@ -1984,7 +2027,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\bcould I (?:trouble|bother) you to\\b", 2, True),
-    ("\\bd'(?:you|ya|ye)\\b", 2, True),
     ("\\bdo likewise\\b", 2, True),
     ("\\bdont\\b", 2, True),
     ("\\bdoth (?:desire|want|crave|wish for)\\b", 2, True),
@@ -2023,6 +2065,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\bi (?:meant|mean|wanted) to say\\b|\\bi should(?: have|'ve) said\\b", 2, True),
+    ("\\bi misspoke there\\b", 2, True),
     ("\\bi would like (?:it )?that you (?=[a-z]+ )", 2, True),
     ("\\bif (?:ye|yous|u) (could|would|can)\\b", 2, True),
     (
@@ -2078,14 +2121,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\bonce (he|she|they)(?:'s| is|'re| are) sorted\\b", 2, True),
-    (
-        "\\bone of (?P<who>them|the two|the pair of them|the two of them)\\s*,\\s*(?:it )?(?:doesn't|does not) matter which(?: one)?\\s*,\\s*",
-        2,
-        True,
-    ),
+    ("\\bone (?:thing|item)\\b", 2, True),
     ("\\bone of the (?P<kind>[a-z]+s)\\s*,\\s*(?P<x>the [a-z]+(?: [a-z]+)?) or the ", 2, True),
     ("\\bone or (?:the )?other of (?=the )", 2, True),
     ("\\bone[- ]handed\\b", 2, True),
+    ("\\bother\\b", 2, True),
     ("\\bought to\\b", 2, True),
     ("\\bperson,?\\s*(?:er|erm|um|uh|ah),?\\s*(?=person [a-z]\\b)", 2, True),
     ("\\bplease to\\b", 2, True),
@@ -2131,6 +2171,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("\\bthe other (?P<k>[a-z]+)\\b", 2, True),
     ("\\bthe other (?P<kind>[a-z]+),\\s*not the (?P<adj>[a-z]+) (?:one|(?P=kind))\\b", 2, True),
     ("\\bthe pair of ([a-z]+s)(?=\\s*,\\s*the\\b)", 2, True),
     ("\\bthe pair of ([a-z]+s)\\b", 2, True),
@@ -2298,7 +2339,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    ("\\s*,\\s*(?:and\\s+)?|\\s+and\\s+", 0, True),
     (
         "\\s*,\\s*(?:he|she|they) (?:told me so|said so|told me|said as much)(?: (?:himself|herself|themselves|earlier|before|just now|this morning|yesterday))?(?:,? (?:while|when|as) i was [a-z]+ing(?: (?:up|out|round|about))?)?(?=\\s*[.!]?\\s*$)",
         2,
@@ -2316,13 +2356,22 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\s*,\\s*go on(?:,? then)?(?=\\s*[.!]?\\s*$)", 2, True),
     ("\\s*,\\s*that's all (?:he|she|they) (?:needs?|wants?)(?=\\s*[.!]?\\s*$)", 2, True),
-    ("\\s*,\\s*|\\s+or\\s+", 2, True),
     (
         "\\s*[,;.:-]\\s*(?:(?:i'm|i am|we're|we are|she's|he's|they're|she is|he is|they are) )?(?:really )?not (?:fussed|bothered|picky|fussy|particular)(?: (?:which|either way|really))?(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
+    (
+        "\\s*[,;.]\\s*(?:and |as )?(?P<q>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?: had|'s had| has had| has already had|'s already had| already had| got|'s got| has got) (?:one|some|his|hers|theirs|his own|her own|one of (?:his|her) own)(?: [^,;.!?]+?)? already(?P<end>[.!]?)$",
+        2,
+        True,
+    ),
     ("\\s*[,;:]\\s*([.!?])", 0, True),
+    (
+        "\\s*[,;]\\s*(?:and )?(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:stays?|can stay|should stay|remains?|are staying|is staying)(?: (?:out|put|where (?:it is|they are)|here|there|behind|down|on the side))?(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
     (
         "\\s*[,;]\\s*(?:and |but |just )?(?:forget|never mind|skip|leave out|don't bother with|no need for)(?: about)? (?P<x>the [a-z]+(?: (?!(?:that|who|which|person|mr|mrs|ms|miss|dr)\\b)[a-z]+)?)(?P<forwho> (?:for|from) (?:her|him|them))?(?P<end>\\s*[.!]?)$",
         2,
@@ -2366,6 +2415,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\s*what\\b", 2, True),
     ("\\s+", 0, True),
+    ("\\s+(?:after|at|from|since) ", 2, True),
     (
         "\\s+(?:for ages|all (?:morning|day|afternoon|evening|week|lesson|class|shift|session)(?: long)?|for a while|since this morning)\\b",
         2,
@@ -2566,6 +2616,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?:(?:leave|keep) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:can|should|will|must|are|is|stay|stays|remain|remains|be|stop|stops|where)\\b)[a-z]+)?(?:(?:,| and) (?:the|that|this|those|these) [a-z]+(?: (?!(?:can|should|will|must|are|is|stay|stays|remain|remains|be|stop|stops|where)\\b)[a-z]+)?)*) (?:where (?:it is|they are)|as (?:it is|they are)|put|be|alone)|(?P<x2>(?:the|that|this|those|these) [a-z]+(?: (?!(?:can|should|will|must|are|is|stay|stays|remain|remains|be|stop|stops|where)\\b)[a-z]+)?(?:(?:,| and) (?:the|that|this|those|these) [a-z]+(?: (?!(?:can|should|will|must|are|is|stay|stays|remain|remains|be|stop|stops|where)\\b)[a-z]+)?)*) (?:can |should |will |must |are to |is to )?(?:stay|stays|remain|remains|be left|stop|stops)(?: (?:where (?:it is|they are)|put|as (?:it is|they are)|behind|here|there))?)\\s*[;,.:]\\s*(?:but |and )?(?:everything|anything|all the rest|the rest|all the other things|the other things)(?: else)? (?P<vp>(?:goes|can go|should go|go|is to go|gets put|moves|can move) (?:on|in|onto|into|up on|over to|across to) .+)$",
+        2,
+        True,
+    ),
+    (
         "^(?:(?:now|so|right|ok|okay|um+|er+m?|hmm+),?\\s+)?(?:where was i|what was it|what else|what was i saying|what did i want|let me think|let me see|let's see|what's next|now then)\\s*[?.!,…]+\\s*(?:(?:oh|ah|ahh|yes|yeah|right|that's it|that's right)[,!.]*\\s+)*",
         2,
         True,
@@ -2645,6 +2700,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("^(?:and|so) ", 0, True),
+    (
+        "^(?:any|either)(?: one)? of (?:them|those|the two)(?: things)? (?P<to>for|to) (?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))\\s*,\\s*(?P<x>[a-z]+(?: [a-z]+)?) or (?P<y>[a-z]+(?: [a-z]+)?)(?:\\s*,\\s*(?:(?:it )?doesn't matter(?: which)?|no matter which|either's fine|no odds|whichever))?(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
     ("^(?:a|an) (?=[a-z]+ (?:each|apiece) for )", 2, True),
     (
         "^(?:bar|barring|except for|excepting|save for|aside from|other than|but for|all but)\\s+(?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?(?:(?:,| and| or| nor) (?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)*)\\s*,\\s*(?P<rest>(?:the (?:whole )?lot|everything(?: else)?|all the rest|the rest|all of it|all the others|the others)\\b.*)$",
@@ -2667,6 +2727,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^(?:could|can|would|will|might)\\b", 2, True),
     (
         "^(?:either way|whatever happens|in any case|one way or (?:another|the other)|all the same|whichever way|at any rate),\\s*(?P<rest>\\S.*?)(?:\\s+(?:in the end|eventually|at the end of the day|ultimately|when all's said and done))?(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(?:either|any|one) of (?:those|them|these|the two)(?: (?:things|two))? (?P<to>to|for) (?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?P<rest>(?:\\s*,\\s*(?:(?:but |and )?(?:do it|be quick|quick|now|sharpish|(?:please )?do it now|right away)|(?:he|she)(?:'ll| will) (?:take|have) (?:what|whatever) (?:he|she)(?:'s| is) given|(?:he|she)(?:'s| is)(?: not|n't) (?:fussy|bothered|fussed)))*)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -2693,6 +2758,9 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("^(?:go(?: go)*|let's go|off you go)$", 2, True),
+    ("^(?:her|his|their)\\b", 2, True),
+    ("^(?:he|she)(?:'s| is) to have\\b", 2, True),
+    ("^(?:he|she)\\b", 2, True),
     ("^(?:he|she|they)(?:'s|'re|'ve)?", 0, True),
     ("^(?:hmm,?\\s*|um,?\\s*)?let me (?:think|see)\\s*(?:\\.\\.\\.|…|,|\\.)\\s*", 2, True),
     (
@@ -2703,6 +2771,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^(?:i )?don't suppose (?:you|u) could (?=[a-z])", 2, True),
     ("^(?:i )?reckon,?\\s+", 2, True),
     ("^(?:i mean|i meant|that's|that is|meaning)\\s+", 2, True),
+    (
+        "^(?:i'm|i am|i'll be|we're|we are) (?:fine|ok|okay|alright|all right|good|sorted|set)(?: for [a-z ]+?)?(?:,? thanks| thank you)?\\s*[,;.:]\\s*(?P<rest>\\S.+)$",
+        2,
+        True,
+    ),
     ("^(?:in between|in the middle|second|secondly),?\\s+(.+?)[.;!]?$", 2, True),
     ("^(?:is|would be|will be) (?:it )?possible (?:for you )?to (?=[a-z])", 2, True),
     ("^(?:it'?s|its|it|he|she|they|that|this|there)\\b", 0, True),
@@ -2755,7 +2828,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "^(?:not|never mind|forget(?: about)?) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?P<more>(?:\\s*(?:,|and|or|nor|, and|, or|, nor)\\s*(?:not )?(?:(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|the [a-z]+))*)\\s*[;:,.]\\s*(?P<rest>\\S.*?)(?P<end>\\s*[.!]?)$",
+        "^(?:not|never mind|forget(?: about)?) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?P<more>(?:(?:\\s*(?:and|or|nor|, and|, or|, nor)\\s*(?:not )?|\\s*,\\s*not )(?:(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|the [a-z]+))*)\\s*[;:,.]\\s*(?P<rest>\\S.*?)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -2763,6 +2836,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^(?:no|sorry|i misspeak|i meant?)\\b,?\\s*", 2, True),
     (
         "^(?:only|just) (?P<x>the [a-z ]+?),\\s*(?:nothing|and nothing) else,\\s*(?=(?:goes|is|should go|needs to go) (?:to|for) )",
+        2,
+        True,
+    ),
+    (
+        "^(?:out of (?:the|these|those) (?P<all>two|three|four|five|six)(?: things)?\\s*,\\s*)?(?P<verb>give|hand|pass|bring|take) (?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<n>two|three|four|five|six)(?: things| items| of them| of the things)?(?: for [^:,;]+?)?\\s*:\\s*(?P<list>[a-z ,]+?)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -2774,11 +2852,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?:please )?(?:gather|collect|round) up (?P<x>[^,;:.!?]+?),?\\s*and (?:drop|pop|put|place|stick|chuck) (?:them|it) (?P<on>in|into|on|onto|inside) (?P<s>(?:the )?[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
-        2,
-        True,
-    ),
-    (
-        "^(?:please )?(?:keep|hold) (?P<x>the [a-z]+(?: (?!(?:that|who|which|person|mr|mrs|ms|miss|dr)\\b)[a-z]+)?) (?:away from|back from|out of reach of) (?P<p>[A-Za-z][\\w ]*?)\\s*(?:,|and|, and)\\s*(?P<rest>.+?)(?: instead)?(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -2867,6 +2940,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?:they're|they are|it's|it is|those are) (?:(?:meant |going )?(?:for|to) (?P<r>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<r2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s)$",
+        2,
+        True,
+    ),
+    (
         "^(?:they're|they are|it's|it is|those are|that's) (?P<q>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s$",
         2,
         True,
@@ -2874,6 +2952,8 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^(?:the|a|an) ", 2, True),
     ("^(?:the|a|an|my|our|your)\\s+", 2, True),
     ("^(?:the|that|this) ", 2, True),
+    ("^(?:the|that|this|those|these|any) ", 2, True),
+    ("^(?:wants|would like|'d like|is after|needs) ", 2, True),
     (
         "^(?:we've (?:only )?got |we (?:only )?have |we've only |there's (?:only |just )?|there is (?:only |just )?)(?:the one|a single|one|just the one|only the one|only one|just one) (?P<x>[a-z]+(?: [a-z]+)?)\\s*,?\\s*(?:and|so|but)\\s+(?P<rest>.+)$",
         2,
@@ -2915,6 +2995,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?P<all>everything(?: there is)?|all of it|the lot)\\s*,\\s*which (?:is|makes|comes to) (?P<n>two|three|four|five|six)(?: things| items| in all)?\\s*,\\s*(?P<rest>(?:to|for|goes to) .+)$",
+        2,
+        True,
+    ),
+    (
         "^(?P<head>(?:(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?: (?:says|said|reckons|tells me|told me|mentioned)(?: that)? (?P<pro0>he|she))?(?:(?:'s| is) not after| isn't after| is not after| (?:doesn't|does not|won't|will not|wouldn't|would not) (?:want|need|fancy|like)|(?:'s| is) not to (?:have|get)| isn't to (?:have|get)|(?:'s| is) not (?:having|getting)| isn't (?:having|getting)| (?:can|could) (?:do|manage) without|(?:'s| is) not keen on| isn't keen on| has no (?:use|need) for) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)|(?P<x2>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?:'s| is| are|'re| was| were) (?:no|not any|not much|never any) (?:good|use) (?:to|for) (?P<p2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<x3>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?: isn't| aren't| is not| are not|'s not|'re not| was never| were never|'s never| is never| are never| wasn't| weren't)(?: meant)? (?:for (?P<p3>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<p4>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s(?: to (?:have|keep|take))?)|it(?: was never|'s never| is never| wasn't| isn't|'s not| is not)(?: meant to be)? (?P<x5>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?) for (?P<p5>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)))(?: at all| today| really| any more| anymore| now| after all| this time| either| thanks)?)(?:\\s*[,;]\\s*(?P<why>(?:it's|it is|they're|they are|she's|he's|she has|he has|it has|they've|they have)(?: [a-z']+){1,4}))?\\s*[,;:.]\\s*(?:so |but |then |instead )?(?:(?:it(?:'s| is) (?P<y1>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one) (?:that |which )?(?P<w1>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:wants|needs|(?:'s|is) after|(?:'s|is) having|'d like|would like|asked for|'s asked for|fancies|(?:'s|is) getting|should (?:get|have)|'ll have|will have|(?:'s|is) meant to (?:get|have)|(?:'s|is) wanting)|(?P<y2>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?:'s| is) (?:what|all) (?P<w2>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?:'s| is)? (?:after|having|getting|wants|needs|wanted|asked for|'d like|would like|fancies)|(?:just )?(?P<y3>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: then| instead| please)+|(?P<w4>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:wants|needs|'d like|would like|(?:'s|is) after|'ll have|will have|can have|gets|(?:'s|is) getting|(?:'s|is) having|should (?:get|have)) (?P<y4>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: instead)?|(?:give|pass|hand|bring|take|get) (?P<w5>him|her|(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<y5>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: instead)?)|(?:(?:it's|it is|they're|they are) (?:going|headed|off|to go) to (?P<q1>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?:it's|it is|they're|they are) (?:for (?P<q2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<q3>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s(?: to have)?)|it(?:'s| is) (?P<q4>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s (?:turn|go)(?: today| now| this time)?|(?P<q5>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:gets|can have|is having|'s having|should (?:have|get)|'ll have|will have|is getting|'s getting) (?:it|them)(?: instead)?))(?:,? (?:please|thanks|then|instead|thank you|cheers))?(?P<end>\\s*[.!]?)$",
         2,
         True,
@@ -2931,6 +3016,16 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?P<head>(?:put|place|move|set|take|pop|stick) (?:the (?:whole )?lot|everything|all of it|all the things|all of them) (?:on|onto|in|into) the [a-z]+(?: [a-z]+)?)\\s*[,;]\\s*(?:only|but|just|though)\\s+leave (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?(?:(?:,| and| or| nor) (?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)*)(?: where (?:it is|they are)| alone| be| out| off it| as (?:it is|they are))(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<head>(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:doesn't|does not) want (?P<x>(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|because|as|on|in|so|and|or|but|is|are|was|were|be)\\b)[a-z]+)?))(?P<rest>\\s*[,;].+?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<head>.*?)(?P<so>(?:^|,\\s*|;\\s*)(?:so |and )?)(?:skip|forget(?: about)?|leave out|never mind|don't bother with|hold off on|pass on) (?P<x>(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|because|as|on|in|so|and|or|but|is|are|was|were|be)\\b)[a-z]+)?) and (?:just )?(?P<rest>(?:give|hand|pass|bring|take|get|fetch) [^,;.]+?)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -2961,6 +3056,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?P<head>.+?)\\s*(?P<sep>(?:\\.\\.\\.|…|—|--|[,;.:!?-]))\\s*(?P<cue>(?:(?:er|erm|um|uh|hmm|ah|oh|oops|whoops|oh dear|well|no|nope|wait|sorry|hold on|hang on|actually|right|ok|okay|look)\\s*(?:\\.\\.\\.|…|—|--|[,;.:!?-])?\\s*)*(?:scratch that|strike that|scrap that|forget that|rewind|back up|take that back|(?:let me )?start (?:again|over)|change of plans?|(?:except|but|no,?) that's (?:wrong|not right|not it)|that's (?:wrong|not right)|that is (?:wrong|not right)|i've (?:muddled|mixed up) (?:them|it|that|those|the two)(?: up)?|i've (?:muddled|mixed) (?:them|it|that|those|the two) up|i've got (?:them|it|that|those|the two) (?:muddled|mixed up|wrong)(?: up)?|i (?:muddled|mixed) (?:them|it|that|those) up|my (?:bad|mistake|error)|silly me|i'm (?:reading|looking at|reading off|reading from) the wrong (?:chart|list|note|notes|page|sheet|order|ticket|board|form|card|label|rota|line)|i've got the wrong (?:chart|list|note|notes|page|sheet|order|ticket|board|form|card|label|rota|line)|i (?:misread|misspoke|misheard)(?: that| it)?)(?:\\s*(?:\\.\\.\\.|…|—|--|[,;.:!?-])?\\s*(?:(?:er|erm|um|uh|hmm|ah|oh|oops|whoops|oh dear|well|no|nope|wait|sorry|hold on|hang on|actually|right|ok|okay|look)|(?:scratch that|strike that|scrap that|forget that|rewind|back up|take that back|(?:let me )?start (?:again|over)|change of plans?|(?:except|but|no,?) that's (?:wrong|not right|not it)|that's (?:wrong|not right)|that is (?:wrong|not right)|i've (?:muddled|mixed up) (?:them|it|that|those|the two)(?: up)?|i've (?:muddled|mixed) (?:them|it|that|those|the two) up|i've got (?:them|it|that|those|the two) (?:muddled|mixed up|wrong)(?: up)?|i (?:muddled|mixed) (?:them|it|that|those) up|my (?:bad|mistake|error)|silly me|i'm (?:reading|looking at|reading off|reading from) the wrong (?:chart|list|note|notes|page|sheet|order|ticket|board|form|card|label|rota|line)|i've got the wrong (?:chart|list|note|notes|page|sheet|order|ticket|board|form|card|label|rota|line)|i (?:misread|misspoke|misheard)(?: that| it)?)))*)\\s*(?P<sep2>(?:\\.\\.\\.|…|—|--|[,;.:!?-]))\\s*(?P<fix>\\S.*?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<head>.+?)\\s*(?P<sep>\\.\\.\\.|…|[,;.!—])\\s*(?P<cue>(?:ooh|oh|ah|er|erm|um|hmm|no|nope|wait|hang on|hold on|hang about|correction|my mistake|sorry|whoops|oops|actually)(?:\\s*,?\\s*(?:ooh|oh|ah|er|erm|um|hmm|no|nope|wait|hang on|hold on|hang about|correction|my mistake|sorry|whoops|oops|actually))*)\\s*[,;:—]\\s*(?P<why>(?:[^,;.]+[,;]\\s*){0,2}?)(?P<fix>[^,;.]+?)(?:\\s*,\\s*(?P<pro>hers|his) then)?(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -3010,6 +3110,16 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:said|says|told me|has said|'s said) (?:to |we should |you should |you can )?(?:leave|skip|forget(?: about)?|never mind|hold off on|not bother with) (?P<x>(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|because|as|on|in|so|and|or|but|is|are|was|were|be)\\b)[a-z]+)?)(?P<rest>\\s*[,;:]\\s*.+)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<v>can have|gets|is having|'s having|should have) (?:all of it|the lot|everything|the whole lot) (?:bar|barring|save|but|except|apart from) (?P<x>(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|because|as|on|in|so|and|or|but|is|are|was|were|be)\\b)[a-z]+)?)(?:\\s*,\\s*(?P<pro>he|she)(?:'s| has) (?:gone off|gone right off|had enough of|gone off of|gone cold on) (?:them|it|those|that)(?: [^,;.]+)?)?(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
         "^(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?: (?:says|said|reckons|tells me|told me))?(?: that)? nothing (?:else )?(?:will|would|'ll|'d|is going to) (?:do|suit|work|please (?:her|him))(?: (?:her|him))? (?:but|except|other than|apart from|save|besides) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?P<tail>.*)$",
         2,
         True,
@@ -3050,7 +3160,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "^(?P<p>[A-Za-z][\\w ]*?) (?:doesn't|does not|won't|will not) (?:need|want) (?P<x>the [a-z]+(?: (?!(?:that|who|which|person|mr|mrs|ms|miss|dr)\\b)[a-z]+)?)(?: (?:today|now|any ?more))?\\s*[,;]\\s*(?P<rest>.+?) instead(?P<end>\\s*[.!]?)$",
+        "^(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?:'s| is) only (?:allowed|permitted|meant to have|supposed to have)(?: to have)? (?P<x>(?:her |his |the )?[a-z]+(?: (?!just|right|now|today|for|at)[a-z]+)?)(?: (?:just now|right now|now|today|for now|at the moment))?(?:,? (?:and )?nothing else)?\\s*[,;]\\s*so (?P<verb>pass|give|hand|bring|take) (?:that|it) (?:to|over to) (?P<pro>him|her)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))\\s*,\\s*(?:and )?not (?P<aside>[^,]+?)\\s*,\\s*(?P<vp>(?:gets|is getting|'s getting|should (?:get|have)|has|can have|is having|'s having|wants|needs|is to have|'s to have|is after|'s after) .+)$",
         2,
         True,
     ),
@@ -3089,6 +3204,22 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (
+        "^(?P<r>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:should (?:have|get)|gets|can have|(?:'s|is) (?:having|to have|getting)|wants) (?:it|them|those|that|one)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<r>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?:'s| is| has) [a-z ]+? so (?:it's|it is|they're|they are) (?P<pro>hers|his)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<r>(?:the )?[a-z]+)(?:'s| is| would be|'d be| will be) (?:better|best|a better (?:bet|place|spot|idea))$",
+        2,
+        True,
+    ),
+    ("^(?P<r>[^,;.]+?)\\s*(?:[,;.]\\s*(?:so |and so |which means )?|,? so )(?P<s>.+)$", 2, True),
     ("^(?P<rest>.*) (?P<verb>[a-z]+) (?:it|them)$", 2, True),
     (
         "^(?P<v>give|hand|pass|bring|take) one of (?:them|the two|the two of them|you two) (?P<x>the [a-z]+(?: (?!(?:that|who|which|person|mr|mrs|ms|miss|dr)\\b)[a-z]+)?)\\s*,\\s*(?:either )?(?P<p>[A-Za-z][\\w ]*?) or (?P<q>[A-Za-z][\\w ]*?)(?=\\s*(?:[.!]|$|,\\s*(?:your call|your choice|up to you|whichever|i'll let you pick|you pick|take your pick)\\b))",
@@ -3125,6 +3256,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (
+        "^(?P<x>(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|because|as|on|in|so|and|or|but|is|are|was|were|be)\\b)[a-z]+)?)(?:'s| is|'re| are) not (?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s\\s*[,;]\\s*(?:it|they) (?:belongs? to|(?:'s|is|'re|are) for|(?:'s|is|'re|are)) (?P<q>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?:'s)?(?:\\s*[,;]\\s*(?P<pro>he|she) [^,;.]+)?(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
     ("^(Alice)(?:'s| is) the one (?:who|that) ", 2, True),
     ("^(Alice),? (?:he|she|they) ", 2, True),
     ("^(Bob)(?:'s| is) the one (?:who|that) ", 2, True),
@@ -3133,8 +3269,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^(Person\\ A),? (?:he|she|they) ", 2, True),
     ("^(Person\\ B)(?:'s| is) the one (?:who|that) ", 2, True),
     ("^(Person\\ B),? (?:he|she|they) ", 2, True),
-    ("^(Person\\ C)(?:'s| is) the one (?:who|that) ", 2, True),
-    ("^(Person\\ C),? (?:he|she|they) ", 2, True),
     (
         "^([A-Z][\\w ]*?) (?:said|says|mentioned|told me|tells me)(?: that)? (?:he|she|they) (?=(?:needs|wants|would like|'d like|could use|'s after)\\b)",
         2,
@@ -3174,6 +3308,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("^([a-z]+) (?:needs|wants)\\b", 2, True),
     ("^([a-z]+s)\\.\\s+(?=[a-z]+ ones? (?:to|for|on|in)\\b)", 2, True),
     (
         "^([a-z][\\w ]*? (?:wants|needs|is wanting) the [a-z]+) only(?:,\\s*(?:kindly |please )?do the needful)?\\s*([.!]?)$",
@@ -3289,10 +3424,16 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^[a-z]+ first\\s*:\\s*(?=.+[.!;]\\s*then\\b)", 2, True),
     ("^[a-z]+(?: [a-z]+)? (?:gets|has|can have|wants|needs) (?:the|his|her) ", 0, True),
     ("^[a-z]+(?:'s| is) (?:up|in|here|ready|done|out|back|on)\\s*,?\\s*so\\b\\s*", 2, True),
+    ("^\\s*(?:any|either)\\b", 2, True),
     ("^\\s*(?:both|all)\\b", 2, True),
     ("^\\s*(?:does|did|do|is|was|will|has|had|can|could|would|should)\\s*[.!?]*$", 0, True),
+    ("^\\s*(?:either|any|one) of\\b", 2, True),
+    ("^\\s*(?:i|we)(?:'m|'ll| am|'re| are)\\b", 2, True),
     ("^\\s*(?:not|never mind|forget)\\b", 2, True),
     ("^\\s*,\\s*|(?<=[.!?])\\s*,\\s*", 0, True),
+    ("^\\s*no\\b", 2, True),
+    ("^\\s*there", 2, True),
+    ("^\\s*whichever\\b", 2, True),
     ("^all of it\\b", 2, True),
     ("^any chance of (the [a-z ]+?) going (to|on|onto|in|into) (.+?)\\?$", 2, True),
     (
@@ -3330,6 +3471,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("^i (?:must have |must've |should have |)meant (?P<r>.+)$", 2, True),
     (
         "^if (?:there's|there is|you(?:'ve| have)? got|you can find|you see|you find) (?:a|an|any) (?P<k>[a-z]+)(?: (?:about|around|going|handy|spare|to hand|free|left|lying around|anywhere))?(?:\\s*,\\s*any (?:old )?(?P<k2>[a-z]+)(?: at all| will do| whatsoever)?)?\\s*,\\s*(?:(?P<p1>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:would|'d|will|'ll|could|can) (?:like|love|have|take|appreciate|use|do with) it|(?:give|bring|pass|hand) it to (?P<p2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|it(?:'s| is) for (?P<p3>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)))(?P<end>\\s*[.!]?)$",
         2,
@@ -3341,7 +3483,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^it(?:'s| is) (Bob) (?:who|that) ", 2, True),
     ("^it(?:'s| is) (Person\\ A) (?:who|that) ", 2, True),
     ("^it(?:'s| is) (Person\\ B) (?:who|that) ", 2, True),
-    ("^it(?:'s| is) (Person\\ C) (?:who|that) ", 2, True),
     (
         "^it(?:'s| is| was) (?P<q>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:who|that)(?:'s| is| was)? (?:having|getting|gets|wants|wanted|needs|asked for|after|should (?:get|have)|meant to (?:get|have)) (?:it|them)$",
         2,
@@ -3367,6 +3508,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("^make (?:it|that|them) (?:to |for )?(?P<r>.+)$", 2, True),
     (
         "^might ([A-Za-z][\\w ]*?) be (?:brought|given|handed|passed|furnished with|provided with) ([A-Za-z][\\w ,'-]*?)\\s*\\?$",
         2,
@@ -3395,12 +3537,21 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (
+        "^there(?:'s| is) (?:only |just )?(?:a lone|a single|one|the one|a solitary|just the one|the single) (?P<x>[a-z]+(?: (?!(?:knocking|going|about|around|left|on|here|in|to)\\b)[a-z]+)?) (?:knocking about|knocking around|going|about|around|left|on the go|here|in the room|to be had)\\s*(?:,|;|and|, and)\\s*(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?:(?:'s| is) (?:to have it|the one to have it|the one who gets it|having it|getting it|to get it|the one it's for|the one for it)| (?:gets|can have|should have|should get) it)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
     ("^were\\b", 0, True),
     ("^what (Alice) (needs|wants|would like|'d like) is ", 2, True),
     ("^what (Bob) (needs|wants|would like|'d like) is ", 2, True),
     ("^what (Person\\ A) (needs|wants|would like|'d like) is ", 2, True),
     ("^what (Person\\ B) (needs|wants|would like|'d like) is ", 2, True),
-    ("^what (Person\\ C) (needs|wants|would like|'d like) is ", 2, True),
+    (
+        "^whichever (?:(?:one )?of (?:the|those|these) (?P<n>two|three|four|five|six)(?: (?!you\\b)(?P<k>[a-z]+))?|one|thing) (?:you )?(?:grab|get|find|reach|pick up|lay hands on|come to|can reach)(?: first)?\\s*,\\s*(?P<verb>get|give|bring|take|hand|pass|carry) (?:it|that|that one) to (?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
     (
         "^whichever(?: (?:one|of the two|of them))? you can (?:reach|get to|grab) (?:first|soonest|easiest|more easily)\\s*,",
         2,
@@ -3420,6 +3571,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^you (?=give|bring|hand|pass|take|put|place|fetch)", 2, True),
     ("^you can (.+?),\\s*(?:yes|right|yeah|okay|ok)\\s*\\?$", 2, True),
     ("every|each", 2, True),
+    ("got ", 2, True),
     ("head|bound|destined|earmarked", 0, True),
     ("it|them", 2, True),
 )

@@ -90,7 +90,6 @@ from hltl.grounding.tree import (
     tasks,
 )
 from hltl.grounding.update import ground_update
-from hltl.grounding.warm import warm_up
 from hltl.spec.hierarchy import HSpec, spec_from_dict
 from hltl.world.scene import Scene
 
@@ -178,7 +177,6 @@ def parse_instruction(
     Raises:
         GroundingError: the words, what was expected, and what the scene has.
     """
-    warm_up()  # the first time in a process: the rewrites' fixed patterns compiled (warm.py)
     lexicon = lexicon or Lexicon.of(scene)
     if not normalise:
         return _parse(text, scene, lexicon, normalise=False)

@@ -1,5 +1,5 @@
 """The grounder's warm-up: its fixed patterns gated and compiled once per process, before the
-first instruction is read (docs/grounding.md, "Session 44 (engineer 12p)").
+first instruction is read (docs/grounding.md, "Session 45 (engineer 12p)").
 
 The rewrites run some 1,500 regular expressions written inline (``_sub(r"…", …)``,
 ``re.search(r"…", …)``); gate.py derives each one's words and compiles it the first time it is met,
@@ -7,10 +7,12 @@ with re's pure-Python parser and code generator. On a part grounded cold that wa
 CPU, most of it on the first instructions but some 6 ms an instruction up to the fiftieth. The
 patterns met on the tuning parts in more than one scene (so none built from one scene's names or
 one text's words) are listed in ``_warm_patterns.PATTERNS``; ``warm_up`` gates and compiles them
-all at once, the first time ``parse_instruction`` is called in a process (its cost, ~0.5–1 s of
-CPU once, falls on that first instruction: nothing leaves the bench's timing). A pattern the list
-lacks (a rule written after it was made) is gated and compiled when first met, as before: the list
-going stale costs speed only. Remake it with ``python -m hltl.grounding.warm --write``.
+all at once. It is called by whoever grounds many instructions in one process, before the first:
+``hltl bench grounding`` (which says its CPU; ``--cold`` leaves it out). ``parse_instruction`` does
+not call it: one ``hltl ground`` compiles only the patterns its instruction meets, as before. A
+pattern the list lacks (a rule written after it was made) is gated and compiled when first met,
+as before: the list going stale costs speed only. Remake it with ``python -m hltl.grounding.warm
+--write``.
 """
 
 from __future__ import annotations
