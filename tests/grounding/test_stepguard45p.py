@@ -224,6 +224,12 @@ def _after_other(text: str, lexicon: Lexicon) -> str:
     return text + "!"
 
 
+def _none_of_a_bool(text: str, lexicon: Lexicon) -> str:
+    if ("cup" in text) is None:  # never None: not a guard
+        return text
+    return text + "!"
+
+
 def _wordless(text: str, lexicon: Lexicon) -> str:
     if not gate.search(r"\w*", text):
         return text
@@ -247,6 +253,7 @@ def _of_the_scene(text: str, lexicon: Lexicon) -> str:
         (_subbed, ((), ("kindly", "please"), True)),
         (_wrong_way, None),
         (_after_other, None),
+        (_none_of_a_bool, None),
         (_wordless, None),
         (_of_the_scene, None),
         (lambda text, lexicon: text, None),

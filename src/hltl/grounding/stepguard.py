@@ -306,7 +306,11 @@ class _Reader:
             if isinstance(op, ast.NotIn) and isinstance(node.left, ast.Constant):
                 return frozenset({("in", self._str(node.left), self._hay(right))})
             if isinstance(op, ast.Is) and isinstance(right, ast.Constant) and right.value is None:
-                return self.present(node.left)
+                # None only where a search finds nothing ('in', any() and _said_any are bools)
+                left = node.left
+                if isinstance(left, ast.Name) and left.id in self.matches:
+                    return self.matches[left.id]
+                return self._search(left)
         raise _Unread("test")
 
     @staticmethod
