@@ -7,7 +7,6 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._step_guards import GUARDS
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     TITLES,
@@ -89,6 +88,9 @@ def _guards_of(steps: tuple[Callable[[str, Lexicon], str], ...]) -> tuple[Guard 
     """Each of ``steps``' guard (None: the step always runs), read once per tuple."""
     kept = _GUARDED.get(id(steps))
     if kept is None or kept[0] is not steps:
+        # why: the list (~40 ms to load) only where a text is rewritten, not where one reads
+        from hltl.grounding._step_guards import GUARDS
+
         if len(_GUARDED) > 64:
             _GUARDED.clear()
         kept = _GUARDED[id(steps)] = (steps, guards(steps, GUARDS))
