@@ -263,11 +263,8 @@ KNOWN_MISSES = frozenset(
         "Could you make sure Person A ends up with her bottle?",
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
-        "Suksma, robot — my Balinese gran taught me that word — could you bring Carol the red mug?",
         "Right, erm, before my fibre splicer shift starts, pop the crisps up on the shelf for "
         "me, would you, ta.",
-        "With all due respect, machine, Person A needs the bottle, thanking you kindly.",
-        "Chettirdim, friend, that's Tuvan for thanks; would you carry the crisps to Person A?",
         "Sorry to be a pest, Omar's back from rug hooking club and would like the white cup, "
         "please and thank you.",
         "Morning Mia! Um, so, the packing tape onto the conveyor, lovely, ta.",
@@ -275,27 +272,18 @@ KNOWN_MISSES = frozenset(
         "thanks ever so.",
         "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
         "Alice could really do with a drink, she's been spinning fire poi for an hour.",
-        "What Bob fancies right now is a packet of crisps.",
-        "Person B said he's been dreaming about the chips all morning.",
-        "Person A keeps banging on about crisps, the poor thing's been log rolling.",
-        "Person B has been on the tug crew since dawn and is gagging for the water bottle.",
         "Mrs Khan is freezing, she could use the blue blanket over her knees.",
         "Tom's hands are raw from the ice road run, he needs the work gloves.",
         "Lena has lemon wedges to do for table six and nothing sharp to do them with; sort her "
         "out.",
         "Noah's desperate for a ruler to finish drawing his xiangqi board.",
         "Lily's all sticky, she needs the baby wipes, she does.",
-        "Those crisps Alice left out, stick them on the shelf.",
         "Person B's back from his kora lesson; the cup's for him, and so's the apple.",
         "Person A's after the chips; Person B, back from his rice paddy survey, the cup.",
-        "The apple, Person A said she'd have it.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
         "her.",
         "Person A gets her bottle first; once she's got it, it's the turn of Person B, who's "
         "waiting by the kerb for the chips.",
-        "Person A's waiting. Take it to her, the bottle.",
-        "Those crisps are the ones Person B knocked off his lap during the gritter briefing, so "
-        "return them to him.",
         "Mr Novak's salad needs seasoning; pass him the salt.",
         "Grandad's reading to Lily; give him the teddy, he'll do the voices.",
         "Kofi's cleared a space on the workbench. Put the drill there.",
@@ -372,10 +360,6 @@ KNOWN_MISSES = frozenset(
         "Drop the srtapler into the box, people keep walking off with it.",
         "Lily won't settle for her nap without the tevddy.",
         "Could the apple go on the counter, next to where Alice does her cross-stitch?",
-        "Would there be any chance of getting the crisps to Alice before she starts her mime "
-        "workshop?",
-        "Might it be possible for Person A to get the chips, she's just in from the fish farm?",
-        "What if Person A had the apple and Person B the chips, why not do that?",
         "How about letting Person A have those crisps, seeing as she missed tea?",
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
