@@ -233,34 +233,18 @@ KNOWN_MISSES = frozenset(
         "Is there any way Person B could get the chips this side of lunch?",
         "Could Grandad have the red block for Lily's tower?",
         # blind41 (tuned on in session 43): refusals left at its one measurement (docs/grounding.md)
-        "If you'd be so good as to carry the chips across to Person A, she's been at her cajon "
-        "all afternoon.",
-        "Er, sorry, hate to interrupt, but could the bottle make its way to Person A? Lovely "
-        "stuff.",
-        "Much obliged if Person B ended up with the chips.",
         "Sagrai, as Lezgian speakers put it, for taking the stapler over to Priya.",
-        "With thanks, the drill to Kofi, he's just back from his mbira lesson.",
         "After a morning on the piling rig, Bob's gasping and the water bottle would save his "
         "life.",
-        "Alice would sell her soul for the crisps right now.",
-        "The bottle's what Bob has been angling for all morning.",
-        "The chips would go down a treat with Person A.",
         "If nobody else has claimed the bottle, Person A would gladly take it off your hands.",
-        "Honestly, the chips are the thing Person B needs more than anything.",
         "Those crisps? Alice has been after them, so over to her they go.",
         "Person A's apple needs taking to her, and her bottle as well.",
         "The cup? That's Person B's. The apple? Person A's. Off they go to them.",
-        "Person B's having the chips, and ditto the apple.",
-        "Person B put his name down for the chips, so he gets them.",
         "The scissors are Zoe's to borrow, and Noah's having the glue.",
         "Put Lily's sippy cup on the high chair for her.",
         "Set both of Lily's blocks up on her high chair.",
         "Persohn A left her bottle with you earlier; she'd like it returned.",
-        "Any hope of Person A getting the chips before her newt survey?",
-        "Could you spare a minute to hand Person B the apple?",
-        "Would it be a pain to take Person A the cup?",
         "Does Person B want the chips? He does, so give them to him.",
-        "Could you make sure Person A ends up with her bottle?",
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
         "Right, erm, before my fibre splicer shift starts, pop the crisps up on the shelf for "
@@ -271,13 +255,9 @@ KNOWN_MISSES = frozenset(
         "Zoe's got shodo practice after this, so be a sweetheart and give her the glue stick, "
         "thanks ever so.",
         "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
-        "Alice could really do with a drink, she's been spinning fire poi for an hour.",
-        "Mrs Khan is freezing, she could use the blue blanket over her knees.",
-        "Tom's hands are raw from the ice road run, he needs the work gloves.",
         "Lena has lemon wedges to do for table six and nothing sharp to do them with; sort her "
         "out.",
         "Noah's desperate for a ruler to finish drawing his xiangqi board.",
-        "Lily's all sticky, she needs the baby wipes, she does.",
         "Person B's back from his kora lesson; the cup's for him, and so's the apple.",
         "Person A's after the chips; Person B, back from his rice paddy survey, the cup.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
@@ -350,7 +330,6 @@ KNOWN_MISSES = frozenset(
         "the go club",
         "shelve the crisps first and when that's done bob can have the bottle",
         "person b's asking for the cup, also the apple if it's going spare",
-        "emma spilt her tea and wants the sponge to mop it",
         "marco's plating up on blue so that plate's his and lena has the white",
         "our ramp agent keeps treading on the crisops, so stick them up on the shelf",
         "Alice has been stuck on an escalator callout all shift, so the bvottle goes to her.",
@@ -360,7 +339,6 @@ KNOWN_MISSES = frozenset(
         "Drop the srtapler into the box, people keep walking off with it.",
         "Lily won't settle for her nap without the tevddy.",
         "Could the apple go on the counter, next to where Alice does her cross-stitch?",
-        "How about letting Person A have those crisps, seeing as she missed tea?",
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
     }
