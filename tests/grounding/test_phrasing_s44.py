@@ -437,6 +437,8 @@ test_ditto = DITTO.test(
     # nothing asked before it; a person after it
     ("Ditto the torch.", None, WORKSHOP),
     ("Jess is having the drill, and ditto Kofi.", None, WORKSHOP),
+    # two people before it: whose is the chips? (12s's session-44 test keeps it refused)
+    ("Give Bob the cup and Alice the apple, ditto the chips.", None, CELL),
 )
 
 

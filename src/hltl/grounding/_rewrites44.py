@@ -41,7 +41,7 @@ _WANT_WORDS44 = re.compile(
     # a bare noun after it (with an article, _rewrites41._want_idiom41 reads it)
     r"|(?: keeps|'s been| has been| is|'s) (?:going|banging|harping|droning|rabbiting|wittering) "
     r"on about(?: wanting| needing| having| getting)?(?= (?!(?:the|that|this|those|these|both|a|"
-    r"an|some|his|her|their)\b)[a-z])"
+    r"an|some|his|her|their|wanting|needing|having|getting)\b)[a-z])"
     # blind41: 'would sell her soul for', 'put his name down for' (a him / her / them after it:
     # without one, _rewrites39._want_idioms39 reads it)
     r"|(?: would|'d) (?:happily |gladly )?sell (?:his|her|their) (?:soul|granny|grandmother) for"
@@ -619,6 +619,8 @@ def _ditto44(text: str, lexicon: Lexicon) -> str:
     m = _DITTO44.search(text)
     if m is None or not _objects_only(m["x"], lexicon) or not _ids(text[: m.start()], lexicon):
         return text
+    if len(_ids(text[: m.start()], lexicon, "human")) > 1:
+        return text  # "Give Bob the cup and Alice the apple, ditto the chips.": whose? (12s)
     return f"{text[: m.start()]}, and {m['x']} too{m['end'].strip() or '.'}"
 
 
