@@ -180,7 +180,7 @@ _PIECES = st.sampled_from(
 def test_a_pattern_compiled_from_the_gates_parse_is_the_one_re_compiles(
     pattern: str, flags: int
 ) -> None:
-    gate._GATES.pop((pattern, flags), None)
+    gate.forget(pattern, flags)
     gate.may_match(pattern, flags, "")  # gated: its parse kept
     try:
         theirs = re.compile(pattern, flags)
@@ -201,7 +201,7 @@ def test_every_pattern_the_rewrites_gate_compiles_from_its_parse_as_re_does(
     patterns: list[tuple[str, int]],
 ) -> None:
     for pattern, flags in patterns:
-        gate._GATES.pop((pattern, flags), None)
+        gate.forget(pattern, flags)
         gate.may_match(pattern, flags, "")
         assert gate.compiled(pattern, flags) == re.compile(pattern, flags), pattern
 
@@ -265,3 +265,21 @@ def test_texts_lexed_are_kept_across_instructions_and_dropped_when_many(
     lx.forget()  # over the bound: emptied
     assert lx.lexed(entry.text) is None
     assert lexicon_module.lex(entry.text, lx) == first
+
+
+def test_a_word_holding_another_the_gate_needs_is_not_looked_for_again() -> None:
+    pattern = r"\b(?:ok|okay|alright)\b"
+    gate.forget(pattern, re.I)
+    gate.may_match(pattern, re.I, "")
+    assert gate._GATES[re.I][pattern] == (("alright", "ok"), True)
+    for text in ("okay for Bob", "OK for Bob", "alright for Bob", "fine for Bob"):
+        assert gate.may_match(pattern, re.I, text) == (re.search(pattern, text, re.I) is not None)
+
+
+def test_compiled_patterns_of_one_text_are_each_gated_with_their_own_flags() -> None:
+    blind, cased = re.compile(r"\bMrs (\w+)", re.I), re.compile(r"\bMrs (\w+)")
+    for text in ("mrs khan gets the jug", "Mrs Khan gets the jug", "the jug"):
+        for _ in range(2):  # met, then gated
+            assert bool(gate.search(blind, text)) == bool(blind.search(text))
+            assert bool(gate.search(cased, text)) == bool(cased.search(text))
+            assert bool(gate.search(r"\bMrs (\w+)", text)) == bool(cased.search(text))

@@ -41,7 +41,6 @@ KNOWN_MISSES = frozenset(
         # blind4 (tuned on in session 6): a description before a colon ("something to drink:")
         # blind4: "<objects> will do for <person>"
         # blind5 (tuned on in session 7): a surface name used as the verb
-        "Shelf the bottle please",
         # causes8 (second batch): a swap as an alternative followed by more ("…, or the other
         # way round, and Carol the apple"): the swap is read only as the last words
         "Give Alice the cup and Bob the chips, or the other way round, and Carol the apple",
@@ -184,17 +183,7 @@ KNOWN_MISSES = frozenset(
         "All three of the pens into the box, Priya's had enough of the doodling.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
         "pool.",
-        "Alice doesn't want the bottle, she's had her fill at the cream tea; the crisps are "
-        "for her.",
-        "Person A can have all of it bar the apple, she's gone off them since the scrumping trip.",
-        "The cup's not Person A's, it belongs to Person B, he brought it back from pond dipping.",
-        "Person B doesn't want the bottle, he's after the chips after his round of beetle drive.",
         "The bottle's for Person A and for no one else, she's earned it at the fun run.",
-        "Priya's not having the red pen, she's signing forms for the fete and wants the black one.",
-        "The blue one's no good for Mr Lee, it brings him out in a rash; take him the grey "
-        "blanket.",
-        "Noah isn't allowed the scissors after what happened with the bunting, so the glue "
-        "stick goes to him.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         "about, so give it her.",
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
@@ -209,8 +198,6 @@ KNOWN_MISSES = frozenset(
         "Person B gets the chips, leave the bottle where it is, he's got his own.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "The applie goes on the shelf for now.",
-        "Would you mind dropping the spoon in the sink? Emma's finished her tea.",
-        "Could you hang the tongs on the plate rack, Marco's done with them?",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
         "Ta ever so, Person B's been on the sackbut all morning and could murder that bottle.",
         "The bottle's a must for Person B after bocce, and Person A's set on the chips.",
@@ -237,7 +224,6 @@ KNOWN_MISSES = frozenset(
         "After a morning on the piling rig, Bob's gasping and the water bottle would save his "
         "life.",
         "If nobody else has claimed the bottle, Person A would gladly take it off your hands.",
-        "Those crisps? Alice has been after them, so over to her they go.",
         "Person A's apple needs taking to her, and her bottle as well.",
         "The cup? That's Person B's. The apple? Person A's. Off they go to them.",
         "The scissors are Zoe's to borrow, and Noah's having the glue.",
@@ -247,97 +233,27 @@ KNOWN_MISSES = frozenset(
         "Does Person B want the chips? He does, so give them to him.",
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
-        "Right, erm, before my fibre splicer shift starts, pop the crisps up on the shelf for "
-        "me, would you, ta.",
-        "Sorry to be a pest, Omar's back from rug hooking club and would like the white cup, "
-        "please and thank you.",
-        "Morning Mia! Um, so, the packing tape onto the conveyor, lovely, ta.",
-        "Zoe's got shodo practice after this, so be a sweetheart and give her the glue stick, "
-        "thanks ever so.",
         "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
         "Lena has lemon wedges to do for table six and nothing sharp to do them with; sort her "
         "out.",
         "Noah's desperate for a ruler to finish drawing his xiangqi board.",
-        "Person B's back from his kora lesson; the cup's for him, and so's the apple.",
-        "Person A's after the chips; Person B, back from his rice paddy survey, the cup.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
         "her.",
         "Person A gets her bottle first; once she's got it, it's the turn of Person B, who's "
         "waiting by the kerb for the chips.",
-        "Mr Novak's salad needs seasoning; pass him the salt.",
-        "Grandad's reading to Lily; give him the teddy, he'll do the voices.",
-        "Kofi's cleared a space on the workbench. Put the drill there.",
-        "Cup goes up on the shelf and when that's sorted Alice is having the crisps and after "
-        "her Bob has the apple that's everything.",
-        "Shelf for the bottle first, and after that Alice wants the crisps so give them to her.",
-        "Person A gets the bottle Person B gets the chips they've both been doing the line "
-        "painter course no fuss.",
-        "Person A had a long night on ramp agent duty she'd like the bottle the chips can go to "
-        "Person B.",
-        "Start with the banana, tray please. Spoon to the sink after. Last of all Dana's green "
-        "cup goes back to her.",
-        "Sam needs the red pen Priya the notebook just hand them over.",
-        "Mr Lee's finished his magazine. Mrs Khan wants it next. Take it to her.",
         "Tongs to Marco he's at the grill, the knife to Lena she's on lemons.",
-        "Carol's making tea for the solar installer; get her a mug, either one suits her fine.",
-        "Whichever of the two you grab first, get it to Alice.",
         "Clear both things off the floor and up onto the shelf, bottle and crisps alike, the "
         "pavers are coming through.",
         "Person A and Person B each want one thing: her the apple, him the bottle.",
-        "The chips are up for grabs between Person A and Person B, so you decide who gets them.",
-        "After a long day on the shuttering job Person B deserves the pair, so hand over both.",
-        "Any one of them for Person A, bottle or crisps, doesn't matter.",
         "The bottle, or whatever's there, Person A isn't fussy.",
-        "Either of those to Person B, he'll take what he's given, but do it now.",
         "Zoe and Noah each need one: the scissors for her, the ruler for him.",
-        "Lily's teething and will gnaw on anything, so give her a block, red or green, no odds.",
-        "There's only a lone bottle knocking about and Bob's to have it.",
         "He's got a twelve-hour stoker shift ahead, so Person B is to have the cup plus the chips.",
-        "Out of the four, give Person B three for the ice road run: bottle, cup and apple.",
         "Person A only wants a single thing off you today and it's the crisps, she's on the "
         "trapeze after.",
-        "Everything there is, which is two things, to Person B.",
-        "There's one bottle going and Person A's the one to have it, she's been at the guzheng "
-        "all morning.",
-        "A single packet of crisps is all Person A asked for before her shamisen lesson.",
-        "The mugs can stay where they are; everything else goes on the table for the "
-        "ringmaster's picnic.",
-        "Bob's not thirsty after the unicycling club, so skip the bottle and give him the crisps.",
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
-        "The apple goes to Person A; Person B had one at the tea picker stall already.",
-        "Any one thing apart from the bottle for Person B, he's off water after sheep shearing.",
-        "Person B said to leave the bottle, he's only after the crisps.",
-        "I'm fine for water thanks, it's Person A who should have the bottle.",
-        "Person A, not the bloke from the tea picker tour, gets the bottle.",
-        "Person A's off sugary drinks for her stilt walking, so the crisps, leaving the bottle be.",
-        "Sam's keeping the blue pen out for doodling, the other pens can go in the box.",
-        "Mr Lee says the grey one itches, so he's to have the other blanket.",
-        "No scissors for Noah, give him the ruler instead.",
-        "Lily's only allowed her beaker just now, nothing else, so pass that to her.",
-        "Crisps on the shelf, I mean the bottle, the crisps stay out.",
-        "Bottle to Person A. Ooh wait, she's got one, make it Person B.",
-        "Chips for Person A; hang on, my mistake, she's out on the pilot boat, they're for "
-        "Person B.",
-        "The bottle should go to Person B... sorry, I misspoke there, to Person A, who's got the "
-        "frame drum gig.",
-        "Put the bottle down, no, you know what, hand it to Person A straight off.",
-        "The chips to Person A, oh hold on, no chips here, I must have meant the bottle, hers "
-        "then.",
-        "Drop the spoon on the tray, oh hang about, it's mucky, the sink's better.",
-        "Thermometer to Mr Lee, correction, Ruth's doing the rounds so it's hers.",
-        "Gloves to Mia. No hang on, she's got her own, Tom should have them.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
-        "shelve the crisps first and when that's done bob can have the bottle",
-        "person b's asking for the cup, also the apple if it's going spare",
         "marco's plating up on blue so that plate's his and lena has the white",
-        "our ramp agent keeps treading on the crisops, so stick them up on the shelf",
-        "Alice has been stuck on an escalator callout all shift, so the bvottle goes to her.",
-        "Person B's had a long turbine tech shift, the chmips are his.",
-        "Person A did the whole steelpan set, give her the cnhips",
-        "Emma skipped breakfast and asked if she could have the baqnana.",
-        "Drop the srtapler into the box, people keep walking off with it.",
-        "Lily won't settle for her nap without the tevddy.",
         "Could the apple go on the counter, next to where Alice does her cross-stitch?",
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
@@ -356,8 +272,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind42 (tuned on in session 44)
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
-        "The cup to Person A, no, the other thing she asked for.",
-        "Give Person B the one he pointed at earlier, the cup or the botftle, I didn't see which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -442,7 +356,7 @@ KNOWN_UNCLEAR = frozenset(
 # 43 by another engineer and committed alone, reviewed by a second one, measured once at the end of
 # session 43 (1 wrong, refused since session 44), tuned on in session 44: asserted now, the rest
 # in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+MEASURED_ONLY: frozenset[str] = frozenset({"blind43"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -552,6 +466,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind41"].entries}) >= 3
     assert len(CORPORA["blind42"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind42"].entries}) >= 3
+    assert len(CORPORA["blind43"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind43"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites41r, normalise
+from hltl.grounding import _rewrites41r, _rewrites44s, normalise
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
@@ -360,6 +360,10 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS39S_FIRST,
             *normalise._STEPS39S,
             _rewrites41r._shared_out41r,
+            # session 44 (12s): a closing 'hand them over' after handovers to two people, and
+            # what someone keeps doing to what is put away, read these too
+            _rewrites44s._hand_over44s,
+            _rewrites44s._keep_taking44s,
         ),
         monkeypatch,
     )

@@ -420,13 +420,18 @@ def test_a_person_said_to_be_an_adj_one_no_object_is_called_by_reads() -> None:
 def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every sentence these rules read is refused with the session-38 (12r) steps taken out: each
     rule is what reads it."""
-    # sessions 42 and 43 (12r): their rules of the same families read these too
+    # sessions 42 and 43 (12r): their rules of the same families read these too; session 44
+    # (12r, 12s; lead at the merge): theirs too
     CASES.refused_without(
         (
             *normalise._STEPS38R,
             *normalise._STEPS42R,
             *normalise._STEPS43R_FIRST,
             *normalise._STEPS43R,
+            *normalise._STEPS44R_FIRST,
+            *normalise._STEPS44R,
+            *normalise._STEPS44S_FIRST,
+            *normalise._STEPS44S,
         ),
         monkeypatch,
     )

@@ -9,7 +9,7 @@ import re
 import pytest
 
 from hltl.bench.grounding import show_tree
-from hltl.grounding import normalise, offline
+from hltl.grounding import _rewrites44s, normalise, offline
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -293,6 +293,13 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
                 *normalise._STEPS42R,
                 *normalise._STEPS43R_FIRST,
                 *normalise._STEPS43R,
+                # session 44 (12s): a remark run on into a want reads these too; (12r, 12s;
+                # lead at the merge) their session-44 rules too
+                _rewrites44s._run_on_pronoun44s,
+                *normalise._STEPS44R_FIRST,
+                *normalise._STEPS44R,
+                *normalise._STEPS44S_FIRST,
+                *normalise._STEPS44S,
             ),
             monkeypatch,
         )

@@ -201,6 +201,9 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 43 (12r): its corrections read some of these too
             *normalise._STEPS43R_FIRST,
             *normalise._STEPS43R,
+            # session 44 (12r): its rules of the same families read some of these too
+            *normalise._STEPS44R_FIRST,
+            *normalise._STEPS44R,
         ),
         monkeypatch,
     )

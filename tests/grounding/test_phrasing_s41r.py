@@ -8,7 +8,14 @@ from __future__ import annotations
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites41r, _rewrites42r, _rewrites43r, offline
+from hltl.grounding import (
+    _rewrites41r,
+    _rewrites42r,
+    _rewrites43r,
+    _rewrites44r,
+    _rewrites44s,
+    offline,
+)
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
@@ -381,6 +388,11 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 43 (12r): its rules of the same families read these too
             *_rewrites43r._STEPS43R_FIRST,
             *_rewrites43r._STEPS43R,
+            # session 44 (12r): its rules of the same families read some of these too
+            *_rewrites44r._STEPS44R_FIRST,
+            *_rewrites44r._STEPS44R,
+            # session 44 (12s): 'last of all' said as 'lastly' reads these too
+            _rewrites44s._after_end44s,
         ),
         monkeypatch,
     )

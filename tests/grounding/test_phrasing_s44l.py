@@ -8,9 +8,20 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hltl.grounding import phrasing
+from hltl.grounding import _rewrites44l, phrasing
 from hltl.world.scene import Scene, load_scene
-from tests.grounding.helpers import ROOT, assert_reads, assert_refused
+from tests.grounding.helpers import (
+    CELL,
+    KITCHEN,
+    LAB,
+    OFFICE,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+    tree,
+)
 
 # -- a he / she no name is said for, in a scene of one person (phrasing._sole_person32s with
 # lexicon.unnamed_sex44l): blind42's one wrong reading, "Once you've got the bottle, hand it to
@@ -41,12 +52,13 @@ FORMS = [
     "Give {obj} the bottle.",
     "Pick up the bottle, then hand it to {obj}.",
     "See that bottle? {Subj}'d like it.",
+    "Give the bottle to {obj}, {subj}'s thirsty.",  # session 32's, with 'him' for Person A
 ]
 
 
 def _said(form: str, sex: str) -> str:
     obj, subj = ("him", "He") if sex == "m" else ("her", "She")
-    return form.format(obj=obj, Subj=subj)
+    return form.format(obj=obj, Subj=subj, subj=subj.lower())
 
 
 @pytest.mark.parametrize("name", sorted(SAID))
@@ -82,11 +94,21 @@ def test_named_person_still_reads(text: str) -> None:
     assert_reads(text, "bottle>A", ONE)
 
 
-@pytest.mark.parametrize("name", ["Dana", "Person C", "Jess", "the visitor"])
-def test_no_sex_said_reads_either_pronoun(name: str) -> None:
+@pytest.mark.parametrize(
+    ("name", "aliases"),
+    [("Dana", ()), ("Person C", ()), ("Jess", ()), ("the visitor", ()), ("Person A", ("Kofi",))],
+)
+def test_no_sex_said_reads_either_pronoun(name: str, aliases: tuple[str, ...]) -> None:
+    # the generic label's convention holds only for a person called by it alone: the paraphrase
+    # scenes call Kofi 'Person A' too
     for form in FORMS:
-        assert_reads(_said(form, "m"), "bottle>A", _alone(name))
-        assert_reads(_said(form, "f"), "bottle>A", _alone(name))
+        assert_reads(_said(form, "m"), "bottle>A", _alone(name, *aliases))
+        assert_reads(_said(form, "f"), "bottle>A", _alone(name, *aliases))
+
+
+def test_a_first_name_beside_the_label_rules_out() -> None:
+    assert_refused("Give him the bottle.", _alone("Person A", "Alice"), match="is a she")
+    assert_reads("Give him the bottle.", "bottle>A", _alone("Person A", "Bob"))
 
 
 @given(st.sampled_from(sorted(SAID)), st.sampled_from(FORMS), st.booleans())
@@ -102,3 +124,124 @@ def test_refused_without_the_check(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(phrasing, "unnamed_sex44l", lambda pid, lexicon: None)
     assert_reads("Once you've got the bottle, hand it to him.", "bottle>A", ONE)
     assert_reads("Give him the bottle.", "bottle>A", _alone("Alice"))
+
+
+# -- what a person holds, said beside a request (_rewrites44l.held_beside44l): 12c's probes found
+# "Mrs Khan's got her jug; give Mr Lee the magazine." read jug>C & magazine>B and "Bob's got the
+# cup so give Alice the apple." cup>B & apple>A; refused now naming both readings
+
+HELD = [
+    ("Mrs Khan's got her jug; give Mr Lee the magazine.", WARD, "Mrs Khan", "jug"),
+    ("Mrs Khan's got her jug, give Mr Lee the magazine.", WARD, "Mrs Khan", "jug"),
+    ("Mrs Khan has the jug so give Mr Lee the magazine.", WARD, "Mrs Khan", "jug"),
+    ("Bob's got the cup so give Alice the apple.", CELL, "Bob", "cup"),
+    ("Alice has the apple, so give Bob the cup.", CELL, "Alice", "apple"),
+    ("Bob's got his cup, so hand Alice the apple.", CELL, "Bob", "cup"),
+    ("Give Carol the apple and Bob has his cup.", CELL, "Bob", "cup"),
+    ("Sam has his stapler, so Priya can have the notebook.", OFFICE, "Sam", "stapler"),
+    ("Jess has got her hammer; pass Kofi the drill.", WORKSHOP, "Jess", "hammer"),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "who", "thing"), HELD)
+def test_held_beside_a_request_refused(text: str, scene: Scene, who: str, thing: str) -> None:
+    assert_refused(text, scene, match=f"what {who} already holds .* {who} is to get the {thing}")
+
+
+@pytest.mark.parametrize(("text", "scene", "who", "thing"), HELD)
+def test_held_beside_a_request_read_without(
+    text: str, scene: Scene, who: str, thing: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(_rewrites44l, "held_beside44l", lambda text, lexicon: None)
+    assert tree(text, scene) is not None  # the grammar reads it as a share
+
+
+# 12c's `holds` fuzz family: a remark that the person already holds / still has / has had / has
+# their own thing, beside a request, had its thing read as a later 'it' or handed over
+HOLDS = [
+    ("Bob has his own crisps already. Put the cup on the shelf and then give it to Bob", CELL),
+    ("Bob already has the crisps, so give Bob any mug, it doesn't matter which", CELL),
+    ("Lena's got the tongs already, so the lemon should go on the counter.", KITCHEN),
+    ("Jess still has the tin of screws from earlier, so put the hammer on the bench.", WORKSHOP),
+    ("Jess has her own power drill already. Put the hammer on the bench", WORKSHOP),
+    ("Omar is already holding the spoon. Either give Omar the banana or put it on the tray", LAB),
+    ("Mrs Khan already has the medication, so take Mr Lee the magazine.", WARD),
+    ("Carol's still holding the red mug, give her the apple too.", CELL),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HOLDS)
+def test_held_already_beside_a_request_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="already holds or had: it asks for nothing")
+
+
+# the fuzz's own sentences, which the grammar read wrongly
+HOLDS_READ = [
+    HOLDS[0],
+    HOLDS[1],
+    (
+        "Lena's got the tongs already, so the lemon should go on the counter and the salt should "
+        "go to Lena once it's there",
+        KITCHEN,
+    ),
+    (
+        "Jess still has the tin of screws from earlier, so put the hammer on the bench and give "
+        "Jess the torch once it's there",
+        WORKSHOP,
+    ),
+    HOLDS[5],
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HOLDS + HOLDS_READ[2:4])
+def test_held_already_beside_a_request_refused_too(text: str, scene: Scene) -> None:
+    assert_refused(text, scene, match="already holds or had: it asks for nothing")
+
+
+@pytest.mark.parametrize(("text", "scene"), HOLDS_READ)
+def test_held_already_read_without(
+    text: str, scene: Scene, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(_rewrites44l, "held_beside44l", lambda text, lexicon: None)
+    assert tree(text, scene) is not None  # read (12c: with the thing misplaced or handed over)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # a share (session 32): the present 'has' beside another person's part allots
+        ("Give Bob the cup, Alice has the apple.", "cup>B & apple>A", CELL),
+        ("Bob has the cup and Alice the apple, please.", "cup>B & apple>A", CELL),
+        ("Lena has the lemon, give Marco the tongs.", "lemon>B & tongs>A", KITCHEN),
+        # a time, not a state
+        ("Once Alice has the cup, Bob gets the chips", "cup>A ; chips>B", CELL),
+        ("Give Alice the apple after Bob has the cup.", "cup>B ; apple>A", CELL),
+        # 'her' not before a scene object
+        ("Carol has her hands full, so put the apple on the shelf.", "apple@shelf", CELL),
+        ("Bob still wants the apple, give it to him.", "apple>B", CELL),
+    ],
+)
+def test_shares_and_times_read_as_before(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+# -- a bare comma between two things after 'Not' is a correction, not a list of things left out
+# (_rewrites42r._NOT_LIST42R): 12c's fuzz found "Not the apple, the cup, and it's for Alice. Alice
+# wouldn't say no to the crisps." read chips>A, the cup dropped
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        (
+            "Not the apple, the cup, and it's for Alice. Alice wouldn't say no to the crisps.",
+            "cup>A & chips>A",
+        ),
+        ("Not the apple and not the cup; Bob gets the chips.", "chips>B"),
+        ("Not the apple, not the cup: Bob gets the chips.", "chips>B"),
+        ("Not the apple, nor the cup: Bob gets the chips.", "chips>B"),
+        ("Not the red mug, not the blue; Bob gets the cup.", "cup>B"),
+    ],
+)
+def test_not_then_a_bare_comma(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)

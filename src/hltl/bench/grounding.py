@@ -138,7 +138,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # change the grounder before its one measurement at the end of session 42; tuned on in session 43),
 # blind42 (written in session 43 by another engineer and committed alone, never opened by the
 # engineers who change the grounder before its one measurement at the end of session 43; tuned on
-# in session 44).
+# in session 44), blind43 (written in session 44 by another engineer and committed alone, never
+# opened by the engineers who change the grounder before its one measurement at the end of session
+# 44; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -198,6 +200,7 @@ PARTS = (
     "blind40",
     "blind41",
     "blind42",
+    "blind43",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

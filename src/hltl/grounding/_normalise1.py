@@ -64,7 +64,15 @@ def _rewritten(
 
 def _names(text: str, lexicon: Lexicon) -> list[Item]:
     """The scene's objects, people and surfaces ``text`` names, in order (also inside words the
-    lexer joins to an unknown word: 'the plates out')."""
+    lexer joins to an unknown word: 'the plates out'); kept per text in the lexicon (lexing is a
+    function of the text and the lexicon's names, and the items are frozen)."""
+    kept = lexicon.named.get(text)
+    if kept is None:
+        kept = lexicon.named[text] = tuple(_names_now(text, lexicon))
+    return list(kept)
+
+
+def _names_now(text: str, lexicon: Lexicon) -> list[Item]:
     try:
         items = lex(text, lexicon)
     except GroundingError:
@@ -1169,8 +1177,32 @@ def _said_again30s(pid: str, lexicon: Lexicon) -> Callable[[re.Match[str]], str]
     return again
 
 
-def _people(text: str, lexicon: Lexicon) -> str:
+def _absent(name: str, text: str) -> bool:
+    """True only where ``name`` cannot stand in ``text`` in any letter case, so that a pattern
+    holding it (escaped) cannot match (session 44, 12b: a rule skips a name the text lacks;
+    False, and the rule runs, for a text or name that is not ASCII, whose case folding re may do
+    otherwise)."""
+    return text.isascii() and name.isascii() and name.lower() not in text.lower()
+
+
+# A titled alias's rewrites ("Mister Lee", "Lee", "Miss Ortiz"): (the name after the title, the
+# alias, the pattern for 'mister'/'missus', the pattern for the name alone (or ''), the patterns
+# for the same-sex titles no other person has)
+_Titled = tuple[str, str, str, str, tuple[str, ...]]
+
+
+@functools.lru_cache(maxsize=64)
+def _people_plan(lexicon: Lexicon) -> tuple[tuple[_Titled, ...], tuple[tuple[str, str], ...]]:
+    """What _people builds from the scene's names alone, once per lexicon (session 44, 12b: it
+    was built again for every text): the titled aliases' patterns and the roles two or more
+    people share, with the names each role's sentence lists and its two patterns."""
     humans = lexicon.scene.humans
+    titled: list[_Titled] = []
+    everyone = [
+        *(a for g in humans for a in (*g.aliases, g.name)),
+        *(n for o in lexicon.scene.objects for n in (o.id, o.category, *o.aliases)),
+        *(n for x in lexicon.scene.surfaces for n in (x.id, *x.aliases)),
+    ]
     for h in humans:
         for alias in h.aliases:
             words = alias.split()
@@ -1179,31 +1211,43 @@ def _people(text: str, lexicon: Lexicon) -> str:
             sex, rest = _TITLES[words[0].lower().rstrip(".")], " ".join(words[1:])
             others = [t for t, s in _TITLES.items() if s == sex and t != words[0].lower()]
             said = {"m": "mister", "f": "missus"}[sex]  # "Mister Lee" for "Mr Lee"
-            text = _sub(rf"\b{said} {re.escape(rest)}\b", alias, text)
+            alone = ""
             # "Lee" alone for "Mr Lee", when no other name of the scene has that word
-            everyone = [
-                *(a for g in humans for a in (*g.aliases, g.name)),
-                *(n for o in lexicon.scene.objects for n in (o.id, o.category, *o.aliases)),
-                *(n for x in lexicon.scene.surfaces for n in (x.id, *x.aliases)),
-            ]
             if len(words) == 2 and sum(rest.lower() in n.lower().split() for n in everyone) == 1:
                 after_title = "".join(  # "mr Khan" is no "Mrs Khan" either
                     rf"(?<!{t} )(?<!{t}\. )"
                     for title in ("Mr", "Mrs", "Ms", "Miss", "Dr")
                     for t in (title, title.lower(), title.upper())
                 )
-                text = re.sub(rf"{after_title}\b{re.escape(rest)}\b", alias, text)
-            for t in others:  # "Miss Ortiz" for "Mrs Ortiz": the same woman, if no other
-                taken = any(a.lower() == f"{t} {rest}".lower() for g in humans for a in g.aliases)
-                if not taken:
-                    text = _sub(rf"\b{t}\.? {re.escape(rest)}\b", alias, text)
+                alone = rf"{after_title}\b{re.escape(rest)}\b"
+            same = tuple(  # "Miss Ortiz" for "Mrs Ortiz": the same woman, if no other
+                rf"\b{t}\.? {re.escape(rest)}\b"
+                for t in others
+                if not any(a.lower() == f"{t} {rest}".lower() for g in humans for a in g.aliases)
+            )
+            titled.append((rest, alias, rf"\b{said} {re.escape(rest)}\b", alone, same))
     # "each student": every person of a role two or more share
     roles: dict[str, list[str]] = {}
     for h in humans:
         for alias in h.aliases:
             roles.setdefault(alias.lower(), []).append(_name(h.id, lexicon))
-    for role, names in roles.items():
-        if len(names) < 2:
+    shared = tuple((role, " and ".join(names)) for role, names in roles.items() if len(names) >= 2)
+    return tuple(titled), shared
+
+
+def _people(text: str, lexicon: Lexicon) -> str:
+    humans = lexicon.scene.humans
+    titled, shared = _people_plan(lexicon)
+    for rest, alias, mister, alone, same in titled:
+        if _absent(rest, text):
+            continue  # every pattern below holds the name
+        text = _sub(mister, alias, text)
+        if alone:
+            text = re.sub(alone, alias, text)
+        for pattern in same:
+            text = _sub(pattern, alias, text)
+    for role, names in shared:
+        if _absent(role, text):
             continue
         # only as the one request of the text: "(please) give each student <objects>"
         m = re.match(
@@ -1213,7 +1257,7 @@ def _people(text: str, lexicon: Lexicon) -> str:
             _F,
         )
         if m is not None and _one_thing(m.group(2), lexicon):
-            text = f"{m.group(1)} {' and '.join(names)} {m.group(2)} each"
+            text = f"{m.group(1)} {names} {m.group(2)} each"
         # "Each patient should receive one blanket", "Every student gets a book"
         m = re.match(
             rf"^(?:each|every) (?:of the )?{re.escape(role)}s? (?:(?:should|could|can|must|will|"
@@ -1223,10 +1267,12 @@ def _people(text: str, lexicon: Lexicon) -> str:
             _F,
         )
         if m is not None and _one_thing(m.group(1), lexicon):
-            text = f"{' and '.join(names)} should get {m.group(1)} each"
+            text = f"{names} should get {m.group(1)} each"
     text = _gendered_header(text, lexicon)
     for h in humans:
         for alias in (*h.aliases, h.name):
+            if _absent(alias, text):
+                continue  # each pattern below holds the name
             p = re.escape(alias)
             # clefts: "It's Carol who needs …", "Carol's the one who wants …", "What Carol
             # needs is the apple"
@@ -1245,6 +1291,8 @@ def _people(text: str, lexicon: Lexicon) -> str:
     if re.search(r"\b(?:wants?|needs?|would like|'d like)\b", text, _F):
         for h in humans:
             for alias in (*h.aliases, h.name):
+                if _absent(alias, text):
+                    continue
                 text = _sub(
                     r"(,\s*(?:and )?(?:then |after that |afterwards |next )?)"
                     rf"({re.escape(alias)}),?\s+for (?=the |a |an )",
@@ -1256,6 +1304,8 @@ def _people(text: str, lexicon: Lexicon) -> str:
     # "Mr Novak he want lemon": a pronoun repeating the subject
     for h in humans:
         for alias in (*h.aliases, h.name):
+            if _absent(alias, text):
+                continue
             text = _sub(
                 rf"^({re.escape(alias)}),? (?:he|she|they) ", _said_again30s(h.id, lexicon), text
             )
@@ -6374,13 +6424,11 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
         prev = words[k - 1].lower().strip(",;:") if k else ""
         last = k + 1 == len(words) or w[-1:] in ",;:.!?"
         glued = low in _PARTICLES and k > 0 and prev[-1:] not in (",", ";", ":")
-        loose = (
-            _unknown_word(core, lexicon)
-            and 0 < k < len(words) - 1
-            and (
-                words[k + 1].lower() in ("on", "onto", "to", "in", "into", "over")
-                and _ends_object(" ".join(words[:k]), lexicon)
-            )
+        loose = (  # the cheap tests first (session 44, 12b): the same value, not asked of most
+            0 < k < len(words) - 1
+            and words[k + 1].lower() in ("on", "onto", "to", "in", "into", "over")
+            and _unknown_word(core, lexicon)
+            and _ends_object(" ".join(words[:k]), lexicon)
         )  # 'the sippy cup aloft on the high chair': a word between a thing and where it goes
         if (
             core

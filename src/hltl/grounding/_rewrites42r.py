@@ -210,10 +210,14 @@ def _negated_then42r(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
-# "Not the red pen and not the blue; Sam gets the black one."
+# "Not the red pen and not the blue; Sam gets the black one." (session 44, lead: a bare comma
+# between two things is no list of things left out: "Not the apple, the cup, and it's for Alice.
+# Alice wouldn't say no to the crisps." had read chips>A, the cup dropped, 12c's fuzz; "…, not …"
+# and "…, nor …" are)
 _NOT_LIST42R = (
-    rf"^(?:not|never mind|forget(?: about)?) (?P<x>{_THING42R})(?P<more>(?:\s*(?:,|and|or|nor|, "
-    rf"and|, or|, nor)\s*(?:not )?(?:{_THING42R}|the [a-z]+))*)\s*[;:,.]\s*(?P<rest>\S.*?)"
+    rf"^(?:not|never mind|forget(?: about)?) (?P<x>{_THING42R})(?P<more>(?:(?:\s*(?:and|or|nor|, "
+    rf"and|, or|, nor)\s*(?:not )?|\s*,\s*not )(?:{_THING42R}|the [a-z]+))*)\s*[;:,.]\s*"
+    r"(?P<rest>\S.*?)"
     r"(?P<end>\s*[.!]?)$"
 )
 
@@ -230,6 +234,10 @@ def _not_list_first42r(text: str, lexicon: Lexicon) -> str:
         return text
     x = _thing42r(m["x"], None, lexicon)
     if x is None:
+        return text
+    if re.search(r",\s*(?!(?:and|or|nor|not)\b)\S[^,]*$", m["more"] or "", _F):
+        # session 44 (12r): "Not X, Y, (oh, and Z) for P" closes on a thing after a bare comma:
+        # Y in X's place (a correction), not a second thing left out
         return text
     out_of = [x]
     for said in re.findall(rf"(?:not )?((?:{_THING42R})|the [a-z]+)", m["more"] or "", _F):

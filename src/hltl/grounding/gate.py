@@ -116,6 +116,12 @@ def _needed(items: object, fold: bool) -> _Words:
     return best
 
 
+def _fewest(words: frozenset[str]) -> tuple[str, ...]:
+    """``words`` without those holding another of them ('okay' beside 'ok'): a text holds one
+    of what is left where it holds one of ``words``."""
+    return tuple(sorted(w for w in words if not any(v != w and v in w for v in words)))
+
+
 @functools.lru_cache(maxsize=16384)
 def required(pattern: str, flags: int = 0) -> tuple[_Words, bool]:
     """The words one of which every match of ``pattern`` contains (None where none can be
@@ -128,8 +134,14 @@ def required(pattern: str, flags: int = 0) -> tuple[_Words, bool]:
     return _needed(parsed, fold), fold
 
 
+# a pattern's gate: the words one of which every match contains, and whether they are
+# lower-cased; None: always run
 _Gate = tuple[tuple[str, ...], bool] | None
-_GATES: dict[tuple[str, int], _Gate] = {}
+# gates by flags, then by pattern (no key tuple built per check: ~600 checks an instruction)
+_GATES: dict[int, dict[str, _Gate]] = {}
+# a compiled pattern's text and flags by the pattern's id (the pattern kept beside them: an id is
+# the pattern's only while it lives; re's hash of a pattern hashes its whole code at each call)
+_SOURCES: dict[int, tuple[re.Pattern[str], str, int]] = {}
 # each pattern gated, compiled from the parse its words were derived from, until it is first run
 # (then kept by the caller: ``compiled`` hands it over)
 _BUILT: dict[tuple[str, int], re.Pattern[str]] = {}
@@ -149,7 +161,7 @@ def _gate(pattern: str, flags: int, *, build: bool = True) -> _Gate:
     else:
         fold = bool(parsed.state.flags & re.IGNORECASE)  # its flags or an inline '(?i)'
         words = _needed(parsed, fold)
-        gate = None if words is None else (tuple(sorted(words)), fold)
+        gate = None if words is None else (_fewest(words), fold)
         if build and not flags & _RE_ONLY:
             if len(_BUILT) > 16384:
                 _BUILT.clear()
@@ -159,10 +171,16 @@ def _gate(pattern: str, flags: int, *, build: bool = True) -> _Gate:
             # builds the pattern as before
             with contextlib.suppress(re.error, AttributeError, TypeError, ValueError):
                 _BUILT[key] = _from_parse(pattern, int(flags), parsed)
-    if len(_GATES) > 16384:
-        _GATES.clear()
-    _GATES[key] = gate
+    gates = _GATES.setdefault(flags, {})
+    if len(gates) > 16384:
+        gates.clear()
+    gates[pattern] = gate
     return gate
+
+
+def forget(pattern: str, flags: int = 0) -> None:
+    """Drop ``pattern``'s gate (it is derived again when next met)."""
+    _GATES.get(flags, {}).pop(pattern, None)
 
 
 def _from_parse(pattern: str, flags: int, parsed: Any) -> re.Pattern[str]:
@@ -199,7 +217,7 @@ def may_match(pattern: str, flags: int, text: str) -> bool:
     """False only where ``pattern`` cannot match anywhere in ``text``."""
     global _LAST
     try:
-        gate = _GATES[pattern, flags]
+        gate = _GATES[flags][pattern]
     except KeyError:
         gate = _gate(pattern, flags)
     if gate is None:
@@ -213,7 +231,7 @@ def may_match(pattern: str, flags: int, text: str) -> bool:
     words, fold = gate
     if fold:
         text = low
-    for word in words:  # noqa: SIM110  # a loop: any() over a generator costs more, ~600 times an instruction
+    for word in words:  # noqa: SIM110  # a loop: any() over a generator costs more
         if word in text:
             return True
     return False
@@ -238,10 +256,13 @@ def _gated(
     """``method`` of the compiled ``pattern`` called with ``args``, or ``on_no_match`` (what re
     returns for no match) where the gate says ``pattern`` cannot match ``string``."""
     if isinstance(pattern, re.Pattern):
-        source, flags = pattern.pattern, pattern.flags
-        if (source, flags) not in _GATES:
-            _gate(source, flags, build=False)  # compiled already: never again
-        if not may_match(source, flags, string):
+        kept = _SOURCES.get(id(pattern))
+        if kept is None or kept[0] is not pattern:
+            if len(_SOURCES) > 16384:
+                _SOURCES.clear()
+            kept = _SOURCES[id(pattern)] = (pattern, pattern.pattern, pattern.flags)
+            _gate(kept[1], kept[2], build=False)  # compiled already: never again
+        if not may_match(kept[1], kept[2], string):
             return on_no_match
         return method(pattern, *args)
     if not may_match(pattern, flags, string):

@@ -1370,6 +1370,9 @@ class Lexicon:
         # function of the text and this lexicon's names, so what is kept stays right; emptied
         # when it holds _LEXED_KEPT texts
         self._lexed: dict[str, tuple[Item, ...]] = {}
+        # the scene's names each text lexed names (the normaliser's _names), kept and emptied as
+        # the texts lexed are (session 44, 12b: the rules ask it of the same words many times)
+        self.named: dict[str, tuple[Item, ...]] = {}
         # the grammar's reading (a tree, or the refusal) of each text read for this instruction
         self.readings: dict[str, object] = {}
         # the normaliser's rewrite of each text (or its refusal), by rewrite, for this instruction
@@ -1509,6 +1512,8 @@ class Lexicon:
         instruction starts), and the texts lexed once they are many."""
         if len(self._lexed) > _LEXED_KEPT:
             self._lexed.clear()
+        if len(self.named) > _LEXED_KEPT:
+            self.named.clear()
         if len(self._matches) > _LEXED_KEPT:
             self._matches.clear()
         self.readings.clear()
@@ -2384,7 +2389,10 @@ def unnamed_sex44l(pid: str, lexicon: Lexicon) -> str | None:
     alone, blind42; "Give him the bottle." with Alice alone)."""
     human = next(h for h in lexicon.scene.humans if h.id == pid)
     sexes = {said_sex35s(pid, lexicon), first_name_sex36s(pid, lexicon)}
-    sexes |= {_GENERIC_SEX44L.get(a.lower()) for a in (human.name, *human.aliases)}
+    if all(a.lower() in _GENERIC_SEX44L for a in (human.name, *human.aliases)):
+        # only a person the scene calls by the generic label alone: the paraphrase scenes name
+        # Kofi 'Person A' too (12's note)
+        sexes.add(_GENERIC_SEX44L.get(human.name.lower()))
     sexes.discard(None)
     return next(iter(sexes)) if len(sexes) == 1 else None
 

@@ -28,6 +28,7 @@ from hltl.grounding import (
     _rewrites43r,
     _rewrites43s,
     _rewrites44,
+    _rewrites44l,
     _rewrites44r,
     _rewrites44s,
 )
@@ -629,6 +630,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             lexicon,
         )
         _rewrites43l.owned_other43l(text, lexicon)
+        _rewrites44l.held_beside44l(text, lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)

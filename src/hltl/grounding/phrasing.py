@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from collections.abc import Callable, Sequence
@@ -74,6 +75,25 @@ def refine(items: list[Item], lexicon: Lexicon) -> list[Item]:
 def _plain(step: Callable[[list[Item]], list[Item]]) -> Callable[[list[Item], Lexicon], list[Item]]:
     """A pass that does not need the scene's names, as one of _PASSES."""
     return lambda items, _lexicon: step(items)
+
+
+_Pass = Callable[[list[Item], Lexicon], list[Item]]
+
+
+def _only_with(needs: Callable[[Item], bool], step: _Pass) -> _Pass:
+    """``step`` run only where some item passes ``needs`` (session 44, 12b: most passes look for
+    a word most instructions lack, and walked every item to find it). ``needs`` must hold of an
+    item wherever ``step`` would change the items or refuse: where no item passes it, the items
+    go on as they are (``__wrapped__`` is the pass itself)."""
+
+    @functools.wraps(step)
+    def gated(items: list[Item], lexicon: Lexicon) -> list[Item]:
+        for it in items:
+            if needs(it):
+                return step(items, lexicon)
+        return items
+
+    return gated
 
 
 # the last items split into sentences and their spans, replaced as one tuple (threads may ground
@@ -1963,6 +1983,28 @@ def _not_a_list_for_a_list(before: list[Item], after: list[Item], marker: Item) 
         )
 
 
+def _name_after_clause44s(before: list[Item], start: int) -> int | None:
+    """Where a name said alone after ', and' (or 'and' after a surface) closing
+    ``before`` starts, when a clause comes before it in the sentence (from ``start``); None
+    otherwise ("…, and Bob, sorry, Alice is having the crisps": 'Bob' is what 'sorry' takes
+    back; "to Alice and Bob, sorry, …" is a list, left to the rules below)."""
+    n = len(before)
+    if n < 3 or before[-1].kind != "ent":
+        return None
+    m = _past_dets_back(before, n - 1)
+    if m - 1 <= start or not _is(before[m - 1], "and"):
+        return None
+    if not _is(before[m - 2], ","):
+        # without a comma only after a place ("Put the globe on the shelf and Noah, sorry, …"):
+        # "Give Alice the cup and Bob, sorry, …" may hand the cup to Bob too (refused, as before)
+        prev = next((x for x in reversed(before[start : m - 1]) if x.kind == "ent"), None)
+        if prev is None or any(x.kind != "surface" for x in prev.refs):
+            return None
+    if not any(x.kind == "ent" for x in before[start : m - 1]):
+        return None
+    return m
+
+
 def _past_dets_back(items: list[Item], k: int) -> int:
     while k > 0 and _is(items[k - 1], "det"):
         k -= 1
@@ -2099,6 +2141,16 @@ def _apply_correction(
     while r < len(after) and _is(after[r], "det", "to", "for", "on", "filler"):
         r += 1
     if _clause_opens(after, r):
+        named = _name_after_clause44s(before, start)
+        if (
+            named is not None
+            and after[r].kind == "ent"
+            and {x.kind for x in after[r].refs} == {x.kind for x in before[-1].refs}
+        ):
+            # "The bottle goes on the shelf, and Bob, sorry, Alice is having the crisps": the
+            # name said alone after a clause is what is corrected, the clause after the cue its
+            # own (session 44, 12s: the whole first clause had been taken back)
+            return before[:named] + list(after)
         # a whole new clause replaces the last clause (from its verb back to the separator
         # before it: its subject too); "it" keeps meaning what that clause moved
         verbs = [k for k in range(start, len(before)) if _is_verb_item(before[k])]
@@ -5972,21 +6024,21 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_definite_ones35l),
     _plain(_two_names29),
     _plain(_for_me_alone),
-    _plain(_any_described),
-    _plain(_described_then_corrected),
+    _only_with(lambda it: _is(it, "q:some"), _plain(_any_described)),
+    _only_with(lambda it: _is(it, *_MEASURES), _plain(_described_then_corrected)),
     _plain(_choice_restated),
     _plain(_any_order),
     _plain(_closing_also),
     _people_named,
     _plain(_restated),
     _plain(_notes),
-    _plain(_surface_notes),
-    _plain(_in_between),
-    _plain(_last_opening),
+    _only_with(_is_surface, _plain(_surface_notes)),
+    _only_with(lambda it: _is(it, "between"), _plain(_in_between)),
+    _only_with(lambda it: _is(it, "last"), _plain(_last_opening)),
     _plain(_wanted_done),
     _wanted_on,
     _purpose,
-    _plain(_bare_notes),
+    _only_with(_humans, _plain(_bare_notes)),  # a note needs two people
     _plain(_floating_all),
     _plain(_listed_subjects),
     _plain(_ellipsis),
@@ -5995,7 +6047,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_run_ons),
     _plain(_let),
     _plain(_both_people),
-    _plain(_sources),
+    _only_with(_is_surface, _plain(_sources)),
     _plain(_then_inside),
     _plain(_do_whose),
     _plain(_wished_for),
@@ -6010,7 +6062,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_superlatives),
     _places_named,
     _rest,
-    _whatever_near,
+    _only_with(lambda it: _is(it, "whatever"), _whatever_near),
     _plain(_any_restated),
     _whichever_nearer,
     _plain(_whichever),
