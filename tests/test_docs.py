@@ -8,7 +8,9 @@ from pathlib import Path
 
 import pytest
 
+from hltl.bench.grounding import PARTS
 from hltl.cli.main import main
+from tests.grounding.test_paraphrase import MEASURED_ONLY
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
@@ -71,6 +73,10 @@ def _small(argv: list[str], tmp_path: Path) -> list[str]:
         argv = _option(argv, "--jobs", "1")
     if argv[1] == "motion":
         argv = [*argv, "--quick"]
+    if argv[1] == "grounding" and "--write" not in argv:
+        # the held-back part is measured once, at its session's end, by the one engineer who
+        # may: never by a test (a --show would print its misses into a failure's log)
+        argv = _option(argv, "--parts", ",".join(p for p in PARTS if p not in MEASURED_ONLY))
     if argv[1] == "suite":
         argv = _option(argv, "--flat-sweep", "1,2")
         argv = _option(argv, "--flat-trials", "1")

@@ -257,6 +257,73 @@ KNOWN_MISSES = frozenset(
         "Could the apple go on the counter, next to where Alice does her cross-stitch?",
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
+        # blind43 (tuned on in session 45): refusals left at its one measurement (docs/grounding.md)
+        "Yakoke, robot, when you get a sec could you hand Bob the blue mug? He's off to "
+        "bellringing practice.",
+        "Right, um, the bootmaker left the bottle lying about, could you pop it up on the shelf "
+        "for me? Cheers.",
+        "Seremein, erm, could Emma have the banana? She's got a snowshoe trek later.",
+        "Be a dear and set the tongs down on the worktop, ta, I'm off to the cider press after "
+        "this.",
+        "Person B has been craving an apple all afternoon, what with his butoh rehearsal.",
+        "Person A's desperate for the chips, the peat cutter ate all her sandwiches.",
+        "There's clay all over the bench from Omar's slip cast trial, so he needs the sponge.",
+        "Mr Lee needs his tablets before the harness maker visits him.",
+        "The guest would like some salt, he's a cockler by trade and loves it.",
+        "Noah's marbling project is coming apart, he needs the glue stick to fix it.",
+        "Person B hasn't had the cup yet, could you bring it to him?",
+        "The bottle? Person A, please, she's the stonecutter.",
+        "Find the cup; Person A's been asking for it since the pantomime, give it to her.",
+        "Person B's had his eye on the chips since the pantomime, so those go to him.",
+        "The bottle's for Person A, she's back from tent pegging and wants it, take it over to "
+        "her.",
+        "Person B wants them, the chips I mean.",
+        "Sam's lost his stapler again, bring it to him, please.",
+        "Tom's out of tape. Can you get him some?",
+        "Bottle up on the shelf, crisps over to Alice who's off ferreting, and that's everything.",
+        "Person A gets the cup Person B gets the chips they both want them before the mummers "
+        "start",
+        "Marco's doing the lemon posset so the lemon's his, and Lena wants the knife for the "
+        "bread.",
+        "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, she's not bothered.",
+        "Person B's heading to the cooperage; let him take any one of the cup, the apple or the "
+        "chips, he doesn't mind which.",
+        "Your call which: the bottle or the chips, one of them goes to Person B before his dog "
+        "sled run.",
+        "Go whichever way round suits the arm, just get the bottle to Person A before she sets "
+        "off for the coracle race.",
+        "Emma's rinsing brushes after lampwork and either cup will do, so take her one.",
+        "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
+        "Reading hour: the red book's for Noah and the green book's for Zoe, one apiece.",
+        "Lily's grizzling for a block, doesn't matter which of the two, she just wants to chew "
+        "one.",
+        "Just the single cup to Person A, she's the one brewing up after shoeing.",
+        "The lone apple's what Person B wants after his ice climbing.",
+        "Something apiece for the two speleology folk: bottle to Person A, chips to Person B.",
+        "Not the crisps, Bob wants the bottle after basketry.",
+        "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
+        "No, not on a shelf, hand the bottle straight to Person A.",
+        "It isn't the bottle Person A's after, it's the chips, for her saltmaker's lunch.",
+        "Any blanket for Mrs Khan except the grey, which makes her itch.",
+        "Jess is poking about under the bellows and wants the torch, so leave the hammer.",
+        "Crisps to Bob, scratch that, it's the bottle he wanted after his bachata class.",
+        "Bottle to Person A. Oh wait, she's out at the abattoir till late; switch it to Person B.",
+        "Send the chips to Person B, no, sorry, muddled them up, the chips belong with Person A.",
+        "Put the bottle down... no, actually, better give it to Person A for her uilleann piping "
+        "lesson.",
+        "Bottle to Person A... hmm, or... no, I had it right the first time, Person A.",
+        "Give Noah the ruler, no sorry, it's Zoe drawing the corset pattern, give it to her.",
+        "Teddy for Ava, whoops, she's too big for it now, Lily's the one who wants the teddy.",
+        "after two hours of underwater hockey person b is gasping for that bottle",
+        "hand person a the cup she takes it to clavichord lessons",
+        "person a could do with the bottle after her carolling thx",
+        "person b gets the chips hes earned them at ferreting",
+        "pop the spoon on the tray its been lying about since the lampwork demo",
+        "salt shaker to mr novak he says the soup needs it",
+        "lilys thirsty after her nap so sippy cup to her pls",
+        "The applfe is for Person B to take to show jumping",
+        "The glovfes want putting on the pallet, the fuller left them on the floor",
+        "Could you give Carol the red mug, now she's done with taxidermy class?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -272,6 +339,10 @@ KNOWN_UNCLEAR = frozenset(
         # blind42 (tuned on in session 44)
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
+        # blind43 (tuned on in session 45)
+        "Bob's still waiting on it after canoe polo, can you run it over to him?",
+        "Dana's after the same cup as yesterday.",
+        "Give Mr Novak the salt, sorry, I meant the other plate.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -355,8 +426,11 @@ KNOWN_UNCLEAR = frozenset(
 # session 43: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind42" written in session
 # 43 by another engineer and committed alone, reviewed by a second one, measured once at the end of
 # session 43 (1 wrong, refused since session 44), tuned on in session 44: asserted now, the rest
-# in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind43"})
+# in KNOWN_MISSES and KNOWN_UNCLEAR; "blind43" written in session 44 by another engineer and
+# committed alone, reviewed by a second one, measured once at the end of session 44 (1 wrong,
+# refused since session 45), tuned on in session 45: asserted now, the rest in KNOWN_MISSES and
+# KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

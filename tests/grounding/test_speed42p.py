@@ -8,13 +8,14 @@ from hltl.bench.grounding import CORPUS_DIR, PARTS, load_corpus
 from hltl.grounding import _normalise1
 from hltl.grounding.lexicon import Lexicon
 from tests.grounding.helpers import ROOT
+from tests.grounding.test_paraphrase import MEASURED_ONLY
 
 
 def _scenes() -> list[Lexicon]:
     lexicons: dict[int, Lexicon] = {}
     for part in PARTS:
-        if part == "blind41":
-            continue
+        if part in MEASURED_ONLY:
+            continue  # the held-back part is opened by its one measurement only
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for scene in corpus.scenes.values():
             lexicon = Lexicon.of(scene)

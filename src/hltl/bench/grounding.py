@@ -140,7 +140,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineers who change the grounder before its one measurement at the end of session 43; tuned on
 # in session 44), blind43 (written in session 44 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of session
-# 44; tests do not assert it).
+# 44; tuned on in session 45).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -543,6 +543,9 @@ from hltl.grounding._rewrites43s import _STEPS43S, _STEPS43S_FIRST
 from hltl.grounding._rewrites44 import _STEPS44, _STEPS44_FIRST
 from hltl.grounding._rewrites44r import _STEPS44R, _STEPS44R_FIRST
 from hltl.grounding._rewrites44s import _STEPS44S, _STEPS44S_FIRST
+from hltl.grounding._rewrites45 import _STEPS45, _STEPS45_FIRST
+from hltl.grounding._rewrites45r import _STEPS45R, _STEPS45R_FIRST
+from hltl.grounding._rewrites45s import _STEPS45S, _STEPS45S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -866,6 +869,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS45S_FIRST,
+    *_STEPS45R_FIRST,
+    *_STEPS45_FIRST,
     *_STEPS44S_FIRST,
     *_STEPS44R_FIRST,
     *_STEPS44_FIRST,
@@ -898,6 +904,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS45R,
     *_STEPS44R,
     # session 43 (12r)
     *_STEPS43R,
@@ -936,6 +943,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS45S,
     *_STEPS44S,
     # session 43 (12s)
     *_STEPS43S,
@@ -1021,6 +1029,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS45,
     *_STEPS44,
     # session 43 (12)
     *_STEPS43,

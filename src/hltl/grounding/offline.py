@@ -31,6 +31,10 @@ from hltl.grounding import (
     _rewrites44l,
     _rewrites44r,
     _rewrites44s,
+    _rewrites45,
+    _rewrites45l,
+    _rewrites45r,
+    _rewrites45s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -110,6 +114,9 @@ _REFUSALS = (
     *_rewrites44.REFUSE44,
     *_rewrites44r.REFUSE44R,
     *_rewrites44s.REFUSE44S,
+    *_rewrites45.REFUSE45,
+    *_rewrites45r.REFUSE45R,
+    *_rewrites45s.REFUSE45S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -129,6 +136,9 @@ _CHECKS = (
     *_rewrites44.CHECK44,
     *_rewrites44r.CHECK44R,
     *_rewrites44s.CHECK44S,
+    *_rewrites45.CHECK45,
+    *_rewrites45r.CHECK45R,
+    *_rewrites45s.CHECK45S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -631,6 +641,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         )
         _rewrites43l.owned_other43l(text, lexicon)
         _rewrites44l.held_beside44l(text, lexicon)
+        text = _rewrites45l.other_person45l(text, lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)

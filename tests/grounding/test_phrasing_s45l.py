@@ -1,0 +1,76 @@
+"""Phrasings the session-45 lead rules refuse or read (docs/grounding.md, Session 45 (lead))."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.errors import GroundingError
+from hltl.grounding import _rewrites45l
+from hltl.grounding.lexicon import Lexicon
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import LAB, ROOT, WARD, assert_reads, assert_refused
+
+FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")
+DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")
+
+# -- "…, no, not her, the other one": the person was the slip (blind43's one wrong reading, read
+# cup_white>C, the other cup); in a scene of three people refused naming the two it could be
+
+
+@pytest.mark.parametrize(
+    ("text", "could", "not_named"),
+    [
+        ("Pass Emma the green cup, no, not her, the other one.", ("Dana", "Omar"), "Emma"),
+        ("Give Omar the spoon, not him, the other person.", ("Dana", "Emma"), "Omar"),
+        (
+            "Hand Dana the white cup, sorry, not her, I meant the other one.",
+            ("Omar", "Emma"),
+            "Dana",
+        ),
+    ],
+)
+def test_the_other_person_of_three_is_refused_naming_both(
+    text: str, could: tuple[str, str], not_named: str
+) -> None:
+    assert_refused(text, LAB, match="could mean")
+    with pytest.raises(GroundingError) as err:
+        _rewrites45l.other_person45l(text, Lexicon.of(LAB))
+    message = str(err.value)
+    assert all(who in message for who in could)
+    assert not_named not in message.split("could mean", 1)[1]
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Give Bob the bottle, no, not him, the other one.", "bottle>A", FIG1),
+        ("Give Alice the crisps, not her, the other one.", "chips>B", FIG1),
+        ("Hand Person B the chips, oops, not him, the other person.", "chips>A", DUO),
+        (
+            "Give Alice the chips and Bob the bottle, no, not him, the other one.",
+            "chips>A & bottle>A",
+            FIG1,
+        ),
+    ],
+)
+def test_the_other_person_of_two_is_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Pass Emma the green cup, no, not that one, the other one.", LAB),  # the other cup
+        ("Give Mrs Khan the blanket, no, not him, the other one.", WARD),  # 'him' is not Mrs Khan
+        ("Not her, the other one: the spoon goes on the tray.", LAB),  # no one named before
+    ],
+)
+def test_what_is_not_a_person_slip_is_left_to_the_other_rules(text: str, scene: Scene) -> None:
+    assert _rewrites45l.other_person45l(text, Lexicon.of(scene)) == text
+
+
+def test_without_the_rule_the_other_one_of_three_was_read_as_the_other_cup(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(_rewrites45l, "other_person45l", lambda text, lexicon: text)
+    assert_reads("Pass Emma the green cup, no, not her, the other one.", "cup_white>C", LAB)
