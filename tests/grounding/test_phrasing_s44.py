@@ -434,9 +434,13 @@ DITTO = PhrasingCases()
 test_ditto = DITTO.test(
     ("Person B's having the chips, and ditto the apple.", "chips>B & apple>B", F42),
     ("Jess is having the drill, and ditto the torch.", "drill>B & torch>B", WORKSHOP),
-    # nothing asked before it; a person after it
+    # 12s's session-44 cases (its `_ditto44s` of the same sentences was dropped: one rule a kind)
+    ("Zoe's having the glue, and ditto the ruler.", "glue>C & ruler>C", CLASSROOM),
+    ("Give Tom the gloves, ditto the tape.", "gloves>B & tape>B", DEPOT),
+    # nothing asked before it; a person after it; a surface
     ("Ditto the torch.", None, WORKSHOP),
     ("Jess is having the drill, and ditto Kofi.", None, WORKSHOP),
+    ("Marco gets the knife, and ditto the rack.", None, KITCHEN),
     # two people before it: whose is the chips? (12s's session-44 test keeps it refused)
     ("Give Bob the cup and Alice the apple, ditto the chips.", None, CELL),
 )
