@@ -258,28 +258,6 @@ KNOWN_MISSES = frozenset(
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
         # blind43 (tuned on in session 45): refusals left at its one measurement (docs/grounding.md)
-        "Yakoke, robot, when you get a sec could you hand Bob the blue mug? He's off to "
-        "bellringing practice.",
-        "Right, um, the bootmaker left the bottle lying about, could you pop it up on the shelf "
-        "for me? Cheers.",
-        "Seremein, erm, could Emma have the banana? She's got a snowshoe trek later.",
-        "Be a dear and set the tongs down on the worktop, ta, I'm off to the cider press after "
-        "this.",
-        "Person B has been craving an apple all afternoon, what with his butoh rehearsal.",
-        "Person A's desperate for the chips, the peat cutter ate all her sandwiches.",
-        "There's clay all over the bench from Omar's slip cast trial, so he needs the sponge.",
-        "Mr Lee needs his tablets before the harness maker visits him.",
-        "The guest would like some salt, he's a cockler by trade and loves it.",
-        "Noah's marbling project is coming apart, he needs the glue stick to fix it.",
-        "Person B hasn't had the cup yet, could you bring it to him?",
-        "The bottle? Person A, please, she's the stonecutter.",
-        "Find the cup; Person A's been asking for it since the pantomime, give it to her.",
-        "Person B's had his eye on the chips since the pantomime, so those go to him.",
-        "The bottle's for Person A, she's back from tent pegging and wants it, take it over to "
-        "her.",
-        "Person B wants them, the chips I mean.",
-        "Sam's lost his stapler again, bring it to him, please.",
-        "Tom's out of tape. Can you get him some?",
         "Bottle up on the shelf, crisps over to Alice who's off ferreting, and that's everything.",
         "Person A gets the cup Person B gets the chips they both want them before the mummers "
         "start",
@@ -323,7 +301,6 @@ KNOWN_MISSES = frozenset(
         "lilys thirsty after her nap so sippy cup to her pls",
         "The applfe is for Person B to take to show jumping",
         "The glovfes want putting on the pallet, the fuller left them on the floor",
-        "Could you give Carol the red mug, now she's done with taxidermy class?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -340,8 +317,6 @@ KNOWN_UNCLEAR = frozenset(
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         # blind43 (tuned on in session 45)
-        "Bob's still waiting on it after canoe polo, can you run it over to him?",
-        "Dana's after the same cup as yesterday.",
         "Give Mr Novak the salt, sorry, I meant the other plate.",
     }
 )
