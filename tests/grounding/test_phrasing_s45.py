@@ -92,7 +92,11 @@ def test_now_she_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 
 LEFT = PhrasingCases()
 test_left_about = LEFT.test(
-    ("Um, the porter left the tongs out, could you pop them on the rack?", "tongs@rack", KITCHEN),
+    (
+        "Um, the porter left the tongs lying about, could you pop them on the rack?",
+        "tongs@rack",
+        KITCHEN,
+    ),
     (
         "The cleaner left the stapler lying around, could you put it on the desk?",
         "stapler@desk",
