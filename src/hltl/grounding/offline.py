@@ -1796,10 +1796,13 @@ _CUT_OFF = re.compile(
 # a pronoun that is a person (not 'his'/'her' before what they own: "he's changing her nappy")
 # 'her' as the object only (not 'her bottle'): before the end, a stop, an article, or (session
 # 34, lead: 12c's wrappers fuzz, "The bowl, which Omar has been asking about, should go to her
-# and that's us done" read bowl>B) a word that joins or closes a clause
+# and that's us done" read bowl>B) a word that joins or closes a clause; (session 44, 12: 12c's
+# fuzz, "Noah wants the globe, so let her have it." read globe>B) a verb it is the subject of
+# after 'let' ('let her have it') or what is handed to it ('give her it', 'pass her those')
 _SEXED = re.compile(
     r"\b(?:he|him|she|hers|her(?=\s*(?:$|[.,;!?]|the\b|a\b|an\b|too\b|instead\b|as well\b|"
-    r"and\b|or\b|but\b|so\b|then\b|now\b|please\b|first\b|next\b)))\b",
+    r"and\b|or\b|but\b|so\b|then\b|now\b|please\b|first\b|next\b|have\b|take\b|get\b|"
+    r"keep\b|borrow\b|use\b|it\b|them\b|these\b|those\b|this\b|that\b)))\b",
     re.I,
 )
 
