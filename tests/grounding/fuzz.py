@@ -135,7 +135,12 @@ neither names nor moves, or has their own one, before or after a grounded entry 
 for a person ("Alice's got the cup already, so …", "…. Alice is holding the cup already.", "…;
 Alice's got her own cup."), and one of them in lower case: the entry, or refused — what a person
 holds asks for nothing, so a handover of that object read from the remark is wrong (session 44's
-probes: "Mrs Khan's got her jug; give Mr Lee the magazine." read jug>C & magazine>B).
+probes: "Mrs Khan's got her jug; give Mr Lee the magazine." read jug>C & magazine>B). A nineteenth
+family (session 45), texted: a grounded entry typed the way people text (blind43's run-ons: "lilys
+thirsty after her nap so sippy cup to her"), without its stops and commas ("Give Bob the apple
+won't you"), without its apostrophes ("Bobs after the apple"), both in lower case, and, for an
+entry of one handover naming its one person, with a reason of that person run on after it ("give
+bob the apple hes been after it all morning"): the entry, or refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1379,6 +1384,13 @@ HOLDS_OWN = (  # {pos}: "his" / "her" where the name says which, else "their"; b
     ". {q} has {pos} own {o} already.",
 )
 HOLDS_FORMS = ("before", "after", "own", "lower")
+RUN_ON = (  # {e} the entry texted; {he} / {hes} "he" / "hes" or "she" / "shes" of its one person
+    "{e} {he} asked for it",
+    "{e} {hes} been after it all morning",
+    "{e} {he} needs it",
+    "{e} {hes} waiting on it",
+)
+TEXTED_FORMS = ("stops", "apostrophes", "texting", "run on")
 SAID_FORMS = (
     "reason before",
     "condition",
@@ -1415,6 +1427,7 @@ Family = Literal[
     "turns",
     "said",
     "holds",
+    "texted",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -3243,6 +3256,49 @@ def holds(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator
         yield Variant(part, entry.scene, v.text.lower(), want, "same", "holds", (), "lower")
 
 
+_STOPS = re.compile(r"(?:\.\.\.|…|[.,;:!?])+(?=\s|$)")
+_APOSTROPHES = re.compile(r"(?<=[A-Za-z])['’](?=[A-Za-z])|(?<=s)['’](?=\s|$)")
+
+
+def unstopped(text: str) -> str:
+    """``text`` without its stops, commas, colons, semicolons, ! and ? (an ellipsis too)."""
+    return " ".join(_STOPS.sub("", text).split())
+
+
+def unapostrophed(text: str) -> str:
+    """``text`` without the apostrophes inside or ending its words ("Bob's" -> "Bobs")."""
+    return _APOSTROPHES.sub("", text)
+
+
+def texted(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The texted variants of one grounded entry (TEXTED_FORMS; none of a refused one): the entry
+    typed the way people text, without its stops and commas (`stops`), without its apostrophes
+    (`apostrophes`), both and in lower case (`texting`; blind43's run-ons: "lilys thirsty after
+    her nap so sippy cup to her"), and, for an entry of one handover naming its one person by a
+    name that says their sex, texted with a reason of that person run on after it (`run on`: "give
+    bob the cup hes been after it all morning"): the entry, or refused (a form is not made where it
+    changes nothing)."""
+    want = entry.want
+    text = entry.text.strip()
+    if want is None:
+        return
+    texting = unstopped(unapostrophed(text)).lower()
+    for form, said in (
+        ("stops", unstopped(text)),
+        ("apostrophes", unapostrophed(text)),
+        ("texting", texting),
+    ):
+        if said != text:
+            yield Variant(part, entry.scene, said, want, "same", "texted", (), form)
+    one = _one_person_said(text, want, scene)
+    name = _proper_name(scene, one[1].target) if one is not None else None
+    pronoun = _pronoun_of(name) if name is not None else None
+    if pronoun is not None:
+        he = "he" if pronoun == "his" else "she"
+        said = rng.choice(RUN_ON).format(e=texting, he=he, hes=he + "s")
+        yield Variant(part, entry.scene, said, want, "same", "texted", (), "run on")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -3326,6 +3382,7 @@ def generated(
     rng_turns = random.Random(f"turns:{seed}")
     rng_said = random.Random(f"said:{seed}")
     rng_holds = random.Random(f"holds:{seed}")
+    rng_texted = random.Random(f"texted:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -3387,6 +3444,9 @@ def generated(
                     yield v, scene
             if "holds" in families:
                 for v in holds(part, entry, scene, rng_holds):
+                    yield v, scene
+            if "texted" in families:
+                for v in texted(part, entry, scene, rng_texted):
                     yield v, scene
 
 

@@ -50,8 +50,10 @@ a condition on others' claims: what it must read as; a condition on an outside e
 said against, a distribution the
 scene cannot satisfy, an owner who could be either of two: refused), the holds family of session
 44 (a remark that a person of the scene already holds or has had a one-of-a-kind object the entry
-neither names nor moves, or has their own one, before or after it: the entry), and the wrappers and
-take-backs of a seed unchanged by them."""
+neither names nor moves, or has their own one, before or after it: the entry), the texted family of
+session 45 (an entry without its stops, without its apostrophes, both in lower case, and with a
+reason of its one person run on after it: the entry), and the wrappers and take-backs of a seed
+unchanged by them."""
 
 from __future__ import annotations
 
@@ -234,6 +236,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "turns",
         "said",
         "holds",
+        "texted",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -253,7 +256,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert (
         "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts', " in err
     )
-    assert "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds')" in err
+    assert "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted')" in err
 
 
 # -- references (session 26) ----------------------------------------------------------------------
@@ -3499,4 +3502,128 @@ def test_over_the_corpus_each_holds_form_names_what_it_says() -> None:
         _, _, o = _held_of(v, entry.text.strip(), scene)
         assert o not in fuzz._objects_named(entry.text, scene)
         assert o not in {t.obj for t in tasks(entry.want)}
+    assert min(kinds.values()) >= 20, kinds
+
+
+# -- texted (session 45) --------------------------------------------------------------------------
+
+
+def _texted(entry: Entry, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.texted("t", entry, CELL, random.Random(seed)))
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("Give Bob the apple, won't you?", "Give Bob the apple won't you"),
+        ("Not the cup... the apple; for Carol!", "Not the cup the apple for Carol"),
+        ("Mr. Lee's cup: the red one.", "Mr Lee's cup the red one"),
+        ("Give Bob the apple", "Give Bob the apple"),
+    ],
+)
+def test_unstopped_drops_every_stop_and_keeps_the_words(text: str, said: str) -> None:
+    assert fuzz.unstopped(text) == said
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("Bob's after the cup, so it's his.", "Bobs after the cup, so its his."),
+        ("Give Jess' mug to Mrs O’Brien.", "Give Jess mug to Mrs OBrien."),
+        ("Say 'please' to Bob.", "Say 'please' to Bob."),  # (a quote's marks stay)
+    ],
+)
+def test_unapostrophed_drops_the_apostrophes_of_words(text: str, said: str) -> None:
+    assert fuzz.unapostrophed(text) == said
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        ("Give Bob the apple, won't you?", "apple>B", "stops, apostrophes, texting, run on"),
+        ("Give Bob the apple", "apple>B", "texting, run on"),
+        ("give bob the apple", "apple>B", "run on"),
+        # the person's sex said by their name in the scene (Person B is Bob)
+        ("Give Person B the apple.", "apple>B", "stops, texting, run on"),
+        # a pronoun for a person or two handovers: no run-on
+        ("Bob wants the apple, give it to him.", "apple>B", "stops, texting"),
+        ("Give Bob the cup and Alice the apple.", "cup>B & apple>A", "stops, texting"),
+    ],
+)
+def test_texted_is_made_where_it_changes_the_entry(text: str, want: str, forms: str) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        made = _texted(entry, seed)
+        assert [v.form for v in made] == forms.split(", ")
+        for v in made:
+            assert (v.family, v.must, v.want, v.readings) == ("texted", "same", entry.want, ())
+            assert v.text != text
+        texting = fuzz.unstopped(fuzz.unapostrophed(text)).lower()
+        for v in made:
+            if v.form == "texting":
+                assert v.text == texting
+            elif v.form == "run on":
+                assert v.text.startswith(texting + " ")
+                assert v.text[len(texting) + 1 :].split()[0] in ("he", "hes")
+
+
+def test_the_run_on_says_every_reason_with_the_person_s_pronoun() -> None:
+    said: set[str] = set()
+    for text, he in (("Give Bob the apple.", "he"), ("Give the cup to Alice.", "she")):
+        entry = _entry("cell", text, "apple>B" if he == "he" else "cup>A")
+        for seed in range(40):
+            (v,) = [v for v in _texted(entry, seed) if v.form == "run on"]
+            forms = [
+                f
+                for f in fuzz.RUN_ON
+                if v.text == f.format(e=text.rstrip(".").lower(), he=he, hes=he + "s")
+            ]
+            assert len(forms) == 1, v.text
+            said.add(forms[0])
+    assert said == set(fuzz.RUN_ON)
+
+
+def test_a_refused_entry_gets_nothing_texted() -> None:
+    entry = Entry("cell", "Give her the mug, won't you?", None, ("mug_red", "mug_blue"))
+    assert all(_texted(entry, seed) == [] for seed in range(10))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict"),
+    [
+        ("give bob the cup", "cup>B", "exact"),
+        ("give alice the cup", "cup>B", "wrong"),
+        ("give her the cup", "cup>B", "refused"),
+    ],
+)
+def test_texted_is_judged_by_what_the_grounder_reads(text: str, want: str, verdict: str) -> None:
+    assert _judged(text, want, "texted", "texting") == verdict
+
+
+def test_over_the_corpus_each_texted_form_says_its_entry() -> None:
+    """Every second entry of three parts: each variant is a grounded entry of its scene texted
+    as its form says."""
+    kinds = dict.fromkeys(fuzz.TEXTED_FORMS, 0)
+    entries: dict[tuple[str, str], list[Entry]] = {}
+    for part in PARTS:
+        for e in load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT).entries:
+            entries.setdefault((part, e.scene), []).append(e)
+    for v, _ in fuzz.generated(PARTS, seed=45, every=2, families=("texted",)):
+        kinds[v.form] += 1
+        assert v.must == "same" and v.want is not None
+        said = {
+            "stops": fuzz.unstopped,
+            "apostrophes": fuzz.unapostrophed,
+            "texting": lambda t: fuzz.unstopped(fuzz.unapostrophed(t)).lower(),
+            "run on": lambda t: fuzz.unstopped(fuzz.unapostrophed(t)).lower() + " ",
+        }[v.form]
+        assert any(
+            e.want == v.want
+            and (
+                v.text.startswith(said(e.text.strip()))
+                if v.form == "run on"
+                else v.text == said(e.text.strip())
+            )
+            for e in entries[(v.part, v.scene)]
+        ), v.text
     assert min(kinds.values()) >= 20, kinds
