@@ -640,7 +640,10 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
-    if thing and len(things) == 1 and not (trailing and _object_before_pronoun31l(body, lexicon)):
+    # session 45 (12s): nor, said before the request, for an 'it' whose object the request names
+    # before it ("Marco has the salt shaker already. Don't put the lemon on the rack, give it to
+    # Marco" had handed the salt)
+    if thing and len(things) == 1 and not _object_before_pronoun31l(body, lexicon):
         words = things[0].text
         body = _sub(r"\bboth of them\b", f"both {words}", body)
         body = _sub(r"\b(?:it|them)\b", f"the {words}", body)
