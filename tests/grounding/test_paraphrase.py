@@ -317,11 +317,6 @@ KNOWN_MISSES = frozenset(
         "Person B wants them, the chips I mean.",
         "Sam's lost his stapler again, bring it to him, please.",
         "Tom's out of tape. Can you get him some?",
-        "Bottle up on the shelf, crisps over to Alice who's off ferreting, and that's everything.",
-        "Person A gets the cup Person B gets the chips they both want them before the mummers "
-        "start",
-        "Marco's doing the lemon posset so the lemon's his, and Lena wants the knife for the "
-        "bread.",
         "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, she's not bothered.",
         "Person B's heading to the cooperage; let him take any one of the cup, the apple or the "
         "chips, he doesn't mind which.",
@@ -351,15 +346,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person A... hmm, or... no, I had it right the first time, Person A.",
         "Give Noah the ruler, no sorry, it's Zoe drawing the corset pattern, give it to her.",
         "Teddy for Ava, whoops, she's too big for it now, Lily's the one who wants the teddy.",
-        "after two hours of underwater hockey person b is gasping for that bottle",
-        "hand person a the cup she takes it to clavichord lessons",
-        "person a could do with the bottle after her carolling thx",
-        "person b gets the chips hes earned them at ferreting",
-        "pop the spoon on the tray its been lying about since the lampwork demo",
-        "salt shaker to mr novak he says the soup needs it",
-        "lilys thirsty after her nap so sippy cup to her pls",
-        "The applfe is for Person B to take to show jumping",
-        "The glovfes want putting on the pallet, the fuller left them on the floor",
         "Could you give Carol the red mug, now she's done with taxidermy class?",
     }
 )
