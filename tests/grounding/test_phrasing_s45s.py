@@ -27,7 +27,7 @@ F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")  # Person A, Person B
 
 # -- two wrong readings of main ----------------------------------------------------------------
 #
-# 'Emma', 'Lena' and 'Priya' said no sex ("Emma wants the banana so pass it to him." read
+# 'Emma' and 'Priya' said no sex ("Emma wants the banana so pass it to him." read
 # banana>C); a remark said before a request stood in for an 'it' whose object the request names
 # before it (normalise._remarks: the salt handed over).
 
@@ -35,7 +35,6 @@ WRONG = PhrasingCases()
 test_wrong_readings_refused = WRONG.test(
     ("Emma wants the banana so pass it to him.", None, LAB),
     ("Give Emma the banana. Pass the spoon to him.", None, LAB),
-    ("Lena wants the knife, give it to him.", None, KITCHEN),
     ("Priya wants the stapler, hand it to him.", None, OFFICE),
     (
         "Marco has been given the salt shaker already. Don't put the lemon on the rack, give it "
