@@ -247,3 +247,57 @@ test_left_it_refused = LEFT_IT.test(
 
 def test_left_it_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     LEFT_IT.refused_without((r45s._left_it45s,), monkeypatch)
+
+
+# -- where one person is, then 'and he's shouting for …' ------------------------------------------
+
+AND_PRON = PhrasingCases()
+test_and_pronoun = AND_PRON.test(
+    ("marcos at the pass tonight and hes yelling for the salt", "salt>A", KITCHEN),
+    ("lenas on the tables tonight and shes asking for the salt", "salt>B", KITCHEN),
+    ("avas in the garden tonight and shes crying out for the teddy", "teddy>C", NURSERY),
+)
+test_and_pronoun_refused = AND_PRON.test(
+    # the pronoun is someone else; two people before it
+    ("marcos on the grill tonight and shes shouting for the tongs", None, KITCHEN),
+    ("Marco's on the grill with Lena and he's shouting for the tongs", None, KITCHEN),
+)
+
+
+def test_and_pronoun_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    AND_PRON.refused_without((r45s._and_pron45s,), monkeypatch)
+
+
+# -- a gapped clause, then 'and the X go to P too' of its own person ------------------------------
+
+GO_TOO = PhrasingCases()
+test_go_too = GO_TOO.test(
+    (
+        "Zoe's getting the glue and Noah the ruler and the scissors go to Noah as well.",
+        "glue>C & ruler>B & scissors>B",
+        CLASSROOM,
+    ),
+    (
+        "Tom gets the tape and Mia the scanner and the gloves go to Mia too.",
+        "tape>B & scanner>A & gloves>A",
+        DEPOT,
+    ),
+    (
+        "Alice is having the cup and Bob the apple and the crisps go to Bob as well.",
+        "cup>A & apple>B & chips>B",
+        CELL,
+    ),
+)
+test_go_too_refused = GO_TOO.test(
+    # another person after 'to': the ruler may go with the scissors
+    ("Give Zoe the glue and Noah the ruler and the scissors go to Zoe too.", None, CLASSROOM),
+    (
+        "Person A's having the cup and Person B the apple and the chips go to Person A too.",
+        None,
+        SQUARE,
+    ),
+)
+
+
+def test_go_too_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    GO_TOO.refused_without((r45s._go_too45s,), monkeypatch)

@@ -406,6 +406,76 @@ def _left_it45s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# "marcos on the grill tonight and hes shouting for the tongs": where one person is, then 'and'
+# and a want of theirs said with its own he / she: the pronoun taken out ("… and is shouting for
+# the tongs", which session 42's rules read), when it fits the person, the words before name
+# nothing but what is theirs, and what is left reads giving them something.
+_AND_PRON45S = re.compile(
+    rf"^(?P<who>{_P42S})(?P<words>(?:'s| is| was|(?<=s)) [^.;:!?,]{{2,60}}?) and (?P<p>he|she)"
+    r"(?:'s|s| is) (?=(?:shouting|asking|calling|yelling|begging|crying out|gasping|dying|"
+    r"desperate|itching|angling) (?:for|after)\b)",
+    _F,
+)
+
+
+def _and_pron45s(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12s): the pronoun above taken out (see there)."""
+    if " and " not in text.lower():
+        return text
+    m = _AND_PRON45S.match(text)
+    if m is None:
+        return text
+    who = m["who"]
+    if m["words"].startswith(" ") and not re.match(r" (?:is|was) ", m["words"]):
+        if text != text.lower() or not who.endswith("s"):
+            return text
+        who = who[:-1]  # 'marcos on the grill': the apostrophe dropped
+    if not _only_person(who, lexicon) or not _agrees44s(who, m["p"], lexicon):
+        return text
+    words = re.sub(r"\b(?:his|her|their)\b", "", m["words"], flags=_F)
+    if not _remark_only42s(words, lexicon):
+        return text
+    said = m["words"] if not m["words"].startswith(" ") or m["who"] == who else "'s" + m["words"]
+    out = f"{who}{said} and is {text[m.end() :]}"
+    read = _reading(out, lexicon)
+    if read is None or not _ids(who, lexicon, "human") & {t.target for t in tasks(read)}:
+        return text
+    return out
+
+
+# "Person A's having the cup and Person B the apple and the chips go to Person B too": a clause
+# said again without its verb ('and Person B the apple'), then 'and the X go to P too' where P is
+# that clause's person: wherever the clause before the plural 'go' ends, the apple and the chips
+# are P's, so the grammar's doubt (which objects 'go') does not matter: said "…, and the chips to
+# Person B too". Another person after 'to' stays refused (the apple may go with the chips).
+_GO_TOO45S = re.compile(
+    rf"(?P<pre>\b(?P<p1>{_P42S}) (?P<y>(?:the|his|her) [a-z]+(?: [a-z]+)?)),? and (?P<x>(?:the|"
+    rf"his|her) [a-z]+(?: [a-z]+)?) go to (?P<p2>{_P42S}) (?P<too>too|as well)(?P<end>[.!]?)\s*$",
+    _F,
+)
+
+
+def _go_too45s(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12s): the 'and the X go to P too' above said as 'and the X to P too', when
+    both people are the same one of the scene and what is left reads giving them X."""
+    if " go to " not in text.lower():
+        return text
+    m = _GO_TOO45S.search(text)
+    if m is None or not _only_person(m["p1"], lexicon) or not _only_person(m["p2"], lexicon):
+        return text
+    pid = _ids(m["p1"], lexicon, "human")
+    if pid != _ids(m["p2"], lexicon, "human"):
+        return text
+    x = m["x"]
+    if not _ids(x, lexicon, "object") or _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
+        return text
+    out = f"{text[: m.end('pre')]}, and {x} to {m['p2']} {m['too']}{m['end']}"
+    read = _reading(out, lexicon)
+    if read is None or not any(t.target in pid and t.obj in _ids(x, lexicon) for t in tasks(read)):
+        return text
+    return out
+
+
 # the normaliser's rewrites run before the session-44 ones (wired into normalise._STEPS19)
 _STEPS45S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _run_on45s,
@@ -417,6 +487,8 @@ _STEPS45S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _so_his45s,
     _take_to45s,
     _left_it45s,
+    _and_pron45s,
+    _go_too45s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-44 ones)
 _STEPS45S: tuple[Callable[[str, Lexicon], str], ...] = ()
