@@ -190,7 +190,6 @@ KNOWN_MISSES = frozenset(
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
         # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
         "Omar needs the sponge to clean up after the moth trap.",
-        "Person A's having the cup and Person B the apple and the chips go to Person B too.",
         "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
         "crisps.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
@@ -216,7 +215,6 @@ KNOWN_MISSES = frozenset(
         "sort that",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
-        "marcos on the grill tonight and hes shouting for the tongs",
         "Is there any way Person B could get the chips this side of lunch?",
         "Could Grandad have the red block for Lily's tower?",
         # blind41 (tuned on in session 43): refusals left at its one measurement (docs/grounding.md)
