@@ -6,9 +6,10 @@ from collections.abc import Callable
 
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
-from hltl.grounding._rewrites38 import _JOINS38
+from hltl.grounding._rewrites38 import _JOINS38, _inert38
+from hltl.grounding._rewrites41s import _ORDER41S
 from hltl.grounding._rewrites42s import _NEED_STATE42S, _NEGATED42S, _P42S, _remark_only42s
-from hltl.grounding._rewrites43s import _LATER43S
+from hltl.grounding._rewrites43s import _HAS43S, _LATER43S
 from hltl.grounding._rewrites44s import _SAYING44S, _agrees44s
 from hltl.grounding.lexicon import VERBS, Lexicon
 from hltl.grounding.tree import Node, tasks
@@ -33,6 +34,7 @@ _CORRECTS45S = re.compile(
     r"first|then|after|afterwards|later|next)\b",
     _F,
 )
+_COURTESY45S = frozenset({"please", "pls", "plz", "thx", "thanks", "ta", "cheers"})
 _NOT_BEFORE45S = _JOINS38 | _SAYING44S | {"to", "for", "the", "a", "an", "with", "of", "on", "in"}
 
 
@@ -51,9 +53,15 @@ def _run_on45s(text: str, lexicon: Lexicon) -> str:
         words = before.split()
         if not words or words[-1].lower() in _NOT_BEFORE45S or words[-1].lower() in VERBS:
             continue
+        if words[-1].lower() in _COURTESY45S:
+            continue  # "tape for tom please hes at bay four": sessions 38 and 39's (12)
         if _names(after, lexicon) or _NEGATED42S.search(after) or _CORRECTS45S.search(after):
             continue
         pron = m["p"].lower()
+        if pron in ("hes", "shes", "he's", "she's") and _inert38(
+            re.sub(r"\b(?:his|her|their)\b", " ", after, flags=_F), lexicon
+        ):
+            continue  # "the teddy to lily shes back from her swimming lesson": session 38's
         alone = _reading(before, lexicon)
         if alone is None:
             continue
@@ -228,8 +236,8 @@ def _state_so45s(text: str, lexicon: Lexicon) -> str:
     ):
         return text
     rest = m["rest"]
-    if _ids(rest, lexicon, "human"):
-        return text
+    if _ids(rest, lexicon, "human") or _ORDER41S.match(rest) or _HAS43S.match(rest):
+        return text  # 'so give him …' (session 42's), 'so the glue is hers' (session 43's)
     for p in re.findall(r"\b(?:he|she|him|her|his|hers)\b", rest + m["words"], _F):
         if not _agrees44s(who, p, lexicon):
             return text
