@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
-from hltl.grounding._rewrites38 import _JOINS38, _inert38
+from hltl.grounding._rewrites38 import _FRONTED38, _JOINS38, _inert38
 from hltl.grounding._rewrites41s import _ORDER41S
 from hltl.grounding._rewrites42s import _NEED_STATE42S, _NEGATED42S, _P42S, _remark_only42s
 from hltl.grounding._rewrites43s import _HAS43S, _LATER43S
@@ -59,7 +59,14 @@ def _run_on45s(text: str, lexicon: Lexicon) -> str:
             continue
         pron = m["p"].lower()
         if pron in ("hes", "shes", "he's", "she's") and _inert38(
-            re.sub(r"\b(?:his|her|their)\b", " ", after, flags=_F), lexicon
+            re.sub(
+                r"\b(?:his|her|their|all (?:day|morning|afternoon|evening|night|week))\b|\bonly "
+                r"just\b",
+                " ",
+                after,
+                flags=_F,
+            ),
+            lexicon,
         ):
             continue  # "the teddy to lily shes back from her swimming lesson": session 38's
         alone = _reading(before, lexicon)
@@ -194,6 +201,12 @@ def _closer45s(text: str, lexicon: Lexicon) -> str:
     if m is None or re.search(r"[,;:.!?]", text):
         return text
     before = text[: m.start()]
+    items = _names(before, lexicon)
+    last = before.lower().rfind(items[-1].text.lower()) if items else -1
+    if last < 0 or not re.match(
+        r"\s*(?:after|since|following) ", before[last + len(items[-1].text) :], _F
+    ):
+        return text  # a closer after a name of the scene: the older courtesy rules take it off
     out = f"{before}, {m['c']}"
     if _same45s(_reading(out, lexicon), _reading(before, lexicon)):
         return out
@@ -216,8 +229,8 @@ def _state_so45s(text: str, lexicon: Lexicon) -> str:
     if " so " not in text.lower():
         return text
     m = _STATE_SO45S.match(text)
-    if m is None:
-        return text
+    if m is None or _FRONTED38.match(text):
+        return text  # 'bobs back from the allotment so …': session 38's
     who = m["who"]
     if m["words"].startswith(" ") and not re.match(r" (?:is|was|has) ", m["words"]):
         if text != text.lower() or not who.endswith("s"):
@@ -238,6 +251,8 @@ def _state_so45s(text: str, lexicon: Lexicon) -> str:
     rest = m["rest"]
     if _ids(rest, lexicon, "human") or _ORDER41S.match(rest) or _HAS43S.match(rest):
         return text  # 'so give him …' (session 42's), 'so the glue is hers' (session 43's)
+    if re.match(r"(?:he|she|they)\b", rest, _F):
+        return text  # 'so she needs …': the older state rules'
     for p in re.findall(r"\b(?:he|she|him|her|his|hers)\b", rest + m["words"], _F):
         if not _agrees44s(who, p, lexicon):
             return text
