@@ -304,6 +304,8 @@ def _modifiers_out45s(words: str, lexicon: Lexicon) -> str:
     posset': a word after it that names nothing of the scene, is no verb and joins nothing)."""
     out = words
     for it in _names(words, lexicon):
+        if it.refs[0].kind != "object":
+            continue
         m = re.search(rf"\b{re.escape(it.text)} (?P<n>[a-z]+)\b", out, _F)
         if m is None:
             continue
