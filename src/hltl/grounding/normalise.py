@@ -689,7 +689,12 @@ def _named_by_sex36t(said: str, request: str, person: set[str], lexicon: Lexicon
     others = [h.id for h in lexicon.scene.humans if h.id != pid]
     if not _sure36t(pid, pronoun, lexicon) and any(_may_be35t(o, pronoun, lexicon) for o in others):
         return None
-    name = next(it.text for it in _names(said, lexicon) if {r.id for r in it.refs} == {pid})
+    # session 45 (12s, a bug fix): a name that may be two people ('Plerson Q', a typo of both
+    # Person A and Person B) is no one's name here: none said for the pronoun (it had raised
+    # StopIteration once Priya's sex was known)
+    name = next((it.text for it in _names(said, lexicon) if {r.id for r in it.refs} == {pid}), None)
+    if name is None:
+        return None
     told = _sub(r"\b" + pronoun + r"\b", name, request)
     return f"{said}, {told}"
 
