@@ -190,7 +190,6 @@ KNOWN_MISSES = frozenset(
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
         # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
         "Omar needs the sponge to clean up after the moth trap.",
-        "Person A's having the cup and Person B the apple and the chips go to Person B too.",
         "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
         "crisps.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
@@ -216,7 +215,6 @@ KNOWN_MISSES = frozenset(
         "sort that",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
-        "marcos on the grill tonight and hes shouting for the tongs",
         "Is there any way Person B could get the chips this side of lunch?",
         "Could Grandad have the red block for Lily's tower?",
         # blind41 (tuned on in session 43): refusals left at its one measurement (docs/grounding.md)
@@ -258,11 +256,6 @@ KNOWN_MISSES = frozenset(
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
         # blind43 (tuned on in session 45): refusals left at its one measurement (docs/grounding.md)
-        "Bottle up on the shelf, crisps over to Alice who's off ferreting, and that's everything.",
-        "Person A gets the cup Person B gets the chips they both want them before the mummers "
-        "start",
-        "Marco's doing the lemon posset so the lemon's his, and Lena wants the knife for the "
-        "bread.",
         "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, she's not bothered.",
         "Person B's heading to the cooperage; let him take any one of the cup, the apple or the "
         "chips, he doesn't mind which.",
@@ -292,15 +285,6 @@ KNOWN_MISSES = frozenset(
         "Bottle to Person A... hmm, or... no, I had it right the first time, Person A.",
         "Give Noah the ruler, no sorry, it's Zoe drawing the corset pattern, give it to her.",
         "Teddy for Ava, whoops, she's too big for it now, Lily's the one who wants the teddy.",
-        "after two hours of underwater hockey person b is gasping for that bottle",
-        "hand person a the cup she takes it to clavichord lessons",
-        "person a could do with the bottle after her carolling thx",
-        "person b gets the chips hes earned them at ferreting",
-        "pop the spoon on the tray its been lying about since the lampwork demo",
-        "salt shaker to mr novak he says the soup needs it",
-        "lilys thirsty after her nap so sippy cup to her pls",
-        "The applfe is for Person B to take to show jumping",
-        "The glovfes want putting on the pallet, the fuller left them on the floor",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
