@@ -331,26 +331,10 @@ KNOWN_MISSES = frozenset(
         "off for the coracle race.",
         "Emma's rinsing brushes after lampwork and either cup will do, so take her one.",
         "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
-        "Reading hour: the red book's for Noah and the green book's for Zoe, one apiece.",
         "Lily's grizzling for a block, doesn't matter which of the two, she just wants to chew "
         "one.",
-        "Just the single cup to Person A, she's the one brewing up after shoeing.",
-        "The lone apple's what Person B wants after his ice climbing.",
-        "Something apiece for the two speleology folk: bottle to Person A, chips to Person B.",
         "Not the crisps, Bob wants the bottle after basketry.",
         "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
-        "No, not on a shelf, hand the bottle straight to Person A.",
-        "It isn't the bottle Person A's after, it's the chips, for her saltmaker's lunch.",
-        "Any blanket for Mrs Khan except the grey, which makes her itch.",
-        "Jess is poking about under the bellows and wants the torch, so leave the hammer.",
-        "Crisps to Bob, scratch that, it's the bottle he wanted after his bachata class.",
-        "Bottle to Person A. Oh wait, she's out at the abattoir till late; switch it to Person B.",
-        "Send the chips to Person B, no, sorry, muddled them up, the chips belong with Person A.",
-        "Put the bottle down... no, actually, better give it to Person A for her uilleann piping "
-        "lesson.",
-        "Bottle to Person A... hmm, or... no, I had it right the first time, Person A.",
-        "Give Noah the ruler, no sorry, it's Zoe drawing the corset pattern, give it to her.",
-        "Teddy for Ava, whoops, she's too big for it now, Lily's the one who wants the teddy.",
         "after two hours of underwater hockey person b is gasping for that bottle",
         "hand person a the cup she takes it to clavichord lessons",
         "person a could do with the bottle after her carolling thx",
@@ -379,7 +363,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind43 (tuned on in session 45)
         "Bob's still waiting on it after canoe polo, can you run it over to him?",
         "Dana's after the same cup as yesterday.",
-        "Give Mr Novak the salt, sorry, I meant the other plate.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
