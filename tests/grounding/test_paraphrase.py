@@ -322,17 +322,8 @@ KNOWN_MISSES = frozenset(
         "start",
         "Marco's doing the lemon posset so the lemon's his, and Lena wants the knife for the "
         "bread.",
-        "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, she's not bothered.",
-        "Person B's heading to the cooperage; let him take any one of the cup, the apple or the "
-        "chips, he doesn't mind which.",
-        "Your call which: the bottle or the chips, one of them goes to Person B before his dog "
-        "sled run.",
-        "Go whichever way round suits the arm, just get the bottle to Person A before she sets "
-        "off for the coracle race.",
         "Emma's rinsing brushes after lampwork and either cup will do, so take her one.",
         "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
-        "Lily's grizzling for a block, doesn't matter which of the two, she just wants to chew "
-        "one.",
         "Not the crisps, Bob wants the bottle after basketry.",
         "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
         "after two hours of underwater hockey person b is gasping for that bottle",

@@ -16,18 +16,20 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_case,
 )
 
 # the example scenes blind43 uses (one person and one thing; two people; four things)
-T11, T12, T21, T41, T42, L24, L44, FIG1 = (
+T11, T12, T21, T41, T42, L24, L44, FIG1, TWO = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("1-1", "1-2", "2-1", "4-1", "4-2", "2-4-line", "4-4-line", "fig1")
+    for n in ("1-1", "1-2", "2-1", "4-1", "4-2", "2-4-line", "4-4-line", "fig1", "two_arms")
 )
 
 CASES = PhrasingCases()
@@ -214,6 +216,148 @@ test_each_for_folk = CASES.test(
         CELL,
     ),
 )
+
+test_mind_which = CASES.test(
+    # _mind_which45r
+    (
+        "Person B's heading to the cooperage; let him take any one of the cup, the apple "
+        "or the chips, he doesn't mind which.",
+        "cup>B | apple>B | chips>B",
+        L44,
+    ),
+    (
+        "Let Lena take any one of the knife, the lemon or the tongs, she doesn't mind which.",
+        "knife>B | lemon>B | tongs>B",
+        KITCHEN,
+    ),
+    (
+        "Tom's loading up; let him take the tape or the gloves, he doesn't mind which.",
+        "tape>B | gloves>B",
+        DEPOT,
+    ),
+    (
+        "Carol's off out; let her take the cup or the apple, she doesn't care which.",
+        "cup>C | apple>C",
+        CELL,
+    ),
+    ("Give Sam the black pen and the red pen, he doesn't mind which.", None, OFFICE),
+    ("Give Mrs Khan the jug or the magazine, he doesn't mind which.", None, WARD),
+)
+
+test_one_of_list = CASES.test(
+    # _one_of_list45r
+    (
+        "Jess is off home; let her take any one of the drill, the hammer or the torch.",
+        "drill>B | hammer>B | torch>B",
+        WORKSHOP,
+    ),
+    (
+        "Tom's loading up; let him take any one of the tape, the gloves or the scanner.",
+        "tape>B | gloves>B | scanner>B",
+        DEPOT,
+    ),
+    ("Bob can have one of the cup, the apple or the plate.", None, CELL),
+)
+
+test_one_of_them = CASES.test(
+    # _one_of_them45r
+    (
+        "Your call which: the bottle or the chips, one of them goes to Person B before "
+        "his dog sled run.",
+        "bottle>B | chips>B",
+        T42,
+    ),
+    ("The tape or the gloves, one of them goes to Tom.", "tape>B | gloves>B", DEPOT),
+    ("The teddy or the bib, just one of them to Ava.", "teddy>C | bib>C", NURSERY),
+    ("The tape or the gloves, both of them go to Tom.", None, DEPOT),
+)
+
+test_go_whichever = CASES.test(
+    # _go_whichever45r
+    (
+        "Go whichever way round suits the arm, just get the bottle to Person A before "
+        "she sets off for the coracle race.",
+        "bottle>A",
+        T11,
+    ),
+    ("Go whichever way suits you, just get the drill to Kofi.", "drill>A", WORKSHOP),
+)
+
+test_which_first = CASES.test(
+    # _which_first45r
+    (
+        "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, she's not bothered.",
+        "bottle>A | chips>A",
+        TWO,
+    ),
+    (
+        "Whichever's closer, the stapler or the notebook, goes to Priya.",
+        "stapler>A | notebook>A",
+        OFFICE,
+    ),
+    (
+        "Whichever is handier, the jug or the magazine, goes to Mr Lee, he won't mind.",
+        "jug>B | magazine>B",
+        WARD,
+    ),
+    ("Whichever's closer, the stapler or Sam, goes to Priya.", None, OFFICE),
+)
+
+test_wants_to_do = CASES.test(
+    # _wants_to_do45r
+    (
+        "Lily's grizzling for a block, doesn't matter which of the two, she just wants "
+        "to chew one.",
+        "block_red>A | block_green>A",
+        NURSERY,
+    ),
+    (
+        "Ava wants a block, either one, she only wants to stack one.",
+        "block_red>C | block_green>C",
+        NURSERY,
+    ),
+    (
+        "Bob wants a mug, doesn't matter which, he just wants to hold one.",
+        "mug_red>B | mug_blue>B",
+        CELL,
+    ),
+    ("Bob wants a mug, doesn't matter which, she just wants to hold one.", None, CELL),
+)
+
+test_will_do_one = CASES.test(
+    # _will_do_one45r
+    (
+        "Emma is rinsing brushes after lampwork and either cup will do, so take her one.",
+        "cup_green>C | cup_white>C",
+        LAB,
+    ),
+    (
+        "Carol's back from the gym and either mug will do, so hand her one.",
+        "mug_red>C | mug_blue>C",
+        CELL,
+    ),
+    (
+        "Sam's signing forms and any pen will do, so give him one.",
+        "pen_black>B | pen_blue>B | pen_red>B",
+        OFFICE,
+    ),
+    ("Mrs Khan's cold and either blanket will do, so take him one.", None, WARD),
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # offline._them_after_choice33s: 'one of them' after a choice is the one chosen (a bare
+        # 'them' after it stays refused)
+        ("The cup or the apple, one of them to Alice.", "cup>A | apple>A", CELL),
+        ("The tape or the gloves, one of them goes to Tom.", "tape>B | gloves>B", DEPOT),
+        ("Whichever you can reach first, the cup or the apple, hand them to Alice.", None, CELL),
+    ],
+)
+def test_one_of_them_is_the_one(text: str, want: str | None, scene: Scene) -> None:
+    assert_case(text, want, scene)
+
 
 # -- counts and plurals ----------------------------------------------------------------------------
 

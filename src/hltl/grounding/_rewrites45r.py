@@ -9,7 +9,7 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
 from hltl.grounding._rewrites44r import _BACK44R, _agrees44r
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Group, Node, tasks
+from hltl.grounding.tree import Group, Node, has_choice, tasks
 
 
 def _read_or45r(out: str, text: str, lexicon: Lexicon) -> str:
@@ -287,6 +287,148 @@ def _each_for_folk45r(text: str, lexicon: Lexicon) -> str:
     return out if _one_each(_reading(out, lexicon)) else text
 
 
+# "…, he doesn't mind which", "…, she's not bothered which": the choice said before it
+_MIND_WHICH45R = (
+    r"\s*[,;]\s*(?:(?:he|she|they) (?:doesn't|does not|don't|do not) (?:mind|care) which(?: one)?|"
+    r"(?:he|she|they)(?:'s| is|'re| are) not (?:bothered|fussed|fussy) which(?: one)?)"
+    r"(?P<end>\s*[.!]?)$"
+)
+
+
+def _mind_which45r(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12r): a choice closed by "he doesn't mind which" ("she's not bothered which")
+    is the choice closed by "whichever", taken only when that reads as a choice of things."""
+    if "which" not in text.lower():
+        return text
+    m = re.search(_MIND_WHICH45R, text.strip(), _F)
+    if m is None:
+        return text
+    out = f"{text.strip()[: m.start()]}, whichever{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or not has_choice(node):
+        return text
+    people = {t.target for t in tasks(node)}
+    pro = re.search(r"\b(?:he|she)\b", m.group(0), _F)
+    if pro is not None and not all(_agrees44r(p, pro.group(0), lexicon) for p in people):
+        return text  # 'she' of a choice for him
+    return out
+
+
+# "any one of the cup, the apple or the chips": the 'or' list already says one of them
+_ONE_OF_LIST45R = (
+    r"\b(?:any |just |only )?one of (?P<list>(?:the [a-z]+(?: [a-z]+)?, )*the [a-z]+(?: [a-z]+)? "
+    r"or the [a-z]+(?: [a-z]+)?)\b"
+)
+
+
+def _one_of_list45r(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12r): "let him take any one of the cup, the apple or the chips" is "let him
+    take the cup, the apple or the chips": each listed item one thing of the scene."""
+    if "one of" not in text.lower():
+        return text
+    m = re.search(_ONE_OF_LIST45R, text, _F)
+    if m is None:
+        return text
+    items = re.split(r",\s*|\s+or\s+", m["list"])
+    if any(len(_ids(i, lexicon, "object")) != 1 for i in items):
+        return text
+    if len({next(iter(_ids(i, lexicon, "object"))) for i in items}) != len(items):
+        return text
+    out = f"{text[: m.start()]}{m['list']}{text[m.end() :]}"
+    node = _reading(out, lexicon)
+    return out if node is not None and has_choice(node) else text
+
+
+def _one_of_them45r(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12r): "the bottle or the chips, one of them goes to Person B" is "the bottle or
+    the chips goes to Person B" (the 'or' already says one of them)."""
+    if "one of" not in text.lower():
+        return text
+    out = re.sub(
+        r"\b((?:the )?[a-z]+(?: [a-z]+)? or (?:the )?[a-z]+(?: [a-z]+)?)\s*,\s*(?:just |only )?one "
+        r"of (?:them|the two|those|the pair) (?=(?:goes|go|should go|can go|is going|to)\b)",
+        r"\1 ",
+        text,
+        flags=_F,
+    )
+    node = _reading(out, lexicon) if out != text else None
+    return out if node is not None and has_choice(node) else text
+
+
+def _go_whichever45r(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12r): "Go whichever way round suits the arm, just get the bottle to Person A"
+    is "Whichever way round suits the arm, …" (how the robots go about it is theirs to choose)."""
+    if "way" not in text.lower():
+        return text
+    out = re.sub(
+        r"^(?:go|do it|work it) (?=(?:whichever|any|either) way\b)", "", text.strip(), flags=_F
+    )
+    return _read_or45r(out[:1].upper() + out[1:], text, lexicon)
+
+
+# "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, …"
+_WHICH_FIRST45R = (
+    r"^whichever(?:'s| is) (?P<how>[^,]+?)\s*,\s*(?P<choice>[^,]+? or [^,]+?)\s*,\s*"
+    r"(?P<rest>(?:goes|"
+    r"go|should go|is going|can go) (?:to|on|in|into|onto) [^,.;!]+?)(?P<tail>\s*(?:[,;.!].*)?)$"
+)
+
+
+def _which_first45r(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12r): "Whichever's nearer the arm, the bottle or the crisps, goes to Alice" is
+    "The bottle or the crisps goes to Alice, whichever's nearer the arm" (said after, as read)."""
+    if "whichever" not in text.lower():
+        return text
+    m = re.match(_WHICH_FIRST45R, text.strip(), _F)
+    if m is None or _ids(m["how"], lexicon):
+        return text
+    choice = m["choice"][:1].upper() + m["choice"][1:]
+    out = f"{choice} {m['rest']}, whichever's {m['how']}{m['tail'] or '.'}"
+    node = _reading(out, lexicon)
+    return out if node is not None and has_choice(node) else text
+
+
+def _wants_to_do45r(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12r): a closing remark "…, she just wants to chew one (it)" after a request of
+    one person is dropped, the she / he that person."""
+    if "wants to" not in text.lower():
+        return text
+    m = re.search(
+        r"\s*[,;]\s*(?P<pro>she|he) (?:just |only |really )?wants to [a-z]+(?: on| with)? "
+        r"(?:one|it)"
+        r"(?P<end>\s*[.!]?)$",
+        text.strip(),
+        _F,
+    )
+    if m is None:
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None:
+        return text
+    people = {t.target for t in tasks(node)}
+    if len(people) != 1 or not _agrees44r(next(iter(people)), m["pro"], lexicon):
+        return text
+    return out
+
+
+def _will_do_one45r(text: str, lexicon: Lexicon) -> str:
+    """Session 45 (12r): "… and either cup will do, so take her one" is "…, so take her either
+    cup" (any K will do, so hand him one)."""
+    if "do" not in text.lower() or "one" not in text.lower():
+        return text
+    out = re.sub(
+        r"(?:\s*,\s*|\s+)(?:and |but )?(?P<q>either|any) (?P<k>[a-z]+)(?: at all)? "
+        r"(?:will do|'ll do|"
+        r"would do|is fine|works),?\s*so (?P<v>[a-z]+) (?P<pro>her|him) one\b",
+        r", so \g<v> \g<pro> \g<q> \g<k>",
+        text,
+        flags=_F,
+    )
+    node = _reading(out, lexicon) if out != text else None
+    return out if node is not None and has_choice(node) else text
+
+
 # -- counts and plurals ----------------------------------------------------------------------------
 
 
@@ -390,7 +532,7 @@ def _leave_it45r(text: str, lexicon: Lexicon) -> str:
 
 
 # the normaliser's rewrites run before the session-44 ones (wired into normalise._STEPS19)
-_STEPS45R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS45R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_one_of_list45r, _mind_which45r)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-44 ones)
 _STEPS45R: tuple[Callable[[str, Lexicon], str], ...] = (
     _what_he_wanted45r,
@@ -402,6 +544,11 @@ _STEPS45R: tuple[Callable[[str, Lexicon], str], ...] = (
     _one_who45r,
     _apiece_tail45r,
     _each_for_folk45r,
+    _one_of_them45r,
+    _go_whichever45r,
+    _which_first45r,
+    _wants_to_do45r,
+    _will_do_one45r,
     _whats_wanted45r,
     _the_one45r,
     _no_not45r,
