@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites45r, normalise
+from hltl.grounding import normalise
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -649,8 +649,6 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 44 (12r): its rules of the same families read some of these too
             *normalise._STEPS44R_FIRST,
             *normalise._STEPS44R,
-            # session 45 (12r): "…, leave the apple" after a correction reads by its own rule too
-            _rewrites45r._leave_it45r,
         ),
         monkeypatch,
     )

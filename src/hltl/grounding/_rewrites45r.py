@@ -524,6 +524,8 @@ def _leave_it45r(text: str, lexicon: Lexicon) -> str:
     )
     if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
         return text
+    if re.search(_TAKE_BACK45R, text.strip()[: m.start()], _F):
+        return text  # "X for P, I mean Y, leave Z": which request does it go with? (session 33)
     out = f"{text.strip()[: m.start('end')]} alone{m['end'] or '.'}"
     node = _reading(out, lexicon)
     if node is None or any(t.obj in _ids(m["x"], lexicon) for t in tasks(node)):
