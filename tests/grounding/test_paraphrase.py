@@ -256,35 +256,10 @@ KNOWN_MISSES = frozenset(
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
         # blind43 (tuned on in session 45): refusals left at its one measurement (docs/grounding.md)
-        "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, she's not bothered.",
-        "Person B's heading to the cooperage; let him take any one of the cup, the apple or the "
-        "chips, he doesn't mind which.",
-        "Your call which: the bottle or the chips, one of them goes to Person B before his dog "
-        "sled run.",
-        "Go whichever way round suits the arm, just get the bottle to Person A before she sets "
-        "off for the coracle race.",
         "Emma's rinsing brushes after lampwork and either cup will do, so take her one.",
         "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
-        "Reading hour: the red book's for Noah and the green book's for Zoe, one apiece.",
-        "Lily's grizzling for a block, doesn't matter which of the two, she just wants to chew "
-        "one.",
-        "Just the single cup to Person A, she's the one brewing up after shoeing.",
-        "The lone apple's what Person B wants after his ice climbing.",
-        "Something apiece for the two speleology folk: bottle to Person A, chips to Person B.",
         "Not the crisps, Bob wants the bottle after basketry.",
         "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
-        "No, not on a shelf, hand the bottle straight to Person A.",
-        "It isn't the bottle Person A's after, it's the chips, for her saltmaker's lunch.",
-        "Any blanket for Mrs Khan except the grey, which makes her itch.",
-        "Jess is poking about under the bellows and wants the torch, so leave the hammer.",
-        "Crisps to Bob, scratch that, it's the bottle he wanted after his bachata class.",
-        "Bottle to Person A. Oh wait, she's out at the abattoir till late; switch it to Person B.",
-        "Send the chips to Person B, no, sorry, muddled them up, the chips belong with Person A.",
-        "Put the bottle down... no, actually, better give it to Person A for her uilleann piping "
-        "lesson.",
-        "Bottle to Person A... hmm, or... no, I had it right the first time, Person A.",
-        "Give Noah the ruler, no sorry, it's Zoe drawing the corset pattern, give it to her.",
-        "Teddy for Ava, whoops, she's too big for it now, Lily's the one who wants the teddy.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -301,7 +276,6 @@ KNOWN_UNCLEAR = frozenset(
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         # blind43 (tuned on in session 45)
-        "Give Mr Novak the salt, sorry, I meant the other plate.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

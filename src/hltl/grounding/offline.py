@@ -1444,6 +1444,10 @@ def _spoken_to37s(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# "one of them", "either of them": the one chosen, whatever came before
+_ONE_OF45R = ("one of", "either of", "any of")
+
+
 def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
     """Session 33 (12s): 'Whichever you can reach first, the cup or the apple, hand them to
     Person A.': a 'them' whose nearest objects before it are a choice ('the cup or the apple')
@@ -1457,6 +1461,10 @@ def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
     for m, it in enumerate(items):
         if it.text.lower() != "them" or not _is(it, "pronoun", "it"):
             continue
+        if m > 0 and " ".join(y.text.lower() for y in items[max(m - 2, 0) : m]).endswith(
+            _ONE_OF45R
+        ):
+            continue  # session 45 (12r): "…, one of them goes to P" is the one chosen
         last = next((x for x in range(m - 1, -1, -1) if _objects_only32s(items[x])), None)
         if last is None:
             continue
