@@ -81,7 +81,7 @@ def test_without_the_rule_the_other_one_of_three_was_read_as_the_other_cup(
 # -- "to P or Q, whichever had it": which one had, lent, owns or wants it is a fact the robot does
 # not know (12c's probes read `apple>A | apple>B`, a choice): refused naming both people
 
-FACTS = ("had it", "lent it", "owns it", "wants it", "asked for it", "it belongs to", "it was")
+FACTS = ("had it", "lent it", "owns it", "asked for it", "it belongs to", "it was", "brought it")
 FORMS = (
     "Give the {x} back to {p} or {q}, whichever {fact}.",
     "The {x} goes back to {p} or {q}, whoever {fact}.",
@@ -119,6 +119,7 @@ def test_an_owner_who_is_either_of_two_is_refused_naming_both(
         ("Give the apple to Alice or Carol, whichever", "apple>A | apple>C"),
         ("Alice or Carol can have the apple, whoever", "apple>A | apple>C"),
         ("Give Alice the cup or the apple, whichever she wants.", "cup>A | apple>A"),
+        ("Hand the apple to Alice or Bob, whoever wants it.", "apple>A | apple>B"),
     ],
 )
 def test_a_choice_the_robot_or_the_person_makes_stays_a_choice(text: str, want: str) -> None:

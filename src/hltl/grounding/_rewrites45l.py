@@ -50,14 +50,13 @@ def other_person45l(text: str, lexicon: Lexicon) -> str:
 #
 # 12c's probes (issue-lead b367f4ce): "Give the apple back to Alice or Bob, whichever had it."
 # read `apple>A | apple>B`, a choice left to the robot; but which one had it, lent it, owns it or
-# wants it is a fact about them the robot does not know (session 43's `owner either` family; blind2
-# and blind6 refuse "Give the apple to whoever wants it"): refused naming both. What the robot can
-# judge ("…, whoever's nearer", "…, whichever you like") and a choice left to them ("…, whoever")
-# stay choices.
+# asked for it is a fact about them the robot does not know (session 43's `owner either` family):
+# refused naming both. What the robot can judge ("…, whoever's nearer", "…, whichever you like")
+# and a choice the people make at the handover ("…, whoever wants it", session 13: "Hand the glue
+# to Zoe or Noah, whoever wants it"; "…, whoever") stay choices.
 _FACT45L = (
     r"(?:had|has|lent|loaned|owns|owned|left|brought|lost|dropped|gave|used|borrowed|bought|"
-    r"wants|wanted|needs|needed|likes|prefers|fancies|asked for|ordered|is after|was after|"
-    r"is waiting for|was waiting for)"
+    r"asked for|ordered|was after)"
 )
 _OWNER_EITHER45L = re.compiled(
     r"\b(?P<p>[a-z][\w]*(?: [a-z][\w]*)?) or (?P<q>[a-z][\w]*(?: [a-z][\w]*)?),?\s+"
