@@ -124,3 +124,31 @@ def test_an_owner_who_is_either_of_two_is_refused_naming_both(
 )
 def test_a_choice_the_robot_or_the_person_makes_stays_a_choice(text: str, want: str) -> None:
     assert_reads(text, want, CELL)
+
+
+# -- a he / she in a correction that moves the same thing again is someone other than the person
+# taken back; a first name or the Person A / Person B convention rules people out as a title did
+# (12c's `texted` fuzz: "Bob wants the bottle I mean take it to him" gave the bottle to Alice)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Bob wants it the bottle I mean take it to him",
+        "Bob wants the bottle I mean take it to him",
+        "Bob wants the crisps I mean take them to him",
+    ],
+)
+def test_a_corrected_pronoun_no_one_left_can_be_is_refused(text: str) -> None:
+    assert_refused(text, FIG1, match="'him' after 'I mean' is not resolved")
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Give Bob the bottle, no, give it to her", "bottle>A"),
+        ("Give Alice the bottle, no, give it to him", "bottle>B"),
+    ],
+)
+def test_a_corrected_pronoun_the_one_left_can_be_is_read(text: str, want: str) -> None:
+    assert_reads(text, want, FIG1)

@@ -2380,10 +2380,15 @@ def _corrections_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
         return _corrections(items)
     except _SomeoneElse as other:
         sex = PRONOUN_SEX.get(other.pronoun.lower())
+        # session 45 (lead): a first name, a word of kin or the corpus's Person A / Person B
+        # convention rules a person out too, as a title does (12c's `texted` fuzz: "Bob wants
+        # the bottle I mean take it to him" had given the bottle to Alice, the one left)
         left = [
             h.id
             for h in lexicon.scene.humans
-            if h.id != other.taken_back and title_sex(h.id, lexicon) in (None, sex)
+            if h.id != other.taken_back
+            and title_sex(h.id, lexicon) in (None, sex)
+            and unnamed_sex44l(h.id, lexicon) in (None, sex)
         ]
         if len(left) == 1:
             return _corrections(_named_for(items, other.pronoun, left[0]))
