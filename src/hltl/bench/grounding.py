@@ -140,7 +140,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineers who change the grounder before its one measurement at the end of session 43; tuned on
 # in session 44), blind43 (written in session 44 by another engineer and committed alone, never
 # opened by the engineers who change the grounder before its one measurement at the end of session
-# 44; tuned on in session 45).
+# 44; tuned on in session 45), blind44 (written in session 45 by another engineer and committed
+# alone, never opened by the engineers who change the grounder before its one measurement at the end
+# of session 45; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -201,6 +203,7 @@ PARTS = (
     "blind41",
     "blind42",
     "blind43",
+    "blind44",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
