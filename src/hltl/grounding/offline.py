@@ -642,6 +642,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _rewrites43l.owned_other43l(text, lexicon)
         _rewrites44l.held_beside44l(text, lexicon)
         text = _rewrites45l.other_person45l(text, lexicon)
+        _rewrites45l.owner_either45l(text, lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
