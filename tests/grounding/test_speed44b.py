@@ -143,7 +143,8 @@ def test_gated_passes_give_what_the_passes_give_at_every_step() -> None:
                 except GroundingError as exc:
                     outcomes.append(f"refused: {exc}")
             assert outcomes[0] == outcomes[1], (text, plain)
-            if plain is not step and step(items, lexicon) is items:
+            refused = isinstance(outcomes[0], str)  # (a gated pass may refuse: session 45)
+            if plain is not step and not refused and step(items, lexicon) is items:
                 skipped += 1
             if isinstance(outcomes[0], str):
                 break

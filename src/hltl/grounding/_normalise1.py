@@ -27,6 +27,7 @@ from hltl.grounding.repairs import (
     _first_name,
     _last_name,
 )
+from hltl.grounding.stepguard import Guard, guards
 from hltl.grounding.tree import (
     Group,
     Node,
@@ -52,14 +53,48 @@ def _rewritten(
         raise GroundingError(str(known))
     if isinstance(known, str):
         return known
+    rules = _guards_of(steps)
+    low, plain = out.lower(), out.isascii()
     try:
-        for step in steps:
-            out = step(out, lexicon)
+        for step, rule in zip(steps, rules, strict=True):
+            if rule is not None and (plain or not rule[2]):
+                # the step's guard (stepguard.py): it does nothing to a text holding none of
+                # its words, so it is not called (a loop: any() over a generator costs more)
+                for word in rule[1]:
+                    if word in low:
+                        break
+                else:
+                    for word in rule[0]:
+                        if word in out:
+                            break
+                    else:
+                        continue
+            new = step(out, lexicon)
+            if new is not out:
+                out = new
+                low, plain = out.lower(), out.isascii()
     except GroundingError as refused:
         lexicon.rewrites[key] = refused
         raise
     lexicon.rewrites[key] = out
     return out
+
+
+# each steps tuple's guards (stepguard.py), kept with the tuple (a test may run another one)
+_GUARDED: dict[int, tuple[tuple[Callable[[str, Lexicon], str], ...], tuple[Guard | None, ...]]] = {}
+
+
+def _guards_of(steps: tuple[Callable[[str, Lexicon], str], ...]) -> tuple[Guard | None, ...]:
+    """Each of ``steps``' guard (None: the step always runs), read once per tuple."""
+    kept = _GUARDED.get(id(steps))
+    if kept is None or kept[0] is not steps:
+        # why: the list (~40 ms to load) only where a text is rewritten, not where one reads
+        from hltl.grounding._step_guards import GUARDS
+
+        if len(_GUARDED) > 64:
+            _GUARDED.clear()
+        kept = _GUARDED[id(steps)] = (steps, guards(steps, GUARDS))
+    return kept[1]
 
 
 def _names(text: str, lexicon: Lexicon) -> list[Item]:

@@ -183,6 +183,15 @@ def forget(pattern: str, flags: int = 0) -> None:
     _GATES.get(flags, {}).pop(pattern, None)
 
 
+def prepare(pattern: str, flags: int = 0, *, build: bool = True) -> bool:
+    """Gate ``pattern`` now rather than when first met (``build``: and compile it, kept until it
+    is first run); whether it was not gated yet."""
+    if pattern in _GATES.get(flags, {}):
+        return False
+    _gate(pattern, flags, build=build)
+    return True
+
+
 def _from_parse(pattern: str, flags: int, parsed: Any) -> re.Pattern[str]:
     """re._compiler.compile, given re's parse of ``pattern`` instead of its text."""
     code = _compiler._code(parsed, flags)

@@ -1,0 +1,572 @@
+"""The normaliser's steps indexed by their words: a step runs only where the text holds one."""
+
+from __future__ import annotations
+
+import ast
+import hashlib
+import inspect
+import re
+import sys
+import textwrap
+import types
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from hltl.grounding import gate
+
+# an atom of a guard: ("in", word, 1 if asked of the lower-cased text else 0), or ("re", pattern,
+# flags): the step does something only where one of its atoms is present in the text
+Atom = tuple[str, str, int]
+# a module name the guard was read with, and what it held: ("value", repr) for a string or an
+# int, ("pattern", pattern, flags) for a compiled pattern, ("function", name, fingerprint),
+# ("module", name)
+Dep = tuple[str, tuple[Any, ...]]
+# a step's guard as _rewritten asks it: the words asked of the text as it is, those asked of it
+# lower-cased, and whether any came from a pattern (asked only of an ASCII text, as the gate asks)
+Guard = tuple[tuple[str, ...], tuple[str, ...], bool]
+# a step's entry in the list: its fingerprint, its guard, the module names it was read with
+Entry = tuple[str, Guard, tuple[Dep, ...]]
+
+
+def _feed(digest: Any, code: types.CodeType) -> None:
+    """Feed ``code``'s bytecode, names and constants (nested code too) to ``digest``, in a form
+    that is the same in every process (a frozenset's members sorted)."""
+    digest.update(code.co_code)
+    digest.update(
+        "\x00".join((*code.co_names, "", *code.co_varnames, str(code.co_argcount))).encode()
+    )
+    for const in code.co_consts:
+        if type(const) is str:
+            digest.update(b"\x00s")
+            digest.update(const.encode("utf-8", "surrogatepass"))
+        elif isinstance(const, types.CodeType):
+            digest.update(b"\x00c")
+            _feed(digest, const)
+        elif isinstance(const, frozenset):
+            digest.update(repr(("frozenset", sorted(map(repr, const)))).encode())
+        else:
+            digest.update(b"\x00r")
+            digest.update(repr(const).encode("utf-8", "surrogatepass"))
+
+
+# fingerprints by the code's id (the code and defaults kept beside: an id is theirs only while
+# they live): a tuple of steps made again (a test taking one out) costs no digest again
+_PRINTS: dict[int, tuple[types.CodeType, object, str]] = {}
+
+
+def fingerprint(fn: Callable[..., Any]) -> str:
+    """A digest of ``fn``'s bytecode, names and constants (its docstring too) and its defaults,
+    the same in every process of one Python version ('' for what has no code)."""
+    code = getattr(fn, "__code__", None)
+    if not isinstance(code, types.CodeType):
+        return ""
+    defaults = getattr(fn, "__defaults__", None)
+    kept = _PRINTS.get(id(code))
+    if kept is not None and kept[0] is code and kept[1] is defaults:
+        return kept[2]
+    digest = hashlib.sha1(repr(sys.version_info[:2]).encode())
+    _feed(digest, code)
+    digest.update(repr(defaults).encode("utf-8", "surrogatepass"))
+    out = digest.hexdigest()[:16]
+    _PRINTS[id(code)] = (code, defaults, out)
+    return out
+
+
+def key(fn: Callable[..., Any]) -> str:
+    """A step's name in the list: its module and qualified name."""
+    return f"{getattr(fn, '__module__', '?')}:{getattr(fn, '__qualname__', '?')}"
+
+
+# -- reading a guard from a step's source (only when the list is remade) ------------------------
+
+# the helpers a guard may name, by module and name: what each asks of the text
+_NORMALISE1 = "hltl.grounding._normalise1"
+_SUB = (_NORMALISE1, "_sub")
+_RX = (_NORMALISE1, "_rx")
+_SAID_ANY = (_NORMALISE1, "_said_any")
+_SEARCHES = ("search", "match", "fullmatch")
+
+
+class _Unread(Exception):
+    """The step's first statements are not of the kinds a guard is read from."""
+
+
+class _Reader:
+    """Reads one step's guard from its source."""
+
+    def __init__(self, fn: types.FunctionType) -> None:
+        self.fn = fn
+        self.glob = fn.__globals__
+        self.deps: dict[str, tuple[Any, ...]] = {}
+        self.text = ""
+        self.lowers: set[str] = set()  # names bound to text.lower()
+        self.matches: dict[str, frozenset[Atom]] = {}  # names bound to a search of the text
+
+    def _global(self, name: str) -> object:
+        """A name of the step's module (kept, with what it holds, to be checked at run time)."""
+        if name not in self.glob:
+            raise _Unread(name)
+        value = self.glob[name]
+        if isinstance(value, str | int) and not isinstance(value, bool):
+            self.deps[name] = ("value", repr(value))
+        elif isinstance(value, re.Pattern):
+            self.deps[name] = ("pattern", value.pattern, int(value.flags))
+        elif isinstance(value, types.FunctionType):
+            self.deps[name] = ("function", key(value), fingerprint(value))
+        elif isinstance(value, types.ModuleType):
+            self.deps[name] = ("module", value.__name__)
+        else:
+            raise _Unread(name)
+        return value
+
+    def _helper(self, node: ast.expr, want: tuple[str, str]) -> bool:
+        """Whether ``node`` names the helper ``want`` (module, name)."""
+        if not isinstance(node, ast.Name) or node.id not in self.glob:
+            return False
+        value = self.glob[node.id]
+        if not isinstance(value, types.FunctionType) or (value.__module__, value.__name__) != want:
+            return False
+        self._global(node.id)
+        return True
+
+    def _re_module(self, node: ast.expr) -> bool:
+        """Whether ``node`` names re or the gate (the module a step calls re's functions of)."""
+        if not isinstance(node, ast.Name) or node.id not in self.glob:
+            return False
+        value = self.glob[node.id]
+        if value is not re and value is not gate:
+            return False
+        self._global(node.id)
+        return True
+
+    def _str(self, node: ast.expr) -> str:
+        """A string the expression always is (constants and module strings, joined)."""
+        if isinstance(node, ast.Constant) and isinstance(node.value, str):
+            return node.value
+        if isinstance(node, ast.Name):
+            value = self._global(node.id)
+            if isinstance(value, str):
+                return value
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+            return self._str(node.left) + self._str(node.right)
+        if isinstance(node, ast.JoinedStr):
+            out = []
+            for part in node.values:
+                if isinstance(part, ast.FormattedValue):
+                    if part.conversion != -1 or part.format_spec is not None:
+                        raise _Unread("format")
+                    out.append(self._str(part.value))
+                else:
+                    out.append(self._str(part))
+            return "".join(out)
+        raise _Unread("not a string")
+
+    def _flags(self, node: ast.expr | None) -> int:
+        if node is None:
+            return 0
+        if isinstance(node, ast.Constant) and isinstance(node.value, int):
+            return node.value
+        if isinstance(node, ast.Name):
+            value = self._global(node.id)
+            if isinstance(value, int):
+                return int(value)
+        if (
+            isinstance(node, ast.Attribute)
+            and self._re_module(node.value)
+            and node.attr in ("I", "IGNORECASE")
+        ):
+            return int(re.IGNORECASE)
+        raise _Unread("flags")
+
+    def _is_text(self, node: ast.expr, *, stripped: bool = False) -> bool:
+        """Whether ``node`` is the step's text (``stripped``: or ``text.strip()``)."""
+        if isinstance(node, ast.Name) and node.id == self.text:
+            return True
+        return (
+            stripped
+            and isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr == "strip"
+            and not node.args
+            and not node.keywords
+            and self._is_text(node.func.value)
+        )
+
+    def _hay(self, node: ast.expr) -> int:
+        """0 where ``node`` is the text, 1 where it is the text lower-cased."""
+        if self._is_text(node):
+            return 0
+        if isinstance(node, ast.Name) and node.id in self.lowers:
+            return 1
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr == "lower"
+            and not node.args
+            and not node.keywords
+            and self._is_text(node.func.value)
+        ):
+            return 1
+        raise _Unread("hay")
+
+    def _words(self, node: ast.expr) -> tuple[str, ...]:
+        """The strings of a tuple, list or set written out."""
+        if isinstance(node, ast.Tuple | ast.List | ast.Set):
+            return tuple(self._str(e) for e in node.elts)
+        raise _Unread("words")
+
+    def _search(self, node: ast.expr) -> frozenset[Atom]:
+        """The atom of a search of the text (``re.search(P, text, F)``, ``re.match``,
+        ``_rx(P).search(text)``, a module's compiled pattern's ``.search(text)``), whose every
+        match holds a word of its pattern."""
+        if not isinstance(node, ast.Call) or not isinstance(node.func, ast.Attribute):
+            raise _Unread("not a search")
+        func, args, kw = node.func, node.args, {k.arg: k.value for k in node.keywords}
+        if func.attr not in _SEARCHES:
+            raise _Unread("not a search")
+        if self._re_module(func.value):  # re.search(P, text[, flags])
+            if len(args) < 2 or not self._is_text(args[1], stripped=True) or set(kw) - {"flags"}:
+                raise _Unread("search args")
+            flags = args[2] if len(args) > 2 else kw.get("flags")
+            return frozenset({("re", self._str(args[0]), self._flags(flags))})
+        if len(args) != 1 or kw or not self._is_text(args[0], stripped=True):
+            raise _Unread("search args")
+        target = func.value
+        if (
+            isinstance(target, ast.Call)
+            and len(target.args) == 1
+            and not target.keywords
+            and self._helper(target.func, _RX)
+        ):  # _rx(P).search(text): case-blind
+            return frozenset({("re", self._str(target.args[0]), int(re.IGNORECASE))})
+        if isinstance(target, ast.Name):  # a module's compiled pattern
+            value = self._global(target.id)
+            if isinstance(value, re.Pattern):
+                return frozenset({("re", value.pattern, int(value.flags))})
+        raise _Unread("search target")
+
+    def present(self, node: ast.expr) -> frozenset[Atom]:
+        """Atoms one of which is present in the text wherever ``node`` is true."""
+        if isinstance(node, ast.Name) and node.id in self.matches:
+            return self.matches[node.id]
+        if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.Or):
+            return frozenset().union(*(self.present(v) for v in node.values))
+        if isinstance(node, ast.BoolOp):  # and: true only where its first side is (any side)
+            return self._best(node.values, self.present)
+        if (
+            isinstance(node, ast.Compare)
+            and len(node.ops) == 1
+            and isinstance(node.ops[0], ast.In)
+            and isinstance(node.left, ast.Constant)
+        ):
+            return frozenset({("in", self._str(node.left), self._hay(node.comparators[0]))})
+        if isinstance(node, ast.Call) and self._helper(node.func, _SAID_ANY):
+            if len(node.args) != 2 or node.keywords or not self._is_text(node.args[0]):
+                raise _Unread("_said_any")
+            return frozenset(("in", w, 1) for w in self._words(node.args[1]))
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id == "any"
+            and "any" not in self.glob
+            and len(node.args) == 1
+            and not node.keywords
+            and isinstance(node.args[0], ast.GeneratorExp)
+        ):
+            gen = node.args[0]
+            comp = gen.generators[0] if len(gen.generators) == 1 else None
+            elt = gen.elt
+            if (
+                comp is None
+                or comp.ifs
+                or comp.is_async
+                or not isinstance(comp.target, ast.Name)
+                or not isinstance(elt, ast.Compare)
+                or len(elt.ops) != 1
+                or not isinstance(elt.ops[0], ast.In)
+                or not isinstance(elt.left, ast.Name)
+                or elt.left.id != comp.target.id
+            ):
+                raise _Unread("any")
+            fold = self._hay(elt.comparators[0])
+            return frozenset(("in", w, fold) for w in self._words(comp.iter))
+        return self._search(node)
+
+    def absent(self, node: ast.expr) -> frozenset[Atom]:
+        """Atoms such that ``node`` is true wherever none of them is present in the text."""
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
+            return self.present(node.operand)
+        if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.And):
+            return frozenset().union(*(self.absent(v) for v in node.values))
+        if isinstance(node, ast.BoolOp):  # or: true wherever any one side is
+            return self._best(node.values, self.absent)
+        if isinstance(node, ast.Compare) and len(node.ops) == 1:
+            op, right = node.ops[0], node.comparators[0]
+            if isinstance(op, ast.NotIn) and isinstance(node.left, ast.Constant):
+                return frozenset({("in", self._str(node.left), self._hay(right))})
+            if isinstance(op, ast.Is) and isinstance(right, ast.Constant) and right.value is None:
+                # None only where a search finds nothing ('in', any() and _said_any are bools)
+                left = node.left
+                if isinstance(left, ast.Name) and left.id in self.matches:
+                    return self.matches[left.id]
+                return self._search(left)
+        raise _Unread("test")
+
+    @staticmethod
+    def _best(
+        nodes: list[ast.expr], read: Callable[[ast.expr], frozenset[Atom]]
+    ) -> frozenset[Atom]:
+        """Of the sides ``read`` reads, the one with the fewest atoms."""
+        found = []
+        for node in nodes:
+            try:
+                found.append(read(node))
+            except _Unread:
+                continue
+        if not found:
+            raise _Unread("no side")
+        return min(found, key=len)
+
+    def _sub(self, node: ast.expr) -> Atom:
+        """The atom of ``_sub(P, R, text)`` or ``re.sub(P, R, text[, flags=F])`` (the text
+        unchanged where it lacks the pattern's words)."""
+        if not isinstance(node, ast.Call):
+            raise _Unread("not a sub")
+        args, kw = node.args, {k.arg: k.value for k in node.keywords}
+        if self._helper(node.func, _SUB):
+            if len(args) != 3 or kw or not self._is_text(args[2]):
+                raise _Unread("_sub args")
+            return ("re", self._str(args[0]), int(re.IGNORECASE))
+        func = node.func
+        if (
+            isinstance(func, ast.Attribute)
+            and func.attr == "sub"
+            and self._re_module(func.value)
+            and len(args) == 3
+            and self._is_text(args[2])
+            and not set(kw) - {"flags", "count"}
+        ):
+            return ("re", self._str(args[0]), self._flags(kw.get("flags")))
+        raise _Unread("not a sub")
+
+    def read(self) -> frozenset[Atom]:
+        """The guard's atoms, read from the step's first statements."""
+        source = textwrap.dedent(inspect.getsource(self.fn))
+        tree = ast.parse(source)
+        fdef = tree.body[0]
+        if not isinstance(fdef, ast.FunctionDef) or fdef.decorator_list or not fdef.args.args:
+            raise _Unread("not a plain function")
+        self.text = fdef.args.args[0].arg
+        body = list(fdef.body)
+        if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+            body = body[1:]  # the docstring
+        atoms: set[Atom] = set()
+        for stmt in body:
+            if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1:
+                target = stmt.targets[0]
+                if not isinstance(target, ast.Name):
+                    break
+                if target.id == self.text:  # text = _sub(P, R, text): unchanged without P's words
+                    atoms.add(self._sub(stmt.value))
+                    continue
+                if target.id in self.lowers or target.id in self.matches:
+                    break
+                try:
+                    self._hay(stmt.value)
+                except _Unread:
+                    self.matches[target.id] = self._search(stmt.value)
+                else:
+                    if not self._is_text(stmt.value):
+                        self.lowers.add(target.id)  # low = text.lower()
+                        continue
+                    break
+                continue
+            if (
+                isinstance(stmt, ast.If)
+                and not stmt.orelse
+                and len(stmt.body) == 1
+                and isinstance(stmt.body[0], ast.Return)
+                and stmt.body[0].value is not None
+                and self._is_text(stmt.body[0].value)
+            ):
+                return frozenset(atoms | self.absent(stmt.test))
+            if isinstance(stmt, ast.Return) and stmt.value is not None:
+                if self._is_text(stmt.value) and atoms:
+                    return frozenset(atoms)
+                return frozenset(atoms | {self._sub(stmt.value)})
+            break
+        raise _Unread("no guard")
+
+
+def read_guard(fn: Callable[..., Any]) -> Entry | None:
+    """``fn``'s entry: the words one of which the text must hold for it to do anything, read from
+    its source; None where its first statements are not of the kinds a guard is read from."""
+    if (
+        not isinstance(fn, types.FunctionType)
+        or fn.__closure__
+        or "<" in fn.__qualname__
+        or fn.__code__.co_argcount < 1
+    ):
+        return None
+    reader = _Reader(fn)
+    try:
+        atoms = reader.read()
+    except (_Unread, OSError, TypeError, SyntaxError):
+        return None
+    plain: set[str] = set()
+    folded: set[str] = set()
+    patterned = False
+    for kind, said, flags in atoms:
+        if kind == "in":
+            (folded if flags else plain).add(said)
+            continue
+        found = _words(said, flags)
+        if found is None:
+            return None  # a pattern that may match without any word: the step always runs
+        words, fold = found
+        (folded if fold else plain).update(words)
+        patterned = True
+    if "" in plain or "" in folded:
+        return None  # '' is in every text
+    deps = tuple(sorted(reader.deps.items()))
+    return fingerprint(fn), (tuple(sorted(plain)), tuple(sorted(folded)), patterned), deps
+
+
+# -- using the list ------------------------------------------------------------------------------
+
+# the list's entry saying how the gate derived the words it keeps (``derivation``)
+_DERIVATION = "derivation"
+
+
+def _words(pattern: str, flags: int) -> tuple[tuple[str, ...], bool] | None:
+    """The gate's words of ``pattern`` and whether they are lower-cased (gate.py), None where it
+    has none (the pattern may match without any)."""
+    try:
+        return gate._GATES[flags][pattern]
+    except KeyError:
+        return gate._gate(pattern, flags, build=False)
+
+
+def derivation() -> str:
+    """A digest of how the gate derives a pattern's words (the list keeps the words it derived:
+    where this differs, no guard is used)."""
+    return "".join(
+        fingerprint(f) for f in (gate._needed, gate._fewest, gate._best, gate._gate, _words)
+    )[:32]
+
+
+def _holds(fn: Callable[..., Any], deps: tuple[Dep, ...]) -> bool:
+    """Whether every module name the guard was read with still holds what it held."""
+    glob = getattr(fn, "__globals__", {})
+    for name, was in deps:
+        if name not in glob:
+            return False
+        value = glob[name]
+        kind = was[0]
+        if kind == "value":
+            if not isinstance(value, str | int) or repr(value) != was[1]:
+                return False
+        elif kind == "pattern":
+            if not isinstance(value, re.Pattern) or (value.pattern, int(value.flags)) != was[1:]:
+                return False
+        elif kind == "function":
+            if key(value) != was[1] or fingerprint(value) != was[2]:
+                return False
+        elif kind == "module":
+            if getattr(value, "__name__", None) != was[1]:
+                return False
+        else:
+            return False
+    return True
+
+
+def guard(fn: Callable[..., Any], entry: Entry | None) -> Guard | None:
+    """``fn``'s guard from its entry, or None (the step always runs) where it has none, its code
+    is not what the entry was read from, or a name it was read with holds something else."""
+    if entry is None or fingerprint(fn) != entry[0] or not _holds(fn, entry[2]):
+        return None
+    return entry[1]
+
+
+def guards(
+    steps: Sequence[Callable[..., Any]], known: Mapping[str, Entry | str]
+) -> tuple[Guard | None, ...]:
+    """Each step's guard (None: it always runs; every step, where the gate's way of deriving a
+    pattern's words is not the one the list was made with)."""
+    if known.get(_DERIVATION) != derivation():
+        return (None,) * len(steps)
+    out = []
+    for step in steps:
+        entry = known.get(key(step))
+        out.append(guard(step, entry if isinstance(entry, tuple) else None))
+    return tuple(out)
+
+
+def may_act(rule: Guard, text: str, low: str, ascii_: bool) -> bool:
+    """Whether a step with guard ``rule`` may do anything to ``text`` (``low``: its lower case;
+    ``ascii_``: whether it is ASCII)."""
+    plain, folded, patterned = rule
+    if patterned and not ascii_:
+        return True
+    for word in plain:  # a loop: any() over a generator costs more
+        if word in text:
+            return True
+    for word in folded:  # noqa: SIM110
+        if word in low:
+            return True
+    return False
+
+
+# -- remaking the list ---------------------------------------------------------------------------
+
+
+def read_all(steps: Iterable[Callable[..., Any]]) -> dict[str, Entry]:
+    """The entries of every step that has a guard."""
+    out: dict[str, Entry] = {}
+    for step in steps:
+        entry = read_guard(step)
+        if entry is not None:
+            out[key(step)] = entry
+    return out
+
+
+def _write(entries: dict[str, Entry]) -> str:
+    lines = [
+        "# ruff: noqa: E501",
+        '"""The normaliser\'s step guards (made by python -m hltl.grounding.stepguard --write)."""',
+        "",
+        "from hltl.grounding.stepguard import Entry",
+        "",
+        "GUARDS: dict[str, Entry | str] = {",
+        f"    {_DERIVATION!r}: {derivation()!r},",
+        *(f"    {name!r}: {entry!r}," for name, entry in sorted(entries.items())),
+        "}",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def all_steps() -> tuple[Callable[..., Any], ...]:
+    """Every step the normaliser runs, once each."""
+    # why: normalise imports _normalise1, which imports this module
+    from hltl.grounding import normalise
+
+    return tuple(dict.fromkeys((*normalise._STEPS19, *normalise._STEPS)))
+
+
+def main(argv: Sequence[str]) -> int:
+    """``--write``: remake _step_guards.py from the steps' source."""
+    if list(argv) != ["--write"]:
+        print("usage: python -m hltl.grounding.stepguard --write", file=sys.stderr)
+        return 2
+    steps = all_steps()
+    entries = read_all(steps)
+    out = Path(__file__).with_name("_step_guards.py")
+    out.write_text(_write(entries), encoding="utf-8")
+    print(f"{len(entries)} of {len(steps)} steps guarded, written to {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main(sys.argv[1:]))
