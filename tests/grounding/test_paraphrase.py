@@ -190,7 +190,6 @@ KNOWN_MISSES = frozenset(
         "Why not give Person B the chips, he's done nothing but ferry deckchairs all day?",
         # blind38 (tuned on in session 40): refusals left at its one measurement (docs/grounding.md)
         "Omar needs the sponge to clean up after the moth trap.",
-        "Person A's having the cup and Person B the apple and the chips go to Person B too.",
         "Give each of them something for the star gazing tonight: Alice the bottle, Bob the "
         "crisps.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
@@ -216,62 +215,30 @@ KNOWN_MISSES = frozenset(
         "sort that",
         "Person A's walking the coast path later and a single bottle will see her through, the "
         "one you've got.",
-        "marcos on the grill tonight and hes shouting for the tongs",
         "Is there any way Person B could get the chips this side of lunch?",
         "Could Grandad have the red block for Lily's tower?",
         # blind41 (tuned on in session 43): refusals left at its one measurement (docs/grounding.md)
-        "If you'd be so good as to carry the chips across to Person A, she's been at her cajon "
-        "all afternoon.",
-        "Er, sorry, hate to interrupt, but could the bottle make its way to Person A? Lovely "
-        "stuff.",
-        "Much obliged if Person B ended up with the chips.",
         "Sagrai, as Lezgian speakers put it, for taking the stapler over to Priya.",
-        "With thanks, the drill to Kofi, he's just back from his mbira lesson.",
         "After a morning on the piling rig, Bob's gasping and the water bottle would save his "
         "life.",
-        "Alice would sell her soul for the crisps right now.",
-        "The bottle's what Bob has been angling for all morning.",
-        "The chips would go down a treat with Person A.",
         "If nobody else has claimed the bottle, Person A would gladly take it off your hands.",
-        "Honestly, the chips are the thing Person B needs more than anything.",
         "Person A's apple needs taking to her, and her bottle as well.",
         "The cup? That's Person B's. The apple? Person A's. Off they go to them.",
-        "Person B put his name down for the chips, so he gets them.",
         "The scissors are Zoe's to borrow, and Noah's having the glue.",
         "Put Lily's sippy cup on the high chair for her.",
         "Set both of Lily's blocks up on her high chair.",
         "Persohn A left her bottle with you earlier; she'd like it returned.",
-        "Any hope of Person A getting the chips before her newt survey?",
-        "Could you spare a minute to hand Person B the apple?",
-        "Would it be a pain to take Person A the cup?",
         "Does Person B want the chips? He does, so give them to him.",
-        "Could you make sure Person A ends up with her bottle?",
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
-        "Suksma, robot — my Balinese gran taught me that word — could you bring Carol the red mug?",
-        "With all due respect, machine, Person A needs the bottle, thanking you kindly.",
-        "Chettirdim, friend, that's Tuvan for thanks; would you carry the crisps to Person A?",
         "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
-        "Alice could really do with a drink, she's been spinning fire poi for an hour.",
-        "What Bob fancies right now is a packet of crisps.",
-        "Person B said he's been dreaming about the chips all morning.",
-        "Person A keeps banging on about crisps, the poor thing's been log rolling.",
-        "Person B has been on the tug crew since dawn and is gagging for the water bottle.",
-        "Mrs Khan is freezing, she could use the blue blanket over her knees.",
-        "Tom's hands are raw from the ice road run, he needs the work gloves.",
         "Lena has lemon wedges to do for table six and nothing sharp to do them with; sort her "
         "out.",
         "Noah's desperate for a ruler to finish drawing his xiangqi board.",
-        "Lily's all sticky, she needs the baby wipes, she does.",
-        "Those crisps Alice left out, stick them on the shelf.",
-        "The apple, Person A said she'd have it.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
         "her.",
         "Person A gets her bottle first; once she's got it, it's the turn of Person B, who's "
         "waiting by the kerb for the chips.",
-        "Person A's waiting. Take it to her, the bottle.",
-        "Those crisps are the ones Person B knocked off his lap during the gritter briefing, so "
-        "return them to him.",
         "Tongs to Marco he's at the grill, the knife to Lena she's on lemons.",
         "Clear both things off the floor and up onto the shelf, bottle and crisps alike, the "
         "pavers are coming through.",
@@ -284,83 +251,15 @@ KNOWN_MISSES = frozenset(
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
-        "emma spilt her tea and wants the sponge to mop it",
         "marco's plating up on blue so that plate's his and lena has the white",
         "Could the apple go on the counter, next to where Alice does her cross-stitch?",
-        "Would there be any chance of getting the crisps to Alice before she starts her mime "
-        "workshop?",
-        "Might it be possible for Person A to get the chips, she's just in from the fish farm?",
-        "What if Person A had the apple and Person B the chips, why not do that?",
-        "How about letting Person A have those crisps, seeing as she missed tea?",
         "Can the notebook go in the box so Priya stops losing it?",
         "Would you stick that packing tape on the pallet ready for Tom's load?",
         # blind43 (tuned on in session 45): refusals left at its one measurement (docs/grounding.md)
-        "Yakoke, robot, when you get a sec could you hand Bob the blue mug? He's off to "
-        "bellringing practice.",
-        "Right, um, the bootmaker left the bottle lying about, could you pop it up on the shelf "
-        "for me? Cheers.",
-        "Seremein, erm, could Emma have the banana? She's got a snowshoe trek later.",
-        "Be a dear and set the tongs down on the worktop, ta, I'm off to the cider press after "
-        "this.",
-        "Person B has been craving an apple all afternoon, what with his butoh rehearsal.",
-        "Person A's desperate for the chips, the peat cutter ate all her sandwiches.",
-        "There's clay all over the bench from Omar's slip cast trial, so he needs the sponge.",
-        "Mr Lee needs his tablets before the harness maker visits him.",
-        "The guest would like some salt, he's a cockler by trade and loves it.",
-        "Noah's marbling project is coming apart, he needs the glue stick to fix it.",
-        "Person B hasn't had the cup yet, could you bring it to him?",
-        "The bottle? Person A, please, she's the stonecutter.",
-        "Find the cup; Person A's been asking for it since the pantomime, give it to her.",
-        "Person B's had his eye on the chips since the pantomime, so those go to him.",
-        "The bottle's for Person A, she's back from tent pegging and wants it, take it over to "
-        "her.",
-        "Person B wants them, the chips I mean.",
-        "Sam's lost his stapler again, bring it to him, please.",
-        "Tom's out of tape. Can you get him some?",
-        "Bottle up on the shelf, crisps over to Alice who's off ferreting, and that's everything.",
-        "Person A gets the cup Person B gets the chips they both want them before the mummers "
-        "start",
-        "Marco's doing the lemon posset so the lemon's his, and Lena wants the knife for the "
-        "bread.",
-        "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, she's not bothered.",
-        "Person B's heading to the cooperage; let him take any one of the cup, the apple or the "
-        "chips, he doesn't mind which.",
-        "Your call which: the bottle or the chips, one of them goes to Person B before his dog "
-        "sled run.",
-        "Go whichever way round suits the arm, just get the bottle to Person A before she sets "
-        "off for the coracle race.",
         "Emma's rinsing brushes after lampwork and either cup will do, so take her one.",
         "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
-        "Reading hour: the red book's for Noah and the green book's for Zoe, one apiece.",
-        "Lily's grizzling for a block, doesn't matter which of the two, she just wants to chew "
-        "one.",
-        "Just the single cup to Person A, she's the one brewing up after shoeing.",
-        "The lone apple's what Person B wants after his ice climbing.",
-        "Something apiece for the two speleology folk: bottle to Person A, chips to Person B.",
         "Not the crisps, Bob wants the bottle after basketry.",
         "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
-        "No, not on a shelf, hand the bottle straight to Person A.",
-        "It isn't the bottle Person A's after, it's the chips, for her saltmaker's lunch.",
-        "Any blanket for Mrs Khan except the grey, which makes her itch.",
-        "Jess is poking about under the bellows and wants the torch, so leave the hammer.",
-        "Crisps to Bob, scratch that, it's the bottle he wanted after his bachata class.",
-        "Bottle to Person A. Oh wait, she's out at the abattoir till late; switch it to Person B.",
-        "Send the chips to Person B, no, sorry, muddled them up, the chips belong with Person A.",
-        "Put the bottle down... no, actually, better give it to Person A for her uilleann piping "
-        "lesson.",
-        "Bottle to Person A... hmm, or... no, I had it right the first time, Person A.",
-        "Give Noah the ruler, no sorry, it's Zoe drawing the corset pattern, give it to her.",
-        "Teddy for Ava, whoops, she's too big for it now, Lily's the one who wants the teddy.",
-        "after two hours of underwater hockey person b is gasping for that bottle",
-        "hand person a the cup she takes it to clavichord lessons",
-        "person a could do with the bottle after her carolling thx",
-        "person b gets the chips hes earned them at ferreting",
-        "pop the spoon on the tray its been lying about since the lampwork demo",
-        "salt shaker to mr novak he says the soup needs it",
-        "lilys thirsty after her nap so sippy cup to her pls",
-        "The applfe is for Person B to take to show jumping",
-        "The glovfes want putting on the pallet, the fuller left them on the floor",
-        "Could you give Carol the red mug, now she's done with taxidermy class?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -377,9 +276,6 @@ KNOWN_UNCLEAR = frozenset(
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         # blind43 (tuned on in session 45)
-        "Bob's still waiting on it after canoe polo, can you run it over to him?",
-        "Dana's after the same cup as yesterday.",
-        "Give Mr Novak the salt, sorry, I meant the other plate.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites41r, _rewrites44s, normalise
+from hltl.grounding import _rewrites41r, _rewrites44s, _rewrites45r, normalise
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
@@ -364,6 +364,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # what someone keeps doing to what is put away, read these too
             _rewrites44s._hand_over44s,
             _rewrites44s._keep_taking44s,
+            # session 45 (12r): "…, no hang on, it's the salt she wants" reads by its rule too
+            _rewrites45r._what_he_wanted45r,
         ),
         monkeypatch,
     )

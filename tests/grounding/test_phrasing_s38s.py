@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import normalise
+from hltl.grounding import _rewrites45r, normalise
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -158,6 +158,8 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 43 (12r): its corrections read some of these too
             *normalise._STEPS43R_FIRST,
             *normalise._STEPS43R,
+            # session 45 (12r): "…, correction, it's the globe he wants" reads by its rule too
+            _rewrites45r._what_he_wanted45r,
         ),
         monkeypatch,
     )

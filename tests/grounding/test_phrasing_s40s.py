@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites40s, normalise, offline
+from hltl.grounding import _rewrites40s, _rewrites45s, normalise, offline
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -116,9 +116,16 @@ test_remarks_refused = CASES.test(
 
 
 def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    # (session 41: 12s's rules read some of them too)
+    # (session 41: 12s's rules read some of them too; session 45: "pass jess the torch she's been
+    # asking for it all week" reads with its comma put back by `_run_on45s`)
     CASES.refused_without(
-        (*normalise._STEPS40S, *normalise._STEPS40S_FIRST, *normalise._STEPS41S_FIRST), monkeypatch
+        (
+            *normalise._STEPS40S,
+            *normalise._STEPS40S_FIRST,
+            *normalise._STEPS41S_FIRST,
+            _rewrites45s._run_on45s,
+        ),
+        monkeypatch,
     )
 
 

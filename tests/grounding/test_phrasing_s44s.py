@@ -863,23 +863,6 @@ def test_over_they_go_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     OVER_TO.refused_without((r44s._over_they_go44s,), monkeypatch)
 
 
-DITTO = PhrasingCases()
-test_ditto = DITTO.test(
-    ("Person B's having the chips, and ditto the apple.", "chips>B & apple>B", F42),
-    ("Zoe's having the glue, and ditto the ruler.", "glue>C & ruler>C", CLASSROOM),
-    ("Give Tom the gloves, ditto the tape.", "gloves>B & tape>B", DEPOT),
-)
-test_ditto_refused = DITTO.test(
-    # a surface; two people before it (ditto whose?)
-    ("Marco gets the knife, and ditto the rack.", None, KITCHEN),
-    ("Give Bob the cup and Alice the apple, ditto the chips.", None, CELL),
-)
-
-
-def test_ditto_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    DITTO.refused_without((r44s._ditto44s,), monkeypatch)
-
-
 DONE_WITH = PhrasingCases()
 test_done_with = DONE_WITH.test(
     (

@@ -663,7 +663,28 @@ def _past_and44s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
-_NOT_PAST44S = frozenset({"need", "needed", "wanted", "asked", "red", "bed", "shed", "fed"})
+# not a want's words, and not a spill (engineer 12's session-44 `_spilt44` reads "Omar spilled his
+# soup and wants the spoon")
+_NOT_PAST44S = frozenset(
+    {
+        "need",
+        "needed",
+        "wanted",
+        "asked",
+        "red",
+        "bed",
+        "shed",
+        "fed",
+        "spilled",
+        "spilt",
+        "knocked",
+        "splashed",
+        "slopped",
+        "dropped",
+        "tipped",
+        "upset",
+    }
+)
 
 
 # "… and asked if she could have the banana": her asking for it ('asked for'), when she is the one
@@ -918,33 +939,6 @@ def _over_they_go44s(text: str, lexicon: Lexicon) -> str:
     return out if _reading(out, lexicon) is not None else text
 
 
-# "Person B's having the chips, and ditto the apple": the same again for another thing: "and the
-# apple too".
-_DITTO44S = re.compile(
-    r"(?P<sep>,?\s+and\s+|,\s*)ditto (?:for |with )?(?P<x>(?:the|that|this|those|these) [a-z]+"
-    r"(?: [a-z]+)?)(?P<end>\s*[.!]*)\s*$",
-    _F,
-)
-
-
-def _ditto44s(text: str, lexicon: Lexicon) -> str:
-    """Session 44 (12s): 'ditto the X' said as 'the X too', when X names objects of the scene
-    and what is left reads."""
-    if "ditto" not in text.lower():
-        return text
-    m = _DITTO44S.search(text)
-    if m is None or m.start() == 0:
-        return text
-    x = m["x"]
-    if not _ids(x, lexicon, "object") or _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
-        return text
-    before = _reading(text[: m.start()], lexicon)
-    if before is None or len({t.target for t in tasks(before)}) != 1:
-        return text  # "Give Bob the cup and Alice the apple, ditto the chips": ditto whose?
-    out = text[: m.start()] + f", and {x} too" + (m["end"] or "").strip()
-    return out if _reading(out, lexicon) is not None else text
-
-
 # "Would you mind dropping the spoon in the sink? Emma's finished her tea.", "Could you hang the
 # tongs on the plate rack, Marco's done with them?": that someone of the scene is done with what
 # is put away, closing a request that places everything it names: why, taken off.
@@ -1014,7 +1008,6 @@ _STEPS44S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _space_on44s,
     _will_do44s,
     _over_they_go44s,
-    _ditto44s,
     _done_with44s,
     _if_spare44s,
     _shelve44s,

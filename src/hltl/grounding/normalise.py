@@ -640,7 +640,10 @@ def _remarks(text: str, lexicon: Lexicon) -> str:
         name = people[0].text
         body = _sub(r"\b(?:him|her|he|she)\b", name, body)
         body = _sub(r"\bhis\b", "the", body)
-    if thing and len(things) == 1 and not (trailing and _object_before_pronoun31l(body, lexicon)):
+    # session 45 (12s): nor, said before the request, for an 'it' whose object the request names
+    # before it ("Marco has the salt shaker already. Don't put the lemon on the rack, give it to
+    # Marco" had handed the salt)
+    if thing and len(things) == 1 and not _object_before_pronoun31l(body, lexicon):
         words = things[0].text
         body = _sub(r"\bboth of them\b", f"both {words}", body)
         body = _sub(r"\b(?:it|them)\b", f"the {words}", body)
@@ -686,7 +689,12 @@ def _named_by_sex36t(said: str, request: str, person: set[str], lexicon: Lexicon
     others = [h.id for h in lexicon.scene.humans if h.id != pid]
     if not _sure36t(pid, pronoun, lexicon) and any(_may_be35t(o, pronoun, lexicon) for o in others):
         return None
-    name = next(it.text for it in _names(said, lexicon) if {r.id for r in it.refs} == {pid})
+    # session 45 (12s, a bug fix): a name that may be two people ('Plerson Q', a typo of both
+    # Person A and Person B) is no one's name here: none said for the pronoun (it had raised
+    # StopIteration once Priya's sex was known)
+    name = next((it.text for it in _names(said, lexicon) if {r.id for r in it.refs} == {pid}), None)
+    if name is None:
+        return None
     told = _sub(r"\b" + pronoun + r"\b", name, request)
     return f"{said}, {told}"
 

@@ -642,6 +642,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _rewrites43l.owned_other43l(text, lexicon)
         _rewrites44l.held_beside44l(text, lexicon)
         text = _rewrites45l.other_person45l(text, lexicon)
+        _rewrites45l.owner_either45l(text, lexicon)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
@@ -1444,6 +1445,10 @@ def _spoken_to37s(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# "one of them", "either of them": the one chosen, whatever came before
+_ONE_OF45R = ("one of", "either of", "any of")
+
+
 def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
     """Session 33 (12s): 'Whichever you can reach first, the cup or the apple, hand them to
     Person A.': a 'them' whose nearest objects before it are a choice ('the cup or the apple')
@@ -1457,6 +1462,10 @@ def _them_after_choice33s(text: str, lexicon: Lexicon) -> None:
     for m, it in enumerate(items):
         if it.text.lower() != "them" or not _is(it, "pronoun", "it"):
             continue
+        if m > 0 and " ".join(y.text.lower() for y in items[max(m - 2, 0) : m]).endswith(
+            _ONE_OF45R
+        ):
+            continue  # session 45 (12r): "…, one of them goes to P" is the one chosen
         last = next((x for x in range(m - 1, -1, -1) if _objects_only32s(items[x])), None)
         if last is None:
             continue
@@ -1796,10 +1805,13 @@ _CUT_OFF = re.compile(
 # a pronoun that is a person (not 'his'/'her' before what they own: "he's changing her nappy")
 # 'her' as the object only (not 'her bottle'): before the end, a stop, an article, or (session
 # 34, lead: 12c's wrappers fuzz, "The bowl, which Omar has been asking about, should go to her
-# and that's us done" read bowl>B) a word that joins or closes a clause
+# and that's us done" read bowl>B) a word that joins or closes a clause; (session 44, 12: 12c's
+# fuzz, "Noah wants the globe, so let her have it." read globe>B) a verb it is the subject of
+# after 'let' ('let her have it') or what is handed to it ('give her it', 'pass her those')
 _SEXED = re.compile(
     r"\b(?:he|him|she|hers|her(?=\s*(?:$|[.,;!?]|the\b|a\b|an\b|too\b|instead\b|as well\b|"
-    r"and\b|or\b|but\b|so\b|then\b|now\b|please\b|first\b|next\b)))\b",
+    r"and\b|or\b|but\b|so\b|then\b|now\b|please\b|first\b|next\b|have\b|take\b|get\b|"
+    r"keep\b|borrow\b|use\b|it\b|them\b|these\b|those\b|this\b|that\b)))\b",
     re.I,
 )
 

@@ -2385,6 +2385,17 @@ def _corrections_named(items: list[Item], lexicon: Lexicon) -> list[Item]:
             for h in lexicon.scene.humans
             if h.id != other.taken_back and title_sex(h.id, lexicon) in (None, sex)
         ]
+        # session 45 (lead): nor the one left when a first name, a word of kin or the corpus's
+        # Person A / Person B convention says they are not a he / she (12c's `texted` fuzz: "Bob
+        # wants the bottle I mean take it to him" had given the bottle to Alice, the one left);
+        # names only refuse, never pick one of several (session 34)
+        if len(left) == 1 and unnamed_sex44l(left[0], lexicon) not in (None, sex):
+            raise GroundingError(
+                f"{other.pronoun!r} after {other.marker!r} is not resolved: the same object goes "
+                f"to someone other than {person_name(other.taken_back, lexicon)}, and the one "
+                f"left, {person_name(left[0], lexicon)}, is not {'he' if sex == 'm' else 'she'} "
+                "by name; name the person"
+            ) from None
         if len(left) == 1:
             return _corrections(_named_for(items, other.pronoun, left[0]))
         raise GroundingError(
