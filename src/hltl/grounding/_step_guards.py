@@ -6604,6 +6604,83 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites44:_all_state44": ("5ba913c12e293473", ((), (" all ",), False), ()),
+    "hltl.grounding._rewrites44:_body_state44": ("38b9aa9ec76eca8b", (("'s ",), (), False), ()),
+    "hltl.grounding._rewrites44:_cleft_time44": ("0fd31785a250a3c4", ((), (" is ",), False), ()),
+    "hltl.grounding._rewrites44:_described44": (
+        "fc1fc79be3b9a96a",
+        (
+            (),
+            (
+                "bring",
+                "get",
+                "give",
+                "hand",
+                "pass",
+                "place",
+                "pop",
+                "put",
+                "return",
+                "send",
+                "stick",
+                "take",
+            ),
+            True,
+        ),
+        (
+            (
+                "_DESCRIBED44",
+                (
+                    "pattern",
+                    "^(?P<x>(?:those|these|the|that|this) [a-z]+(?: [a-z]+)?)(?: (?:is|are|'re|'s) the (?:one|ones))? (?:that |which )?(?P<p>[A-Z][\\w]*(?: [A-Z][\\w]*)?) (?P<v>left|left out|brought|brought in|knocked|dropped|put down|had|bought|got|took|spilt|spilled|lost|forgot|abandoned|was using|was eating|opened)\\b(?P<d>[^,;.]*?)(?:,\\s*(?:so\\s+)?|\\s*[;:]\\s*|\\s+so\\s+)(?P<rest>(?:please )?(?:stick|put|pop|place|give|hand|pass|take|bring|return|send|get) (?:it|them)\\b.*)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites44:_ditto44": ("b450aaa073728d54", ((), ("ditto",), False), ()),
+    "hltl.grounding._rewrites44:_fronted_said44": ("beb0e7a3b05ecec7", ((",",), (), False), ()),
+    "hltl.grounding._rewrites44:_go_down44": (
+        "56fce23abd8a878e",
+        (("'d ",), (" will ", " would "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites44:_it_named44": ("0ddc3cdae8b2e197", ((), ("it ",), False), ()),
+    "hltl.grounding._rewrites44:_kind_want44": (
+        "ef954bfb1667705b",
+        ((), ("bite", "drink", "eat", "munch", "nibble", "snack", "water"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites44:_on_body44": (
+        "58c208a949417051",
+        ((), (" her ", " his "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites44:_seeing_as44": (
+        "54718522a46ccf59",
+        ((), ("being", "seeing"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites44:_spilt44": (
+        "8b42ff6fb4473af8",
+        ((), (" and ",), True),
+        (
+            (
+                "_SPILT44",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Za-z][\\w]*(?: [A-Za-z][\\w]*)?) (?:has |'s |just )?(?:spilt|spilled|knocked over|upset|splashed|slopped|dribbled|dropped) (?P<w>(?:his|her|their|some|a|an) [a-z]+(?: [a-z]+)?(?: (?:everywhere|all over (?:the floor|the place|himself|herself)|on the floor))?) and (?:wants|needs|would like|'d like|could use|could do with|is after|'s after) (?P<x>(?:the|a|an|some) [a-z]+(?: [a-z]+)??)(?: to (?:mop|wipe|clean|dry|soak|sponge)(?: (?:it|that|them))?(?: up)?)?(?P<end>\\s*[.!]*)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites44:_want_words44": (
+        "675505fcf5d6fc64",
+        ((), (" about ", " for ", " of "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites44:_why_not44": ("0b029edc8a06bd6e", ((), ("why",), False), ()),
     "hltl.grounding._rewrites44r:_after_cue44r": (
         "ee7847befcf44abf",
         ((), ("know what", "misspoke there", "second thought", "think"), False),
@@ -6732,7 +6809,6 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("before",), False),
         (),
     ),
-    "hltl.grounding._rewrites44s:_ditto44s": ("a3d2bf174b173a2c", ((), ("ditto",), False), ()),
     "hltl.grounding._rewrites44s:_done_next44s": ("b61a335af1ce1b04", ((), ("next",), False), ()),
     "hltl.grounding._rewrites44s:_done_with44s": (
         "84bd4741cfd8df56",
@@ -6872,6 +6948,224 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites44s:_without44s": ("8b9cdef304ce43c3", ((), ("without",), False), ()),
+    "hltl.grounding._rewrites45:_all_over45": (
+        "77589168d3c3d7dd",
+        ((), ("all over", "apart"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45:_back_and45": ("016014c223caa3de", ((), ("from",), False), ()),
+    "hltl.grounding._rewrites45:_before_him45": (
+        "66163337844836f1",
+        ((), ("ahead of when", "before", "till", "until"), True),
+        (
+            (
+                "_BEFORE_HIM45",
+                (
+                    "pattern",
+                    "\\b(?P<head>(?:before|until|till|ahead of when) (?:the|a|an|his|her|their) [a-z]+(?: [a-z]+)? [a-z]+s) (?P<pr>him|her)(?P<end>\\s*[.!]*)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites45:_by_trade45": ("9fd83b832d06dd72", ((), (" by ",), False), ()),
+    "hltl.grounding._rewrites45:_eye_on45": ("dfcc24d716d299c2", ((), ("eye",), False), ()),
+    "hltl.grounding._rewrites45:_find_first45": (
+        "099b8c93859e637c",
+        ((), ("dig out", "fetch", "find", "get", "grab", "locate", "track down"), True),
+        (
+            (
+                "_FIND_FIRST45",
+                (
+                    "pattern",
+                    "^(?:please )?(?:find|grab|locate|get|fetch|dig out|track down) (?P<x>(?:the|that|those|these) [a-z]+(?: [a-z]+)?)\\s*[;:.]\\s+(?P<rest>.+)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites45:_i_mean45": ("a641179b91397fcd", ((), ("mean",), False), ()),
+    "hltl.grounding._rewrites45:_it_unnamed45": (
+        "9cf77fc03144ce4b",
+        ((), ("it", "them"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45:_lacking45": (
+        "e9bf3cd99405f8ad",
+        ((), ("find", "given", "got", "had", "lost", "mislaid", "out of"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45:_left_about45": (
+        "7450d67ba2a05e94",
+        (("forgot",), ("dumped", "left"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45:_now_she45": ("612983533d94a252", ((), ("now",), False), ()),
+    "hltl.grounding._rewrites45:_remark_time45": (
+        "43d0c06be042ac2f",
+        (
+            (),
+            (
+                "after that",
+                "after this",
+                "afternoon",
+                "afterwards",
+                "evening",
+                "in a bit",
+                "in a while",
+                "later",
+                "morning",
+                "soon",
+                "tonight",
+            ),
+            True,
+        ),
+        (
+            (
+                "_REMARK_TIME45",
+                (
+                    "pattern",
+                    "(?P<sep>[.?!]\\s+|,\\s*|;\\s*)(?P<r>(?:he|she|they|i|we)(?:'s|'m|'re| is| am| are| has| have|'ve)? (?:just |then |also )?(?:got|off to|going to|heading to|heading off to|due at|due to|has|have|on|at)\\b[^.?!,;]*?)\\s+(?:later(?: on)?|tonight|after this|after that|afterwards|this (?:afternoon|evening|morning)|in a bit|in a while|soon)(?P<end>\\s*[.?!]*)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites45:_same_as45": ("e24350a5ca045ffd", ((), ("same",), False), ()),
+    "hltl.grounding._rewrites45:_they_did45": (
+        "31e1a63f435cf7ef",
+        ((), ("er", "is"), True),
+        (
+            (
+                "_THEY_DID45",
+                (
+                    "pattern",
+                    "(?P<sep>,\\s*|;\\s*)(?:the|a|an|some|our|my) (?P<who>[a-z]+(?: [a-z]+)?) (?P<v>[a-z]+ed|ate|took|stole|drank|broke|had|nicked|pinched|swiped|scoffed|got|ate up|ran off with|made off with) (?:all (?:of )?|the last of |most of |up )?(?P<pos>his|her) (?P<what>[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]*)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites45:_thing_q45": ("19f0ed30e0235664", (("?",), (), False), ()),
+    "hltl.grounding._rewrites45:_what_with45": (
+        "3f9115e7506601e7",
+        ((), ("what with",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_apiece_tail45r": (
+        "ae4982a771cf61c2",
+        ((), ("apiece", "each"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_belongs_with45r": (
+        "17a43cf4dd86419a",
+        ((), ("belong", "go with", "goes with"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_better_verb45r": (
+        "e45e85b7da6b0647",
+        ((), ("best", "better"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_each_for_folk45r": (
+        "bdafba43aa7aebd7",
+        ((), ("apiece", "each"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_go_whichever45r": ("7619ca9a070c6326", ((), ("way",), False), ()),
+    "hltl.grounding._rewrites45r:_isnt_its45r": ("17b1c02cba2d3163", ((), ("it",), False), ()),
+    "hltl.grounding._rewrites45r:_its_p_doing45r": ("5d784f615d327b68", ((), ("it",), False), ()),
+    "hltl.grounding._rewrites45r:_leave_it45r": ("ff5ae4dc7c40289d", ((), ("leave",), False), ()),
+    "hltl.grounding._rewrites45r:_mind_which45r": ("23545f6b7cf8e4fc", ((), ("which",), False), ()),
+    "hltl.grounding._rewrites45r:_one_of_list45r": (
+        "93601663784732d0",
+        ((), ("one of",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_one_of_them45r": (
+        "e28e201d346cdb0d",
+        ((), ("one of",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_one_who45r": ("c0f9383adf59f949", ((), ("the one",), False), ()),
+    "hltl.grounding._rewrites45r:_right_first45r": (
+        "9ca736c0740de7a3",
+        ((), ("right",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_switch_to45r": (
+        "87f0a23e922119eb",
+        ((), ("change", "move", "shift", "swap", "switch"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_the_one45r": ("05c73bde26c19165", ((), ("the one",), False), ()),
+    "hltl.grounding._rewrites45r:_wants_to_do45r": (
+        "aeeba88fc353bbd4",
+        ((), ("wants to",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_what_he_wanted45r": (
+        "782878bc18d8ce00",
+        ((), ("it",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_whats_wanted45r": (
+        "517963d443aa2f3a",
+        ((), ("'s what",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_which_first45r": (
+        "8f11cbc7105d76af",
+        ((), ("whichever",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_which_itches45r": (
+        "118a2bfa89b90d46",
+        ((), ("which",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45r:_will_do_one45r": ("0853b4e6ab753a94", ((), ("do",), False), ()),
+    "hltl.grounding._rewrites45s:_after_opening45s": (
+        "4624e31785c04eef",
+        ((), ("after", "following", "since"), True),
+        (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._rewrites45s:_and_pron45s": ("c9d3fef3907a4108", ((), (" and ",), False), ()),
+    "hltl.grounding._rewrites45s:_closer45s": (
+        "4f26f629b1d9f6e5",
+        ((), ("cheers", "please", "pls", "plz", "ta", "thanks", "thx", "ty"), True),
+        (
+            (
+                "_CLOSER45S",
+                ("pattern", "(?<=[a-z]) (?P<c>thx|thanks|ta|cheers|pls|plz|please|ty)\\s*$", 34),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites45s:_go_too45s": ("09a0cffa9e83c723", ((), (" go to ",), False), ()),
+    "hltl.grounding._rewrites45s:_left_it45s": (
+        "b1733536b97ad6d7",
+        ((), (" it ", " them "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites45s:_run_on45s": (
+        "9e6fed30bcfb730f",
+        ((), ("he", "it's", "its"), True),
+        (
+            (
+                "_RUN_ON45S",
+                (
+                    "pattern",
+                    "(?<=[a-z]) (?P<p>he|she|hes|shes|he's|she's|its|it's|they|theyre|they're|they've|theyve)(?= [a-z])",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites45s:_so_his45s": ("1d91a1f2ca28498c", ((), (" so ",), False), ()),
+    "hltl.grounding._rewrites45s:_state_so45s": ("8ccf72e33ffb7e23", ((), (" so ",), False), ()),
+    "hltl.grounding._rewrites45s:_take_to45s": ("7c64360492dce84d", ((), ("take",), False), ()),
+    "hltl.grounding._rewrites45s:_they_want45s": ("300c157eaa6844e1", ((), ("they",), False), ()),
+    "hltl.grounding._rewrites45s:_who_remark45s": ("a08d3e139959e095", ((), ("who",), False), ()),
     "hltl.grounding.normalise:_while_there36s": (
         "ce30883fd4e256c0",
         ((), ("while you",), True),
