@@ -15,8 +15,9 @@ from hltl.grounding.tree import Node, has_choice, tasks
 
 
 def _read_or44r(out: str, text: str, lexicon: Lexicon) -> str:
-    """``out`` when the grounder reads it, else ``text`` (each rule's last step)."""
-    return out if _reading(out, lexicon) is not None else text
+    """``out`` when it is a rewrite (not ``text`` again) the grounder reads, else ``text`` (each
+    rule's last step; ``text`` itself is not read again: a rule asked of it would ask again)."""
+    return out if out != text and _reading(out, lexicon) is not None else text
 
 
 def _read_without44r(out: str, text: str, x: str, lexicon: Lexicon) -> str:
