@@ -142,7 +142,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of session
 # 44; tuned on in session 45), blind44 (written in session 45 by another engineer and committed
 # alone, never opened by the engineers who change the grounder before its one measurement at the end
-# of session 45; tests do not assert it).
+# of session 45; tuned on in session 46).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
