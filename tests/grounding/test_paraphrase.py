@@ -260,6 +260,81 @@ KNOWN_MISSES = frozenset(
         "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
         "Not the crisps, Bob wants the bottle after basketry.",
         "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
+        # blind44 (tuned on in session 46): refusals left at its one measurement (docs/grounding.md)
+        "Khublei in advance, could the red mug go across to Carol, please?",
+        "Sorry to nag, only Person B is still hoping for the bottle, would you?",
+        "Pardon me for butting in, the bottle for Person A if it's not too much trouble.",
+        "Person B reckons the chips would set him right before the quickstep heats.",
+        "Person B's parched after cloud spotting all afternoon, he needs the cup.",
+        "Person A would give her eye teeth for that bottle right now.",
+        "Person A is starving after the molecatcher's visit, the chips would do her nicely.",
+        "Mia needs the barcode scanner to log the scrap dealer's load.",
+        "The ostler's boots keep catching the bottle; up on the shelf with it, would you.",
+        "Since the timpani rehearsal Person B keeps on about the cup; let him have it, for peace.",
+        "That apple was set aside for Person A at the swan upping; run it over to her.",
+        "Person B was after the bottle. Bring it him, please, he's back from the polka.",
+        "The bottle's Person A's. Hand it across to her, thanks.",
+        "Mr Lee's tablets are overdue by the clock on the wall; take them over to him.",
+        "Blue mug first, for Alice, as she's off bodging stools. After that the apple goes to Bob.",
+        "Bottle goes to Person A the apple to Person B no rush the pipe fitter's only just started",
+        "Lena first, she wants the white plate; the tongs can go on the worktop after.",
+        "Noah's short a glue stick. Zoe's short a ruler. Sort them both out, cheers.",
+        "Kofi wants the tin of screws Jess wants the small spanner both now please the "
+        "helmsman's boat won't fix itself",
+        "Bob's not particular about mugs, so your pick of the two for him.",
+        "Alice is taking both on her munro bagging walk, the bottle and the crisps, so pass them "
+        "to her.",
+        "Pick anything of the four on offer for Person B, no odds which, he's only killing time.",
+        "One apiece for the pair of them, the bottle to Person A and the chips to Person B, like "
+        "the milkmaid said.",
+        "Neither goes without: Person B's having the bottle and Person A the chips before the "
+        "knot tying class.",
+        "Person A's on her way to water divining, so hand her the bottle or the chips, "
+        "whichever's handier.",
+        "Person A will take any bottle going; as it happens there's just the one, so that one.",
+        "Priya wants a pen; black or red, up to you.",
+        "Tom can take any box except the big one, for the rag and bone man's odds and ends.",
+        "Mr Novak isn't fussy after his coin collecting fair, so either plate is fine for him.",
+        "Hand out a book per student, the red to Noah and the green one to Zoe, for their bug "
+        "hunting notes.",
+        "Lily wants one of her blocks, either will do.",
+        "Person A is taking all four items to her quillwork circle.",
+        "Person B wants the bottle and the cup, just those two.",
+        "Person A wants the one apple, the only one there is.",
+        "The two items there, both of them, go to Person A for the lift attendant's picnic.",
+        "For the titration Dana needs the pair of cups, green and white both.",
+        "Put the pair of books on the desk, Mrs Ortiz is reading aloud after break.",
+        "Ava's tower needs both blocks, so hand her the red and the green.",
+        "Carol's allergic to apples, so it's the crisps for her instead.",
+        "For Person A, anything going except the cup will do.",
+        "Person A isn't hungry for the apple; the chips instead.",
+        "Not the bottle for Person B, he wants chips.",
+        "Person A has given up chips for Lent, so the bottle only for her.",
+        "Nothing for anyone but Person A: bottle to her.",
+        "Person B isn't the one getting the bottle, it's Person A, she's got the long walk home.",
+        "Dana won't drink from the green cup, so take her the white one.",
+        "Mr Lee's tablets can wait till the doctor's round; for now just hand him the magazine.",
+        "Marco doesn't want the lemon; salt, please.",
+        "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
+        "The wipes don't belong on the play mat; pop them on the high chair.",
+        "Never mind the hammer where it is; it's the drill that wants to go on the workbench.",
+        "Give Alice the crisps, no, scratch the lot of that, it's Bob who wants the bottle.",
+        "Run the cup over to Person B, or rather the apple, the cup's cracked.",
+        "Chips to Person A. Then again, she's just eaten, so swap them for the bottle.",
+        "Over to Person B with the bottle, oh, what am I saying, it's Person A who gets it, "
+        "she's the only one here.",
+        "Bowl goes in the sink, correction, the tray, the sink's full of the hermit's crockery.",
+        "Mr Lee's to get the blue blanket, no, sorry, the grey one, blue's too thin.",
+        "crisps up on the shelf ta the pipe fitter keeps nicking them",
+        "notebook to priya thanks she has minutes to take",
+        "tin of screws on the workbench kofi wants to count them",
+        "The scannsr to Tom, he's got the barrow boy's pallets to do.",
+        "Do you reckon the cup could go across to Person A, seeing as her tarot reading's soon?",
+        "How about passing Person B the chips, seeing he's come all this way?",
+        "Could Dana have the spoon to stir the buffer?",
+        "Mrs Khan is in pain, so would you take her medication over to her?",
+        "Could Mr Novak have the blue plate, the white one's too plain for him?",
+        "Could you put the small spanner away in the locker when you're done?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -276,6 +351,13 @@ KNOWN_UNCLEAR = frozenset(
         "Pass it to her when you're done with that.",
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         # blind43 (tuned on in session 45)
+        # blind44 (tuned on in session 46)
+        "Take that one to her as well.",
+        "The bottle goes to the one who asked. The chips stay put.",
+        "Tom asked for a box. Bring him the one he used yesterday.",
+        "Person B asked for one of the cup or the apple at the footvolley match, I can't recall "
+        "which.",
+        "Not the big box for Tom, the one he asked for this morning.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -362,8 +444,10 @@ KNOWN_UNCLEAR = frozenset(
 # in KNOWN_MISSES and KNOWN_UNCLEAR; "blind43" written in session 44 by another engineer and
 # committed alone, reviewed by a second one, measured once at the end of session 44 (1 wrong,
 # refused since session 45), tuned on in session 45: asserted now, the rest in KNOWN_MISSES and
-# KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind44"})
+# KNOWN_UNCLEAR; "blind44" written in session 45 by another engineer and committed alone,
+# reviewed by a second one, measured once at the end of session 45 (1 wrong, read right since
+# session 46), tuned on in session 46: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind45"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -477,6 +561,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind43"].entries}) >= 3
     assert len(CORPORA["blind44"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind44"].entries}) >= 3
+    assert len(CORPORA["blind45"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind45"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -13,6 +13,22 @@ from hltl.grounding._rewrites42r import _WHO42R, _fits42r, _person42r, _thing42r
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, has_choice, tasks
 
+
+def _read_or44r(out: str, text: str, lexicon: Lexicon) -> str:
+    """``out`` when it is a rewrite (not ``text`` again) the grounder reads, else ``text`` (each
+    rule's last step; ``text`` itself is not read again: a rule asked of it would ask again)."""
+    return out if out != text and _reading(out, lexicon) is not None else text
+
+
+def _read_without44r(out: str, text: str, x: str, lexicon: Lexicon) -> str:
+    """``out`` when the grounder reads it and hands none of what ``x`` names over, else
+    ``text`` (the rules that leave X out)."""
+    node = _reading(out, lexicon)
+    if node is None or any(t.obj in _ids(x, lexicon) for t in tasks(node)):
+        return text
+    return out
+
+
 # -- corrections -----------------------------------------------------------------------------------
 
 # a cue that the request before is being taken back ("ooh wait", "no hang on", "correction",
@@ -134,7 +150,7 @@ def _reason_fix44r(text: str, lexicon: Lexicon) -> str:
         if len(pids) != 1 or not _agrees44r(next(iter(pids)), m["pro"], lexicon):
             return text  # "…, hers then": the request's one person
     out = f"{head}, no, {said}{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "…, no, you know what, hand it to Person A"; "sorry, I misspoke there, to Person A"
@@ -156,7 +172,7 @@ def _after_cue44r(text: str, lexicon: Lexicon) -> str:
     out = re.sub(r"\bi misspoke there\b", "I misspoke", out, flags=_F)
     if out == text.strip():
         return text
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "Crisps on the shelf, I mean the bottle, the crisps stay out."
@@ -182,10 +198,7 @@ def _stays_out44r(text: str, lexicon: Lexicon) -> str:
     if not re.search(r"\b(?:i mean|i meant|no|sorry|not|rather|instead|actually)\b", head, _F):
         return text
     out = f"{head}{m['end'] or '.'}"
-    node = _reading(out, lexicon)
-    if node is None or any(t.obj in _ids(x, lexicon) for t in tasks(node)):
-        return text
-    return out
+    return _read_without44r(out, text, x, lexicon)
 
 
 # -- negation and exclusion ------------------------------------------------------------------------
@@ -306,7 +319,7 @@ def _said_leave44r(text: str, lexicon: Lexicon) -> str:
     )
     rest = re.sub(r"^(\s*[,;:]\s*(?:he|she)) (?:just|only) wants ", r"\1 wants ", rest, flags=_F)
     out = f"{m['p']} doesn't want {x}{rest}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # a request's verb (a remark before a request has none)
@@ -347,10 +360,7 @@ def _skip_and44r(text: str, lexicon: Lexicon) -> str:
         if who is None or _person42r(who["w"], lexicon) != pid or named in (None, rest):
             return text
         out = _capital40r(named)
-    node = _reading(out, lexicon)
-    if node is None or any(t.obj in _ids(x, lexicon) for t in tasks(node)):
-        return text
-    return out
+    return _read_without44r(out, text, x, lexicon)
 
 
 # a remark before a request that says nothing is wanted or goes anywhere
@@ -463,10 +473,7 @@ def _leaving44r(text: str, lexicon: Lexicon) -> str:
     if x is None or _ids(x, lexicon) & _ids(m["head"], lexicon):
         return text
     out = f"{m['head']}, not {x}{m['end'] or '.'}"
-    node = _reading(out, lexicon)
-    if node is None or any(t.obj in _ids(x, lexicon) for t in tasks(node)):
-        return text
-    return out
+    return _read_without44r(out, text, x, lexicon)
 
 
 # "Any one thing apart from the bottle for Person B, he's off water after sheep shearing."
@@ -534,7 +541,7 @@ def _stay_rest44r(text: str, lexicon: Lexicon) -> str:
     if _ids(m["vp"], lexicon, "object") or _ids(m["vp"], lexicon, "human"):
         return text
     out = f"Everything except {' and '.join(w.lower() for w in said)} {m['vp']}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "I'm fine for water thanks, it's Person A who should have the bottle."
@@ -556,7 +563,7 @@ def _fine_for44r(text: str, lexicon: Lexicon) -> str:
     if _ids(said, lexicon) - _ids(said, lexicon, "object"):
         return text  # "I'm fine for water": a thing the speaker declines, no one and nowhere
     out = _capital40r(m["rest"])
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "…; Person B had one at the tea picker stall already."
@@ -612,7 +619,7 @@ def _only_allowed44r(text: str, lexicon: Lexicon) -> str:
     if re.match(r"^(?:her|his) ", m["x"], _F) and not _agrees44r(pid, m["x"].split()[0], lexicon):
         return text
     out = f"{m['verb'].capitalize()} {x} to {m['p']}{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 def _remark44r(words: str, lexicon: Lexicon) -> bool:
@@ -814,7 +821,7 @@ def _grab_first44r(text: str, lexicon: Lexicon) -> str:
     if len(objs) != _N44R[m["n"].lower()]:
         return text
     out = f"Give {m['p']} {', '.join(objs[:-1])} or {objs[-1]}, whichever{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "The chips are up for grabs between Person A and Person B, so you decide who gets them."
@@ -843,7 +850,7 @@ def _up_for_grabs44r(text: str, lexicon: Lexicon) -> str:
     if pid is None or qid is None or pid == qid or not _ids(m["x"], lexicon, "object"):
         return text
     out = f"{_capital40r(m['x'])} go to {m['p']} or {m['q']}, whichever{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "After a long day on the shuttering job Person B deserves the pair, so hand over both."
@@ -871,7 +878,7 @@ def _deserves44r(text: str, lexicon: Lexicon) -> str:
     ) != 2:
         return text
     out = f"Give {m['p']} {', '.join(objs[:-1])} and {objs[-1]}{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "Any one of them for Person A, bottle or crisps, doesn't matter."
@@ -895,7 +902,7 @@ def _any_of_them44r(text: str, lexicon: Lexicon) -> str:
     if x is None or y is None or _ids(x, lexicon) == _ids(y, lexicon):
         return text
     out = f"{_capital40r(x)} or {y} {m['to']} {m['p']}, whichever{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "Either of those to Person B, he'll take what he's given, but do it now."
@@ -923,7 +930,7 @@ def _either_those44r(text: str, lexicon: Lexicon) -> str:
     if not all(_agrees44r(pid, w, lexicon) for w in re.findall(_PRO44R, m["rest"], _F)):
         return text
     out = f"Either of the two things {m['to']} {m['p']}{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # -- counts ----------------------------------------------------------------------------------------
@@ -951,7 +958,7 @@ def _lone_going44r(text: str, lexicon: Lexicon) -> str:
     if x is None:
         return text
     out = f"{_capital40r(x)} goes to {m['p']}{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "Out of the four, give Person B three for the ice road run: bottle, cup and apple."
@@ -980,7 +987,7 @@ def _out_of44r(text: str, lexicon: Lexicon) -> str:
     names = [t for t in things if t is not None]
     out = f"{m['verb'].capitalize()} {m['p']} {', '.join(names[:-1])} and {names[-1]}"
     out += m["end"] or "."
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "Everything there is, which is two things, to Person B."
@@ -1000,7 +1007,7 @@ def _which_is_n44r(text: str, lexicon: Lexicon) -> str:
     if m is None or _N44R[m["n"].lower()] != len(lexicon.scene.objects):
         return text
     out = f"{_capital40r(m['all'])} {m['rest']}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # "A single packet of crisps is all Person A asked for before her shamisen lesson."
@@ -1025,7 +1032,7 @@ def _is_all44r(text: str, lexicon: Lexicon) -> str:
     if x is None:
         return text
     out = f"{m['p']} wants {x}{m['end'] or '.'}"
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # -- refusals that name their readings -------------------------------------------------------------

@@ -39,6 +39,18 @@ def _read_for(out: str, text: str, pid: str | None, lexicon: Lexicon) -> str:
     return out
 
 
+def _read_for_said(out: str, text: str, words: str, lexicon: Lexicon) -> str:
+    """``out`` when it reads handing things to one person, whom every he / she of ``words`` may
+    be (_agrees44); else ``text``."""
+    read = _reading(out, lexicon)
+    if read is None:
+        return text
+    given = _targets(read)
+    if len(given) != 1 or not all(_agrees44(p, words, lexicon) for p in given):
+        return text
+    return out
+
+
 def _fits_only45(pid: str, words: str, lexicon: Lexicon) -> bool:
     """Whether every he / him / she / her of ``words`` may be person ``pid`` (_agrees44), and,
     unless the scene says ``pid`` is of that sex, no one else of the scene is said to be."""
@@ -184,13 +196,7 @@ def _what_with45(text: str, lexicon: Lexicon) -> str:
     else:
         rest = text[m.end() :]
         out = rest[:1].upper() + rest[1:]
-    read = _reading(out, lexicon)
-    if read is None:
-        return text
-    given = _targets(read)
-    if len(given) != 1 or not all(_agrees44(p, words, lexicon) for p in given):
-        return text
-    return out
+    return _read_for_said(out, text, words, lexicon)
 
 
 # -- a remark of what someone not of the scene did to the person's things, closing the want ("Person
@@ -212,13 +218,7 @@ def _they_did45(text: str, lexicon: Lexicon) -> str:
     if m is None or _names(m[0], lexicon):
         return text
     out = text[: m.start()] + (m["end"].strip() or ".")
-    read = _reading(out, lexicon)
-    if read is None:
-        return text
-    given = _targets(read)
-    if len(given) != 1 or not all(_agrees44(p, m["pos"], lexicon) for p in given):
-        return text
-    return out
+    return _read_for_said(out, text, m["pos"], lexicon)
 
 
 # -- a remark of a mess 'all over' something, and things 'coming apart' ("There's clay all over the
@@ -268,13 +268,7 @@ def _before_him45(text: str, lexicon: Lexicon) -> str:
     if m is None or _names(m["head"], lexicon):
         return text
     out = text[: m.end("head")] + (m["end"].strip() or ".")
-    read = _reading(out, lexicon)
-    if read is None:
-        return text
-    given = _targets(read)
-    if len(given) != 1 or not all(_agrees44(p, m["pr"], lexicon) for p in given):
-        return text
-    return out
+    return _read_for_said(out, text, m["pr"], lexicon)
 
 
 # -- a trade said 'by trade' in a remark ("…, he's a cockler by trade and loves it"): what the
@@ -384,13 +378,7 @@ def _back_and45(text: str, lexicon: Lexicon) -> str:
     if m is None or _names(m["w"], lexicon):
         return text
     out = f"{text[: m.start()]}{m['pr']} {text[m.end() :]}"
-    read = _reading(out, lexicon)
-    if read is None:
-        return text
-    given = _targets(read)
-    if len(given) != 1 or not all(_agrees44(p, m["pr"], lexicon) for p in given):
-        return text
-    return out
+    return _read_for_said(out, text, m["pr"], lexicon)
 
 
 # -- a pronoun said before the thing it stands for, with 'I mean' ("Person B wants them, the chips

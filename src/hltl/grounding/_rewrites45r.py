@@ -7,14 +7,9 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
-from hltl.grounding._rewrites44r import _BACK44R, _agrees44r
+from hltl.grounding._rewrites44r import _BACK44R, _agrees44r, _read_or44r, _read_without44r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Group, Node, has_choice, tasks
-
-
-def _read_or45r(out: str, text: str, lexicon: Lexicon) -> str:
-    """``out`` when the grounder reads it, else ``text`` (the rule's own answer)."""
-    return out if out != text and _reading(out, lexicon) is not None else text
 
 
 def _one_each(node: Node | None) -> bool:
@@ -67,7 +62,7 @@ def _what_he_wanted45r(text: str, lexicon: Lexicon) -> str:
         or not _agrees44r(pid, m["pro"], lexicon)
     ):
         return text
-    return _read_or45r(f"{head}, {m['x']}{m['end'] or '.'}", text, lexicon)
+    return _read_or44r(f"{head}, {m['x']}{m['end'] or '.'}", text, lexicon)
 
 
 def _switch_to45r(text: str, lexicon: Lexicon) -> str:
@@ -87,7 +82,7 @@ def _switch_to45r(text: str, lexicon: Lexicon) -> str:
     if not re.search(_BACK44R, text.strip()[: m.start()], _F):
         return text
     out = f"{text.strip()[: m.start()]}make {m['it']} {m['p']}{m['end'] or '.'}"
-    return _read_or45r(out, text, lexicon)
+    return _read_or44r(out, text, lexicon)
 
 
 def _belongs_with45r(text: str, lexicon: Lexicon) -> str:
@@ -112,7 +107,7 @@ def _belongs_with45r(text: str, lexicon: Lexicon) -> str:
         return text  # another thing than the request's
     many = x == "they" or (x.startswith("the ") and x.endswith("s"))
     out = f"{head}{'they are' if many else 'it is'} for {m['p']}{m['end'] or '.'}"
-    return _read_or45r(out, text, lexicon)
+    return _read_or44r(out, text, lexicon)
 
 
 def _better_verb45r(text: str, lexicon: Lexicon) -> str:
@@ -127,7 +122,7 @@ def _better_verb45r(text: str, lexicon: Lexicon) -> str:
         text,
         flags=_F,
     )
-    return _read_or45r(out, text, lexicon)
+    return _read_or44r(out, text, lexicon)
 
 
 # "Bottle to Person A... hmm, or... no, I had it right the first time, Person A."
@@ -185,7 +180,7 @@ def _its_p_doing45r(text: str, lexicon: Lexicon) -> str:
     if any(_agrees44r(q, m["pro"], lexicon) for q in _ids(head, lexicon, "human")):
         return text  # 'her' may be the person corrected away from too
     out = f"{head}{m['cue']}{m['verb']} {m['it']} to {m['p']}{m['end'] or '.'}"
-    return _read_or45r(out, text, lexicon)
+    return _read_or44r(out, text, lexicon)
 
 
 # "Teddy for Ava, whoops, she's too big for it now, Lily's the one who wants the teddy."
@@ -217,7 +212,7 @@ def _one_who45r(text: str, lexicon: Lexicon) -> str:
     node = _reading(head, lexicon)
     if node is None or isinstance(node, Group) or len(list(tasks(node))) != 1:
         return text
-    return _read_or45r(f"{head}, no, {m['p']}{m['end'] or '.'}", text, lexicon)
+    return _read_or44r(f"{head}, no, {m['p']}{m['end'] or '.'}", text, lexicon)
 
 
 # "Give Mr Novak the salt, sorry, I meant the other plate."
@@ -363,7 +358,7 @@ def _go_whichever45r(text: str, lexicon: Lexicon) -> str:
     out = re.sub(
         r"^(?:go|do it|work it) (?=(?:whichever|any|either) way\b)", "", text.strip(), flags=_F
     )
-    return _read_or45r(out[:1].upper() + out[1:], text, lexicon)
+    return _read_or44r(out[:1].upper() + out[1:], text, lexicon)
 
 
 # "Whichever's nearer the arm, the bottle or the crisps, goes to Alice, …"
@@ -443,7 +438,7 @@ def _whats_wanted45r(text: str, lexicon: Lexicon) -> str:
         text,
         flags=_F,
     )
-    return _read_or45r(out, text, lexicon)
+    return _read_or44r(out, text, lexicon)
 
 
 # "…, she's the one brewing up after shoeing": a remark on the person who gets it
@@ -455,7 +450,7 @@ def _the_one45r(text: str, lexicon: Lexicon) -> str:
     "…, she's brewing up after shoeing" (read as a remark where that one is)."""
     if "the one" not in text.lower():
         return text
-    return _read_or45r(re.sub(_THE_ONE45R, r"\1's ", text, flags=_F), text, lexicon)
+    return _read_or44r(re.sub(_THE_ONE45R, r"\1's ", text, flags=_F), text, lexicon)
 
 
 # -- negation and exclusion ------------------------------------------------------------------------
@@ -467,7 +462,7 @@ def _no_not45r(text: str, lexicon: Lexicon) -> str:
     if not text.lower().startswith("no"):
         return text
     out = re.sub(r"^no(?:,? no)*\s*[,!.]\s*(?=not\b)", "", text.strip(), flags=_F)
-    return _read_or45r(out[:1].upper() + out[1:], text, lexicon)
+    return _read_or44r(out[:1].upper() + out[1:], text, lexicon)
 
 
 # "It isn't the bottle Person A's after, it's the chips, …"
@@ -493,7 +488,7 @@ def _isnt_its45r(text: str, lexicon: Lexicon) -> str:
     if not _ids(m["x"], lexicon, "object") or not _ids(y, lexicon, "object"):
         return text
     out = f"Not {m['x']}, {m['p']}{m['v']} {y}{m['rest'] or '.'}"
-    return _read_or45r(out, text, lexicon)
+    return _read_or44r(out, text, lexicon)
 
 
 def _which_itches45r(text: str, lexicon: Lexicon) -> str:
@@ -508,7 +503,7 @@ def _which_itches45r(text: str, lexicon: Lexicon) -> str:
         text,
         flags=_F,
     )
-    return _read_or45r(out, text, lexicon)
+    return _read_or44r(out, text, lexicon)
 
 
 def _leave_it45r(text: str, lexicon: Lexicon) -> str:
@@ -527,10 +522,7 @@ def _leave_it45r(text: str, lexicon: Lexicon) -> str:
     if re.search(_TAKE_BACK45R, text.strip()[: m.start()], _F):
         return text  # "X for P, I mean Y, leave Z": which request does it go with? (session 33)
     out = f"{text.strip()[: m.start('end')]} alone{m['end'] or '.'}"
-    node = _reading(out, lexicon)
-    if node is None or any(t.obj in _ids(m["x"], lexicon) for t in tasks(node)):
-        return text
-    return out
+    return _read_without44r(out, text, m["x"], lexicon)
 
 
 # the normaliser's rewrites run before the session-44 ones (wired into normalise._STEPS19)

@@ -1,7 +1,7 @@
 # ruff: noqa: E501
 """The patterns warm.warm_up compiles (made by python -m hltl.bench.warm_list)."""
-
 # from the tuning parts tuning, blind22, blind42, then ruff format
+
 PATTERNS: tuple[tuple[str, int, bool], ...] = (
     (" (?:by|next to|beside|near) ", 0, True),
     (" (?:give|hand|pass|bring) (?:her|him|them)\\b", 0, True),
@@ -138,6 +138,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "(?:\\s*,\\s*|\\s+)(?:and |but )?(?P<q>either|any) (?P<k>[a-z]+)(?: at all)? (?:will do|'ll do|would do|is fine|works),?\\s*so (?P<v>[a-z]+) (?P<pro>her|him) one\\b",
+        2,
+        True,
+    ),
+    (
         "(?:\\s*[,;.:-]\\s*|\\s+)(?:and |so )?(?:no ?one|no-one|nobody) else (?:(?:is to|should|may|can|must|gets to|is allowed to|is going to) (?:touch|have|get|take|use|go near)|wants|needs|is after|asked for|has asked for|'s asked for) (?:it|them|those|that|these)(?P<end>\\s*[.!]?)$",
         2,
         True,
@@ -257,6 +262,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("(?:after|since|following) ", 2, True),
     ("(?:and|or|plus|with|also|then)\\b", 0, True),
     ("(?:before that|first|first of all|but first)(?:,?\\s*though)?,?\\s+(.*)$", 2, True),
     ("(?:er|est)\\b", 2, True),
@@ -427,6 +433,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "(?P<cue>,\\s*no,\\s*)(?:straight|directly|right|just) (?=(?:to|over to|across to) )",
+        2,
+        True,
+    ),
+    (
+        "(?P<cue>[,;.]\\s*(?:no|sorry|oops|whoops|wait|hang on|correction)(?:\\s*,?\\s*(?:no|sorry|actually))*\\s*,\\s*)it(?:'s| is) (?P<p>[^,;.!?]+?) (?:who's |who is |that's )?[a-z]+ing\\b[^,;.!?]*,\\s*(?P<verb>give|hand|pass|bring|take|send) (?P<it>it|them) to (?P<pro>her|him)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -643,6 +654,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("([,;.!?:—–]\\s*|\\s+(?:and|but|while|whereas)\\s+)", 0, True),
     ("([,;:])\\s*([,;:.!?])", 0, True),
+    ("([,;]\\s*(?:she|he))(?:'s| is) the one (?:who's |who is |that's )?(?=[a-z]+ing\\b)", 2, True),
     ("([.!?])[.!?,;:]+", 0, True),
     ("([.!])\\s*(?:thanks|thank you|cheers|ta)\\s+([a-z]+)\\s*[.!]*\\s*$", 2, True),
     ("([.!])\\s*actually,? no,?\\s*(?=\\S)", 2, True),
@@ -655,8 +667,14 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("([a-z]+(?: [a-z]+)?)\\s*$", 2, True),
     (
         "(\\b(?:in|on|into|onto) the [a-z ]+?) for (?:washing|washing up|drying|cleaning|charging)\\s*([.!]?)\\s*$",
+        2,
+        True,
+    ),
+    (
+        "(\\b(?:no|actually|wait|sorry|hang on|correction|rather)\\s*,\\s*)(?:you'd |you had |probably |)(?:better|best) (?=(?:give|hand|pass|bring|take|put|place|send|pop|set)\\b)",
         2,
         True,
     ),
@@ -947,11 +965,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    (
-        "(^|,\\s*|\\band\\s+)won't you (?=(?:give|hand|pass|bring|take|send|put|place|move|leave|set|drop|deliver)\\b)",
-        2,
-        True,
-    ),
     ("(^|[.!]\\s*)(?:last|lastly)\\s*[:,]\\s*", 2, True),
     ("(^|[.!]\\s*)thereafter\\s*,\\s*", 2, True),
     ("(^|[.!]\\s+)(?:the )?([a-z ]+?) first,\\s*(the [a-z ]+?)([.!])", 2, True),
@@ -997,7 +1010,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    (",?\\s*\\b(?:in |on |at |onto |into )?(?:the )?same place\\b(?=\\s*(?:[,.;!?]|$))", 2, True),
     (
         ",?\\s*\\b(?:much appreciated|(?:i |really )*appreciate it|you'?re (?:a star|an angel|a gem|a lifesaver|the best))\\b",
         2,
@@ -1032,7 +1044,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     (",?\\s*\\bif you(?:'d| would| could)? (?:be )?(?:ever )?so (?:kind|good)\\b\\s*,?", 2, True),
     (",?\\s*\\bright now\\b,?", 2, True),
     (",?\\s*and that's your lot\\s*([.!]?)\\s*$", 2, True),
-    (",?\\s*by any chance\\s*(?=\\?)", 2, True),
     (
         ",?\\s*for (?P<place>table|bed|room|bay|seat|booth) (?:\\d+|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)(?P<end>\\s*[.!]?)$",
         2,
@@ -1060,7 +1071,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    (",?\\s+(?:rather than|instead of)\\s+(.+?)\\s*([.!]?)$", 2, True),
     (
         ",?\\s+bless (?:him|her|them|'?em)(?:,? the (?:poor )?(?:thing|dear|love|lamb))?(?=\\s*(?:[.!]|$))",
         2,
@@ -1241,7 +1251,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    (",\\s*either's (fine|ok|okay|good)\\b", 2, True),
     (",\\s*every (?:single |last )?one\\b", 2, True),
     (",\\s*hereinafter (?:called |referred to as )?['\\\"‘“](?P<name>[a-z ]+)['\\\"’”],", 2, True),
     (
@@ -1280,6 +1289,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     (",|\\band\\b", 2, True),
     ("[,;:.!?]", 0, True),
     ("[,;:.!?—–]\\s|\\s-\\s", 0, True),
+    ("[,;:.!?—–]| (?:and|but|so|while|after|before|since|for|because|as) ", 0, True),
     ("[,;:]", 0, True),
     ("[,;:]$", 0, True),
     ("[,;:—–]|\\s-\\s", 0, True),
@@ -1291,6 +1301,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("[.!?;]\\s+\\S", 0, True),
     ("[.!?]", 0, True),
     ("[.!?]\\s", 0, True),
+    ("[.;!?]\\s+", 0, True),
     ("[.;!?]\\s+\\S", 0, True),
     ("[.;:!?,]\\s|\\s(?:and|so|then|but)\\s", 0, True),
     ("[A-Za-z']+", 0, True),
@@ -1336,6 +1347,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "\\b((?:except|but|bar|not|apart from|other than) (?:the )?[a-z]+(?: one)?)\\s*,\\s*which (?=(?:is|makes|has|gives|was|'s)\\b)",
+        2,
+        True,
+    ),
+    (
         "\\b((?:gasping|dying|desperate|starving|parched|thirsty|famished|hungry)\\b[^.!?,;]*?)(\\s+after (?:that|all that|her|his|their) [a-z]+)(?=\\s*[.!]?\\s*$)",
         2,
         True,
@@ -1368,6 +1384,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "\\b((?:put|place|set|leave|stack|store|move)s? (?:the |a |an |it\\b|them\\b)[\\w ]*?)(?<! over)(?<! right)(?<! out)(?<! up)(?<! down)(?<! back)(?<! in) there\\b",
+        2,
+        True,
+    ),
+    (
+        "\\b((?:the )?[a-z]+(?: [a-z]+)? or (?:the )?[a-z]+(?: [a-z]+)?)\\s*,\\s*(?:just |only )?one of (?:them|the two|those|the pair) (?=(?:goes|go|should go|can go|is going|to)\\b)",
         2,
         True,
     ),
@@ -1424,6 +1445,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:and|or)\\b", 0, True),
     ("\\b(?:and|or|the|one)\\b", 0, True),
     ("\\b(?:and|then|and then|but)\\s*$", 2, True),
+    (
+        "\\b(?:any |just |only )?one of (?P<list>(?:the [a-z]+(?: [a-z]+)?, )*the [a-z]+(?: [a-z]+)? or the [a-z]+(?: [a-z]+)?)\\b",
+        2,
+        True,
+    ),
     ("\\b(?:a|an) ([a-z]+),\\s*(?:either|any) one\\s*,?", 2, True),
     (
         "\\b(?:a|an|one) (?P<kind>[a-z]+)\\b(?P<mid>(?:(?!\\b(?:not|but|except|bar|apart|other|save|besides|without|no|never)\\b)[^,;])*?)\\s*,\\s*(?:either )?the (?P<a>[a-z]+)(?: one)? or the (?P<b>[a-z]+)(?: one)?(?=\\s*(?:[,;.!]|$))",
@@ -1501,6 +1527,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:his|her|their)\\b", 2, True),
     ("\\b(?:his|her|their|all (?:day|morning|afternoon|evening|night|week))\\b", 2, True),
     (
+        "\\b(?:i meant|i mean|no|sorry|make (?:it|that))\\s*,?\\s*the other (?P<k>[a-z]+)\\s*[.!]?$",
+        2,
+        True,
+    ),
+    (
         "\\b(?:is it (?:okay|ok|alright|all right)|would it be (?:okay|ok|alright|possible)) if,\\s*(?:(?:sorry|um|er|erm),\\s*)*(?=(?:could|can|would|will) you\\b)",
         2,
         True,
@@ -1515,7 +1546,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:it|them)\\b", 2, True),
     ("\\b(?:kindly |please )?do the needful,?\\s+and\\s+", 2, True),
     ("\\b(?:many|big|huge) thanks\\b", 2, True),
-    ("\\b(?:middle|mid|sized?)\\b|-size", 2, True),
     (
         "\\b(?:might|could|may|can) ([A-Za-z][\\w ,'-]*?) be (?:conveyed|taken|brought|carried|delivered) to ([A-Za-z][\\w ]*?)(\\s*[.!?]|$)",
         2,
@@ -1534,6 +1564,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(?:not|never|no)\\b|n't\\b", 2, True),
+    ("\\b(?:not|never|no|it|them|want|wants|need|needs)\\b|n't", 2, True),
     (
         "\\b(?:no|nope|wait|hang on|hang about|hold on|hold up|scratch that|strike that|silly me|daft me|my mistake|my bad|what am i saying|correction|i tell a lie)\\b",
         2,
@@ -1564,6 +1595,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:straight |right )?into (?P<p>[a-z][\\w ]*?)'s hands\\b", 2, True),
     ("\\b(?:straight|right|directly|immediately) (after|afterwards)(?=\\s*(?:[,.;!?]|$))", 2, True),
     ("\\b(?:supply|furnish|provide|equip|present) ([A-Z][\\w ]*?) with\\b", 2, True),
+    (
+        "\\b(?:switch|swap|change|move|shift) (?P<it>it|that|them)(?: over| round)? to (?P<p>[^,;.!?]+?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
     (
         "\\b(?:thank you|thanks|ta|thx)(?:\\s+(?:ever|so|very|really|most|kindly))*\\s+(?:much|kindly)\\b",
         2,
@@ -1680,12 +1716,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b(?P<p>Person\\ A|Person\\ B) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ B|Person\\ A) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
     (
-        "\\b(?P<p>Person\\ A|Person\\ B|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ B|Person\\ A|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
@@ -1721,11 +1757,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "\\b(?P<said>(?:you know|you'll know) (?:the one|which one|which)(?: i mean| i'm on about| i want)?|the one (?:i mean|i'm on about|i'm thinking of)|the usual one)(?=\\s*[.!?,;]?\\s*$)",
-        2,
-        True,
-    ),
-    (
-        "\\b(?P<sorry>sorry),\\s+(?:an?\\s+)?(?:chef|kitchen|workshop|old|bad) habits?(?=\\s*[.!])",
         2,
         True,
     ),
@@ -1959,14 +1990,13 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(you mind) (?:awfully|terribly|very much|at all|too much)\\b", 2, True),
-    ("\\b(you),?\\s+by any chance,?\\s+(?=[a-z])(?=[^.!]*\\?)", 2, True),
     ("\\b[24] ", 0, True),
     ("\\b[a-z]+(?:-[a-z]+)+\\b", 2, True),
     ("\\b[a-z]{6,9}\\b", 2, True),
-    ("\\ba couple of (?:the )?(?=[a-z]+s\\b)", 2, True),
     ("\\ba couple of (?=(?:things|items|objects)\\b)", 2, True),
     ("\\ba couple of things\\s*,?\\s*namely\\s+(.+?)(?=\\s*[.!]?$)", 2, True),
     ("\\ba single (?=[a-z]+\\b)", 2, True),
+    ("\\bafter (?:his|her|the|a|an) \\w+", 0, True),
     ("\\ball (?:of )?(?:the )?([1-6]|two|three|four|five|six) (?=[a-z]+s\\b)", 2, True),
     (
         "\\ball (two|three|four|five|six) of the ([a-z]+s)((?:,\\s*[a-z]+)+,? and [a-z]+)?(?=,)",
@@ -2131,6 +2161,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\bpretty please(?: with (?:sugar|a cherry|cherries|bells) on(?: top)?)?\\b", 2, True),
     ("\\bprithee\\b", 2, True),
     ("\\brequires\\b", 2, True),
+    ("\\breturn\\b", 2, True),
     ("\\bshall (have|get|receive)\\b", 2, True),
     ("\\bshall be (given|handed|passed|brought|placed|put|taken)\\b", 2, True),
     ("\\bshould go to\\b", 2, True),
@@ -2354,6 +2385,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\s*,\\s*go on(?:,? then)?(?=\\s*[.!]?\\s*$)", 2, True),
+    (
+        "\\s*,\\s*it(?:'s| is| was) (?P<x>(?:the|that) [a-z]+(?: [a-z]+)?) (?:that |which )?(?P<pro>he|she) (?:wanted|wants|needs|needed|asked for|was after|is after|'s after|meant|really wanted|really wants)\\b[^,;.!?]*(?P<end>[.!]?)$",
+        2,
+        True,
+    ),
     ("\\s*,\\s*that's all (?:he|she|they) (?:needs?|wants?)(?=\\s*[.!]?\\s*$)", 2, True),
     (
         "\\s*[,;.:-]\\s*(?:(?:i'm|i am|we're|we are|she's|he's|they're|she is|he is|they are) )?(?:really )?not (?:fussed|bothered|picky|fussy|particular)(?: (?:which|either way|really))?(?P<end>\\s*[.!]?)$",
@@ -2366,6 +2402,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\s*[,;:]\\s*([.!?])", 0, True),
+    ("\\s*[,;:—-]\\s*(?:one|a [a-z]+|one [a-z]+) (?:apiece|each)(?P<end>\\s*[.!]?)$", 2, True),
+    (
+        "\\s*[,;]\\s*(?:(?:he|she|they) (?:doesn't|does not|don't|do not) (?:mind|care) which(?: one)?|(?:he|she|they)(?:'s| is|'re| are) not (?:bothered|fussed|fussy) which(?: one)?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
     (
         "\\s*[,;]\\s*(?:and )?(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:stays?|can stay|should stay|remains?|are staying|is staying)(?: (?:out|put|where (?:it is|they are)|here|there|behind|down|on the side))?(?P<end>\\s*[.!]?)$",
         2,
@@ -2383,6 +2425,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "\\s*[,;]\\s*(?:but |and )?(?P<x>the [a-z]+(?: [a-z]+)?)(?:'s| is)(?: not|n't) (?:for|meant for) (?P<who>her|him)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "\\s*[,;]\\s*(?P<pro>she|he) (?:just |only |really )?wants to [a-z]+(?: on| with)? (?:one|it)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -2455,7 +2502,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    ("\\s+this time(?: round| around)?(?=\\s*(?:[,.;!?]|$))", 2, True),
     ("\\s+with (?:his|her|their|my|your) [a-z]+(?= *(?:[.,;!?]|$))", 2, True),
     ("\\s{2,}", 0, True),
     ("\\w+(?:-\\w+)+", 0, True),
@@ -2757,6 +2803,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("^(?:go(?: go)*|let's go|off you go)$", 2, True),
+    ("^(?:go|do it|work it) (?=(?:whichever|any|either) way\\b)", 2, True),
     ("^(?:her|his|their)\\b", 2, True),
     ("^(?:he|she)(?:'s| is) to have\\b", 2, True),
     ("^(?:he|she)\\b", 2, True),
@@ -3009,11 +3056,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "^(?P<head>(?:please )?(?:split|share|divide) the [a-z ]+? between [A-Za-z][\\w ]*? and [A-Za-z][\\w ]*?)(?P<end>\\s*[.!]?)$",
-        2,
-        True,
-    ),
-    (
         "^(?P<head>(?:put|place|move|set|take|pop|stick) (?:the (?:whole )?lot|everything|all of it|all the things|all of them) (?:on|onto|in|into) the [a-z]+(?: [a-z]+)?)\\s*[,;]\\s*(?:only|but|just|though)\\s+leave (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?(?:(?:,| and| or| nor) (?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)*)(?: where (?:it is|they are)| alone| be| out| off it| as (?:it is|they are))(?P<end>\\s*[.!]?)$",
         2,
         True,
@@ -3040,6 +3082,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?P<head>.+?)\\s*(?:,\\s*)?(?P<lot>the (?:whole )?lot|everything|all of it|the pair|both)?\\s*,?\\s*(?:(?:all|the|every one of the) )?(?P<n>two|three|four|five|six|pair) of (?:them|the things|those)\\s*[:,;-]\\s*(?:namely |that is |meaning |i mean )?(?P<list>[a-z ,']+?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<head>.+?)\\s*(?:\\.\\.\\.|…|[,;.])\\s*(?:(?:hmm|um|erm|er|or|or maybe|maybe)\\s*(?:\\.\\.\\.|…|,)\\s*)*no\\s*,\\s*(?:i had it right|i was right|i got it right|i had it|it was right)(?: the first time| first time| before| all along)?(?:\\s*,\\s*(?P<again>[^,;.!?]+?))?\\s*[.!]?$",
         2,
         True,
     ),
@@ -3080,6 +3127,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?P<head>[A-Za-z][\\w ]*? (?:can|could|may|might) (?:take|have|grab|pick)) (?:whatever|whichever|any) (?P<kind>[a-z]+) (?:he|she|they) (?:likes?|wants?|fancies|fancy|prefers?)\\s*,?\\s*(?:so long as|as long as|provided|providing|just|only)(?: that)? (?:it(?:'s not| isn't| is not)|not) (?P<x>the [a-z]+(?: one)?)(?P<end>\\s*(?:[,;.!]|$))",
+        2,
+        True,
+    ),
+    (
+        "^(?P<head>[^,;.]+?)\\s*[,;.]\\s*(?P<cue>(?:whoops|oops|no|sorry|wait|hang on|correction|actually)(?:\\s*,?\\s*(?:no|sorry|actually|wait))*)\\s*,\\s*(?P<why>(?:[^,;.]+[,;]\\s*){0,2}?)(?P<p>[^,;.!?]+?)(?:'s| is) the one (?:who |that )?(?:wants|needs|is after|'s after|asked for|should have|should get|gets) (?P<x>it|them|the [a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -3169,11 +3221,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "^(?P<p>[A-Za-z][\\w ]*?) (?:may|can|could|gets to|is allowed to) play with (?P<x>(?:one of the|either of the|any of the|the|a|an|either) [a-z]+(?: [a-z]+)??)(?=\\s*(?:[,.!;]|$))",
-        2,
-        True,
-    ),
-    (
         "^(?P<p>[A-Za-z][\\w ]*?) (?P<v>needs|wants|is after|'s after) (?:some |a few |a couple of )?(?:supplies|things|bits|stuff|bits and pieces)(?P<why> for (?:her|his|their|the) [a-z' -]+?)?\\s*:\\s*(?=(?:both )?the )",
         2,
         True,
@@ -3232,6 +3279,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?P<what>(?:the|both|all|these|those) [^,;.!?]*?) out (?P<prep>on|onto|on to) (?P<s>the [a-z]+)(?P<s2> [a-z]+)?\\b",
+        2,
+        True,
+    ),
+    (
+        "^(?P<what>something|one thing|a thing|an item|one item|one) (?P<each>each|apiece) for the (?P<n>two|three) (?:[a-z]+ ){1,2}?(?:folk|folks|people|lot|crew|ones|pair|[a-z]+s)\\s*:\\s*",
         2,
         True,
     ),
@@ -3295,7 +3347,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    ("^([^,]+?),\\s*either (?=the )", 2, True),
     (
         "^([^:]+?) (?:takes|gets|wants|needs|should get|is getting|can have|receives) (one|two|three|four|five|six) (?:things?|items?|objects?)\\s*:\\s*(.+)$",
         2,
@@ -3353,11 +3404,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(either|any) ([a-z]+) (?:will do|would do|is fine|is okay|works) for ([A-Z]\\w*(?: [A-Z]\\w*)?)(\\s*[.!]?)$",
-        2,
-        True,
-    ),
-    (
-        "^(except(?: for)?|apart from|other than|besides|aside from)\\s+(?:the |all )?(two|three|four|five|six|both) ([a-z]+)\\b",
         2,
         True,
     ),
@@ -3478,6 +3524,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("^is (?:it )?possible (?:you|to|for you to) (?:just |please )*", 2, True),
     ("^is it (?:okay|ok|alright|all right|fine) if (?:you|the robot|we) (?:just )?", 2, True),
+    (
+        "^it (?:isn't|is not|'s not|s not|wasn't) (?P<x>(?:the|a|an) [a-z]+(?: [a-z]+)??) (?:that |which )?(?P<p>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)(?P<v>'s after|'s wanting| is after| wants| needs| asked for|'s asked for| has asked for)\\s*[,;]\\s*(?:it's|it is|it was|but) (?P<y>(?:the|a|an) [a-z]+(?: [a-z]+)?)(?P<rest>\\s*(?:[,;.!].*)?)$",
+        2,
+        True,
+    ),
     ("^it(?:'s| is) (Alice) (?:who|that) ", 2, True),
     ("^it(?:'s| is) (Bob) (?:who|that) ", 2, True),
     ("^it(?:'s| is) (Person\\ A) (?:who|that) ", 2, True),
@@ -3498,11 +3549,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "^leave (?:everything|it all|all of it|the lot)(?: else)?(?: (?:on|in) (?P<s>the [a-z]+(?: [a-z]+)?))? (?:where it is|as it is|be|alone)\\s*,?\\s*(?:except|but|apart from|bar|other than|except for|save) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)\\s*(?:,\\s*which|;\\s*(?:that|it)|:\\s*(?:that|it)|,\\s*(?:that|it)) (?P<v>goes|should go|needs to go|wants to go|can go|has to go|is to go) (?P<prep>in|on|into|onto) (?P<t>the [a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
-        2,
-        True,
-    ),
-    (
         "^leave (the [a-z ]+?) (?:where (?:it is|they are)|alone)\\s*,?\\s*(?:and\\s+)?(.+)$",
         2,
         True,
@@ -3514,6 +3560,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("^mind (?=[a-z]+ing\\b[^.!?]*\\?)", 2, True),
+    ("^no(?:,? no)*\\s*[,!.]\\s*(?=not\\b)", 2, True),
     ("^not (?:to|for|on|onto|in|into) ([^,;.!?]+?)\\s*,\\s*(.+)$", 2, True),
     ("^not (the [\\w ]+?),? (the [\\w ]+?)(,\\s*.*|\\s+(?:for|to|and)\\b.*|[.!]?)$", 2, True),
     ("^not (the \\w+ one|the [\\w ]+?)[.!]?$", 2, True),
@@ -3557,6 +3604,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^whichever(?:'s| is) (?P<how>[^,]+?)\\s*,\\s*(?P<choice>[^,]+? or [^,]+?)\\s*,\\s*(?P<rest>(?:goes|go|should go|is going|can go) (?:to|on|in|into|onto) [^,.;!]+?)(?P<tail>\\s*(?:[,;.!].*)?)$",
+        2,
+        True,
+    ),
+    (
         "^without (?P<x>(?:(?:the|that|this) [a-z]+ of [a-z]+|(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?))\\s*,?\\s*(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:can't|cannot|can not|couldn't|won't be able to|is unable to) (?:do|finish|start|get on with|manage|carry on with|continue|get through|begin|make|mend|fix)(?P<mid>(?: [a-z']+){0,5}?)(?P<tail>\\s*[.!]?)$",
         2,
         True,
@@ -3572,5 +3624,4 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("every|each", 2, True),
     ("got ", 2, True),
     ("head|bound|destined|earmarked", 0, True),
-    ("it|them", 2, True),
 )

@@ -546,6 +546,9 @@ from hltl.grounding._rewrites44s import _STEPS44S, _STEPS44S_FIRST
 from hltl.grounding._rewrites45 import _STEPS45, _STEPS45_FIRST
 from hltl.grounding._rewrites45r import _STEPS45R, _STEPS45R_FIRST
 from hltl.grounding._rewrites45s import _STEPS45S, _STEPS45S_FIRST
+from hltl.grounding._rewrites46 import _STEPS46, _STEPS46_FIRST
+from hltl.grounding._rewrites46r import _STEPS46R, _STEPS46R_FIRST
+from hltl.grounding._rewrites46s import _STEPS46S, _STEPS46S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -877,6 +880,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS46S_FIRST,
+    *_STEPS46R_FIRST,
+    *_STEPS46_FIRST,
     *_STEPS45S_FIRST,
     *_STEPS45R_FIRST,
     *_STEPS45_FIRST,
@@ -912,6 +918,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS46R,
     *_STEPS45R,
     *_STEPS44R,
     # session 43 (12r)
@@ -951,6 +958,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS46S,
     *_STEPS45S,
     *_STEPS44S,
     # session 43 (12s)
@@ -1037,6 +1045,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS46,
     *_STEPS45,
     *_STEPS44,
     # session 43 (12)

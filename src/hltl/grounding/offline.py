@@ -35,6 +35,10 @@ from hltl.grounding import (
     _rewrites45l,
     _rewrites45r,
     _rewrites45s,
+    _rewrites46,
+    _rewrites46l,
+    _rewrites46r,
+    _rewrites46s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -117,6 +121,9 @@ _REFUSALS = (
     *_rewrites45.REFUSE45,
     *_rewrites45r.REFUSE45R,
     *_rewrites45s.REFUSE45S,
+    *_rewrites46.REFUSE46,
+    *_rewrites46r.REFUSE46R,
+    *_rewrites46s.REFUSE46S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -139,6 +146,9 @@ _CHECKS = (
     *_rewrites45.CHECK45,
     *_rewrites45r.CHECK45R,
     *_rewrites45s.CHECK45S,
+    *_rewrites46.CHECK46,
+    *_rewrites46r.CHECK46R,
+    *_rewrites46s.CHECK46S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -643,6 +653,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _rewrites44l.held_beside44l(text, lexicon)
         text = _rewrites45l.other_person45l(text, lexicon)
         _rewrites45l.owner_either45l(text, lexicon)
+        text = _rewrites46l.particle_place46l(text)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
