@@ -50,7 +50,7 @@ def _gates() -> dict[str, tuple[_Pass, _Pass, Callable[[Item], bool]]]:
     out = {}
     for step in phrasing._PASSES:
         if hasattr(step, "__wrapped__") and _name(step) in _NEW:
-            needs = inspect.getclosurevars(step).nonlocals["needs"]
+            needs = step.__dict__.get("needs") or inspect.getclosurevars(step).nonlocals["needs"]
             out[_name(step)] = (step, step.__wrapped__, needs)  # type: ignore[attr-defined]
     return out
 

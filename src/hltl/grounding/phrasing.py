@@ -96,6 +96,53 @@ def _only_with(needs: Callable[[Item], bool], step: _Pass) -> _Pass:
     return gated
 
 
+# the lemmas (of items of every kind) and lower-cased texts of the last items, replaced as one
+# tuple as _SPLIT is: most passes leave the items as they are, so the sets of one refine serve
+# many gates in a row
+_PRESENT: tuple[tuple[Item, ...], frozenset[str], frozenset[str]] = ((), frozenset(), frozenset())
+
+
+def _present(items: list[Item]) -> tuple[frozenset[str], frozenset[str]]:
+    """The lemmas of ``items`` (of every kind: a superset of what ``_is`` asks) and their texts,
+    lower-cased."""
+    global _PRESENT
+    key = tuple(items)
+    last = _PRESENT
+    if last[0] == key:
+        return last[1], last[2]
+    lemmas = frozenset([it.lemma for it in items])
+    texts = frozenset([it.text.lower() for it in items])
+    _PRESENT = (key, lemmas, texts)
+    return lemmas, texts
+
+
+def _said(
+    step: _Pass,
+    lemmas: Sequence[str] | frozenset[str] = (),
+    texts: Sequence[str] | frozenset[str] = (),
+) -> _Pass:
+    """``step`` run only where an item has one of ``lemmas`` (as ``_is`` asks, or as the lemma
+    of an unknown word) or one of ``texts`` (lower-cased) (session 46, 12b): as _only_with, but
+    the gate is two set look-ups on what _present found, not a walk over the items. Every lemma
+    or text a pass needs before it can change the items or refuse must be in its gate
+    (``needs`` is the gate as an item test, for the tests)."""
+    want_lemmas = frozenset(lemmas)
+    want_texts = frozenset(texts)
+
+    def needs(it: Item) -> bool:
+        return it.lemma in want_lemmas or it.text.lower() in want_texts
+
+    @functools.wraps(step)
+    def gated(items: list[Item], lexicon: Lexicon) -> list[Item]:
+        found, words = _present(items)
+        if want_lemmas.isdisjoint(found) and want_texts.isdisjoint(words):
+            return items
+        return step(items, lexicon)
+
+    gated.__dict__["needs"] = needs
+    return gated
+
+
 # the last items split into sentences and their spans, replaced as one tuple (threads may ground
 # at once): the passes split the same items some fifteen times, and comparing a tuple of the same
 # items is cheaper than the split
@@ -6055,27 +6102,33 @@ def _nobody_needs45b(it: Item) -> bool:
     )
 
 
+def _saying46b(it: Item) -> bool:
+    """_said_after: an unknown word whose first word is one of saying ('she said …'); an unknown
+    item with an empty lemma is let through, as _said_after would fail on it."""
+    return it.kind == "unknown" and (not it.lemma.split() or it.lemma.split()[0] in _SAYING)
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_definite_ones35l),
     _plain(_two_names29),
-    _plain(_for_me_alone),
-    _only_with(lambda it: _is(it, "q:some"), _plain(_any_described)),
-    _only_with(lambda it: _is(it, *_MEASURES), _plain(_described_then_corrected)),
-    _only_with(lambda it: _is(it, "q:some", "either"), _plain(_choice_restated)),
-    _plain(_any_order),
-    _plain(_closing_also),
+    _said(_plain(_for_me_alone), texts=("for me", "for us")),
+    _said(_plain(_any_described), ("q:some",)),
+    _said(_plain(_described_then_corrected), _MEASURES),
+    _said(_plain(_choice_restated), ("q:some", "either")),
+    _said(_plain(_any_order), ("any_order",)),
+    _said(_plain(_closing_also), ("also", "whoever")),
     _people_named,
     _plain(_restated),
-    _only_with(lambda it: _is(it, "to", "for", "on"), _plain(_notes)),
+    _said(_plain(_notes), ("to", "for", "on")),
     _only_with(_is_surface, _plain(_surface_notes)),
-    _only_with(lambda it: _is(it, "between"), _plain(_in_between)),
-    _only_with(lambda it: _is(it, "last"), _plain(_last_opening)),
-    _only_with(lambda it: it.text.lower() in _PARTICIPLES, _plain(_wanted_done)),
-    _only_with(lambda it: _is(it, "on"), _wanted_on),
+    _said(_plain(_in_between), ("between",)),
+    _said(_plain(_last_opening), ("last",)),
+    _said(_plain(_wanted_done), texts=_PARTICIPLES),
+    _said(_wanted_on, ("on",)),
     _purpose,
     _only_with(_humans, _plain(_bare_notes)),  # a note needs two people
-    _plain(_floating_all),
-    _plain(_listed_subjects),
+    _said(_plain(_floating_all), texts=("all", "both")),
+    _said(_plain(_listed_subjects), ("verb:go", "verb:belong")),
     _plain(_ellipsis),
     _plain(_drop_onto),
     _plain(_telegraphic),
@@ -6083,50 +6136,50 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_let),
     _plain(_both_people),
     _only_with(_is_surface, _plain(_sources)),
-    _only_with(lambda it: _is(it, "then"), _plain(_then_inside)),
-    _plain(_do_whose),
-    _only_with(lambda it: it.lemma in _WISHED, _plain(_wished_for)),
+    _said(_plain(_then_inside), ("then",)),
+    _said(_plain(_do_whose), ("do",)),
+    _said(_plain(_wished_for), _WISHED),
     _preambles,
-    _plain(_hedges),
+    _said(_plain(_hedges), ("hedge",)),
     _plain(_infinitives),
     _plain(_is_after),
     _plain(_asked_for),
     _plain(_questions),
-    _plain(_do_for),
+    _said(_plain(_do_for), ("do",)),
     _plain(_after_all),
-    _only_with(lambda it: _is(it, "nearest", "farthest"), _plain(_superlatives)),
-    _places_named,
+    _said(_plain(_superlatives), ("nearest", "farthest")),
+    _said(_places_named, ("near", "nearest", "farthest")),
     _only_with(_rest_needs45b, _rest),
-    _only_with(lambda it: _is(it, "whatever"), _whatever_near),
-    _only_with(lambda it: _is(it, "q:some"), _plain(_any_restated)),
-    _whichever_nearer,
+    _said(_whatever_near, ("whatever",)),
+    _said(_plain(_any_restated), ("q:some",)),
+    _said(_whichever_nearer, ("nearest", "farthest")),
     _plain(_whichever),
-    _relatives,
+    _said(_relatives, texts=("that", "which")),
     _one_anaphora,
-    _only_with(lambda it: _is(it, ","), _plain(_appositions)),  # narrowed after a comma
+    _said(_plain(_appositions), (",",)),  # narrowed after a comma
     _plain(_demonstratives),
     _one_each_of,
     _quantifiers,
-    _plain(_never_mind),
-    _plain(_i_mean_after),
+    _said(_plain(_never_mind), ("cancel",)),
+    _said(_plain(_i_mean_after), texts=("i mean", "i meant")),
     _plain(_swaps),
     _corrections_named,
-    _only_with(_nobody_needs45b, _plain(_nobody)),
-    _plain(_instead_of),
+    _said(_plain(_nobody), ("nobody", "no-one"), ("anything", "nothing", "not", "no")),
+    _said(_plain(_instead_of), ("instead_of",)),
     _exclusions,
-    _plain(_respectively),
+    _said(_plain(_respectively), ("respectively",)),
     _plain(_so_after_remark),
-    _plain(_said_after),
+    _only_with(_saying46b, _plain(_said_after)),
     _speaker,
     _persons,
-    _plain(_has_taken),
-    _plain(_not_wanted),
-    _plain(_not_after),
-    _plain(_each_nearest),
+    _said(_plain(_has_taken), texts=("taken", "took")),
+    _said(_plain(_not_wanted), ("not",)),
+    _said(_plain(_not_after), ("not",)),
+    _said(_plain(_each_nearest), ("nearest", "farthest")),
     _places,
     _plain(_there),
     _remarks,
-    _plain(_ordinals),
-    _plain(_last),
-    _plain(_datives),
+    _said(_plain(_ordinals), texts=tuple(_RANKS)),
+    _said(_plain(_last), ("last",)),
+    _said(_plain(_datives), (":", "-")),
 )
