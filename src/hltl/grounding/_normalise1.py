@@ -5548,12 +5548,17 @@ def _scene_words(scene: Scene) -> frozenset[str]:
     return frozenset(w for n in names for w in re.split(r"[\s_]+", n.lower()) if w)
 
 
+@functools.cache
+def _verbs_of_length(n: int) -> tuple[str, ...]:
+    """The verbs of one word whose length is ``n - 1`` to ``n + 1``: those _near_verb compares a
+    word of ``n`` letters with (session 46, 12p: it had compared every verb)."""
+    return tuple(v for v in VERBS if abs(len(v) - n) <= 1 and " " not in v)
+
+
 @functools.lru_cache(maxsize=4096)
 def _near_verb(word: str) -> bool:
     """Whether ``word`` is one edit from a verb the grammar reads ('hnad' for 'hand')."""
-    for verb in VERBS:
-        if abs(len(verb) - len(word)) > 1 or " " in verb:
-            continue
+    for verb in _verbs_of_length(len(word)):
         if len(verb) == len(word):
             diff = [k for k in range(len(word)) if verb[k] != word[k]]
             if len(diff) == 1 or (

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import unicodedata
 from collections.abc import Callable
 
@@ -337,8 +338,10 @@ _TYPING_FROM29 = re.compile(
 )
 
 
+@functools.lru_cache(maxsize=64)
 def _scene_words29(lexicon: Lexicon) -> frozenset[str]:
-    """Every word of the scene's ids, names, categories and aliases ('red' of 'red mug')."""
+    """Every word of the scene's ids, names, categories and aliases ('red' of 'red mug'; once per
+    lexicon, session 46, 12p: it was built again for every remark read)."""
     scene = lexicon.scene
     names = [
         *(n for o in scene.objects for n in (o.id, o.category, *o.aliases)),
@@ -5272,6 +5275,8 @@ def _remark29(words: str, lexicon: Lexicon, opener: str) -> bool:
     embroidery' after it) that asks nothing; never a part joined with 'and', 'plus', 'with'."""
     low = words.strip().lower()
     opens = bool(opener) and low.startswith(opener)
+    if not opens and not _STATEMENT29.search(words):
+        return False  # what the last line asks, asked first (session 46, 12p: it is cheap)
     rest = low[len(opener) :] if opens else low
     if (
         re.match(r"(?:and|or|plus|with|also|then)\b", low)

@@ -85,7 +85,10 @@ _NORMALISE1 = "hltl.grounding._normalise1"
 _SUB = (_NORMALISE1, "_sub")
 _RX = (_NORMALISE1, "_rx")
 _SAID_ANY = (_NORMALISE1, "_said_any")
+_DROP = (_NORMALISE1, "_drop")  # _sub of the pattern with a replacement of each match
 _SEARCHES = ("search", "match", "fullmatch")
+_ITERATIONS = ("finditer", "findall")  # an empty iteration where the pattern finds nothing
+_BUILTIN_WRAPS = ("reversed", "list", "tuple")  # the same items, or none where there are none
 
 
 class _Unread(Exception):
@@ -216,14 +219,14 @@ class _Reader:
             return tuple(self._str(e) for e in node.elts)
         raise _Unread("words")
 
-    def _search(self, node: ast.expr) -> frozenset[Atom]:
+    def _search(self, node: ast.expr, kinds: tuple[str, ...] = _SEARCHES) -> frozenset[Atom]:
         """The atom of a search of the text (``re.search(P, text, F)``, ``re.match``,
-        ``_rx(P).search(text)``, a module's compiled pattern's ``.search(text)``), whose every
-        match holds a word of its pattern."""
+        ``_rx(P).search(text)``, a module's compiled pattern's ``.search(text)``; ``kinds``: the
+        methods taken), whose every match holds a word of its pattern."""
         if not isinstance(node, ast.Call) or not isinstance(node.func, ast.Attribute):
             raise _Unread("not a search")
         func, args, kw = node.func, node.args, {k.arg: k.value for k in node.keywords}
-        if func.attr not in _SEARCHES:
+        if func.attr not in kinds:
             raise _Unread("not a search")
         if self._re_module(func.value):  # re.search(P, text[, flags])
             if len(args) < 2 or not self._is_text(args[1], stripped=True) or set(kw) - {"flags"}:
@@ -338,6 +341,12 @@ class _Reader:
             if len(args) != 3 or kw or not self._is_text(args[2]):
                 raise _Unread("_sub args")
             return ("re", self._str(args[0]), int(re.IGNORECASE))
+        if self._helper(node.func, _DROP):  # _drop(P, text, lexicon[, R]): _sub(P, …, text)
+            if not 3 <= len(args) <= 4 or kw or not self._is_text(args[1]):
+                raise _Unread("_drop args")
+            if not all(isinstance(a, ast.Name | ast.Constant) for a in args[2:]):
+                raise _Unread("_drop args")
+            return ("re", self._str(args[0]), int(re.IGNORECASE))
         func = node.func
         if (
             isinstance(func, ast.Attribute)
@@ -349,6 +358,94 @@ class _Reader:
         ):
             return ("re", self._str(args[0]), self._flags(kw.get("flags")))
         raise _Unread("not a sub")
+
+    def _iteration(self, node: ast.expr) -> frozenset[Atom]:
+        """The atoms of ``finditer``/``findall`` of the text, in ``reversed(…)``, ``list(…)``,
+        ``tuple(…)`` or ``…[::-1]`` or not: items only where the pattern finds something."""
+        while True:
+            if (
+                isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Name)
+                and node.func.id in _BUILTIN_WRAPS
+                and node.func.id not in self.glob
+                and len(node.args) == 1
+                and not node.keywords
+            ):
+                node = node.args[0]
+                continue
+            if (
+                isinstance(node, ast.Subscript)
+                and isinstance(node.slice, ast.Slice)
+                and node.slice.lower is None
+                and node.slice.upper is None
+                and isinstance(node.slice.step, ast.UnaryOp)
+                and isinstance(node.slice.step.op, ast.USub)
+                and isinstance(node.slice.step.operand, ast.Constant)
+                and node.slice.step.operand.value == 1
+            ):
+                node = node.value
+                continue
+            return self._search(node, _ITERATIONS)
+
+    def _patterns(self, name: str) -> tuple[str, ...]:
+        """The patterns of a module's tuple of patterns or of (pattern, replacement) pairs (kept
+        with the guard: the patterns only, a replacement may be a function)."""
+        value = self.glob.get(name)
+        if not isinstance(value, tuple) or not value:
+            raise _Unread(name)
+        heads = [v[0] if isinstance(v, tuple) and len(v) == 2 else v for v in value]
+        if not all(type(h) is str for h in heads):
+            raise _Unread(name)
+        shape = "pairs" if isinstance(value[0], tuple) else "strings"
+        if any(isinstance(v, tuple) != (shape == "pairs") for v in value):
+            raise _Unread(name)
+        out = tuple(str(h) for h in heads)
+        self.deps[name] = ("patterns", shape, out)
+        return out
+
+    def _loop(self, stmt: ast.For) -> frozenset[Atom]:
+        """The atoms of a loop: over a search's matches, or ``for P, R in <module pairs>: text =
+        _sub(P, R, text)`` (``_drop``; a tuple of patterns: ``for P in …``)."""
+        try:
+            return self._iteration(stmt.iter)
+        except _Unread:
+            pass
+        if not isinstance(stmt.iter, ast.Name) or len(stmt.body) != 1:
+            raise _Unread("loop")
+        target, body = stmt.target, stmt.body[0]
+        names = [target] if isinstance(target, ast.Name) else getattr(target, "elts", [])
+        if not names or not all(isinstance(n, ast.Name) for n in names):
+            raise _Unread("loop target")
+        pattern = names[0].id
+        if len(names) > 2 or pattern in (self.text, *self.lowers, *self.matches):
+            raise _Unread("loop target")
+        if (
+            not isinstance(body, ast.Assign)
+            or len(body.targets) != 1
+            or not self._is_text(body.targets[0])
+            or not isinstance(body.value, ast.Call)
+        ):
+            raise _Unread("loop body")
+        patterns = self._patterns(stmt.iter.id)
+        shape = self.deps[stmt.iter.id][1]
+        if (shape == "pairs") != (len(names) == 2) or not isinstance(target, ast.Tuple | ast.Name):
+            raise _Unread("loop shape")
+        first = body.value.args[0] if body.value.args else None
+        if not isinstance(first, ast.Name) or first.id != pattern:
+            raise _Unread("loop body")
+        # the body read as a substitution of one pattern (its first argument the loop's name,
+        # kept out of the module names), then said of each pattern of the tuple
+        marker = "\x00loop pattern\x00"
+        saved = self.glob
+        self.glob = {**saved, pattern: marker}
+        try:
+            kind, said, flags = self._sub(body.value)
+        finally:
+            self.glob = saved
+        self.deps.pop(pattern, None)
+        if kind != "re" or said != marker:
+            raise _Unread("loop body")
+        return frozenset(("re", p, flags) for p in patterns)
 
     def read(self) -> frozenset[Atom]:
         """The guard's atoms, read from the step's first statements."""
@@ -391,6 +488,11 @@ class _Reader:
                 and self._is_text(stmt.body[0].value)
             ):
                 return frozenset(atoms | self.absent(stmt.test))
+            if isinstance(stmt, ast.For) and not stmt.orelse:
+                # a loop that runs only on a match (its body may do anything), or one over a
+                # module's patterns each substituted in the text: nothing without their words
+                atoms |= self._loop(stmt)
+                continue
             if isinstance(stmt, ast.Return) and stmt.value is not None:
                 if self._is_text(stmt.value) and atoms:
                     return frozenset(atoms)
@@ -475,6 +577,18 @@ def _holds(fn: Callable[..., Any], deps: tuple[Dep, ...]) -> bool:
                 return False
         elif kind == "module":
             if getattr(value, "__name__", None) != was[1]:
+                return False
+        elif kind == "patterns":
+            if not isinstance(value, tuple) or not value:
+                return False
+            pairs = was[1] == "pairs"
+            if (
+                any(not isinstance(v, tuple) or len(v) != 2 for v in value)
+                if pairs
+                else any(not isinstance(v, str) for v in value)
+            ):
+                return False
+            if tuple(v[0] if pairs else v for v in value) != was[2]:
                 return False
         else:
             return False
