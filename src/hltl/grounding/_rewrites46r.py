@@ -46,29 +46,30 @@ def _fix_why46r(text: str, lexicon: Lexicon) -> str:
         for o in lexicon.scene.objects
         if o.id in away and _ids(f"the {subj} {o.category}", lexicon) == {o.id}
     }
-    if len(said) != 1 or not said <= away:
+    # the subject is what was corrected away ("the mug" of two mugs: the one said before), and
+    # nothing the corrected request hands over or places on
+    if not said & away or said & used or said & _ids(head, lexicon, "human"):
         return text
     return _read_or44r(f"{head}{m['end'] or '.'}", text, lexicon)
 
 
 # "Give Alice the crisps, no, scratch the lot of that, it's Bob who wants the bottle."
 _SCRATCH_LOT46R = re.compiled(
-    r"\b(?P<v>scratch|forget|cancel|ignore|scrap|strike) (?:the lot of that|the lot|all (?:of )?"
-    r"that|all (?:of )?what i (?:just )?said|everything i (?:just )?said)(?=\s*[,;])",
+    r"\bscratch (?:the lot of that|the lot|all (?:of )?that|all (?:of )?what i (?:just )?said|"
+    r"everything i (?:just )?said)(?=\s*[,;])",
     _F,
 )
 
 
 def _scratch_lot46r(text: str, lexicon: Lexicon) -> str:
-    """Session 46 (12r): "scratch the lot of that" ("forget all that", "scratch everything I just
-    said") after a cue that takes the request back is "scratch that"."""
-    low = text.lower()
-    if not any(w in low for w in ("lot", "all", "everything")):
+    """Session 46 (12r): "scratch the lot of that" ("scratch all that", "scratch everything I
+    just said") after a cue that takes the request back is "scratch that"."""
+    if "scratch" not in text.lower():
         return text
     m = _SCRATCH_LOT46R.search(text)
-    if m is None or not re.search(rf"[,;.]\s*{_CUE44R}\s*[,;]?\s*$", text[: m.start()], _F):
+    if m is None or not re.search(rf"[,;.]\s*(?:{_CUE44R}\s*,?\s*)+$", text[: m.start()], _F):
         return text
-    return _read_or44r(f"{text[: m.start()]}{m['v']} that{text[m.end() :]}", text, lexicon)
+    return _read_or44r(f"{text[: m.start()]}scratch that{text[m.end() :]}", text, lexicon)
 
 
 # -- whichever, any of, one of, both, each ---------------------------------------------------------
