@@ -281,25 +281,8 @@ KNOWN_MISSES = frozenset(
         "Noah's short a glue stick. Zoe's short a ruler. Sort them both out, cheers.",
         "Kofi wants the tin of screws Jess wants the small spanner both now please the "
         "helmsman's boat won't fix itself",
-        "Bob's not particular about mugs, so your pick of the two for him.",
-        "Alice is taking both on her munro bagging walk, the bottle and the crisps, so pass them "
-        "to her.",
-        "Pick anything of the four on offer for Person B, no odds which, he's only killing time.",
-        "One apiece for the pair of them, the bottle to Person A and the chips to Person B, like "
-        "the milkmaid said.",
-        "Neither goes without: Person B's having the bottle and Person A the chips before the "
-        "knot tying class.",
         "Person A's on her way to water divining, so hand her the bottle or the chips, "
         "whichever's handier.",
-        "Person A will take any bottle going; as it happens there's just the one, so that one.",
-        "Priya wants a pen; black or red, up to you.",
-        "Tom can take any box except the big one, for the rag and bone man's odds and ends.",
-        "Mr Novak isn't fussy after his coin collecting fair, so either plate is fine for him.",
-        "Hand out a book per student, the red to Noah and the green one to Zoe, for their bug "
-        "hunting notes.",
-        "Person A is taking all four items to her quillwork circle.",
-        "Put the pair of books on the desk, Mrs Ortiz is reading aloud after break.",
-        "Ava's tower needs both blocks, so hand her the red and the green.",
         "Carol's allergic to apples, so it's the crisps for her instead.",
         "For Person A, anything going except the cup will do.",
         "Person A isn't hungry for the apple; the chips instead.",
@@ -313,7 +296,6 @@ KNOWN_MISSES = frozenset(
         "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
         "The wipes don't belong on the play mat; pop them on the high chair.",
         "Never mind the hammer where it is; it's the drill that wants to go on the workbench.",
-        "Chips to Person A. Then again, she's just eaten, so swap them for the bottle.",
         "Over to Person B with the bottle, oh, what am I saying, it's Person A who gets it, "
         "she's the only one here.",
         "crisps up on the shelf ta the pipe fitter keeps nicking them",

@@ -161,11 +161,6 @@ test_and_both = CASES.test(
 )
 
 
-def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Each case that reads is read by these rules: refused without them."""
-    CASES.refused_without((*_rewrites46r._STEPS46R_FIRST, *_rewrites46r._STEPS46R), monkeypatch)
-
-
 # -- refusals that name their readings -----------------------------------------------------------
 
 UNCLEAR: list[tuple[str, Scene, tuple[str, ...]]] = [
@@ -204,3 +199,254 @@ def test_refusals_are_these(monkeypatch: pytest.MonkeyPatch) -> None:
             parse_instruction(text, scene)
         except GroundingError as refused:
             assert not all(r in str(refused) for r in readings), text
+
+
+# -- a second batch --------------------------------------------------------------------------------
+
+test_taking = CASES.test(
+    # _taking46r: "P is taking all four items to her quillwork circle"; "P is taking both (on
+    # his fishing trip), the X and the Y, so pass them to him"
+    (
+        "Person B is taking all four things to his allotment.",
+        "bottle>B & chips>B & cup>B & apple>B",
+        SQ,
+    ),
+    (
+        "Bob is taking both on his fishing trip, the cup and the apple, so pass them to him.",
+        "cup>B & apple>B",
+        CELL,
+    ),
+    (
+        "Priya's taking both to her book club, the stapler and the notebook, so hand them over to "
+        "her.",
+        "stapler>A & notebook>A",
+        OFFICE,
+    ),
+    # three things for 'both'; another person's place
+    (
+        "Bob is taking both on his fishing trip, the cup, the apple and the chips, so pass them to "
+        "him.",
+        None,
+        CELL,
+    ),
+    ("Mia is taking the tape to Tom's allotment.", None, DEPOT),
+)
+
+test_thing_needs = CASES.test(
+    # _thing_needs46r: "Ava's tower needs both blocks, so hand her …"
+    (
+        "Noah's project needs both books, so hand him the red and the green.",
+        "book_red>B & book_green>B",
+        CLASSROOM,
+    ),
+    (
+        "Dana's titration needs both cups, so give her the green and the white.",
+        "cup_green>A & cup_white>A",
+        LAB,
+    ),
+    (
+        "Mr Lee's bed needs both blankets, so pass him the blue and the grey.",
+        "blanket_blue>B & blanket_grey>B",
+        WARD,
+    ),
+    # the thing is one of the scene's; the pronoun is not Noah
+    ("Ava's teddy needs both blocks, so hand her the red and the green.", None, NURSERY),
+    ("Noah's project needs both books, so hand her the red and the green.", None, CLASSROOM),
+)
+
+test_not_fussy = CASES.test(
+    # _not_fussy46r: "P isn't fussy (about K, after his fair), so either K is fine for him"
+    (
+        "Kofi isn't fussy about spanners, so your pick of the two for him.",
+        "spanner_small>A | spanner_large>A",
+        WORKSHOP,
+    ),
+    (
+        "Mrs Khan isn't fussy after her physio, so either blanket is fine for her.",
+        "blanket_blue>C | blanket_grey>C",
+        WARD,
+    ),
+    (
+        "Dana's not picky about cups, so either cup will do for her.",
+        "cup_green>A | cup_white>A",
+        LAB,
+    ),
+    (
+        "Carol isn't fussy after her swim, so either mug is fine for her.",
+        "mug_red>C | mug_blue>C",
+        CELL,
+    ),
+    # 'her' is not Mr Lee; three pens are not 'the two'
+    ("Mr Lee isn't fussy about blankets, so your pick of the two for her.", None, WARD),
+    ("Sam isn't fussy about pens, so your pick of the two for him.", None, OFFICE),
+)
+
+test_a_k_or = CASES.test(
+    # _a_k_or46r: "P wants a pen; black or red, up to you"
+    ("Mr Lee wants a blanket; blue or grey, up to you.", "blanket_blue>B | blanket_grey>B", WARD),
+    (
+        "Kofi needs a spanner: small or large, your call.",
+        "spanner_small>A | spanner_large>A",
+        WORKSHOP,
+    ),
+    ("Lily would like a block; red or green.", "block_red>A | block_green>A", NURSERY),
+    # no green pen
+    ("Priya wants a pen; black or green, up to you.", None, OFFICE),
+)
+
+test_for_whose = CASES.test(
+    # _for_whose46r: "…, for the rag and bone man's odds and ends"
+    ("Give Mia the tape, for the bed and breakfast's parcels.", "tape>A", DEPOT),
+    ("Marco wants the lemon, for the fish and chip shop's batter.", "lemon>A", KITCHEN),
+    # the words name people of the scene
+    ("Give Mia the tape, for the driver and supervisor's van.", None, DEPOT),
+)
+
+test_placed_remark = CASES.test(
+    # _placed_remark46r: "Put X on S, P is <doing> …" after a placing
+    ("Put the globe on the shelf, Noah is reading quietly after lunch.", "globe@shelf", CLASSROOM),
+    (
+        "Put the plates on the rack, Lena is laying up after service.",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    ("Put the tape on the pallet, Tom is loading up after lunch.", "tape@pallet", DEPOT),
+    # the remark names a thing of the scene
+    ("Put the tape on the pallet, Tom is loading the gloves.", None, DEPOT),
+)
+
+test_per_head = CASES.test(
+    # _per_head46r: "Hand out a K per student, the A to P and the B one to Q"
+    (
+        "Hand out a blanket per patient, the blue to Mr Lee and the grey one to Mrs Khan.",
+        "blanket_blue>B & blanket_grey>C",
+        WARD,
+    ),
+    (
+        "Give out a block each, the red to Lily and the green one to Ava.",
+        "block_red>A & block_green>C",
+        NURSERY,
+    ),
+    (
+        "Dish out a plate apiece, the white to Marco and the blue one to Lena.",
+        "plate_white>A & plate_blue>B",
+        KITCHEN,
+    ),
+    # one person twice
+    (
+        "Hand out a blanket per patient, the blue to Mr Lee and the grey one to Mr Lee.",
+        None,
+        WARD,
+    ),
+)
+
+test_apiece_first = CASES.test(
+    # _apiece_first46r: "One apiece for the pair of them, <list>, like the milkmaid said"
+    (
+        "One each for the two of them, the tape to Mia and the gloves to Tom, as the foreman said.",
+        "tape>A & gloves>B",
+        DEPOT,
+    ),
+    (
+        "Something apiece for both of them, the salt to Marco and the knife to Lena.",
+        "salt>A & knife>B",
+        KITCHEN,
+    ),
+    (
+        "One apiece for the pair of them, the drill to Kofi and the torch to Jess, like the boss "
+        "asked.",
+        "drill>A & torch>B",
+        WORKSHOP,
+    ),
+    # not one each; who said it is of the scene
+    ("One apiece for the pair of them, the drill and the torch to Kofi.", None, WORKSHOP),
+    (
+        "One apiece for the pair of them, the drill to Kofi and the torch to Jess, like Jess said.",
+        None,
+        WORKSHOP,
+    ),
+)
+
+test_just_the_one = CASES.test(
+    # _just_the_one46r: "P will take any K going; there's just the one, so that one"
+    (
+        "Tom will take any scanner going; as it happens there's just the one, so that one.",
+        "scanner>B",
+        DEPOT,
+    ),
+    ("Noah will take any globe at all; there's only the one, so that'll do.", "globe>B", CLASSROOM),
+    (
+        "Ruth will have any thermometer going; mind you, there's just the one, so that one.",
+        "thermometer>A",
+        WARD,
+    ),
+    # two cups
+    ("Dana will take any cup going; as it happens there's just the one, so that one.", None, LAB),
+)
+
+test_anything_of = CASES.test(
+    # _anything_of46r: "Pick anything of the four on offer for P, no odds which, …"
+    (
+        "Pick anything of the four on offer for Person A, whichever, she's only browsing.",
+        "bottle>A | chips>A | cup>A | apple>A",
+        SQ,
+    ),
+    ("Choose any of the two for Person B, no odds which.", "bottle>B | chips>B", T22),
+    (
+        "Grab anything of the four for Person B, it doesn't matter which.",
+        "bottle>B | chips>B | cup>B | apple>B",
+        SQ,
+    ),
+    # four things, not three
+    ("Pick anything of the three on offer for Person B, no odds which.", None, SQ),
+)
+
+test_then_again = CASES.test(
+    # _then_again46r: "<request>. Then again, she's just eaten, so swap them for the bottle"
+    ("Tape to Tom. Then again, he's got loads, so swap it for the gloves.", "gloves>B", DEPOT),
+    (
+        "Lemon to Marco. On second thoughts, he's made the sauce, so swap it for the salt.",
+        "salt>A",
+        KITCHEN,
+    ),
+    (
+        "Globe to Zoe. Then again, she's done geography, so swap it for the ruler.",
+        "ruler>C",
+        CLASSROOM,
+    ),
+    # 'she' is not Tom; the same thing again
+    ("Tape to Tom. Then again, she's got loads, so swap it for the gloves.", None, DEPOT),
+    ("Tape to Tom. Then again, he's got loads, so swap it for the tape.", None, DEPOT),
+)
+
+test_neither_without = CASES.test(
+    # _neither_without46r: "Neither goes without: <every person gets something>"
+    (
+        "Neither goes without: Tom's having the tape and Mia the gloves.",
+        "tape>B & gloves>A",
+        DEPOT,
+    ),
+    (
+        "Neither goes without: Person A's having the bottle and Person B the chips.",
+        "bottle>A & chips>B",
+        T22,
+    ),
+    (
+        "Neither goes without: Sam's having the stapler and Priya the notebook.",
+        "stapler>B & notebook>A",
+        OFFICE,
+    ),
+    (
+        "Neither goes without: Kofi's having the drill and Jess the torch.",
+        "drill>A & torch>B",
+        WORKSHOP,
+    ),
+    # someone does go without
+    ("Neither goes without: Tom's having the tape and the gloves.", None, DEPOT),
+    ("Neither goes without: Zoe's having the ruler and Noah the globe.", None, CLASSROOM),
+)
+
+
+def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each case that reads is read by these rules: refused without them."""
+    CASES.refused_without((*_rewrites46r._STEPS46R_FIRST, *_rewrites46r._STEPS46R), monkeypatch)

@@ -234,8 +234,372 @@ def _and_both46r(text: str, lexicon: Lexicon) -> str:
     return _read_or44r(f"{head}{m['pair']}{m['end'] or '.'}", text, lexicon)
 
 
+# -- session 46 (12r), a second batch ------------------------------------------------------------
+
+_P46R = r"(?:Person [a-z]|(?:mrs|mr|ms|miss|dr) [a-z]+|[a-z]+)"
+
+
+def _person46r(words: str, lexicon: Lexicon) -> str | None:
+    """The one person ``words`` name (and nothing else), or None."""
+    pids = _ids(words, lexicon)
+    if len(pids) != 1 or _ids(words, lexicon, "human") != pids:
+        return None
+    return next(iter(pids))
+
+
+def _all_to46r(out: str, text: str, pid: str, lexicon: Lexicon) -> str:
+    """``out`` when it reads handing everything over to ``pid`` alone, else ``text``."""
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "deliver" or t.target != pid for t in tasks(node)):
+        return text
+    return out
+
+
+# "Person A is taking all four items to her quillwork circle.", "Alice is taking both on her munro
+# bagging walk, the bottle and the crisps, so pass them to her."
+_TAKING46R = re.compiled(
+    rf"^(?P<p>{_P46R})(?:'s| is) taking (?P<x>[^,;.!?]+?)(?: (?:to|on|for) (?P<pro>her|his) "
+    r"(?P<words>[^,;.!?]+?))?(?:\s*,\s*(?P<list>[^,;.!?]+?)\s*,\s*so (?P<v>pass|give|hand|bring|"
+    r"take) them(?: over| across)? to (?P<pro2>her|him))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _taking46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "P is taking all four items to her quillwork circle" is "Give P all four
+    items" (where she takes them names nothing of the scene), and "P is taking both (on
+    her walk), the X and the Y, so pass them to her" is "Pass the X and the Y to P"; the she / he
+    P, and every thing handed to P."""
+    if "taking" not in text.lower():
+        return text
+    m = _TAKING46R.match(text.strip())
+    if m is None or (m["pro"] is None and m["list"] is None):
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None:
+        return text
+    if m["pro"] is not None and not (
+        _agrees44r(pid, m["pro"], lexicon) and _remark_only42s(m["words"], lexicon)
+    ):
+        return text
+    end = m["end"] or "."
+    if m["list"] is None:
+        return _all_to46r(f"Give {m['p']} {m['x']}{end}", text, pid, lexicon)
+    if not re.fullmatch(r"both|the pair|the two|all (?:three|four|five)|the lot", m["x"], _F):
+        return text
+    if not _agrees44r(pid, m["pro2"], lexicon) or _ids(m["list"], lexicon, "human"):
+        return text
+    out = f"{m['v'].capitalize()} {m['list']} to {m['p']}{end}"
+    node = _reading(out, lexicon)
+    n = _COUNT46R.get(m["x"].lower().split()[-1], 2)
+    if node is None or len({t.obj for t in tasks(node)}) != n:
+        return text
+    return _all_to46r(out, text, pid, lexicon)
+
+
+# "Ava's tower needs both blocks, so hand her the red and the green."
+_THING_NEEDS46R = re.compiled(
+    rf"^(?P<p>{_P46R})'s (?P<thing>[a-z]+(?: [a-z]+)?) (?P<v>needs|wants|could do with) "
+    r"(?P<rest>[^,;.!?]+\s*,\s*so\b.*)$",
+    _F,
+)
+
+
+def _thing_needs46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "Ava's tower needs both blocks, so hand her the red and the green" is
+    "Ava needs both blocks, so …" when the thing of hers names nothing of the scene, the request
+    after 'so' says her (him), and all it hands over goes to her."""
+    if "'s " not in text:
+        return text
+    m = _THING_NEEDS46R.match(text.strip())
+    if m is None or not _remark_only42s(m["thing"], lexicon):
+        return text
+    pid = _person46r(m["p"], lexicon)
+    pro = re.search(r"\bso\b[^.;!?]*\b(?P<pro>her|him)\b", m["rest"], _F)
+    if pid is None or pro is None or not _agrees44r(pid, pro["pro"], lexicon):
+        return text
+    return _all_to46r(f"{m['p']} {m['v']} {m['rest']}", text, pid, lexicon)
+
+
+# "Mr Novak isn't fussy after his coin collecting fair, so either plate is fine for him.", "Bob's
+# not particular about mugs, so your pick of the two for him."
+_NOT_FUSSY46R = re.compiled(
+    rf"^(?P<p>{_P46R})(?P<neg>'s not| is not| isn't) (?P<adj>fussy|particular|bothered|picky|"
+    r"choosy)(?: (?:about|over|with) (?P<k>[a-z]+)| after (?P<pos>his|her) (?P<words>[^,;.!?]+?))?"
+    r"\s*,\s*so (?:either (?P<k2>[a-z]+)|(?:take )?your (?:pick|choice) of the two) (?:(?:is|'s) "
+    r"(?:fine|ok|okay|good|all right) |will do )?for (?P<pro>him|her)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_fussy46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "P isn't fussy (about mugs, after his fair), so either plate is fine
+    for him" ("your pick of the two"; 'particular', 'picky') is "P isn't fussy, so either plate for
+    him": the kind said
+    once of two things of the scene, the remark naming nothing of it, the he / she P."""
+    if (
+        "fussy" not in text.lower()
+        and "particular" not in text.lower()
+        and "picky" not in (text.lower())
+    ):
+        return text
+    m = _NOT_FUSSY46R.match(text.strip())
+    if m is None:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None or not _agrees44r(pid, m["pro"], lexicon):
+        return text
+    if m["pos"] is not None and not (
+        _agrees44r(pid, m["pos"], lexicon) and _remark_only42s(m["words"], lexicon)
+    ):
+        return text
+    kinds = [k.lower() for k in (m["k"], m["k2"]) if k]
+    if not kinds or len({k.rstrip("s") for k in kinds}) != 1:
+        return text
+    if len(_ids(kinds[0], lexicon, "object")) != 2 or _ids(kinds[0], lexicon, "human"):
+        return text
+    out = f"{m['p']} isn't fussy, so either {kinds[0].rstrip('s')} for {m['pro']}"
+    return _read_or44r(f"{out}{m['end'] or '.'}", text, lexicon)
+
+
+# "Priya wants a pen; black or red, up to you."
+_A_K_OR46R = re.compiled(
+    r"(?P<head>\b(?:wants|needs|would like|'d like|is after|asked for) an? (?P<k>[a-z]+))"
+    r"\s*[;:,]\s*(?P<a>[a-z]+) or (?P<b>[a-z]+)(?=\s*(?:,\s*(?:up to you|your call|your choice|"
+    r"either will do|whichever|you choose|you pick|you decide))?\s*[.!]?$)",
+    _F,
+)
+
+
+def _a_k_or46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "P wants a pen; black or red, up to you" is "P wants a pen, the black
+    or the red, …" when "the black pen" and "the red pen" are each one thing of the scene."""
+    if " or " not in text.lower():
+        return text
+    m = _A_K_OR46R.search(text.strip())
+    if m is None:
+        return text
+    a = _ids(f"the {m['a']} {m['k']}", lexicon, "object")
+    b = _ids(f"the {m['b']} {m['k']}", lexicon, "object")
+    if len(a) != 1 or len(b) != 1 or a == b:
+        return text
+    t = text.strip()
+    out = f"{t[: m.end('head')]}, the {m['a']} or the {m['b']}{t[m.end() :]}"
+    return _read_or44r(out, text, lexicon)
+
+
+# "Tom can take any box except the big one, for the rag and bone man's odds and ends."
+_FOR_WHOSE46R = re.compiled(
+    r"\s*,\s*for (?:the|a|an|my|our|his|her) (?P<who>[a-z]+(?: [a-z]+){0,4}?)'s (?P<what>[a-z]+"
+    r"(?: [a-z]+){0,3})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _for_whose46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): a closing purpose "…, for the rag and bone man's odds and ends" (an
+    outsider's things, an 'and' in the words) is dropped when it names nothing of the scene and
+    the request before it reads."""
+    if "'s" not in text or " and " not in text.lower():
+        return text
+    m = _FOR_WHOSE46R.search(text.strip())
+    if m is None or " and " not in m[0].lower():
+        return text
+    # 'and' inside the outsider's name and things joins no request ("rag and bone man")
+    if not _remark_only42s(re.sub(r" and ", " ", f"{m['who']} {m['what']}", flags=_F), lexicon):
+        return text
+    return _read_or44r(f"{text.strip()[: m.start()]}{m['end'] or '.'}", text, lexicon)
+
+
+# "Put the pair of books on the desk, Mrs Ortiz is reading aloud after break."
+_PLACED_REMARK46R = re.compiled(
+    rf"\s*,\s*(?P<p>{_P46R})(?:'s| is| will be|'ll be) (?P<words>[a-z]+ing\b[^,;.!?]*)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _placed_remark46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): a closing remark on what a person of the scene is doing ("…, Mrs Ortiz
+    is reading aloud after break") after a request that only places things is dropped: it hands
+    that person nothing and names nothing else of the scene."""
+    if "ing" not in text.lower():
+        return text
+    m = _PLACED_REMARK46R.search(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    if not _remark_only42s(re.sub(r"\b(?:his|her|their)\b", "", m["words"]), lexicon):
+        return text
+    head = text.strip()[: m.start()]
+    node = _reading(head, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return _read_or44r(f"{head}{m['end'] or '.'}", text, lexicon)
+
+
+# "Hand out a book per student, the red to Noah and the green one to Zoe, …"
+_PER_HEAD46R = re.compiled(
+    r"^(?:hand|give|pass|dole|share|dish) out (?:a|one) (?P<k>[a-z]+) (?:per (?:student|child|"
+    r"person|head|patient|kid|pupil)|each|apiece|to each)\s*[,:]\s*the (?P<a>[a-z]+)"
+    r"(?P<rest> (?:one )?to .+)$",
+    _F,
+)
+
+
+def _per_head46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "Hand out a book per student, the red to Noah and the green one to Zoe"
+    is "The red book to Noah and the green one to Zoe" when that hands each person one thing."""
+    if "out" not in text.lower():
+        return text
+    m = _PER_HEAD46R.match(text.strip())
+    if m is None or len(_ids(f"the {m['a']} {m['k']}", lexicon, "object")) != 1:
+        return text
+    out = f"The {m['a']} {m['k']}{m['rest']}"
+    node = _reading(out, lexicon)
+    said = list(tasks(node)) if node is not None else []
+    if not said or any(t.kind != "deliver" for t in said):
+        return text
+    if len({t.target for t in said}) != len(said) or len(said) < 2:
+        return text
+    return out
+
+
+# "One apiece for the pair of them, the bottle to Person A and the chips to Person B, like the
+# milkmaid said."
+_APIECE_FIRST46R = re.compiled(
+    r"^(?:one|one thing|a thing|something) (?:apiece|each) for (?P<who>the pair of them|the two of"
+    r" them|both of them|them both|the pair|the three of them)\s*[,:;]\s*(?P<list>[^.;!?]+?)"
+    r"(?:\s*,\s*(?:like|as) (?P<said>[^,.;!?]+?) (?:said|asked|told us|told me|wanted))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _apiece_first46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): a heading "One apiece for the pair of them, <list>" (and a closing "like
+    the milkmaid said", naming nothing of the scene) is "<list>, one apiece": the list must hand
+    that many people one thing each."""
+    if "apiece" not in text.lower() and "each" not in text.lower():
+        return text
+    m = _APIECE_FIRST46R.match(text.strip())
+    if m is None or (m["said"] is not None and not _remark_only42s(m["said"], lexicon)):
+        return text
+    out = f"{m['list'][:1].upper()}{m['list'][1:]}, one apiece{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    said = list(tasks(node)) if node is not None else []
+    n = 3 if "three" in m["who"].lower() else 2
+    if len(said) != n or len({t.target for t in said}) != n:
+        return text
+    return out
+
+
+# "Person A will take any bottle going; as it happens there's just the one, so that one."
+_JUST_THE_ONE46R = re.compiled(
+    r"^(?P<head>.+?\bany (?P<k>[a-z]+))(?: going| at all| you've got| there is)?\s*[;,.]\s*"
+    r"(?:(?:as it happens|as it is|mind you|though|well)\s*,?\s*)?there(?:'s| is) (?:just|only) "
+    r"(?:the )?one(?: of them| here)?\s*,\s*so (?:that one|that'll do|it's that one|that)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _just_the_one46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "P will take any bottle going; as it happens there's just the one, so
+    that one" is "P will take any bottle" when the scene holds exactly one bottle."""
+    if "one" not in text.lower():
+        return text
+    m = _JUST_THE_ONE46R.match(text.strip())
+    if m is None or len(_ids(m["k"], lexicon, "object")) != 1:
+        return text
+    return _read_or44r(f"{m['head']}{m['end'] or '.'}", text, lexicon)
+
+
+# "Pick anything of the four on offer for Person B, no odds which, he's only killing time."
+_ANYTHING_OF46R = re.compiled(
+    r"^(?:pick|choose|take|grab|get) (?:anything|any one|any) of the (?P<n>two|three|four|five)"
+    r"(?: (?:on offer|going|there|here|we have|items|things))? for (?P<p>[^,;.!?]+?)\s*,\s*"
+    r"(?:no odds which|any will do|whichever|it doesn't matter which|no matter which)"
+    r"(?P<rest>.*)$",
+    _F,
+)
+
+
+def _anything_of46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "Pick anything of the four on offer for P, no odds which, …" is "Give P
+    any item, whichever, …" when the scene holds that many things."""
+    if " of the " not in text.lower():
+        return text
+    m = _ANYTHING_OF46R.match(text.strip())
+    if m is None or len(lexicon.scene.objects) != _COUNT46R[m["n"].lower()]:
+        return text
+    if _person46r(m["p"], lexicon) is None:
+        return text
+    return _read_or44r(f"Give {m['p']} any item, whichever{m['rest']}", text, lexicon)
+
+
+# "Chips to Person A. Then again, she's just eaten, so swap them for the bottle."
+_THEN_AGAIN46R = re.compiled(
+    r"^(?P<head>[^.;!?]+?)\s*[.,;]\s*(?:then again|on second thoughts?|come to think of it)\s*,"
+    r"\s*(?P<why>(?:she|he)(?:'s| is| has|'d| had| was) [^,;.!?]+?)\s*,\s*so (?:swap|change|"
+    r"switch) (?:them|it|that) (?:for|to) (?P<y>the [a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _then_again46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "<request>. Then again, she's just eaten, so swap them for the bottle"
+    is "<request>, no, the bottle": the request one handover, the she / he its person, the reason
+    naming nothing of the scene, the new thing not the one before."""
+    if (
+        "again" not in text.lower()
+        and "second" not in text.lower()
+        and "think" not in (text.lower())
+    ):
+        return text
+    m = _THEN_AGAIN46R.match(text.strip())
+    if m is None:
+        return text
+    node = _reading(m["head"], lexicon)
+    said = list(tasks(node)) if node is not None else []
+    if len(said) != 1 or said[0].kind != "deliver":
+        return text
+    pro = m["why"].split()[0].split("'")[0]
+    if not _agrees44r(said[0].target, pro, lexicon):
+        return text
+    if not _remark_only42s(m["why"][len(pro) :], lexicon):
+        return text
+    y = _ids(m["y"], lexicon, "object")
+    if len(y) != 1 or said[0].obj in y:
+        return text
+    return _read_or44r(f"{m['head']}, no, {m['y']}{m['end'] or '.'}", text, lexicon)
+
+
+# "Neither goes without: Person B's having the bottle and Person A the chips before …"
+_NEITHER_WITHOUT46R = re.compiled(
+    r"^(?:neither|nobody|no one|none of them) (?:goes|is going|will go|gets left|is left) "
+    r"without(?: anything)?\s*[:;,]\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _neither_without46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): a heading "Neither goes without:" before a request that gives every
+    person of the scene something is dropped (it says that, and nothing more)."""
+    if "without" not in text.lower():
+        return text
+    m = _NEITHER_WITHOUT46R.match(text.strip())
+    if m is None:
+        return text
+    out = f"{m['rest'][:1].upper()}{m['rest'][1:]}"
+    node = _reading(out, lexicon)
+    people = {h.id for h in lexicon.scene.humans}
+    if node is None or {t.target for t in tasks(node) if t.kind == "deliver"} != people:
+        return text
+    return out
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-45 ones)
-_STEPS46R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_scratch_lot46r,)
+_STEPS46R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_scratch_lot46r, _taking46r)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-45 ones)
 _STEPS46R: tuple[Callable[[str, Lexicon], str], ...] = (
     _fix_why46r,
@@ -244,6 +608,17 @@ _STEPS46R: tuple[Callable[[str, Lexicon], str], ...] = (
     _only_one46r,
     _items_there46r,
     _and_both46r,
+    _thing_needs46r,
+    _not_fussy46r,
+    _a_k_or46r,
+    _for_whose46r,
+    _placed_remark46r,
+    _per_head46r,
+    _apiece_first46r,
+    _just_the_one46r,
+    _anything_of46r,
+    _then_again46r,
+    _neither_without46r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-45 ones)
 REFUSE46R: tuple[Callable[[str, Lexicon], None], ...] = (doubt_at46r,)
