@@ -7,9 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.errors import GroundingError
-from hltl.grounding import _rewrites46r, offline
-from hltl.grounding.offline import parse_instruction
+from hltl.grounding import _rewrites46r
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -23,6 +21,9 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    Unclear,
+    assert_names_readings,
+    assert_refusals_are,
 )
 
 # the example scenes blind44 uses
@@ -163,7 +164,7 @@ test_and_both = CASES.test(
 
 # -- refusals that name their readings -----------------------------------------------------------
 
-UNCLEAR: list[tuple[str, Scene, tuple[str, ...]]] = [
+UNCLEAR: list[Unclear] = [
     # doubt_at46r: "X or Y <when, where>, I can't recall which"
     (
         "Mrs Khan asked for the jug or the magazine at breakfast, I can't remember which.",
@@ -185,20 +186,12 @@ UNCLEAR: list[tuple[str, Scene, tuple[str, ...]]] = [
 
 @pytest.mark.parametrize(("text", "scene", "readings"), UNCLEAR)
 def test_refusals_name_readings(text: str, scene: Scene, readings: tuple[str, ...]) -> None:
-    with pytest.raises(GroundingError) as refused:
-        parse_instruction(text, scene)
-    assert all(r in str(refused.value) for r in readings), str(refused.value)
+    assert_names_readings(text, scene, readings)
 
 
 def test_refusals_are_these(monkeypatch: pytest.MonkeyPatch) -> None:
     """Without these refusals, none of those refusals names all its readings."""
-    mine = set(_rewrites46r.REFUSE46R)
-    monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in mine))
-    for text, scene, readings in UNCLEAR:
-        try:
-            parse_instruction(text, scene)
-        except GroundingError as refused:
-            assert not all(r in str(refused) for r in readings), text
+    assert_refusals_are(_rewrites46r.REFUSE46R, UNCLEAR, monkeypatch)
 
 
 # -- a second batch --------------------------------------------------------------------------------

@@ -50,7 +50,7 @@ def _fix_why46r(text: str, lexicon: Lexicon) -> str:
     # nothing the corrected request hands over or places on
     if not said & away or said & used or said & _ids(head, lexicon, "human"):
         return text
-    return _read_or44r(f"{head}{m['end'] or '.'}", text, lexicon)
+    return _dropped46r(head, m, text, lexicon)
 
 
 # "Give Alice the crisps, no, scratch the lot of that, it's Bob who wants the bottle."
@@ -128,6 +128,18 @@ def _one_of_hers46r(text: str, lexicon: Lexicon) -> str:
 
 _COUNT46R = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2}
 
+
+def _closing46r(pattern: re.Pattern[str], text: str) -> tuple[str, re.Match[str]] | None:
+    """What comes before ``pattern``'s match at the end of ``text``, and the match, or None."""
+    m = pattern.search(text.strip())
+    return None if m is None else (text.strip()[: m.start()], m)
+
+
+def _dropped46r(head: str, m: re.Match[str], text: str, lexicon: Lexicon) -> str:
+    """``head`` with the match's end (its stop), when it reads, else ``text``."""
+    return _read_or44r(f"{head}{m['end'] or '.'}", text, lexicon)
+
+
 # "Person B wants the bottle and the cup, just those two."
 _JUST_THOSE46R = re.compiled(
     r"\s*[,;]\s*(?:just|only)(?: the| those| these)? (?P<n>two|three|four|five)"
@@ -141,10 +153,10 @@ def _just_those46r(text: str, lexicon: Lexicon) -> str:
     items") after a request that hands over exactly that many things is dropped."""
     if "just" not in text.lower() and "only" not in text.lower():
         return text
-    m = _JUST_THOSE46R.search(text.strip())
-    if m is None:
+    said = _closing46r(_JUST_THOSE46R, text)
+    if said is None:
         return text
-    head = text.strip()[: m.start()]
+    head, m = said
     node = _reading(head, lexicon)
     if node is None:
         return text
@@ -153,7 +165,7 @@ def _just_those46r(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(head, lexicon, "object") != set(objs):
         return text
-    return _read_or44r(f"{head}{m['end'] or '.'}", text, lexicon)
+    return _dropped46r(head, m, text, lexicon)
 
 
 # "Person A wants the one apple, the only one there is."
@@ -169,10 +181,10 @@ def _only_one46r(text: str, lexicon: Lexicon) -> str:
     there is" when the request names one thing and the scene holds no other of its kind."""
     if "only" not in text.lower():
         return text
-    m = _ONLY_ONE46R.search(text.strip())
-    if m is None:
+    said = _closing46r(_ONLY_ONE46R, text)
+    if said is None:
         return text
-    head = text.strip()[: m.start()]
+    head, m = said
     objs = _ids(head, lexicon, "object")
     if len(objs) != 1:
         return text
@@ -183,7 +195,7 @@ def _only_one46r(text: str, lexicon: Lexicon) -> str:
     word = m[0].lower().split("only ", 1)[1].split()[0]
     if word != "one" and _ids(word, lexicon, "object") != objs:
         return text
-    return _read_or44r(f"{head}{m['end'] or '.'}", text, lexicon)
+    return _dropped46r(head, m, text, lexicon)
 
 
 # "The two items there, both of them, go to Person A …"
@@ -219,10 +231,10 @@ def _and_both46r(text: str, lexicon: Lexicon) -> str:
     cup": the pair said again)."""
     if "both" not in text.lower():
         return text
-    m = _AND_BOTH46R.search(text.strip())
-    if m is None:
+    said = _closing46r(_AND_BOTH46R, text)
+    if said is None:
         return text
-    head = text.strip()[: m.start()]
+    head, m = said
     kinds = {o.category for o in lexicon.scene.objects if o.id in _ids(head, lexicon, "object")}
     if len(kinds) != 1:
         return text
@@ -402,13 +414,14 @@ def _for_whose46r(text: str, lexicon: Lexicon) -> str:
     the request before it reads."""
     if "'s" not in text or " and " not in text.lower():
         return text
-    m = _FOR_WHOSE46R.search(text.strip())
-    if m is None or " and " not in m[0].lower():
+    said = _closing46r(_FOR_WHOSE46R, text)
+    if said is None or " and " not in said[1][0].lower():
         return text
+    head, m = said
     # 'and' inside the outsider's name and things joins no request ("rag and bone man")
     if not _remark_only42s(re.sub(r" and ", " ", f"{m['who']} {m['what']}", flags=_F), lexicon):
         return text
-    return _read_or44r(f"{text.strip()[: m.start()]}{m['end'] or '.'}", text, lexicon)
+    return _dropped46r(head, m, text, lexicon)
 
 
 # "Put the pair of books on the desk, Mrs Ortiz is reading aloud after break."
@@ -425,16 +438,16 @@ def _placed_remark46r(text: str, lexicon: Lexicon) -> str:
     that person nothing and names nothing else of the scene."""
     if "ing" not in text.lower():
         return text
-    m = _PLACED_REMARK46R.search(text.strip())
-    if m is None or _person46r(m["p"], lexicon) is None:
+    said = _closing46r(_PLACED_REMARK46R, text)
+    if said is None or _person46r(said[1]["p"], lexicon) is None:
         return text
+    head, m = said
     if not _remark_only42s(re.sub(r"\b(?:his|her|their)\b", "", m["words"]), lexicon):
         return text
-    head = text.strip()[: m.start()]
     node = _reading(head, lexicon)
     if node is None or any(t.kind != "place" for t in tasks(node)):
         return text
-    return _read_or44r(f"{head}{m['end'] or '.'}", text, lexicon)
+    return _dropped46r(head, m, text, lexicon)
 
 
 # "Hand out a book per student, the red to Noah and the green one to Zoe, …"
