@@ -296,8 +296,6 @@ KNOWN_MISSES = frozenset(
         "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
         "The wipes don't belong on the play mat; pop them on the high chair.",
         "Never mind the hammer where it is; it's the drill that wants to go on the workbench.",
-        "Over to Person B with the bottle, oh, what am I saying, it's Person A who gets it, "
-        "she's the only one here.",
         "crisps up on the shelf ta the pipe fitter keeps nicking them",
         "notebook to priya thanks she has minutes to take",
         "tin of screws on the workbench kofi wants to count them",

@@ -27,8 +27,9 @@ from tests.grounding.helpers import (
 )
 
 # the example scenes blind44 uses
-T22, SQ, FIG1 = (
-    load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("2-2", "4-4-square", "fig1")
+T11, T12, T22, SQ, FIG1 = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml")
+    for n in ("1-1", "1-2", "2-2", "4-4-square", "fig1")
 )
 
 CASES = PhrasingCases()
@@ -437,6 +438,43 @@ test_neither_without = CASES.test(
     # someone does go without
     ("Neither goes without: Tom's having the tape and the gloves.", None, DEPOT),
     ("Neither goes without: Zoe's having the ruler and Noah the globe.", None, CLASSROOM),
+)
+
+
+test_slip_label = CASES.test(
+    # _slip_label46r: a request to a 'Person X' the scene lacks, corrected to its one person
+    (
+        "Over to Person C with the bottle, oh, what am I saying, it's Person A who gets it, she's "
+        "the only one here.",
+        "bottle>A",
+        T12,
+    ),
+    ("Bottle to Person B, no, what am I saying, it's Person A who gets it.", "bottle>A", T11),
+    ("The bottle to Person B, sorry, silly me, it's Person A who wants it.", "bottle>A", T12),
+    (
+        "Over to Person C with the bottle, whoops, it's Person A who needs it, she's the only one "
+        "around.",
+        "bottle>A",
+        T11,
+    ),
+    # 'he' is not Person A (the convention); a two-person scene; a person the scene lacks again
+    (
+        "Over to Person B with the bottle, oh, what am I saying, it's Person A who gets it, he's "
+        "the only one here.",
+        None,
+        T11,
+    ),
+    (
+        "Over to Person C with the crisps, oh, what am I saying, it's Alice who gets them, she's "
+        "the only one here.",
+        None,
+        FIG1,
+    ),
+    (
+        "Over to Person B with the bottle, oh, what am I saying, it's Person C who gets it.",
+        None,
+        T11,
+    ),
 )
 
 

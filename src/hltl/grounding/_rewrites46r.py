@@ -72,6 +72,52 @@ def _scratch_lot46r(text: str, lexicon: Lexicon) -> str:
     return _read_or44r(f"{text[: m.start()]}scratch that{text[m.end() :]}", text, lexicon)
 
 
+# "Over to Person B with the bottle, oh, what am I saying, it's Person A who gets it, she's the
+# only one here." (a scene with Person A alone)
+_SLIP_LABEL46R = re.compiled(
+    r"^(?P<head>[^,;.!?]+?)\s*,\s*(?:(?:oh|ah|er|um|no|nope|sorry|wait|hang on|whoops|oops|"
+    r"what am i saying|what was i thinking|silly me|my mistake)\s*,?\s*)+it(?:'s| is) "
+    r"(?P<p>[^,;.!?]+?) who (?:gets|wants|needs|should get|is getting|'s getting|asked for) "
+    r"(?:it|them)(?:\s*,\s*(?P<pro>she|he)(?:'s| is) the only one (?:here|around|about))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _slip_label46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): a request to a 'Person X' the scene lacks, a cue ("oh, what am I
+    saying"), then "it's Person A who gets it" (", she's the only one here", when she is the
+    scene's one person): the request to Person A (the label was a slip, as session 35's "or
+    rather Person A, I keep mixing them up"); "Over to P with X" is "X over to P"."""
+    if "who" not in text.lower() or "person" not in text.lower():
+        return text
+    m = _SLIP_LABEL46R.match(text.strip())
+    if m is None:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None:
+        return text
+    if m["pro"] is not None and not (
+        len(lexicon.scene.humans) == 1 and _agrees44r(pid, m["pro"], lexicon)
+    ):
+        return text
+    names = {h.name.lower() for h in lexicon.scene.humans}
+    slips = [w for w in re.findall(r"\bperson [a-z]\b", m["head"], _F) if w.lower() not in names]
+    if len(slips) != 1 or not _ids(m["head"], lexicon, "human") <= {pid}:
+        return text  # ('Person B' of a scene with Person A alone is lexed as Person A)
+    head = m["head"].replace(slips[0], m["p"])
+    over = re.fullmatch(r"over to (?P<q>.+?) with (?P<x>the [a-z]+(?: [a-z]+)?)", head, _F)
+    if over is not None:
+        head = f"{over['x'][:1].upper()}{over['x'][1:]} over to {over['q']}"
+    objs = _ids(m["head"], lexicon, "object")
+    out = f"{head}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    said = list(tasks(node)) if node is not None else []
+    if len(said) != 1 or said[0].target != pid or said[0].obj not in objs:
+        return text
+    return out
+
+
 # -- whichever, any of, one of, both, each ---------------------------------------------------------
 
 # "Person B asked for one of the cup or the apple at the footvolley match, I can't recall which."
@@ -612,7 +658,11 @@ def _neither_without46r(text: str, lexicon: Lexicon) -> str:
 
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-45 ones)
-_STEPS46R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_scratch_lot46r, _taking46r)
+_STEPS46R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _scratch_lot46r,
+    _taking46r,
+    _slip_label46r,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-45 ones)
 _STEPS46R: tuple[Callable[[str, Lexicon], str], ...] = (
     _fix_why46r,
