@@ -240,14 +240,7 @@ KNOWN_MISSES = frozenset(
         "Person A gets her bottle first; once she's got it, it's the turn of Person B, who's "
         "waiting by the kerb for the chips.",
         "Tongs to Marco he's at the grill, the knife to Lena she's on lemons.",
-        "Clear both things off the floor and up onto the shelf, bottle and crisps alike, the "
-        "pavers are coming through.",
-        "Person A and Person B each want one thing: her the apple, him the bottle.",
-        "The bottle, or whatever's there, Person A isn't fussy.",
-        "Zoe and Noah each need one: the scissors for her, the ruler for him.",
         "He's got a twelve-hour stoker shift ahead, so Person B is to have the cup plus the chips.",
-        "Person A only wants a single thing off you today and it's the crisps, she's on the "
-        "trapeze after.",
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",

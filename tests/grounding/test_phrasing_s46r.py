@@ -27,9 +27,9 @@ from tests.grounding.helpers import (
 )
 
 # the example scenes blind44 uses
-T11, T12, T22, SQ, FIG1 = (
+T11, T12, T22, T42, SQ, FIG1, TWO = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("1-1", "1-2", "2-2", "4-4-square", "fig1")
+    for n in ("1-1", "1-2", "2-2", "4-2", "4-4-square", "fig1", "two_arms")
 )
 
 CASES = PhrasingCases()
@@ -475,6 +475,72 @@ test_slip_label = CASES.test(
         None,
         T11,
     ),
+)
+
+
+# -- blind42's choices and counts ------------------------------------------------------------------
+
+test_each_pronoun = CASES.test(
+    # _each_pronoun46r: "P and Q each want one thing: her the X, him the Y"
+    ("Alice and Bob each want one thing: her the apple, him the cup.", "apple>A & cup>B", CELL),
+    (
+        "Mr Lee and Mrs Khan each need one: the jug for him, the magazine for her.",
+        "jug>B & magazine>C",
+        WARD,
+    ),
+    ("Mia and Tom each get something: him the scanner, her the tape.", "scanner>B & tape>A", DEPOT),
+    (
+        "Person B and Person A each want one thing: him the cup, her the apple.",
+        "cup>B & apple>A",
+        T42,
+    ),
+    # both 'her'; neither Kofi's nor Jess's sex is said
+    ("Alice and Carol each want one thing: her the apple, her the cup.", None, CELL),
+    ("Kofi and Jess each want one thing: him the drill, her the torch.", None, WORKSHOP),
+)
+
+test_single_thing = CASES.test(
+    # _single_thing46r: "P only wants a single thing off you today and it's the X"
+    (
+        "Tom only wants a single thing off you today and it's the scanner, he's on the late run.",
+        "scanner>B",
+        DEPOT,
+    ),
+    ("Lena only needs one thing from you and it's the knife.", "knife>B", KITCHEN),
+    (
+        "Emma just wants the one thing today and that's the banana, she's skipped lunch.",
+        "banana>C",
+        LAB,
+    ),
+    # two plates
+    ("Lena only needs one thing from you and it's the plate.", None, KITCHEN),
+)
+
+test_whatever_there = CASES.test(
+    # _whatever_there46r: "The X, or whatever's there, P isn't fussy" of a scene holding X alone
+    ("The bottle, or whatever's there, Person A isn't fussy.", "bottle>A", T11),
+    ("The bottle, or whatever's handy, Person A's not bothered.", "bottle>A", T12),
+    ("The bottle, or whatever's there, Person A isn't fussy.", None, T22),
+)
+
+test_clear_both = CASES.test(
+    # _clear_both46r: "Clear both things off the floor and onto the S, X and Y alike"
+    (
+        "Clear both things off the floor and onto the shelf, bottle and crisps alike.",
+        "bottle@shelf & chips@shelf",
+        TWO,
+    ),
+    (
+        "Clear both off the floor and up onto the table, apple and cup alike, cleaners are due.",
+        "apple@table & cup@table",
+        CELL,
+    ),
+    (
+        "Clear both things off the floor and into the high chair, bib and teddy alike.",
+        "bib@highchair & teddy@highchair",
+        NURSERY,
+    ),
+    ("Clear both things off the floor and onto Bob, apple and cup alike.", None, CELL),
 )
 
 

@@ -657,6 +657,133 @@ def _neither_without46r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# -- session 46 (12r): blind42's choices and counts ------------------------------------------------
+
+# "Person A and Person B each want one thing: her the apple, him the bottle.", "Zoe and Noah each
+# need one: the scissors for her, the ruler for him."
+_EACH_PRONOUN46R = re.compiled(
+    rf"^(?P<p>{_P46R}) and (?P<q>{_P46R}) each (?:want|need|get|are getting|are having|'re "
+    r"having) (?:one thing|one|a thing|something)\s*[:;,]\s*(?:(?P<pa>her|him) (?P<a>the [a-z]+"
+    r"(?: [a-z]+)?)\s*,\s*(?:and )?(?P<pb>her|him) (?P<b>the [a-z]+(?: [a-z]+)?)|(?P<a2>the "
+    r"[a-z]+(?: [a-z]+)?) (?:for|to) (?P<pa2>her|him)\s*,\s*(?:and )?(?P<b2>the [a-z]+(?: "
+    r"[a-z]+)?) (?:for|to) (?P<pb2>her|him))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _each_pronoun46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "P and Q each want one thing: her the apple, him the bottle" ("the
+    scissors for her, the ruler for him") is "The apple to P and the bottle to Q" when each
+    pronoun may be one of the two and not the other (names, titles or the Person A / B
+    convention say so) and the two are not the same person."""
+    if " each " not in text.lower():
+        return text
+    m = _EACH_PRONOUN46R.match(text.strip())
+    if m is None:
+        return text
+    p, q = _person46r(m["p"], lexicon), _person46r(m["q"], lexicon)
+    if p is None or q is None or p == q:
+        return text
+    said = m.groupdict()
+    pairs = [(said["a"] or said["a2"], said["pa"] or said["pa2"])]
+    pairs.append((said["b"] or said["b2"], said["pb"] or said["pb2"]))
+    names = {p: m["p"], q: m["q"]}
+    parts = []
+    for x, pro in pairs:
+        fit = [w for w in (p, q) if _agrees44r(w, pro, lexicon)]
+        if len(fit) != 1 or len(_ids(x, lexicon, "object")) != 1:
+            return text
+        parts.append(f"{x} to {names[fit[0]]}")
+    out = f"{parts[0][:1].upper()}{parts[0][1:]} and {parts[1]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    done = list(tasks(node)) if node is not None else []
+    if len(done) != 2 or {t.target for t in done} != {p, q}:
+        return text
+    return out
+
+
+# "Person A only wants a single thing off you today and it's the crisps, she's on the trapeze
+# after."
+_SINGLE_THING46R = re.compiled(
+    rf"^(?P<p>{_P46R}) (?:only |just )?(?P<v>wants|needs) (?:a single thing|one thing|just one "
+    r"thing|only one thing|the one thing)(?: off you| from you| from us)?(?: today| now| this "
+    r"time)? and (?:it(?:'s| is)|that(?:'s| is)) (?P<x>the [a-z]+(?: [a-z]+)?)\b",
+    _F,
+)
+
+
+def _single_thing46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "P only wants a single thing (off you today) and it's the crisps" is "P
+    only wants the crisps" when the crisps are one thing of the scene."""
+    if "thing" not in text.lower():
+        return text
+    m = _SINGLE_THING46R.match(text.strip())
+    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None:
+        return text
+    out = f"{m['p']} only {m['v']} {m['x']}{text.strip()[m.end() :]}"
+    return _all_to46r(out, text, pid, lexicon)
+
+
+# "The bottle, or whatever's there, Person A isn't fussy." (a scene with the bottle alone)
+_WHATEVER_THERE46R = re.compiled(
+    rf"^(?P<x>the [a-z]+(?: [a-z]+)?)\s*,\s*or whatever(?:'s| is) (?:there|going|handy|to hand)"
+    rf"\s*,\s*(?P<p>{_P46R})(?: isn't|'s not| is not) (?:fussy|bothered|picky|particular|choosy)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _whatever_there46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "The bottle, or whatever's there, P isn't fussy" is "Give P the bottle"
+    when the bottle is the scene's one thing ('whatever's there' is it too)."""
+    if "whatever" not in text.lower():
+        return text
+    m = _WHATEVER_THERE46R.match(text.strip())
+    if m is None or len(lexicon.scene.objects) != 1 or not _ids(m["x"], lexicon, "object"):
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None:
+        return text
+    return _all_to46r(f"Give {m['p']} {m['x']}{m['end'] or '.'}", text, pid, lexicon)
+
+
+# "Clear both things off the floor and up onto the shelf, bottle and crisps alike, …"
+_CLEAR_BOTH46R = re.compiled(
+    r"^clear (?P<n>both things|both|the two things|the two|all (?:three|four) things) off the "
+    r"(?:floor|ground|side)(?: and)? (?:up )?(?P<on>onto|on to|on|into|in) (?P<s>the [a-z]+"
+    r"(?: [a-z]+)?)\s*,\s*(?:the )?(?P<a>[a-z]+) and (?:the )?(?P<b>[a-z]+) alike(?P<rest>.*)$",
+    _F,
+)
+
+
+def _clear_both46r(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12r): "Clear both things off the floor and up onto the shelf, bottle and
+    crisps alike, …" is "Put the bottle and the crisps onto the shelf, …" when the two named are
+    two things of the scene and the place one surface."""
+    if "alike" not in text.lower():
+        return text
+    m = _CLEAR_BOTH46R.match(text.strip())
+    if (
+        m is None
+        or len(_ids(m["s"], lexicon, "surface")) != 1
+        or _ids(m["s"], lexicon) != (_ids(m["s"], lexicon, "surface"))
+    ):
+        return text
+    a, b = _ids(m["a"], lexicon, "object"), _ids(m["b"], lexicon, "object")
+    if len(a) != 1 or len(b) != 1 or a == b or "three" in m["n"] or "four" in m["n"]:
+        return text
+    out = f"Put the {m['a']} and the {m['b']} {m['on']} {m['s']}{m['rest']}"
+    node = _reading(out, lexicon)
+    if node is None or {t.obj for t in tasks(node)} != a | b:
+        return text
+    if any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-45 ones)
 _STEPS46R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _scratch_lot46r,
@@ -682,6 +809,10 @@ _STEPS46R: tuple[Callable[[str, Lexicon], str], ...] = (
     _anything_of46r,
     _then_again46r,
     _neither_without46r,
+    _each_pronoun46r,
+    _single_thing46r,
+    _whatever_there46r,
+    _clear_both46r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-45 ones)
 REFUSE46R: tuple[Callable[[str, Lexicon], None], ...] = (doubt_at46r,)
