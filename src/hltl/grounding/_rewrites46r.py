@@ -23,6 +23,15 @@ _FIX_WHY46R = re.compiled(
 )
 
 
+# what makes a place corrected away unfit (session 36's `_full_after36r` list, and its kin);
+# "the sink's broken" stays refused (session 36's test)
+_NO_ROOM46R = re.compiled(
+    r"(?:full|busy|taken|in use|cluttered|occupied|wet|dirty|a mess|covered|jammed|piled|stacked|"
+    r"soaked|blocked|crammed|packed|overflowing|heaving)\b",
+    _F,
+)
+
+
 def _fix_why46r(text: str, lexicon: Lexicon) -> str:
     """Session 46 (12r): after a correction, a closing reason said of what the correction took
     away ("…, or rather the apple, the cup's cracked"; "…, correction, the tray, the sink's full of
@@ -50,6 +59,8 @@ def _fix_why46r(text: str, lexicon: Lexicon) -> str:
     # nothing the corrected request hands over or places on
     if not said & away or said & used or said & _ids(head, lexicon, "human"):
         return text
+    if said & _ids(head, lexicon, "surface") and not _NO_ROOM46R.match(m["why"]):
+        return text  # a place: only that it has no room or cannot be used (session 36's list)
     return _dropped46r(head, m, text, lexicon)
 
 
