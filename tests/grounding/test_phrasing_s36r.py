@@ -366,8 +366,9 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             _rewrites44s._keep_taking44s,
             # session 45 (12r): "…, no hang on, it's the salt she wants" reads by its rule too
             _rewrites45r._what_he_wanted45r,
-            # session 46 (12r): "One apiece for the pair of them: <list>" reads by its rule too
-            _rewrites46r._apiece_first46r,
+            # session 46 (12r): a closing reason on what a correction took away ("…, no, the tray,
+            # sorry, the sink's full") reads by its rule too
+            _rewrites46r._fix_why46r,
         ),
         monkeypatch,
     )

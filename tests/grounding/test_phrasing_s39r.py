@@ -300,9 +300,9 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
                 *normalise._STEPS44R,
                 *normalise._STEPS44S_FIRST,
                 *normalise._STEPS44S,
-                # session 46 (12r): a closing reason on what a correction took away ("…, no, the
-                # tray, sorry, the sink's full") reads by its rule too
-                _rewrites46r._fix_why46r,
+                # session 46 (12r): "One apiece for the pair of them: <list>" reads by its rule
+                # too
+                _rewrites46r._apiece_first46r,
             ),
             monkeypatch,
         )
