@@ -307,6 +307,8 @@ test_placed_remark = CASES.test(
     ("Put the tape on the pallet, Tom is loading up after lunch.", "tape@pallet", DEPOT),
     # the remark names a thing of the scene
     ("Put the tape on the pallet, Tom is loading the gloves.", None, DEPOT),
+    # a want or a handover, not a remark (session 35's near form)
+    ("Put the tape on the pallet, Tom's having a biscuit.", None, DEPOT),
 )
 
 test_per_head = CASES.test(

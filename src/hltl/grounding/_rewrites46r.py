@@ -489,6 +489,14 @@ _PLACED_REMARK46R = re.compiled(
 )
 
 
+# what says a person gets, wants or holds something ("Sam's having a biscuit"), not what they do
+_HAVING46R = re.compiled(
+    r"(?:having|getting|taking|wanting|needing|asking|expecting|awaiting|waiting|hoping|"
+    r"grabbing|borrowing|keeping|holding|using|bringing|fetching|receiving|eating|drinking)\b",
+    _F,
+)
+
+
 def _placed_remark46r(text: str, lexicon: Lexicon) -> str:
     """Session 46 (12r): a closing remark on what a person of the scene is doing ("…, Mrs Ortiz
     is reading aloud after break") after a request that only places things is dropped: it hands
@@ -499,6 +507,8 @@ def _placed_remark46r(text: str, lexicon: Lexicon) -> str:
     if said is None or _person46r(said[1]["p"], lexicon) is None:
         return text
     head, m = said
+    if _HAVING46R.match(m["words"]):
+        return text  # "…, Sam's having a biscuit": a want or a handover, not a remark (session 35)
     if not _remark_only42s(re.sub(r"\b(?:his|her|their)\b", "", m["words"]), lexicon):
         return text
     node = _reading(head, lexicon)
