@@ -174,3 +174,29 @@ def one_edits(word: str) -> list[str]:
     out |= {word[:k] + word[k + 1] + word[k] + word[k + 2 :] for k in range(len(word) - 1)}
     out.discard(word)
     return sorted(out)
+
+
+Unclear = tuple[str, Scene, tuple[str, ...]]
+
+
+def assert_names_readings(text: str, scene: Scene, readings: tuple[str, ...]) -> None:
+    """``text`` is refused, and its refusal names every one of ``readings``."""
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, scene)
+    assert all(r in str(refused.value) for r in readings), str(refused.value)
+
+
+def assert_refusals_are(
+    mine: tuple[object, ...], cases: list[Unclear], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Without the refusals ``mine`` (offline._REFUSALS), no case's refusal names all its
+    readings: those refusals are what name them."""
+    from hltl.grounding import offline
+
+    off = set(mine)
+    monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in off))
+    for text, scene, readings in cases:
+        try:
+            parse_instruction(text, scene)
+        except GroundingError as refused:
+            assert not all(r in str(refused) for r in readings), text

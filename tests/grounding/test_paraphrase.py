@@ -240,14 +240,7 @@ KNOWN_MISSES = frozenset(
         "Person A gets her bottle first; once she's got it, it's the turn of Person B, who's "
         "waiting by the kerb for the chips.",
         "Tongs to Marco he's at the grill, the knife to Lena she's on lemons.",
-        "Clear both things off the floor and up onto the shelf, bottle and crisps alike, the "
-        "pavers are coming through.",
-        "Person A and Person B each want one thing: her the apple, him the bottle.",
-        "The bottle, or whatever's there, Person A isn't fussy.",
-        "Zoe and Noah each need one: the scissors for her, the ruler for him.",
         "He's got a twelve-hour stoker shift ahead, so Person B is to have the cup plus the chips.",
-        "Person A only wants a single thing off you today and it's the crisps, she's on the "
-        "trapeze after.",
         "Person B's allergic to apples, so the rest of the things are his and that one stays.",
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
@@ -281,30 +274,8 @@ KNOWN_MISSES = frozenset(
         "Noah's short a glue stick. Zoe's short a ruler. Sort them both out, cheers.",
         "Kofi wants the tin of screws Jess wants the small spanner both now please the "
         "helmsman's boat won't fix itself",
-        "Bob's not particular about mugs, so your pick of the two for him.",
-        "Alice is taking both on her munro bagging walk, the bottle and the crisps, so pass them "
-        "to her.",
-        "Pick anything of the four on offer for Person B, no odds which, he's only killing time.",
-        "One apiece for the pair of them, the bottle to Person A and the chips to Person B, like "
-        "the milkmaid said.",
-        "Neither goes without: Person B's having the bottle and Person A the chips before the "
-        "knot tying class.",
         "Person A's on her way to water divining, so hand her the bottle or the chips, "
         "whichever's handier.",
-        "Person A will take any bottle going; as it happens there's just the one, so that one.",
-        "Priya wants a pen; black or red, up to you.",
-        "Tom can take any box except the big one, for the rag and bone man's odds and ends.",
-        "Mr Novak isn't fussy after his coin collecting fair, so either plate is fine for him.",
-        "Hand out a book per student, the red to Noah and the green one to Zoe, for their bug "
-        "hunting notes.",
-        "Lily wants one of her blocks, either will do.",
-        "Person A is taking all four items to her quillwork circle.",
-        "Person B wants the bottle and the cup, just those two.",
-        "Person A wants the one apple, the only one there is.",
-        "The two items there, both of them, go to Person A for the lift attendant's picnic.",
-        "For the titration Dana needs the pair of cups, green and white both.",
-        "Put the pair of books on the desk, Mrs Ortiz is reading aloud after break.",
-        "Ava's tower needs both blocks, so hand her the red and the green.",
         "Carol's allergic to apples, so it's the crisps for her instead.",
         "For Person A, anything going except the cup will do.",
         "Person A isn't hungry for the apple; the chips instead.",
@@ -318,13 +289,6 @@ KNOWN_MISSES = frozenset(
         "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
         "The wipes don't belong on the play mat; pop them on the high chair.",
         "Never mind the hammer where it is; it's the drill that wants to go on the workbench.",
-        "Give Alice the crisps, no, scratch the lot of that, it's Bob who wants the bottle.",
-        "Run the cup over to Person B, or rather the apple, the cup's cracked.",
-        "Chips to Person A. Then again, she's just eaten, so swap them for the bottle.",
-        "Over to Person B with the bottle, oh, what am I saying, it's Person A who gets it, "
-        "she's the only one here.",
-        "Bowl goes in the sink, correction, the tray, the sink's full of the hermit's crockery.",
-        "Mr Lee's to get the blue blanket, no, sorry, the grey one, blue's too thin.",
         "crisps up on the shelf ta the pipe fitter keeps nicking them",
         "notebook to priya thanks she has minutes to take",
         "tin of screws on the workbench kofi wants to count them",
@@ -355,8 +319,6 @@ KNOWN_UNCLEAR = frozenset(
         "Take that one to her as well.",
         "The bottle goes to the one who asked. The chips stay put.",
         "Tom asked for a box. Bring him the one he used yesterday.",
-        "Person B asked for one of the cup or the apple at the footvolley match, I can't recall "
-        "which.",
         "Not the big box for Tom, the one he asked for this morning.",
     }
 )

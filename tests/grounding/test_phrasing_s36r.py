@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites41r, _rewrites44s, _rewrites45r, normalise
+from hltl.grounding import _rewrites41r, _rewrites44s, _rewrites45r, _rewrites46r, normalise
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
@@ -366,6 +366,9 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             _rewrites44s._keep_taking44s,
             # session 45 (12r): "…, no hang on, it's the salt she wants" reads by its rule too
             _rewrites45r._what_he_wanted45r,
+            # session 46 (12r): a closing reason on what a correction took away ("…, no, the tray,
+            # sorry, the sink's full") reads by its rule too
+            _rewrites46r._fix_why46r,
         ),
         monkeypatch,
     )

@@ -9,7 +9,7 @@ import re
 import pytest
 
 from hltl.bench.grounding import show_tree
-from hltl.grounding import _rewrites44s, normalise, offline
+from hltl.grounding import _rewrites44s, _rewrites46r, normalise, offline
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -300,6 +300,9 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
                 *normalise._STEPS44R,
                 *normalise._STEPS44S_FIRST,
                 *normalise._STEPS44S,
+                # session 46 (12r): "One apiece for the pair of them: <list>" reads by its rule
+                # too
+                _rewrites46r._apiece_first46r,
             ),
             monkeypatch,
         )

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import normalise, offline
+from hltl.grounding import _rewrites46r, normalise, offline
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -204,6 +204,9 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 44 (12r): its rules of the same families read some of these too
             *normalise._STEPS44R_FIRST,
             *normalise._STEPS44R,
+            # session 46 (12r): a closing remark on what a person is doing after a placing reads
+            # by its rule too
+            _rewrites46r._placed_remark46r,
         ),
         monkeypatch,
     )
