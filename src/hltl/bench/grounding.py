@@ -142,7 +142,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # opened by the engineers who change the grounder before its one measurement at the end of session
 # 44; tuned on in session 45), blind44 (written in session 45 by another engineer and committed
 # alone, never opened by the engineers who change the grounder before its one measurement at the end
-# of session 45; tuned on in session 46).
+# of session 45; tuned on in session 46), blind45 (written in session 46 by another engineer and
+# committed alone, never opened by the engineers who change the grounder before its one measurement
+# at the end of session 46; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -204,6 +206,7 @@ PARTS = (
     "blind42",
     "blind43",
     "blind44",
+    "blind45",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
