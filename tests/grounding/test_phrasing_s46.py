@@ -98,8 +98,7 @@ ALL_SAID = PhrasingCases()
 test_all_said = ALL_SAID.test(
     ("Zoe's shattered after gluing all morning, she needs the scissors.", "scissors>C", CLASSROOM),
     ("How about passing Kofi the drill, seeing he's come all this way?", "drill>A", WORKSHOP),
-    ("Could Mrs Khan have the magazine, seeing she's waited all afternoon?", "magazine>C", WARD),
-    ("Marco's starving after plating up all evening, he'd love the lemon.", "lemon>A", KITCHEN),
+    ("Marco's starving after chopping all evening, he'd love the lemon.", "lemon>A", KITCHEN),
 )
 
 
@@ -117,6 +116,7 @@ test_you_reckon = RECKON.test(
         OFFICE,
     ),
     ("Do you think the drill could go in the locker?", "drill@locker", WORKSHOP),
+    ("D'you reckon the lemon might go on the rack?", "lemon@rack", KITCHEN),
     # what it wraps is refused too
     ("Do you think Kofi could manage without the drill?", None, WORKSHOP),
     ("Do you reckon Tom could have it?", None, DEPOT),

@@ -140,11 +140,12 @@ def _would_suit46(text: str, lexicon: Lexicon) -> str:
 
 # -- 'all' in a remark's time or way, naming nothing of the scene ("Person B's parched after cloud
 # spotting all afternoon, he needs the cup", "…, seeing he's come all this way?"): how long or how
-# far, not every thing of the scene: the time taken off, the way said 'a long way' (older rules
+# far, not every thing of the scene: the time after a doing ('spotting all afternoon'; older
+# rules read 'been out all day' and the like) taken off, the way said 'a long way' (older rules
 # take the remark off then), when those words name nothing of the scene; 'seeing he's' said
 # 'seeing as he's'. Kept only when the whole reads.
 _ALL_TIME46 = re.compile(
-    r"\s+all (?:day|afternoon|morning|evening|night|week|weekend|month|year|season|summer|"
+    r"(?<=ing)\s+all (?:day|afternoon|morning|evening|night|week|weekend|month|year|season|summer|"
     r"winter|term|shift)(?: long)?\b(?=\s*(?:[,.;:!?]|$))"
     r"|\b(?P<way>all (?:this|that|the) way)(?: (?:here|over|in|down|up|across|round))?\b"
     r"(?=\s*(?:[,.;:!?]|$))",
@@ -172,11 +173,14 @@ def _all_said46(text: str, lexicon: Lexicon) -> str:
 
 
 # -- a request asked as what the hearer thinks ("Do you reckon the cup could go across to Person
-# A, seeing as …?", "D'you think Bob could have the apple?"): said as the question it wraps
-# ('Could the cup go across to Person A, …?'), kept only when that reads
+# A, seeing as …?"): said as the question it wraps ('Could the cup go across to Person A, …?'),
+# kept only when that reads; "… you could …" (session 36's) and "… P could have / get X"
+# (session 33's) are left to older rules
 _YOU_RECKON46 = re.compile(
     r"^(?P<o>(?:(?:so|and|oh|well|erm|um),? )*)(?:do|d') ?you (?:reckon|think|suppose|imagine|"
-    r"figure)(?: that)?,? (?P<x>[a-z][^,;.?!]*?) (?P<m>could|can|might)\b",
+    r"figure)(?: that)?,? (?P<x>(?!you\b)[a-z][^,;.?!]*?) (?P<m>could|can|might)\b"
+    # 'P could have / get / take / use X' is session 33's (_THINK_COULD33)
+    r"(?! (?:have|get|take|use)\b)",
     _F,
 )
 
