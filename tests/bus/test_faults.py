@@ -94,8 +94,10 @@ def test_faulty_links_change_nothing(loopback: Loopback, fault: str, stream: boo
         assert run.cell.link.dropped + run.node.link.dropped > 0
     if fault == "duplicates":  # copies both ways, and the node knew each of its own
         # (how many numbered step requests the executor sends, and so are copied, depends on
-        # how many steps the node foresaw: none on a run where it foresaw them all)
-        assert stats.duplicate_reports > 0 and node.duplicates >= stats.step_copies
+        # how many steps the node foresaw: none on a run where it foresaw them all; how many
+        # reports the executor hears twice depends on time: most come in answers, and a copy
+        # published as the episode ends may come after the executor has left it)
+        assert run.node.link.copied > 0 and node.duplicates >= stats.step_copies
     if fault == "out_of_order":  # reports were held back for later ones to overtake
         assert run.cell.link.held + run.node.link.held > 0
     if fault == "lost_replies":

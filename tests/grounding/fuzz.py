@@ -140,7 +140,15 @@ family (session 45), texted: a grounded entry typed the way people text (blind43
 thirsty after her nap so sippy cup to her"), without its stops and commas ("Give Bob the apple
 won't you"), without its apostrophes ("Bobs after the apple"), both in lower case, and, for an
 entry of one handover naming its one person, with a reason of that person run on after it ("give
-bob the apple hes been after it all morning"): the entry, or refused.
+bob the apple hes been after it all morning"): the entry, or refused. A twentieth family (session
+46), antecedents: an entry's one handover of a one-of-a-kind object to a person whose name says
+their sex, that person said by the name in a remark, a state or a want and the handover then asked
+for with a pronoun for them (blind44's "That apple was set aside for Person A at the swan upping;
+run it over to her."; "Carol's parched after the fell race, she needs the apple.", "The apple is
+Bob's. Hand it across to him, thanks."), and in lower case: that handover, or refused; two people
+of that sex said before the pronoun ("Alice and Carol are both parched; she needs the apple."):
+refused, both as readings; someone not in the scene said before it ("My sister's parched after
+the fell race, she needs the apple."): refused.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1391,6 +1399,36 @@ RUN_ON = (  # {e} the entry texted; {he} / {hes} "he" / "hes" or "she" / "shes" 
     "{e} {hes} waiting on it",
 )
 TEXTED_FORMS = ("stops", "apostrophes", "texting", "run on")
+# antecedents (session 46; blind44's pronoun requests after a sentence naming the person: "That
+# apple was set aside for Person A at the swan upping; run it over to her.", "Person B's parched
+# after cloud spotting all afternoon, he needs the cup.", "Since the timpani rehearsal Person B
+# keeps on about the cup; let him have it, for peace."): a person said by a name in a remark,
+# a state or a want, then the handover asked for with a pronoun for them ({he} / {him} "he" /
+# "him" or "she" / "her"; {it} / {is} / {was} / {That} "it" / "is" / "was" / "That" or, for an
+# object said as a plural, "them" / "are" / "were" / "Those"): that handover
+ANTECEDENTS = (
+    "{P}'s parched after the fell race, {he} needs the {o}.",
+    "{P} is starving after the barn dance, the {o} would do {him} nicely.",
+    "{P} keeps on about the {o}; let {him} have {it}, for peace.",
+    "{That} {o} {was} set aside for {p}; run {it} over to {him}.",
+    "{P} was after the {o}. Bring {it} to {him}, please.",
+    "The {o} {is} {p}'s. Hand {it} across to {him}, thanks.",
+    "{P} has been asking for the {o} all day, so take {it} to {him}.",
+    "{P}'s back from the allotment and {he}'d love the {o}.",
+    "{P} mentioned the {o} earlier; pass {it} to {him} when you can.",
+)
+# two people of one sex said before the pronoun ({p} and {q}): refused, both as readings
+ANTECEDENTS_TWO = (
+    "{P} and {q} are both parched; {he} needs the {o}.",
+    "{P} was telling {q} about the {o}; take {it} to {him}.",
+    "{P} and {q} have been at it all day, so the {o} for {him}.",
+    "{P} asked {q} for the {o}. Give {it} to {him}, please.",
+)
+# someone not in the scene of the person's sex said before the pronoun (in ANTECEDENTS for {p}):
+# refused, the pronoun is theirs
+ABSENT_HE = ("my brother", "the postman", "my uncle")
+ABSENT_SHE = ("my sister", "the postwoman", "my aunt")
+ANTECEDENT_FORMS = ("named before", "two before", "absent before", "lower")
 SAID_FORMS = (
     "reason before",
     "condition",
@@ -1428,6 +1466,7 @@ Family = Literal[
     "said",
     "holds",
     "texted",
+    "antecedents",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -3299,6 +3338,60 @@ def texted(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         yield Variant(part, entry.scene, said, want, "same", "texted", (), "run on")
 
 
+_HIM = {"his": ("he", "him"), "her": ("she", "her")}
+
+
+def antecedents(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The antecedent variants of one grounded entry of one handover of a one-of-a-kind object
+    naming its one person by a name that says their sex (ANTECEDENT_FORMS; none of another): that
+    person said by the name in a remark, a state or a want, then the handover asked for with a
+    pronoun for them (`named before`, ANTECEDENTS: that handover); two people of that sex said
+    before the pronoun (`two before`, ANTECEDENTS_TWO: refused, both as readings); someone not in
+    the scene of that sex said before it instead (`absent before`, ABSENT_HE / ABSENT_SHE in
+    ANTECEDENTS: refused); and the first in lower case (`lower`)."""
+    one = _one_person_said(entry.text.strip(), entry.want, scene)
+    handover = one[1] if one is not None else None
+    if handover is None or handover.target is None or handover.obj not in _unique_objects(scene):
+        return
+    p = _proper_name(scene, handover.target)
+    pos = _pronoun_of(p) if p is not None else None
+    if p is None or pos is None:
+        return
+    he, him = _HIM[pos]
+    o = _name(scene, handover.obj)
+    head = o.split(" of ")[0].split()[-1]
+    plural = head.endswith("s") and not head.endswith("ss")
+    it, is_, was, that = ("them", "are", "were", "Those") if plural else ("it", "is", "was", "That")
+    keys = {"p": p, "P": p, "o": o, "he": he, "him": him, "it": it, "is": is_, "was": was}
+    keys["That"] = that
+    fitting = [f for f in ANTECEDENTS if _fits(f, scene)]
+    if not fitting:
+        return
+    said = rng.choice(fitting).format(**keys)
+    yield Variant(part, entry.scene, said, handover, "same", "antecedents", (), "named before")
+    alike = [
+        (h.id, q)
+        for h in scene.humans
+        if h.id != handover.target
+        and (q := _proper_name(scene, h.id)) is not None
+        and _pronoun_of(q) == pos
+    ]
+    two = [f for f in ANTECEDENTS_TWO if _fits(f, scene)]
+    if alike and two:
+        qid, q = rng.choice(alike)
+        text = rng.choice(two).format(q=q, **keys)
+        readings = (handover.target, qid)
+        yield Variant(
+            part, entry.scene, text, None, "refuse", "antecedents", readings, "two before"
+        )
+    absent = [a for a in (ABSENT_HE if pos == "his" else ABSENT_SHE) if _names_nothing(a, scene)]
+    if absent:
+        a = rng.choice(absent)
+        text = rng.choice(fitting).format(**(keys | {"p": a, "P": a[:1].upper() + a[1:]}))
+        yield Variant(part, entry.scene, text, None, "refuse", "antecedents", (), "absent before")
+    yield Variant(part, entry.scene, said.lower(), handover, "same", "antecedents", (), "lower")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -3383,6 +3476,7 @@ def generated(
     rng_said = random.Random(f"said:{seed}")
     rng_holds = random.Random(f"holds:{seed}")
     rng_texted = random.Random(f"texted:{seed}")
+    rng_antecedents = random.Random(f"antecedents:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -3447,6 +3541,9 @@ def generated(
                     yield v, scene
             if "texted" in families:
                 for v in texted(part, entry, scene, rng_texted):
+                    yield v, scene
+            if "antecedents" in families:
+                for v in antecedents(part, entry, scene, rng_antecedents):
                     yield v, scene
 
 

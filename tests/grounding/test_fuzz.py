@@ -52,7 +52,10 @@ scene cannot satisfy, an owner who could be either of two: refused), the holds f
 44 (a remark that a person of the scene already holds or has had a one-of-a-kind object the entry
 neither names nor moves, or has their own one, before or after it: the entry), the texted family of
 session 45 (an entry without its stops, without its apostrophes, both in lower case, and with a
-reason of its one person run on after it: the entry), and the wrappers and take-backs of a seed
+reason of its one person run on after it: the entry), the antecedents family of session 46 (an
+entry's one handover asked for with a pronoun after a sentence naming its person: that handover;
+two people of that sex or someone not in the scene named before the pronoun: refused), and the
+wrappers and take-backs of a seed
 unchanged by them."""
 
 from __future__ import annotations
@@ -237,6 +240,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "said",
         "holds",
         "texted",
+        "antecedents",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -256,7 +260,124 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     assert (
         "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts', " in err
     )
-    assert "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted')" in err
+    assert (
+        "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents')" in err
+    )
+
+
+# -- antecedents (session 46) ---------------------------------------------------------------------
+
+
+def _antecedents(entry: Entry, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.antecedents("t", entry, CELL, random.Random(seed)))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        # Bob is the cell's only man: no second person to say before 'him'
+        ("Give Bob the apple.", "apple>B", "named before, absent before, lower"),
+        ("Give the cup to Alice.", "cup>A", "named before, two before, absent before, lower"),
+        ("Give Person B the crisps.", "chips>B", "named before, absent before, lower"),
+        # a kind the scene has two of, two handovers, a pronoun, a place, a refused entry: none
+        ("Give Bob the red mug.", "mug_red>B", ""),
+        ("Give Bob the apple and Alice the cup.", "apple>B & cup>A", ""),
+        ("Bob wants the apple, give it to him.", "apple>B", ""),
+        ("Put the apple on the shelf.", "apple@shelf", ""),
+        ("Give her the apple.", None, ""),
+    ],
+)
+def test_antecedents_are_made_for_one_handover_to_a_person_of_a_said_sex(
+    text: str, want: str | None, forms: str
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        made = _antecedents(entry, seed)
+        assert [v.form for v in made] == [f for f in forms.split(", ") if f]
+        for v in made:
+            assert v.family == "antecedents"
+            assert (v.must, v.want) == (
+                ("same", entry.want) if v.form in ("named before", "lower") else ("refuse", None)
+            )
+        if made:
+            assert made[-1].text == made[0].text.lower()
+
+
+def _said_as(text: str, forms: tuple[str, ...], keys: dict[str, str]) -> list[str]:
+    it = (
+        {"it": "them", "is": "are", "was": "were", "That": "Those"}
+        if keys["o"] == "crisps"
+        else {"it": "it", "is": "is", "was": "was", "That": "That"}
+    )
+    return [f for f in forms if text == f.format(**keys, **it)]
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "p", "q", "he", "o"),
+    [
+        ("Give Bob the apple.", "apple>B", "Bob", "", "he", "apple"),
+        ("Give the cup to Alice.", "cup>A", "Alice", "Carol", "she", "cup"),
+        ("Carol gets the crisps.", "chips>C", "Carol", "Alice", "she", "crisps"),
+    ],
+)
+def test_each_antecedent_says_its_person_by_name_then_by_pronoun(
+    text: str, want: str, p: str, q: str, he: str, o: str
+) -> None:
+    him = {"he": "him", "she": "her"}[he]
+    absent = fuzz.ABSENT_HE if he == "he" else fuzz.ABSENT_SHE
+    entry = _entry("cell", text, want)
+    said: set[str] = set()
+    for seed in range(60):
+        for v in _antecedents(entry, seed):
+            keys = {"p": p, "P": p, "o": o, "he": he, "him": him}
+            if v.form == "named before":
+                (form,) = _said_as(v.text, fuzz.ANTECEDENTS, keys)
+                said.add(form)
+            elif v.form == "two before":
+                assert _said_as(v.text, fuzz.ANTECEDENTS_TWO, keys | {"q": q})
+                ids = {"Alice": "A", "Bob": "B", "Carol": "C"}
+                assert v.readings == (ids[p], ids[q])
+            elif v.form == "absent before":
+                assert any(
+                    _said_as(v.text, fuzz.ANTECEDENTS, keys | {"p": a, "P": a[:1].upper() + a[1:]})
+                    for a in absent
+                ), v.text
+    assert said == set(fuzz.ANTECEDENTS)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict"),
+    [
+        ("Alice's parched after the fell race, she needs the cup.", "cup>A", "exact"),
+        ("Alice's parched after the fell race, she needs the cup.", "cup>C", "wrong"),
+        ("Alice and Carol are both parched; she needs the cup.", None, "refused"),
+        ("My sister's parched after the fell race, she needs the cup.", None, "refused"),
+        ("Bob has been asking for the cup all day, so take it to him.", None, "wrong"),
+    ],
+)
+def test_antecedents_are_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str
+) -> None:
+    assert _judged(text, want, "antecedents", "named before") == verdict
+
+
+def test_over_the_corpus_each_antecedent_form_is_made() -> None:
+    """Every second entry of three parts: each variant is the handover of a grounded entry of
+    one handover to a person its scene names by a name that says their sex."""
+    kinds = dict.fromkeys(fuzz.ANTECEDENT_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=46, every=2, families=("antecedents",)):
+        kinds[v.form] += 1
+        if v.form in ("named before", "lower"):
+            assert v.must == "same" and isinstance(v.want, Task) and v.want.kind == "deliver"
+            assert v.want.obj in fuzz._unique_objects(scene)
+            assert v.want.target is not None
+            name = fuzz._proper_name(scene, v.want.target)
+            assert name is not None and fuzz._pronoun_of(name) is not None
+            assert name.lower() in v.text.lower()
+        else:
+            assert v.must == "refuse" and v.want is None
+            assert len(v.readings) == (2 if v.form == "two before" else 0)
+    assert min(kinds.values()) >= 10, kinds
 
 
 # -- references (session 26) ----------------------------------------------------------------------

@@ -87,12 +87,14 @@ def cpsat_makespan(
         horizon_steps: None picks a provably sufficient horizon (module docstring); a number
             fixes T, and the answer is then the best plan of at most T steps (exact only when
             T is large enough).
-        time_limit: seconds per CP-SAT solve.
+        time_limit: work per CP-SAT solve, in its deterministic time units (about seconds of one
+            core; the same on a loaded machine), with 30 times that in wall seconds as a backstop.
 
     Raises:
         UnsupportedSpec: the spec or durations are outside the encoded class.
         HorizonUndetermined: see the module docstring, point 4.
-        TimeoutError: CP-SAT did not prove optimality or infeasibility within ``time_limit``.
+        TimeoutError: CP-SAT did not prove optimality or infeasibility within ``time_limit``
+            (its work limit).
     """
     return cpsat_solve(scene, spec, horizon_steps, time_limit).makespan
 
@@ -353,8 +355,13 @@ def _solve(
     m.Minimize(sum(step_cost))
 
     solver = cp_model.CpSolver()
-    solver.parameters.max_time_in_seconds = time_limit
-    solver.parameters.num_workers = 2
+    # the limit is on work, not on the wall clock: one worker's search is the same on every run,
+    # and its deterministic time does not grow with the machine's load (a wall-clock limit of
+    # 120 s ran out on the 4-4-line scenario at load 10-19, which one worker proves in 9 units);
+    # the wall clock is only a backstop against a hang
+    solver.parameters.num_workers = 1
+    solver.parameters.max_deterministic_time = time_limit
+    solver.parameters.max_time_in_seconds = 30 * time_limit
     status = solver.Solve(m)
     if status == cp_model.INFEASIBLE:
         return CpSatResult(None, None, horizon)

@@ -77,6 +77,7 @@ class Link:
         self.sent = 0
         self.dropped = 0
         self.held = 0  # messages held back for later ones to overtake
+        self.copied = 0  # messages and queries sent twice
         self._thread: threading.Thread | None = None
         if self.faults.delay > 0 or self.faults.reorder > 0:
             self._thread = threading.Thread(
@@ -97,7 +98,9 @@ class Link:
     def duplicated(self) -> bool:
         """Whether the next query is to be sent twice."""
         with self._lock:
-            return self._chance(self.faults.duplicate, self._rng_query)
+            twice = self._chance(self.faults.duplicate, self._rng_query)
+            self.copied += twice
+            return twice
 
     def _chance(self, p: float, rng: random.Random | None = None) -> bool:
         """One draw of a fault of probability ``p`` (none when ``p`` is 0; under the lock), from
@@ -117,6 +120,7 @@ class Link:
             if self._drop():
                 return
             copies = 2 if self._chance(f.duplicate) else 1
+            self.copied += copies - 1
             hold = self._chance(f.reorder)
             self.held += hold
             late = f.delay + (REORDER_HOLD if hold else 0.0)
