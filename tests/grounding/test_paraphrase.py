@@ -254,14 +254,6 @@ KNOWN_MISSES = frozenset(
         "Not the crisps, Bob wants the bottle after basketry.",
         "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
         # blind44 (tuned on in session 46): refusals left at its one measurement (docs/grounding.md)
-        "Khublei in advance, could the red mug go across to Carol, please?",
-        "Sorry to nag, only Person B is still hoping for the bottle, would you?",
-        "Pardon me for butting in, the bottle for Person A if it's not too much trouble.",
-        "Person B reckons the chips would set him right before the quickstep heats.",
-        "Person B's parched after cloud spotting all afternoon, he needs the cup.",
-        "Person A would give her eye teeth for that bottle right now.",
-        "Person A is starving after the molecatcher's visit, the chips would do her nicely.",
-        "Mia needs the barcode scanner to log the scrap dealer's load.",
         "The ostler's boots keep catching the bottle; up on the shelf with it, would you.",
         "Since the timpani rehearsal Person B keeps on about the cup; let him have it, for peace.",
         "That apple was set aside for Person A at the swan upping; run it over to her.",
@@ -293,12 +285,8 @@ KNOWN_MISSES = frozenset(
         "notebook to priya thanks she has minutes to take",
         "tin of screws on the workbench kofi wants to count them",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
-        "Do you reckon the cup could go across to Person A, seeing as her tarot reading's soon?",
-        "How about passing Person B the chips, seeing he's come all this way?",
-        "Could Dana have the spoon to stir the buffer?",
         "Mrs Khan is in pain, so would you take her medication over to her?",
         "Could Mr Novak have the blue plate, the white one's too plain for him?",
-        "Could you put the small spanner away in the locker when you're done?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

@@ -4,11 +4,255 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import (
+    _COMMON,
+    _F,
+    _KEEP_WORDS,
+    _names,
+    _objects_only,
+    _unknown_word,
+)
+from hltl.grounding._normalise2 import _asks_nothing29
+from hltl.grounding._rewrites45 import _fits_only45, _person, _read_for, _read_for_said
+from hltl.grounding.lexicon import VERBS, Lexicon
 from hltl.grounding.tree import Node
 
-# the normaliser's first rewrites (wired into normalise._STEPS19, before the session-45 ones)
-_STEPS46_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+# -- session 46 (engineer 12): blind44's refusals of politeness and fillers, wants and needs,
+# pronouns and ellipsis and questions, each read as a family. Every rule rewrites to words the
+# grammar (or an older rule) already reads, and keeps the rewrite only when it reads.
+
+
+# -- thanks ahead in another language opening the request ("Khublei in advance, could the red mug
+# go across to Carol, please?", "Dziekuje so much, …"): a word no English word the grounder knows
+# (no first name, no name of the scene: _unknown_word, _names) before 'in advance' / 'so much' /
+# 'again' and a comma, said 'Thanks in advance,' (session 24 knows the common ones by name)
+_THANKS_AHEAD46 = re.compile(
+    r"^(?P<w>[A-Za-z][a-z]+) (?:in advance|so much|very much|ever so much|muchly|again|a lot|"
+    r"a million)\s*[,:;!]\s*(?=\S)",
+    _F,
+)
+
+
+def _thanks_ahead46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the opening thanks above said as 'Thanks in advance,'."""
+    m = _THANKS_AHEAD46.match(text)
+    if m is None or not _unknown_word(m["w"], lexicon) or _names(m["w"], lexicon):
+        return text
+    return _read_for(f"Thanks in advance, {text[m.end() :]}", text, None, lexicon)
+
+
+# -- an apology for asking again opening the request, then 'only' for 'but' ("Sorry to nag, only
+# Person B is still hoping for the bottle, would you?", "Hate to be a pest, only Tom's still
+# waiting on the tape."); and an apology for cutting in said with 'pardon / excuse / forgive me'
+# ("Pardon me for butting in, the bottle for Person A …", "Forgive me for interrupting, …"): the
+# apology taken off (the 'me' of it is the speaker, no recipient). Kept only when what is left
+# reads.
+_APOLOGY_ONLY46 = re.compile(
+    r"^(?:(?:i'm |i am )?(?:so |very |really |terribly |awfully )?sorry|i hate|hate|forgive me|"
+    r"pardon me|excuse me) (?:to|for) (?:nag|nagging|go on|going on|keep on|keeping on|harp on|"
+    r"harping on|pester you|pestering you|bother you|bothering you|chase|chasing|ask again|"
+    r"asking again|be a (?:pain|pest|nuisance|bore)|being a (?:pain|pest|nuisance|bore))"
+    r"(?: again| about it| you)?\s*,\s*(?:only|but)\s+(?=\S)"
+    r"|^(?:pardon|excuse|forgive) me(?: for (?:butting in|barging in|cutting in|jumping in|"
+    r"chipping in|breaking in|interrupting|intruding|asking|the interruption|the intrusion|"
+    r"bothering you|nagging))\s*,\s*(?:but\s+)?(?=\S)",
+    _F,
+)
+
+
+def _apology46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the apology above taken off."""
+    m = _APOLOGY_ONLY46.match(text)
+    if m is None:
+        return text
+    rest = text[m.end() :]
+    return _read_for(rest[:1].upper() + rest[1:], text, None, lexicon)
+
+
+# -- a want said by what the person would give for it ("Person A would give her eye teeth for that
+# bottle right now", "Tom'd give his back teeth for the tape"): said with 'would give anything
+# for', which session 42's idiom rule reads as 'wants' (the person before it, objects only after)
+_GIVE_TEETH46 = re.compile(
+    r"(?P<v>(?: would|'d) (?:happily |gladly )?give )(?:his|her|their|my) (?:eye teeth|back teeth|"
+    r"left arm|last penny|last pound|last quid|last fiver)(?= for )|(?P<v2>(?: would|'d) "
+    r"(?:happily |gladly )?give )(?:a kidney|an arm and a leg|a limb)(?= for )",
+    _F,
+)
+
+
+def _give_teeth46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the idiom above said as 'would give anything for'."""
+    if " give " not in text.lower():
+        return text
+    m = _GIVE_TEETH46.search(text)
+    if m is None:
+        return text
+    out = f"{text[: m.start()]}{m['v'] or m['v2']}anything{text[m.end() :]}"
+    return _read_for(out, text, None, lexicon)
+
+
+# -- a want said by what the thing would do for the person ("…, the chips would do her nicely",
+# "the apple would set him right", "the bottle would see her right"): said 'would do her good',
+# which session 42's rule reads as handing it to the one person named before it whom the pronoun
+# may be. And the same said as what the person thinks ("Person B reckons the chips would set him
+# right before the quickstep heats"): 'Person B wants the chips …', the pronoun the person's
+# (_fits_only45: it may be P, and no one else of the scene is said to be of that sex).
+_DO_GOOD46 = (
+    r"(?:do (?P<p1>him|her|them) (?:nicely|fine|nicely thanks|a treat|the world)|(?:set|see|put)"
+    r" (?P<p2>him|her|them) right|sort (?P<p3>him|her|them) out|(?:buck|perk|pick|cheer|fix) "
+    r"(?P<p4>him|her|them) (?:up|right up)|sort (?P<p5>him|her|them) right out)"
+)
+_WOULD_SUIT46 = re.compile(
+    rf"(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?P<m>would|will|'d|'ll) "
+    rf"(?:really |just |honestly |absolutely )?{_DO_GOOD46}",
+    _F,
+)
+_RECKONS46 = re.compile(
+    r"(?P<p>\b[A-Za-z][\w]*(?: [A-Z][\w]*)?) (?:reckons|thinks|says|swears|is sure|'s sure|"
+    r"reckoned|thought|said|swore)(?: that)? "
+    rf"(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:would|will|'d|'ll) "
+    rf"(?:really |just |honestly |absolutely )?{_DO_GOOD46}",
+    _F,
+)
+
+
+def _would_suit46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the want above said 'would do her good' (or 'P wants X')."""
+    low = text.lower()
+    if " would " not in low and "'d " not in low and " will " not in low and "'ll " not in low:
+        return text
+    m = _RECKONS46.search(text)
+    if m is not None and _objects_only(m["x"], lexicon):
+        pid = _person(m["p"], lexicon)
+        pron = next(g for g in m.groups()[2:] if g is not None)
+        if pid is not None and _fits_only45(pid, pron, lexicon):
+            out = f"{text[: m.start()]}{m['p']} wants {m['x']}{text[m.end() :]}"
+            return _read_for(out, text, pid, lexicon)
+        return text
+    m = _WOULD_SUIT46.search(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    pron = next(g for g in m.groups()[2:] if g is not None)
+    out = f"{text[: m.end('m')]} do {pron} good{text[m.end() :]}"
+    return _read_for(out, text, None, lexicon)
+
+
+# -- 'all' in a remark's time or way, naming nothing of the scene ("Person B's parched after cloud
+# spotting all afternoon, he needs the cup", "…, seeing he's come all this way?"): how long or how
+# far, not every thing of the scene: the time after a doing ('spotting all afternoon'; older
+# rules read 'been out all day' and the like) taken off, the way said 'a long way' (older rules
+# take the remark off then), when those words name nothing of the scene; 'seeing he's' said
+# 'seeing as he's'. Kept only when the whole reads.
+_ALL_TIME46 = re.compile(
+    r"(?<=ing)\s+all (?:day|afternoon|morning|evening|night|week|weekend|month|year|season|summer|"
+    r"winter|term|shift)(?: long)?\b(?=\s*(?:[,.;:!?]|$))"
+    r"|\b(?P<way>all (?:this|that|the) way)(?: (?:here|over|in|down|up|across|round))?\b"
+    r"(?=\s*(?:[,.;:!?]|$))",
+    _F,
+)
+_SEEING46 = re.compile(
+    r",\s*seeing (?=(?:he|she|they|you|i|we)(?:'s|'re|'ve|'d| is| has| was)\b)", _F
+)
+
+
+def _all_said46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the time and way above said without 'all'."""
+    if "all " not in text.lower():
+        return text
+    out = text
+    for m in list(_ALL_TIME46.finditer(text))[::-1]:
+        if _names(m[0], lexicon):
+            continue
+        said = "a long way" if m["way"] else ""
+        out = out[: m.start()] + said + out[m.end() :]
+    if out == text:
+        return text
+    out = _SEEING46.sub(", seeing as ", out)
+    return _read_for(out, text, None, lexicon)
+
+
+# -- a request asked as what the hearer thinks ("Do you reckon the cup could go across to Person
+# A, seeing as …?"): said as the question it wraps ('Could the cup go across to Person A, …?'),
+# kept only when that reads; "… you could …" (session 36's) and "… P could have / get X"
+# (session 33's) are left to older rules
+_YOU_RECKON46 = re.compile(
+    r"^(?P<o>(?:(?:so|and|oh|well|erm|um),? )*)(?:do|d') ?you (?:reckon|think|suppose|imagine|"
+    r"figure)(?: that)?,? (?P<x>(?!you\b)[a-z][^,;.?!]*?) (?P<m>could|can|might)\b"
+    # 'P could have / get / take / use X' is session 33's (_THINK_COULD33)
+    r"(?! (?:have|get|take|use)\b)",
+    _F,
+)
+
+
+def _you_reckon46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the question above said as the question it wraps."""
+    m = _YOU_RECKON46.match(text)
+    if m is None or not text.rstrip().endswith("?"):
+        return text
+    out = f"{m['o']}{m['m'].capitalize()} {m['x']}{text[m.end() :]}"
+    return _read_for(out[:1].upper() + out[1:], text, None, lexicon)
+
+
+# -- 'when you're done' closing the request: when the hearer is free, as 'when you're free'
+# (which the grammar reads, in a question too) says ("Could you put the small spanner away in the
+# locker when you're done?", "…, when you're through.")
+_DONE46 = re.compile(
+    r"(?P<sep>,?\s+)when you(?:'re| are) (?:done|through|all done)(?: there| with that| here)?"
+    r"(?P<end>\s*[.?!]*)\s*$",
+    _F,
+)
+
+
+def _when_done46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: 'when you're done' above said 'when you're free'."""
+    m = _DONE46.search(text)
+    if m is None:
+        return text
+    out = f"{text[: m.start()]}{m['sep']}when you're free{m['end']}"
+    return _read_for(out, text, None, lexicon)
+
+
+# -- what the thing is for, said with any verb closing a want or a handover to one person ("Could
+# Dana have the spoon to stir the buffer?", "Mia needs the barcode scanner to log the scrap
+# dealer's load."): taken off when its verb is no verb the grounder reads (give, put, take, …),
+# its words name nothing of the scene and ask nothing (_asks_nothing29: no verb but the last
+# noun, no 'all', 'it', 'not', no his / her), and the rest reads handing things to one person.
+# Session 34 and 12s's session 42 know a closed list of such verbs; this is any verb.
+_TO_PURPOSE46 = re.compile(
+    r"(?P<sep>\s*,?\s+)to (?P<v>[a-z]+) (?P<det>the|a|an|his|her|their|some|its) "
+    r"(?P<words>[a-z][a-z' -]*?)(?P<end>\s*[.!?]*)\s*$",
+    _F,
+)
+
+
+def _to_purpose46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the purpose above taken off."""
+    if " to " not in text:
+        return text
+    m = _TO_PURPOSE46.search(text)
+    if m is None or m["v"].lower() in VERBS or m["v"].lower() not in _COMMON:
+        return text
+    words = f"{m['det']} {m['words']}"
+    # a noun after a determiner or an owner ("the scrap dealer's load") is no verb to read
+    *head, noun = words.rsplit(" ", 1)
+    if head and (head[0].endswith("'s") or head[0] == m["det"]) and noun.lower() in VERBS:
+        words = f"{head[0]} x"
+    if _KEEP_WORDS.search(m["words"]) or not _asks_nothing29(words, lexicon):
+        return text
+    return _read_for_said(text[: m.start()] + m["end"].strip(), text, words, lexicon)
+
+
+_STEPS46_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _thanks_ahead46,
+    _apology46,
+    _give_teeth46,
+    _would_suit46,
+    _all_said46,
+    _you_reckon46,
+    _when_done46,
+    _to_purpose46,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-45 ones)
 _STEPS46: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-45 ones)

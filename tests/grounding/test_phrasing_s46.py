@@ -1,0 +1,160 @@
+"""Session-46 phrasings of issue 12 (engineer 12): blind44's politeness and fillers, wants and
+needs, pronouns and ellipsis and questions, each as a family (docs/grounding.md, "Session 46
+(engineer 12)"). Each rule with sentences in other words and scenes it reads (refused on main and
+with the rule taken out), and near sentences that must stay refused."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.grounding import _rewrites46
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    LAB,
+    NURSERY,
+    OFFICE,
+    WARD,
+    WORKSHOP,
+    PhrasingCases,
+)
+
+# -- thanks ahead in another language opening the request (_thanks_ahead46) ----------------------
+
+THANKS = PhrasingCases()
+test_thanks_ahead = THANKS.test(
+    ("Ngiyabonga so much, could you take Mr Lee the magazine?", "magazine>B", WARD),
+    ("Diolch again, pass Marco the lemon, please.", "lemon>A", KITCHEN),
+    ("Khublei in advance, could the red mug go across to Carol, please?", "mug_red>C", CELL),
+    # a name of the scene, a name not of it: no word of thanks
+    ("Ava in advance, could Lily have the teddy?", None, NURSERY),
+    ("Dave in advance, could you take her the jug?", None, WARD),
+)
+
+
+def test_thanks_ahead_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    THANKS.refused_without((_rewrites46._thanks_ahead46,), monkeypatch)
+
+
+# -- an apology for asking again ('…, only …') or for cutting in ('pardon me for …') (_apology46) --
+
+APOLOGY = PhrasingCases()
+test_apology = APOLOGY.test(
+    ("Sorry to nag, only Jess is still waiting on the drill, would you?", "drill>B", WORKSHOP),
+    ("Hate to be a pest, only Tom's still after the tape.", "tape>B", DEPOT),
+    ("Excuse me for butting in, could Priya have the notebook?", "notebook>A", OFFICE),
+    ("Forgive me for interrupting, the lemon for Marco, please.", "lemon>A", KITCHEN),
+    ("Pardon me for barging in, the bib for Grandad if you would.", "bib>B", NURSERY),
+    # what is left says not to, or names no one
+    ("Sorry to nag, only not the tape for Tom.", None, DEPOT),
+    ("Pardon me for butting in, give her the notebook.", None, OFFICE),
+)
+
+
+def test_apology_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    APOLOGY.refused_without((_rewrites46._apology46,), monkeypatch)
+
+
+# -- 'would give her eye teeth for' (_give_teeth46) ---------------------------------------------
+
+TEETH = PhrasingCases()
+test_give_teeth = TEETH.test(
+    ("Tom would give his back teeth for the tape right now.", "tape>B", DEPOT),
+    ("Priya'd give her eye teeth for that stapler.", "stapler>A", OFFICE),
+    ("Marco would give a kidney for the lemon.", "lemon>A", KITCHEN),
+    # a person after 'for': no want of a thing
+    ("Tom would give his back teeth for Mia.", None, DEPOT),
+)
+
+
+def test_give_teeth_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    TEETH.refused_without((_rewrites46._give_teeth46,), monkeypatch)
+
+
+# -- 'the X would do her nicely / set him right', 'P reckons X would …' (_would_suit46) -----------
+
+SUIT = PhrasingCases()
+test_would_suit = SUIT.test(
+    ("Lily's grizzly, the teddy would do her nicely.", "teddy>A", NURSERY),
+    ("Mr Lee's flagging, the magazine would set him right.", "magazine>B", WARD),
+    ("Tom's frozen, the gloves would see him right.", "gloves>B", DEPOT),
+    ("Noah reckons the ruler would sort him out.", "ruler>B", CLASSROOM),
+    ("Mrs Khan reckons the jug would set her right.", "jug>C", WARD),
+    # the pronoun is not the person's, or another of the scene may be meant
+    ("Mr Lee reckons the jug would set her right.", None, WARD),
+    ("Alice reckons the apple would set him right.", None, CELL),
+)
+
+
+def test_would_suit_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SUIT.refused_without((_rewrites46._would_suit46,), monkeypatch)
+
+
+# -- 'all afternoon', 'all this way' in a remark; 'seeing he's' (_all_said46) -------------------
+
+ALL_SAID = PhrasingCases()
+test_all_said = ALL_SAID.test(
+    ("Zoe's shattered after gluing all morning, she needs the scissors.", "scissors>C", CLASSROOM),
+    ("How about passing Kofi the drill, seeing he's come all this way?", "drill>A", WORKSHOP),
+    ("Marco's starving after chopping all evening, he'd love the lemon.", "lemon>A", KITCHEN),
+)
+
+
+def test_all_said_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ALL_SAID.refused_without((_rewrites46._all_said46,), monkeypatch)
+
+
+# -- 'Do you reckon X could …?' (_you_reckon46) -------------------------------------------------
+
+RECKON = PhrasingCases()
+test_you_reckon = RECKON.test(
+    (
+        "Do you reckon the stapler could go across to Priya, seeing as her meeting's soon?",
+        "stapler>A",
+        OFFICE,
+    ),
+    ("Do you think the drill could go in the locker?", "drill@locker", WORKSHOP),
+    ("D'you reckon the lemon might go on the rack?", "lemon@rack", KITCHEN),
+    # what it wraps is refused too
+    ("Do you think Kofi could manage without the drill?", None, WORKSHOP),
+    ("Do you reckon Tom could have it?", None, DEPOT),
+)
+
+
+def test_you_reckon_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    RECKON.refused_without((_rewrites46._you_reckon46,), monkeypatch)
+
+
+# -- 'when you're done' closing the request (_when_done46) --------------------------------------
+
+DONE = PhrasingCases()
+test_when_done = DONE.test(
+    ("Could you put the drill away in the locker when you're done?", "drill@locker", WORKSHOP),
+    ("Pop the tongs on the rack when you're through.", "tongs@rack", KITCHEN),
+    ("Would you put the stapler on the desk when you're all done?", "stapler@desk", OFFICE),
+    ("Pop the tongs on the rack when you're done with them.", None, KITCHEN),
+)
+
+
+def test_when_done_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DONE.refused_without((_rewrites46._when_done46,), monkeypatch)
+
+
+# -- what the thing is for, with any verb (_to_purpose46) ---------------------------------------
+
+PURPOSE = PhrasingCases()
+test_to_purpose = PURPOSE.test(
+    ("Could Dana have the spoon to stir the mixture?", "spoon>A", LAB),
+    ("Tom needs the tape to wrap the courier's parcels.", "tape>B", DEPOT),
+    ("Can Marco have the knife to slice the bread?", "knife>A", KITCHEN),
+    ("Priya needs the stapler to bind the report.", "stapler>A", OFFICE),
+    # a verb of handing over, a thing of the scene after it
+    ("Can Marco have the knife to give the porter?", None, KITCHEN),
+    ("Tom needs the tape to wrap the scanner.", None, DEPOT),
+)
+
+
+def test_to_purpose_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PURPOSE.refused_without((_rewrites46._to_purpose46,), monkeypatch)
