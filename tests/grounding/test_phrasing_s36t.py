@@ -200,7 +200,8 @@ test_named_by_sex = SEX.test(
     # both may be it (two men; a name the list does not give a sex; two women); a 'her' before a
     # noun; a pronoun in the remark itself; two sentences
     ("Marco and Mr Novak are both in now, pass him the lemon", None, KITCHEN),
-    ("Marco and Lena are both in now, pass him the lemon", None, KITCHEN),
+    # session 46 (lead's decision): 'Lena' is a woman's name, so 'him' is Marco
+    ("Marco and Lena are both in now, pass him the lemon", "lemon>A", KITCHEN),
     ("Ruth and Mrs Khan are both here now, pass her the magazine", None, WARD),
     ("Ruth and Mr Lee are both here now, pass her cup to him", None, WARD),
     ("Alice and Bob are here and she's thirsty, pass him the crisps", None, TWO),

@@ -321,7 +321,12 @@ test_choices = CASES.test(
         DEPOT,
     ),
     ("Mr Lee and Mrs Khan get something each, him the jug and him the magazine.", None, WARD),
-    ("Lena and Marco get something each, him the tongs and her the salt.", None, KITCHEN),
+    # session 46 (the lead's decision): 'Lena' is a woman's name, so 'her' is Lena
+    (
+        "Lena and Marco get something each, him the tongs and her the salt.",
+        "tongs>A & salt>B",
+        KITCHEN,
+    ),
     ("The students get a book apiece, red for Noah.", None, CLASSROOM),
     (
         "Both of them get one thing each: the jug to Ruth, the pills to Mr Lee, the magazine to "
