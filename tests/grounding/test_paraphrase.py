@@ -287,6 +287,114 @@ KNOWN_MISSES = frozenset(
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
         "Mrs Khan is in pain, so would you take her medication over to her?",
         "Could Mr Novak have the blue plate, the white one's too plain for him?",
+        # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
+        "Go on then, if you're not run off your feet, let Person A have the bottle, bless you.",
+        "Ruth says jullay, which is Ladakhi for thank you, and asks nicely that the magazine be "
+        "put on the locker.",
+        "Pretty please with a cherry on top, sit the teddy bear on the high chair before Lily's "
+        "nap.",
+        "Kammagar, Yapese for thank you, and the flashlight to Kofi if you'd be so good.",
+        "Bob's hankering for the crisps after a long shift as a pinsetter.",
+        "Person A's in sore need of the bottle, the escapologist's act left her wrung out.",
+        "Tom requires the work gloves for loading the basketmaker's order onto his van.",
+        "Noah is keen to get hold of the ruler, he's drawing up a yahtzee score sheet.",
+        "Lily's wanting her bib, she's all mucky from making loom bands with Ava.",
+        "Alice put in for the bottle and she's owed it, so it's hers; Bob can have the crisps "
+        "for his trouble.",
+        "Person A would like the apple; she'll be after the cup too, so both of them to her.",
+        "Bottle's hers, Person A's, and the chips belong with that fellow by the hatch, Person "
+        "B, so sort them out.",
+        "She's asking for the bottle, Person A is, so let her have it.",
+        "Omar's the technician, isn't he? Take him the bowl.",
+        "That big spanner belongs in the foreman's hands, Kofi's, he's got the wheeler's axle to "
+        "tighten.",
+        "Bottle to Alice crisps to Bob the costermonger's shouting about his barrow again",
+        "Person B's bottle is the first job. When he's got it, the apple for Person A, the "
+        "pigman's niece.",
+        "The chips. Person A wants them. Nobody else has asked.",
+        "Chips? Person A's. Bottle? Person B's. The farm hand sends his regards and says ta.",
+        "Sponge into the sink first. After, the bowl for Omar. Emma's fine with waiting, she's a "
+        "visitor.",
+        "The black pen goes in the box it's Sam's filing day and the stapler to Priya",
+        "Small box onto the belt medium box onto the pallet the cowman's lorry is outside",
+        "Give Alice and Bob one each, the bottle to her and the crisps to him.",
+        "Whatever Person B chooses out of cup, bottle and apple is fine by the innkeeper, only "
+        "one though.",
+        "With the sword swallower coming to supper, Person A is owed the apple and the chips both.",
+        "Give Person A whichever of the apple and the chips, she won't mind.",
+        "Share things out fair as the toll keeper would: bottle goes Person A's way and chips go "
+        "Person B's way.",
+        "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
+        "holding the bottle.",
+        "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
+        "Emma can have either cup, green or white, she has no preference.",
+        "Lena and Marco get a plate each: the white one to her, the blue one to him.",
+        "Kofi's after a spanner for the ploughwright, small or big, he'll take whatever comes "
+        "first to hand.",
+        "Both of the mugs up on the shelf, please, clear of the publican's elbows.",
+        "All four things to Person B: bottle, chips, cup and apple.",
+        "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
+        "and cup alike.",
+        "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
+        "over it goes.",
+        "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "
+        "the pair over.",
+        "Both cups in the sink, the pair of them, before the visitor looks.",
+        "Both blankets to Mr Lee, he's shivering like a stable lad in January.",
+        "Line up both blocks on the high chair so Lily can play her stacking game, red and green "
+        "together.",
+        "Bob's not after any mugs or the cup, he's packing for the pétanque trip: bottle, crisps "
+        "and apple, please.",
+        "Bob's off the bottle since the mead festival, so leave that and get him the crisps "
+        "instead.",
+        "Apple's spoken for by the rector, but Person B is free to pick one other thing, cup or "
+        "chips or bottle.",
+        "Chips aren't going to Person A this time round; Person B's turn, he won the spillikins.",
+        "Person A's had her fill of water at the cha-cha social, so the bottle's for Person B.",
+        "Never mind the glass, just take the bottle to Person A.",
+        "Emma's fasting for the samba gala so she's having nothing, but Dana's peckish, so the "
+        "banana goes to Dana.",
+        "Lena's banned from sharp things after the sword swallower incident, so she gets the "
+        "tongs and no knife.",
+        "Ava's building a castle that has to be green, so leave the red block out of it and "
+        "fetch her the green.",
+        "Jess is off power tools until the timekeeper signs the card; hammer only for now, to "
+        "Jess.",
+        "Alice wants the red mug, oh hang about, she said blue, the blue mug to Alice.",
+        "Crisps over to Bob, or, hmm, Alice called dibs on them first, so Alice.",
+        "Pop the bottle up on the shelf, or actually Bob's just shouted for it, so him instead.",
+        "The cup to Person B, I mean Person A, the one back from the celesta recital.",
+        "Person B ordered the apple but changed his tune at the pétanque; chips for him instead.",
+        "Chips to Person A, oops, there aren't any chips, the bottle then.",
+        "Person A's cup, er, no, that's wrong, there isn't one, I meant her bottle, bring it "
+        "along.",
+        "Person B's bottle, hold your horses, it turns out Person A was the thirsty one, so give "
+        "it her.",
+        "Omar asked for the white cup, well, I heard white, but he corrected me: it's the green "
+        "cup he's after.",
+        "Mr Lee's done with temperatures for today; the thermometer ought to be with Mrs Khan, "
+        "my slip.",
+        "That medium box wants to go on the pallet, or rather the conveyor, the pallet's full of "
+        "the basketmaker's stock.",
+        "Put the bib on the high chair, or, wait, Grandad's holding out his hand for it, so to "
+        "him.",
+        "Kofi asked for the small spanner, no, I've mixed it up, the drill's what he's after.",
+        "the cup to person a and the apple to person b for the pétanque lot",
+        "the visitor looks half starved after the minuet so banana to her",
+        "chef marcos got the damson jam cake to slice give him the knife",
+        "Sam's got a notebokk to fill with the rector's notices, so pass it to Sam.",
+        "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
+        "The treddy on the play mat for Lily.",
+        "Is there any chance of the blue mug landing on the counter before the precentor's "
+        "rehearsal?",
+        "Would it be a hardship to get Person B the bottle while he rests from the step dancing?",
+        "Might Person A be given the bottle now she's back from the contra dancing?",
+        "Jullay in advance; is it possible for Person A to receive the bottle before her celesta "
+        "solo?",
+        "Could you pop the bowl into the sink now the kefir's all finished?",
+        "Would you put the red pen on the desk for Priya's paper marbling?",
+        "Might the ruler find a home on the bookshelf before the scrapbook club?",
+        "Can the big sister, Ava, be handed the bib so she can feed Lily?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -308,6 +416,15 @@ KNOWN_UNCLEAR = frozenset(
         "The bottle goes to the one who asked. The chips stay put.",
         "Tom asked for a box. Bring him the one he used yesterday.",
         "Not the big box for Tom, the one he asked for this morning.",
+        # blind45 (tuned on in session 47)
+        "Mr Novak needed one of the plates for his woodcut display, and I honestly forget which.",
+        "Hand Person A the one she was eyeing up during the knucklebones game.",
+        "Noah and Zoe both stuck their hands up; give the scissors to the other one.",
+        "Person B asked for one of them, the bottle or the chips, and I can't for the life of me "
+        "remember which.",
+        "Sam asked for one of the pens earlier, not the blue, and I didn't catch which.",
+        "Grandad wants one of the blocks, he did say which one but I've gone blank.",
+        "Can you give the bottle to the one who was at the pétanque with me? I forget who.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -396,8 +513,11 @@ KNOWN_UNCLEAR = frozenset(
 # refused since session 45), tuned on in session 45: asserted now, the rest in KNOWN_MISSES and
 # KNOWN_UNCLEAR; "blind44" written in session 45 by another engineer and committed alone,
 # reviewed by a second one, measured once at the end of session 45 (1 wrong, read right since
-# session 46), tuned on in session 46: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind45"})
+# session 46), tuned on in session 46: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR;
+# "blind45" written in session 46 by another engineer and committed alone, reviewed by a second
+# one, measured once at the end of session 46 (1 wrong, read right since session 47), tuned on in
+# session 47: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -144,7 +144,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # alone, never opened by the engineers who change the grounder before its one measurement at the end
 # of session 45; tuned on in session 46), blind45 (written in session 46 by another engineer and
 # committed alone, never opened by the engineers who change the grounder before its one measurement
-# at the end of session 46; tests do not assert it).
+# at the end of session 46; tuned on in session 47).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -549,6 +549,9 @@ from hltl.grounding._rewrites45s import _STEPS45S, _STEPS45S_FIRST
 from hltl.grounding._rewrites46 import _STEPS46, _STEPS46_FIRST
 from hltl.grounding._rewrites46r import _STEPS46R, _STEPS46R_FIRST
 from hltl.grounding._rewrites46s import _STEPS46S, _STEPS46S_FIRST
+from hltl.grounding._rewrites47 import _STEPS47, _STEPS47_FIRST
+from hltl.grounding._rewrites47r import _STEPS47R, _STEPS47R_FIRST
+from hltl.grounding._rewrites47s import _STEPS47S, _STEPS47S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -880,6 +883,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS47S_FIRST,
+    *_STEPS47R_FIRST,
+    *_STEPS47_FIRST,
     *_STEPS46S_FIRST,
     *_STEPS46R_FIRST,
     *_STEPS46_FIRST,
@@ -918,6 +924,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS47R,
     *_STEPS46R,
     *_STEPS45R,
     *_STEPS44R,
@@ -958,6 +965,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS47S,
     *_STEPS46S,
     *_STEPS45S,
     *_STEPS44S,
@@ -1045,6 +1053,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS47,
     *_STEPS46,
     *_STEPS45,
     *_STEPS44,

@@ -39,6 +39,10 @@ from hltl.grounding import (
     _rewrites46l,
     _rewrites46r,
     _rewrites46s,
+    _rewrites47,
+    _rewrites47l,
+    _rewrites47r,
+    _rewrites47s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -124,6 +128,9 @@ _REFUSALS = (
     *_rewrites46.REFUSE46,
     *_rewrites46r.REFUSE46R,
     *_rewrites46s.REFUSE46S,
+    *_rewrites47.REFUSE47,
+    *_rewrites47r.REFUSE47R,
+    *_rewrites47s.REFUSE47S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -149,6 +156,9 @@ _CHECKS = (
     *_rewrites46.CHECK46,
     *_rewrites46r.CHECK46R,
     *_rewrites46s.CHECK46S,
+    *_rewrites47.CHECK47,
+    *_rewrites47r.CHECK47R,
+    *_rewrites47s.CHECK47S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -654,6 +664,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         text = _rewrites45l.other_person45l(text, lexicon)
         _rewrites45l.owner_either45l(text, lexicon)
         text = _rewrites46l.particle_place46l(text)
+        text = _rewrites47l.thought_but47l(text)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)
