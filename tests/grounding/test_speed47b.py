@@ -72,7 +72,9 @@ def test_the_new_passes_are_gated() -> None:
     gated = [s for s in phrasing._PASSES if hasattr(s, "__wrapped__")]
     said = [s for s in gated if "needs" in s.__dict__]
     when = [s for s in gated if "opens" in s.__dict__]
-    assert (len(gated), len(said), len(when)) == (53, 46, 2)
+    # 53 gated, 46 of them by _said and 2 by _when after session 47's gates (lower bounds: other
+    # engineers' passes may come gated)
+    assert len(gated) >= 53 and len(said) >= 46 and len(when) >= 2
 
 
 @pytest.mark.parametrize(("name", "text"), _CHANGED)
