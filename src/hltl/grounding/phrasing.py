@@ -5605,6 +5605,7 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if wanted is not None:
             n, j = wanted
             things = items[n + 1 : j]
+            j = _particle_place47p(items, j, things)
             m = j + 1
             m = _past_dets(items, m)
             if (
@@ -5621,6 +5622,22 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(x)
         k += 1
     return out
+
+
+def _particle_place47p(items: list[Item], j: int, things: list[Item]) -> int:
+    """Where the place of a wanted list begins: at ``j``, or after a particle before it
+    ('down', 'up', 'over', 'back', 'across') when two things are wanted ("Marco wants the knife
+    and the lemon down on the counter": the particle says nothing the place does not)."""
+    if (
+        j + 1 < len(items)
+        and _is(items[j], "filler")
+        and items[j].text.lower() in ("down", "up", "over", "back", "across")
+        and items[j + 1].text.lower() in ("on", "onto", "in", "into")
+        and any(_is(y, "and") for y in things)
+        and not any(_is(y, ",") for y in things)  # "…, and the bowl down in the sink"
+    ):
+        return j + 1
+    return j
 
 
 # the forms of a moving or placing verb that can follow its object ("the cup put on the shelf")
