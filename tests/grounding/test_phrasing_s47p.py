@@ -9,6 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import parse_expectation, show_tree
+from hltl.errors import GroundingError
 from hltl.grounding import phrasing
 from hltl.grounding.offline import parse_instruction
 from tests.grounding.helpers import KITCHEN, LAB, assert_reads, tree
@@ -79,3 +80,53 @@ def test_read_wrong_without(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(phrasing, "_particle_place47p", lambda items, j, things: j)
     got = tree(text, KITCHEN)
     assert got is None or show_tree(got) != _shown("plate_white@counter & plate_blue@counter")
+
+
+# -- "P is after / asked for X and Y in the S": the grammar gave X to P and put Y there (the
+# lead's word, session 47); now refused by the grammar, and the normaliser reads the want as
+# 'wants' reads (both put there), never X handed to P
+
+_SAID_WANTS = (
+    "Omar is after the spoon and the bowl in the sink.",
+    "Omar's after the spoon and the bowl in the sink.",
+    "Omar asked for the spoon and the bowl in the sink.",
+    "Omar has asked for the spoon and the bowl in the sink.",
+    "Omar is after the spoon and the bowl down in the sink.",
+)
+
+
+@pytest.mark.parametrize("text", _SAID_WANTS)
+def test_a_want_said_as_after_is_not_split(text: str) -> None:
+    got = tree(text, LAB)
+    assert got is None or show_tree(got) == _shown("spoon@sink & bowl@sink")
+
+
+@pytest.mark.parametrize("text", _SAID_WANTS)
+def test_the_grammar_refuses_a_want_said_as_after(text: str) -> None:
+    with pytest.raises(GroundingError, match="could say where all of"):
+        parse_instruction(text, LAB, normalise=False)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Omar wants the spoon and the bowl in the sink.", "spoon@sink & bowl@sink"),
+        ("Omar asked for the spoon and the bowl.", "spoon>B & bowl>B"),
+        ("Omar is after the spoon in the sink.", "spoon@sink"),
+    ],
+)
+def test_near_wants_keep_their_reading(text: str, want: str) -> None:
+    assert_reads(text, want, LAB)
+
+
+def test_was_after_stays_refused() -> None:
+    assert tree("Omar was after the spoon and the bowl in the sink.", LAB) is None
+
+
+def test_split_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    """With the pass out, the first thing goes to Omar again: _said_want_on47p is what stops it."""
+    monkeypatch.setattr(
+        phrasing, "_PASSES", tuple(p for p in phrasing._PASSES if "_said_want_on47p" not in repr(p))
+    )
+    got = tree("Omar is after the spoon and the bowl in the sink.", LAB)
+    assert got is not None and show_tree(got) == _shown("spoon>B & bowl@sink")
