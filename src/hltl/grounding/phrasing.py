@@ -5630,6 +5630,7 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if wanted is not None:
             n, j = wanted
             things = items[n + 1 : j]
+            j = _particle_place47p(items, j, things)
             m = j + 1
             m = _past_dets(items, m)
             if (
@@ -5646,6 +5647,64 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(x)
         k += 1
     return out
+
+
+def _particle_place47p(items: list[Item], j: int, things: list[Item]) -> int:
+    """Where the place of a wanted list begins: at ``j``, or after a particle before it
+    ('down', 'up', 'over', 'back', 'across') when two things are wanted ("Marco wants the knife
+    and the lemon down on the counter": the particle says nothing the place does not)."""
+    if (
+        j + 1 < len(items)
+        and _is(items[j], "filler")
+        and items[j].text.lower() in ("down", "up", "over", "back", "across")
+        and items[j + 1].text.lower() in ("on", "onto", "in", "into")
+        and any(_is(y, "and") for y in things)
+        and not any(_is(y, ",") for y in things)  # "…, and the bowl down in the sink"
+    ):
+        return j + 1
+    return j
+
+
+def _said_want_on47p(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """Session 47 (12p, the lead's word): 'Omar is after the spoon and the bowl in the sink',
+    'Omar (has) asked for the spoon and the bowl (down) in the sink' — a want said as 'is after' /
+    'asked for' (made a want by _is_after / _asked_for, after _wanted_on has run) of a list of
+    objects and a place: the place may say which of the last thing is meant or where all of them
+    go; the grammar had given the first to the person and put the last there. Refused, naming the
+    readings. A want said as 'wants' / 'needs' is read by _wanted_on (all put there)."""
+    for n, it in enumerate(items):
+        said_as = it.text.lower().rsplit(" ", 1)
+        if it.lemma not in _WANTS or len(said_as) < 2 or said_as[1] not in ("after", "for"):
+            continue  # 'wants', 'would like': _wanted_on's
+        j = n + 1
+        while j < len(items) and (_objects(items[j]) or _is(items[j], "det", "and", ",")):
+            j += 1
+        things = items[n + 1 : j]
+        if sum(1 for y in things if _objects(y)) < 2 or not any(_is(y, "and") for y in things):
+            continue
+        if (
+            j + 1 < len(items)
+            and _is(items[j], "filler")
+            and items[j].text.lower() in ("down", "up", "over", "back", "across")
+        ):
+            j += 1
+        m = _past_dets(items, j + 1)
+        if (
+            j + 1 < len(items)
+            and _is(items[j], "on")
+            and _starts_surface(items, j + 1)
+            and (m + 1 == len(items) or _is(items[m + 1], *_SEPARATORS, "filler"))
+            and not _lying_on(things, items[m], lexicon)
+        ):
+            said = " ".join(x.text for x in items[n : m + 1])
+            listed = " ".join(x.text for x in things if not _is(x, ","))
+            place = " ".join(x.text for x in items[j + 1 : m + 1])
+            raise GroundingError(
+                f"{said!r} could say where all of {listed} go or which of the last one is "
+                f"meant (the first handed over): say 'put {listed} {items[j].text} {place}', or "
+                "who gets what"
+            )
+    return items
 
 
 # the forms of a moving or placing verb that can follow its object ("the cup put on the shelf")
@@ -6214,6 +6273,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _plain(_infinitives),
     _said(_plain(_is_after), ("after",)),
     _plain(_asked_for),
+    _said(_said_want_on47p, ("on",)),
     _plain(_questions),
     _said(_plain(_do_for), ("do",)),
     _plain(_after_all),
