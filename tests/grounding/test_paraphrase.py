@@ -317,20 +317,12 @@ KNOWN_MISSES = frozenset(
         "visitor.",
         "The black pen goes in the box it's Sam's filing day and the stapler to Priya",
         "Small box onto the belt medium box onto the pallet the cowman's lorry is outside",
-        "Give Alice and Bob one each, the bottle to her and the crisps to him.",
-        "Whatever Person B chooses out of cup, bottle and apple is fine by the innkeeper, only "
-        "one though.",
         "With the sword swallower coming to supper, Person A is owed the apple and the chips both.",
-        "Give Person A whichever of the apple and the chips, she won't mind.",
         "Share things out fair as the toll keeper would: bottle goes Person A's way and chips go "
         "Person B's way.",
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
         "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
-        "Emma can have either cup, green or white, she has no preference.",
-        "Lena and Marco get a plate each: the white one to her, the blue one to him.",
-        "Kofi's after a spanner for the ploughwright, small or big, he'll take whatever comes "
-        "first to hand.",
         "Both of the mugs up on the shelf, please, clear of the publican's elbows.",
         "All four things to Person B: bottle, chips, cup and apple.",
         "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
@@ -417,13 +409,8 @@ KNOWN_UNCLEAR = frozenset(
         "Tom asked for a box. Bring him the one he used yesterday.",
         "Not the big box for Tom, the one he asked for this morning.",
         # blind45 (tuned on in session 47)
-        "Mr Novak needed one of the plates for his woodcut display, and I honestly forget which.",
         "Hand Person A the one she was eyeing up during the knucklebones game.",
         "Noah and Zoe both stuck their hands up; give the scissors to the other one.",
-        "Person B asked for one of them, the bottle or the chips, and I can't for the life of me "
-        "remember which.",
-        "Sam asked for one of the pens earlier, not the blue, and I didn't catch which.",
-        "Grandad wants one of the blocks, he did say which one but I've gone blank.",
         "Can you give the bottle to the one who was at the pétanque with me? I forget who.",
     }
 )
