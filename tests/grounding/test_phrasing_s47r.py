@@ -135,6 +135,72 @@ test_each_given = CASES.test(
     ("Zoe and Noah get a book each, the red one to him and the red one to her.", None, CLASSROOM),
 )
 
+# -- counts and plurals ----------------------------------------------------------------------------
+
+test_count_list = CASES.test(
+    # _count_list47r: a count then a list of as many things ("…: bottle, chips, cup and apple")
+    ("All three things to Carol: cup, bottle and apple.", "cup>C & bottle>C & apple>C", CELL),
+    (
+        "The two blankets for Mr Lee: blue and grey.",
+        "blanket_blue>B & blanket_grey>B",
+        WARD,
+    ),
+    (
+        "Both things into the box: the stapler and the notebook.",
+        "stapler@box & notebook@box",
+        OFFICE,
+    ),
+    (
+        "Put both books on the desk, red and green together.",
+        "book_red@desk & book_green@desk",
+        CLASSROOM,
+    ),
+    ("All three things to Mia: scanner, tape plus gloves.", "scanner>A & tape>A & gloves>A", DEPOT),
+    # the count is not the list's; a thing of another kind; a thing the scene lacks; twice
+    (
+        "Both plates onto the rack, white and blue together.",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    ("All three things to Carol: cup and apple.", None, CELL),
+    ("Both things to Bob: cup and pear.", None, CELL),
+    ("Both things to Bob: the cup and the cup.", None, CELL),
+)
+
+test_clear_of = CASES.test(
+    # _clear_of47r: a closing "clear of …" after a placing is "out of reach of …"
+    ("Pills up on the trolley, please, clear of the mop bucket.", "pills@trolley", WARD),
+    ("Stapler on the desk, well clear of the coffee.", "stapler@desk", OFFICE),
+    ("The knife on the rack, clear of the children's fingers.", "knife@rack", KITCHEN),
+    # a handover; what it is kept clear of is a thing of the scene
+    ("Give Bob the cup, clear of the crowd.", None, CELL),
+    ("Put the cup on the shelf, clear of the apple.", None, CELL),
+)
+
+test_state_like = CASES.test(
+    # _state_like47r: "he's shivering like a stable lad in January" is "he's shivering"
+    (
+        "Both blankets to Mrs Khan, she's shivering like a leaf.",
+        "blanket_blue>C & blanket_grey>C",
+        WARD,
+    ),
+    ("Water jug to Ruth, she's wilting like a lettuce in the sun.", "jug>A", WARD),
+    ("Give Tom the gloves, he's wilting like a daisy in August.", "gloves>B", DEPOT),
+    # the likeness names someone or something of the scene
+    ("Both blankets to Mrs Khan, she's shivering like Mr Lee.", None, WARD),
+    ("Give Tom the gloves, he's shaking like the scanner.", None, DEPOT),
+)
+
+test_before_looks = CASES.test(
+    # _before_looks47r: a closing "before the visitor looks" said of a person of the scene
+    ("Stapler in the box before the manager looks.", "stapler@box", OFFICE),
+    ("Put the teddy on the mat before Lily wakes up.", "teddy@mat", NURSERY),
+    ("Knife on the rack, before the guest comes in.", "knife@rack", KITCHEN),
+    # the person is the one who gets it; two people
+    ("Give Sam the stapler before Sam looks.", None, OFFICE),
+    ("Stapler in the box before Priya and Sam look.", None, OFFICE),
+)
+
 # -- doubt: the speaker does not know which --------------------------------------------------------
 
 UNCLEAR: list[Unclear] = [
@@ -192,6 +258,132 @@ test_fix_why_place = CASES.test(
     ("Sponge in the sink, no, the tray, sorry, the bowl's broken.", None, LAB),
     ("Sponge in the sink, sorry, the sink's broken.", None, LAB),
     ("Sponge in the sink, no, the tray, sorry, the sink's where Omar wants it.", None, LAB),
+)
+
+test_claimed = CASES.test(
+    # _claimed47r: a cue, then someone's claim on the one thing, "so him instead"
+    (
+        "Put the globe on the shelf, or actually Noah's just shouted for it, so him instead.",
+        "globe>B",
+        CLASSROOM,
+    ),
+    (
+        "Stapler in the box, or, wait, Priya's holding out her hand for it, so to her.",
+        "stapler>A",
+        OFFICE,
+    ),
+    ("Tape over to Tom, or, hmm, Mia called dibs on it first, so Mia.", "tape>A", DEPOT),
+    (
+        "Lena's knife, hold your horses, it turns out Marco was the hungry one, so give it him.",
+        "knife>A",
+        KITCHEN,
+    ),
+    # the pronoun is not the claimant; two things; the person after 'so' is another
+    (
+        "Put the globe on the shelf, or actually Noah's just shouted for it, so her instead.",
+        None,
+        CLASSROOM,
+    ),
+    (
+        "Put the globe and the ruler on the shelf, or actually Noah's just shouted for it, so him.",
+        None,
+        CLASSROOM,
+    ),
+    ("Tape over to Tom, or, hmm, Mia called dibs on it first, so Tom.", None, DEPOT),
+)
+
+test_none_there = CASES.test(
+    # _none_there47r: "there aren't any X" (the scene lacks them), then the thing meant
+    ("Pears to Bob, oops, there aren't any pears, the apple then.", "apple>B", CELL),
+    ("Fork in the sink, sorry, there isn't one, the spoon then.", "spoon@sink", LAB),
+    (
+        "Omar's fork, er, no, that's wrong, there isn't one, I meant his spoon, bring it along.",
+        "spoon>B",
+        LAB,
+    ),
+    # the thing said missing is in the scene; the thing meant is not
+    ("Apple to Person B, oops, there aren't any apples, the cup then.", None, SQ),
+    ("Pears to Bob, oops, there aren't any pears, the plum then.", None, CELL),
+)
+
+test_heard_but = CASES.test(
+    # _heard_but47r: "well, I heard small, but he corrected me: it's …" is "no, it's …"
+    (
+        "Tom asked for the small box, well, I heard small, but he corrected me: it's the large "
+        "box he's after.",
+        "box_large>B",
+        DEPOT,
+    ),
+    (
+        "Noah wanted the red book, I thought I heard red, but he put me right: it's the green book "
+        "he wants.",
+        "book_green>B",
+        CLASSROOM,
+    ),
+    ("Tom asked for the small box, well, I heard small, but he corrected me.", None, DEPOT),
+)
+
+test_mixed_up = CASES.test(
+    # _mixed_up47r: "no, I've mixed it up, the drill's what he's after"
+    (
+        "Mia asked for the tape, no, I've got it wrong, the scanner's what she's after.",
+        "scanner>A",
+        DEPOT,
+    ),
+    (
+        "Zoe asked for the glue, sorry, my mistake, the ruler's what she's after.",
+        "ruler>C",
+        CLASSROOM,
+    ),
+    ("Mia asked for the tape, no, I've got it wrong, the pear's what she's after.", None, DEPOT),
+)
+
+test_fix_why_goes = CASES.test(
+    # _fix_why_goes47r: "X wants to go on S, or rather T, S's full": X on T
+    (
+        "That small box wants to go on the belt, or rather the pallet, the belt's jammed solid.",
+        "box_small@pallet",
+        DEPOT,
+    ),
+    (
+        "The teddy wants to go on the mat, or rather the high chair, the mat's soaking.",
+        "teddy@highchair",
+        NURSERY,
+    ),
+    (
+        "That small box wants to go on the belt, or rather the pallet, the pallet's jammed.",
+        None,
+        DEPOT,
+    ),
+)
+
+test_restated = CASES.test(
+    # _restated47r: "oh hang about, she said blue, the blue mug to Alice"
+    (
+        "Noah wants the red book, oh hang on, he said green, the green book to Noah.",
+        "book_green>B",
+        CLASSROOM,
+    ),
+    (
+        "Mrs Khan wants the blue blanket, wait, she said grey, the grey blanket to Mrs Khan.",
+        "blanket_grey>C",
+        WARD,
+    ),
+    # another person; another kind; the restatement adds
+    ("Noah wants the red book, oh hang on, he said green, the green book to Zoe.", None, CLASSROOM),
+    ("Noah wants the red book, oh hang on, he said green, the globe to Noah.", None, CLASSROOM),
+    (
+        "Noah wants the red book, oh hang on, he said green, the green book to Noah too.",
+        None,
+        CLASSROOM,
+    ),
+)
+
+test_one_back = CASES.test(
+    # _one_back47r: "…, I mean Person A, the one back from the celesta recital"
+    ("The jug to Ruth, I mean Mrs Khan, the one back from physio.", "jug>C", WARD),
+    ("Give the glue to Noah, no, Zoe, the one just back from choir practice.", "glue>C", CLASSROOM),
+    ("The jug to Ruth, I mean Mrs Khan, the one back from Mr Lee's bed.", None, WARD),
 )
 
 
