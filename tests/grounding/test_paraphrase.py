@@ -323,16 +323,10 @@ KNOWN_MISSES = frozenset(
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
         "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
-        "Both of the mugs up on the shelf, please, clear of the publican's elbows.",
-        "All four things to Person B: bottle, chips, cup and apple.",
-        "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
-        "and cup alike.",
         "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
         "over it goes.",
         "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "
         "the pair over.",
-        "Both cups in the sink, the pair of them, before the visitor looks.",
-        "Both blankets to Mr Lee, he's shivering like a stable lad in January.",
         "Line up both blocks on the high chair so Lily can play her stacking game, red and green "
         "together.",
         "Bob's not after any mugs or the cup, he's packing for the pétanque trip: bottle, crisps "
@@ -352,25 +346,9 @@ KNOWN_MISSES = frozenset(
         "fetch her the green.",
         "Jess is off power tools until the timekeeper signs the card; hammer only for now, to "
         "Jess.",
-        "Alice wants the red mug, oh hang about, she said blue, the blue mug to Alice.",
-        "Crisps over to Bob, or, hmm, Alice called dibs on them first, so Alice.",
-        "Pop the bottle up on the shelf, or actually Bob's just shouted for it, so him instead.",
-        "The cup to Person B, I mean Person A, the one back from the celesta recital.",
         "Person B ordered the apple but changed his tune at the pétanque; chips for him instead.",
-        "Chips to Person A, oops, there aren't any chips, the bottle then.",
-        "Person A's cup, er, no, that's wrong, there isn't one, I meant her bottle, bring it "
-        "along.",
-        "Person B's bottle, hold your horses, it turns out Person A was the thirsty one, so give "
-        "it her.",
-        "Omar asked for the white cup, well, I heard white, but he corrected me: it's the green "
-        "cup he's after.",
         "Mr Lee's done with temperatures for today; the thermometer ought to be with Mrs Khan, "
         "my slip.",
-        "That medium box wants to go on the pallet, or rather the conveyor, the pallet's full of "
-        "the basketmaker's stock.",
-        "Put the bib on the high chair, or, wait, Grandad's holding out his hand for it, so to "
-        "him.",
-        "Kofi asked for the small spanner, no, I've mixed it up, the drill's what he's after.",
         "the cup to person a and the apple to person b for the pétanque lot",
         "the visitor looks half starved after the minuet so banana to her",
         "chef marcos got the damson jam cake to slice give him the knife",

@@ -373,7 +373,8 @@ def _claimed47r(text: str, lexicon: Lexicon) -> str:
 _NONE_THERE47R = re.compiled(
     r"^(?P<head>[^,;]+?)\s*,\s*(?:(?:oops|whoops|er|erm|um|no|sorry|oh|hang on|wait)\s*,?\s*)+"
     r"(?:that's wrong\s*,\s*)?there (?:aren't|isn't|are no|is no|'s no)(?: any)?(?: (?P<k>[a-z]+)|"
-    r" one)(?: here)?\s*,\s*(?:i meant |i mean |so )?(?P<fix>(?:the|her|his) [a-z]+(?: (?!then\b)[a-z]+)?)"
+    r" one)(?: here)?\s*,\s*(?:i meant |i mean |so )?(?P<fix>(?:the|her|his) [a-z]+"
+    r"(?: (?!then\b)[a-z]+)?)"
     r"(?: then)?(?:\s*,\s*(?:bring|take|fetch) (?:it|that) (?:along|over|instead))?"
     r"(?P<end>\s*[.!]?)$",
     _F,
