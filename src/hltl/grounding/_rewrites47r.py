@@ -55,7 +55,8 @@ def _listed47r(words: str, lexicon: Lexicon) -> list[str] | None:
     """The things ``words`` list ("cup, bottle and apple", "the cup or the apple"), each one
     object of the scene and each once, as "the cup", …; None otherwise."""
     items = [w.strip() for w in re.split(r"\s*,\s*(?:and |or )?|\s+(?:and|or)\s+", words, flags=_F)]
-    out, seen = [], set()
+    out: list[str] = []
+    seen: set[str] = set()
     for item in items:
         x = item if item.lower().startswith("the ") else f"the {item}"
         ids = _ids(x, lexicon)
@@ -210,17 +211,16 @@ def _count_list47r(text: str, lexicon: Lexicon) -> str:
     m = _COUNTED47R.search(t)
     if m is None:
         return text
-    after = _LIST_AFTER47R.match(t[m.end() :])
-    if after is not None:
-        listed, rest = after, t[m.end() + after.end() :]
-        head = t[: m.start()]
+    head = t[: m.start()]
+    listed = _LIST_AFTER47R.match(t[m.end() :])
+    if listed is not None:
+        rest = t[m.end() + listed.end() :]
     else:
         found = [x.search(t[m.end() :]) for x in _LIST_END47R]
         listed = found[0] or found[1]
         if listed is None:
             return text
         rest = t[m.end() : m.end() + listed.start()] + (listed["end"] or ".")
-        head = t[: m.start()]
     items = _items47r(listed["list"], m["noun"], lexicon)
     if items is None or len(items) != _COUNTS47R[m["n"].lower()]:
         return text
