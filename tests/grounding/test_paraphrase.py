@@ -288,6 +288,9 @@ KNOWN_MISSES = frozenset(
         "Mrs Khan is in pain, so would you take her medication over to her?",
         "Could Mr Novak have the blue plate, the white one's too plain for him?",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
+        "All four things to Person B: bottle, chips, cup and apple.",
+        "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
+        "and cup alike.",
         "Go on then, if you're not run off your feet, let Person A have the bottle, bless you.",
         "Ruth says jullay, which is Ladakhi for thank you, and asks nicely that the magazine be "
         "put on the locker.",

@@ -137,36 +137,6 @@ test_each_given = CASES.test(
 
 # -- counts and plurals ----------------------------------------------------------------------------
 
-test_count_list = CASES.test(
-    # _count_list47r: a count then a list of as many things ("…: bottle, chips, cup and apple")
-    ("All three things to Carol: cup, bottle and apple.", "cup>C & bottle>C & apple>C", CELL),
-    (
-        "The two blankets for Mr Lee: blue and grey.",
-        "blanket_blue>B & blanket_grey>B",
-        WARD,
-    ),
-    (
-        "Both things into the box: the stapler and the notebook.",
-        "stapler@box & notebook@box",
-        OFFICE,
-    ),
-    (
-        "Put both books on the desk, red and green together.",
-        "book_red@desk & book_green@desk",
-        CLASSROOM,
-    ),
-    ("All three things to Mia: scanner, tape plus gloves.", "scanner>A & tape>A & gloves>A", DEPOT),
-    # the count is not the list's; a thing of another kind; a thing the scene lacks; twice
-    (
-        "Both plates onto the rack, white and blue together.",
-        "plate_white@rack & plate_blue@rack",
-        KITCHEN,
-    ),
-    ("All three things to Carol: cup and apple.", None, CELL),
-    ("Both things to Bob: cup and pear.", None, CELL),
-    ("Both things to Bob: the cup and the cup.", None, CELL),
-)
-
 test_clear_of = CASES.test(
     # _clear_of47r: a closing "clear of …" after a placing is "out of reach of …"
     ("Pills up on the trolley, please, clear of the mop bucket.", "pills@trolley", WARD),

@@ -7,6 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
+from hltl.grounding._rewrites41r import which_forgotten41r
 from hltl.grounding._rewrites42s import _remark_only42s
 from hltl.grounding._rewrites43s import _placed_aside43s
 from hltl.grounding._rewrites44r import _agrees44r, _read_or44r
@@ -93,7 +94,7 @@ def _whatever_chooses47r(text: str, lexicon: Lexicon) -> str:
 # either cup, green or white, she has no preference."
 _NO_PREFERENCE47R = re.compiled(
     r"\s*[,;]\s*(?:and |so )?(?:(?P<pro>she|he)(?:'s| is| has|'s got) (?:no preference|no "
-    r"favourite|happy with either(?: one)?|easy either way)|(?P<pro2>she|he)(?:'ll| will) (?:take|"
+    r"favourite|easy either way)|(?P<pro2>she|he)(?:'ll| will) (?:take|"
     r"have) (?:whatever|whichever)(?: one)? (?:comes|turns up|is) (?:first )?(?:to hand|first|"
     r"nearest|handiest))(?P<end>\s*[.!]?)$",
     _F,
@@ -102,8 +103,9 @@ _NO_PREFERENCE47R = re.compiled(
 
 def _no_preference47r(text: str, lexicon: Lexicon) -> str:
     """Session 47 (12r): a closing "she has no preference" ("he'll take whatever comes first to
-    hand", "she's happy with either") after a choice handed to one person is dropped when the
-    pronoun may be that person: it says again that either will do."""
+    hand", "she's easy either way"; session 31's "she's happy with either" is its own) after a
+    choice handed to one person is dropped when the pronoun may be that person: it says again
+    that either will do."""
     low = text.lower()
     if not any(w in low for w in ("preference", "whatever", "whichever", "either", "favourite")):
         return text
@@ -157,87 +159,6 @@ def _each_given47r(text: str, lexicon: Lexicon) -> str:
 
 # -- counts and plurals ----------------------------------------------------------------------------
 
-# "All four things to Person B: bottle, chips, cup and apple.", "… so she's needing both drinking
-# vessels, bottle and cup alike.", "… wants two bits, the bottle plus the chips, …"
-_COUNTED47R = re.compiled(
-    r"\b(?P<cnt>(?:all |the )?(?P<n>two|three|four|five|both)(?: of the)? (?P<noun>[a-z]+"
-    r"(?: [a-z]+)?))(?=\s*[,:;]|\s+(?:to|for|onto|into|on|in|up|over|off)\b)",
-    _F,
-)
-_ITEM47R = r"(?:the )?[a-z]+(?: [a-z]+)?"
-_LIST47R = rf"(?P<list>{_ITEM47R}(?:\s*,\s*{_ITEM47R})*\s*,?\s+(?:and|plus|&) {_ITEM47R})"
-_TAIL47R = r"(?P<tail> alike| together| both| the pair of them| the lot)"
-_LIST_AFTER47R = re.compiled(rf"^\s*,\s*{_LIST47R}{_TAIL47R}?\s*(?=,)", _F)
-# at the end: after a colon, or after a comma with "alike" / "together" after it
-_LIST_END47R = (
-    re.compiled(rf"\s*:\s*{_LIST47R}{_TAIL47R}?(?P<end>\s*[.!]?)$", _F),
-    re.compiled(rf"\s*,\s*{_LIST47R}{_TAIL47R}(?P<end>\s*[.!]?)$", _F),
-)
-_COUNTS47R = {"two": 2, "three": 3, "four": 4, "five": 5, "both": 2}
-
-
-def _items47r(words: str, noun: str, lexicon: Lexicon) -> list[str] | None:
-    """The things ``words`` list, each one object ("bottle", "the red" of blocks: "the red
-    block"), each once; None otherwise."""
-    items = re.split(r"\s*,\s*(?:and |plus |& )?|\s+(?:and|plus|&)\s+", words.strip(), flags=_F)
-    kind = noun.split()[-1].lower().removesuffix("s")
-    out: list[str] = []
-    seen: set[str] = set()
-    for item in items:
-        x = item if item.lower().startswith("the ") else f"the {item}"
-        ids = _ids(x, lexicon)
-        if len(ids) != 1 or _ids(x, lexicon, "object") != ids:
-            x = f"{x} {kind}"
-            ids = _ids(x, lexicon)
-            if len(ids) != 1 or _ids(x, lexicon, "object") != ids:
-                return None
-        if ids & seen:
-            return None
-        seen |= ids
-        out.append(x)
-    return out
-
-
-def _count_list47r(text: str, lexicon: Lexicon) -> str:
-    """Session 47 (12r): a count said of things then listed ("All four things to Person B:
-    bottle, chips, cup and apple"; "she's needing both drinking vessels, bottle and cup alike";
-    "Line up both blocks …, red and green together"): the list said where the count was, when
-    it names as many things of the scene as the count says, each once (of the count's kind when
-    the scene has that kind), and the reading hands over or places just those."""
-    low = text.lower()
-    if not any(w in low for w in ("two ", "three ", "four ", "five ", "both ")):
-        return text
-    t = text.strip()
-    m = _COUNTED47R.search(t)
-    if m is None:
-        return text
-    head = t[: m.start()]
-    listed = _LIST_AFTER47R.match(t[m.end() :])
-    if listed is not None:
-        rest = t[m.end() + listed.end() :]
-    else:
-        found = [x.search(t[m.end() :]) for x in _LIST_END47R]
-        listed = found[0] or found[1]
-        if listed is None:
-            return text
-        rest = t[m.end() : m.end() + listed.start()] + (listed["end"] or ".")
-    items = _items47r(listed["list"], m["noun"], lexicon)
-    if items is None or len(items) != _COUNTS47R[m["n"].lower()]:
-        return text
-    said = set().union(*(_ids(x, lexicon) for x in items))
-    kinds = _ids(f"the {m['noun']}", lexicon, "object")
-    if kinds and not said <= kinds:
-        return text  # "both blocks: the teddy and the bib"
-    joined = f"{', '.join(items[:-1])} and {items[-1]}"
-    if not head:
-        joined = f"{joined[:1].upper()}{joined[1:]}"
-    out = f"{head}{joined}{rest}"
-    node = _reading(out, lexicon)
-    if node is None or {x.obj for x in tasks(node)} != said:
-        return text
-    return out
-
-
 # "Both of the mugs up on the shelf, please, clear of the publican's elbows."
 _CLEAR_OF47R = re.compiled(r",\s*(?:well |right )?clear of (?=[^,;.!?]+[.!]?$)", _F)
 
@@ -284,7 +205,7 @@ def _state_like47r(text: str, lexicon: Lexicon) -> str:
 # "Both cups in the sink, the pair of them, before the visitor looks."
 _BEFORE_LOOKS47R = re.compiled(
     r"\s*,?\s*before (?P<p>(?:the )?[a-z]+(?: [a-z]+)?) (?:looks|sees|notices|spots it|spots them|"
-    r"comes in|walks in|turns up|arrives|wakes up|comes back|is back)(?P<end>\s*[.!]?)$",
+    r"comes in|walks in|turns up|arrives|wakes up)(?P<end>\s*[.!]?)$",
     _F,
 )
 
@@ -574,6 +495,10 @@ def doubt_one47r(text: str, lexicon: Lexicon) -> None:
     m = _DOUBT_ONE47R.search(text)
     if m is None:
         return
+    try:
+        which_forgotten41r(text, lexicon)
+    except GroundingError:
+        return  # session 41's refusal names them ("one of the boxes, I can't remember which")
     if m["a"] is not None:
         a, b = _ids(m["a"], lexicon, "object"), _ids(m["b"], lexicon, "object")
         if len(a) != 1 or len(b) != 1 or a == b:
@@ -612,7 +537,6 @@ _STEPS47R: tuple[Callable[[str, Lexicon], str], ...] = (
     _whatever_chooses47r,
     _no_preference47r,
     _each_given47r,
-    _count_list47r,
     _clear_of47r,
     _state_like47r,
     _before_looks47r,
