@@ -200,3 +200,20 @@ def assert_refusals_are(
             parse_instruction(text, scene)
         except GroundingError as refused:
             assert not all(r in str(refused) for r in readings), text
+
+
+def unclear_tests(
+    cases: list[Unclear], mine: tuple[object, ...]
+) -> tuple[Callable[[str, Scene, tuple[str, ...]], None], Callable[[pytest.MonkeyPatch], None]]:
+    """The two tests of a session's refusals that name their readings (bound to ``test_…``
+    names in its file): each case's refusal names every reading, and without the refusals
+    ``mine`` none does."""
+
+    @pytest.mark.parametrize(("text", "scene", "readings"), cases)
+    def names(text: str, scene: Scene, readings: tuple[str, ...]) -> None:
+        assert_names_readings(text, scene, readings)
+
+    def these(monkeypatch: pytest.MonkeyPatch) -> None:
+        assert_refusals_are(mine, cases, monkeypatch)
+
+    return names, these

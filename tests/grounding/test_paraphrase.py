@@ -288,6 +288,9 @@ KNOWN_MISSES = frozenset(
         "Mrs Khan is in pain, so would you take her medication over to her?",
         "Could Mr Novak have the blue plate, the white one's too plain for him?",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
+        "All four things to Person B: bottle, chips, cup and apple.",
+        "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
+        "and cup alike.",
         "Go on then, if you're not run off your feet, let Person A have the bottle, bless you.",
         "Ruth says jullay, which is Ladakhi for thank you, and asks nicely that the magazine be "
         "put on the locker.",
@@ -317,30 +320,16 @@ KNOWN_MISSES = frozenset(
         "visitor.",
         "The black pen goes in the box it's Sam's filing day and the stapler to Priya",
         "Small box onto the belt medium box onto the pallet the cowman's lorry is outside",
-        "Give Alice and Bob one each, the bottle to her and the crisps to him.",
-        "Whatever Person B chooses out of cup, bottle and apple is fine by the innkeeper, only "
-        "one though.",
         "With the sword swallower coming to supper, Person A is owed the apple and the chips both.",
-        "Give Person A whichever of the apple and the chips, she won't mind.",
         "Share things out fair as the toll keeper would: bottle goes Person A's way and chips go "
         "Person B's way.",
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
         "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
-        "Emma can have either cup, green or white, she has no preference.",
-        "Lena and Marco get a plate each: the white one to her, the blue one to him.",
-        "Kofi's after a spanner for the ploughwright, small or big, he'll take whatever comes "
-        "first to hand.",
-        "Both of the mugs up on the shelf, please, clear of the publican's elbows.",
-        "All four things to Person B: bottle, chips, cup and apple.",
-        "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
-        "and cup alike.",
         "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
         "over it goes.",
         "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "
         "the pair over.",
-        "Both cups in the sink, the pair of them, before the visitor looks.",
-        "Both blankets to Mr Lee, he's shivering like a stable lad in January.",
         "Line up both blocks on the high chair so Lily can play her stacking game, red and green "
         "together.",
         "Bob's not after any mugs or the cup, he's packing for the pétanque trip: bottle, crisps "
@@ -360,25 +349,9 @@ KNOWN_MISSES = frozenset(
         "fetch her the green.",
         "Jess is off power tools until the timekeeper signs the card; hammer only for now, to "
         "Jess.",
-        "Alice wants the red mug, oh hang about, she said blue, the blue mug to Alice.",
-        "Crisps over to Bob, or, hmm, Alice called dibs on them first, so Alice.",
-        "Pop the bottle up on the shelf, or actually Bob's just shouted for it, so him instead.",
-        "The cup to Person B, I mean Person A, the one back from the celesta recital.",
         "Person B ordered the apple but changed his tune at the pétanque; chips for him instead.",
-        "Chips to Person A, oops, there aren't any chips, the bottle then.",
-        "Person A's cup, er, no, that's wrong, there isn't one, I meant her bottle, bring it "
-        "along.",
-        "Person B's bottle, hold your horses, it turns out Person A was the thirsty one, so give "
-        "it her.",
-        "Omar asked for the white cup, well, I heard white, but he corrected me: it's the green "
-        "cup he's after.",
         "Mr Lee's done with temperatures for today; the thermometer ought to be with Mrs Khan, "
         "my slip.",
-        "That medium box wants to go on the pallet, or rather the conveyor, the pallet's full of "
-        "the basketmaker's stock.",
-        "Put the bib on the high chair, or, wait, Grandad's holding out his hand for it, so to "
-        "him.",
-        "Kofi asked for the small spanner, no, I've mixed it up, the drill's what he's after.",
         "the cup to person a and the apple to person b for the pétanque lot",
         "the visitor looks half starved after the minuet so banana to her",
         "chef marcos got the damson jam cake to slice give him the knife",
@@ -417,13 +390,8 @@ KNOWN_UNCLEAR = frozenset(
         "Tom asked for a box. Bring him the one he used yesterday.",
         "Not the big box for Tom, the one he asked for this morning.",
         # blind45 (tuned on in session 47)
-        "Mr Novak needed one of the plates for his woodcut display, and I honestly forget which.",
         "Hand Person A the one she was eyeing up during the knucklebones game.",
         "Noah and Zoe both stuck their hands up; give the scissors to the other one.",
-        "Person B asked for one of them, the bottle or the chips, and I can't for the life of me "
-        "remember which.",
-        "Sam asked for one of the pens earlier, not the blue, and I didn't catch which.",
-        "Grandad wants one of the blocks, he did say which one but I've gone blank.",
         "Can you give the bottle to the one who was at the pétanque with me? I forget who.",
     }
 )

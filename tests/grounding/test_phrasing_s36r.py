@@ -337,7 +337,9 @@ test_corrections = CASES.test(
     # "…, no, the tray, sorry, the sink's full"
     ("Sponge in the sink, no, the tray, sorry, the sink's full.", "sponge@tray", LAB),
     ("Sponge in the sink, no, the tray, sorry, the tray's full.", None, LAB),
-    ("Sponge in the sink, no, the tray, sorry, the sink's broken.", None, LAB),
+    # session 47 (the lead's decision): the reason after the apology names only the place the
+    # correction took away, so it reads (session 46's `_fix_why46r` reads it)
+    ("Sponge in the sink, no, the tray, sorry, the sink's broken.", "sponge@tray", LAB),
     ("Sponge in the sink, sorry, the sink's full.", None, LAB),
     # "…, no hang on, it's the salt she wants"
     ("Take Lena the lemon, no hang on, it's the salt she wants.", "salt>B", KITCHEN),

@@ -23,21 +23,13 @@ _FIX_WHY46R = re.compiled(
 )
 
 
-# what makes a place corrected away unfit (session 36's `_full_after36r` list, and its kin);
-# "the sink's broken" stays refused (session 36's test)
-_NO_ROOM46R = re.compiled(
-    r"(?:full|busy|taken|in use|cluttered|occupied|wet|dirty|a mess|covered|jammed|piled|stacked|"
-    r"soaked|blocked|crammed|packed|overflowing|heaving)\b",
-    _F,
-)
-
-
 def _fix_why46r(text: str, lexicon: Lexicon) -> str:
     """Session 46 (12r): after a correction, a closing reason said of what the correction took
     away ("…, or rather the apple, the cup's cracked"; "…, correction, the tray, the sink's full of
     the hermit's crockery"; "…, no, sorry, the grey one, blue's too thin") is dropped: its subject
     is a thing or place said before the cue and not in the corrected reading, and it names
-    nothing else of the scene."""
+    nothing else of the scene. (Session 47, the lead's decision: a place corrected away with any
+    such reason, "…, sorry, the sink's broken", not only one that has no room.)"""
     if "'s" not in text and " is " not in text and "'re" not in text and " are " not in text:
         return text
     m = _FIX_WHY46R.match(text.strip())
@@ -59,8 +51,6 @@ def _fix_why46r(text: str, lexicon: Lexicon) -> str:
     # nothing the corrected request hands over or places on
     if not said & away or said & used or said & _ids(head, lexicon, "human"):
         return text
-    if said & _ids(head, lexicon, "surface") and not _NO_ROOM46R.match(m["why"]):
-        return text  # a place: only that it has no room or cannot be used (session 36's list)
     return _dropped46r(head, m, text, lexicon)
 
 
