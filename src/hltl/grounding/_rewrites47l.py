@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from hltl.errors import GroundingError
+from hltl.fileio import quote
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F
 
@@ -54,9 +55,8 @@ def thought_but47l(text: str) -> str:
     added = _ADDS47L.match(text[m.end() :])
     if added is not None:
         said = text[m.start() : m.end() + added.end()].strip(" ,")
-        said = said if len(said) <= 80 else said[:77] + "…"
         raise GroundingError(
-            f"cannot read the correction in {said!r}: {added['w']!r} after it could add to "
+            f"cannot read the correction in {quote(said)}: {added['w']!r} after it could add to "
             "what it takes back or order it; say the whole request again"
         )
     return _THOUGHT_BUT47L.sub(", no, ", text)
@@ -70,11 +70,10 @@ def added_correction47l(text: str) -> None:
     m = _NO_ADDS47L.search(text)
     if m is None:
         return
-    said = m["said"].strip()
-    said = said if len(said) <= 80 else said[:77] + "…"
+    said = quote(m["said"].strip())
     word = m["w"] or m["a"]
     raise GroundingError(
-        f"cannot read the correction {said!r}: {word!r} in it could add to what it takes back "
+        f"cannot read the correction {said}: {word!r} in it could add to what it takes back "
         "or order it; say the whole request again"
     )
 
