@@ -368,6 +368,94 @@ KNOWN_MISSES = frozenset(
         "Would you put the red pen on the desk for Priya's paper marbling?",
         "Might the ruler find a home on the bookshelf before the scrapbook club?",
         "Can the big sister, Ava, be handed the bib so she can feed Lily?",
+        # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
+        "Kulo, as we say back home on Kosrae, could you pop the red mug up on the shelf for me "
+        "when you get a sec?",
+        "Um, so, like, whenever you're ready, could the cup go over to Person A? Much obliged.",
+        "Meitaki, that's what my nan says in Rarotongan, and now the cup for Person B, please.",
+        "Ever so sorry to interrupt, but Person A is parched, so the bottle to her, please and "
+        "thank you.",
+        "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
+        "Hiya, sorry, Sam here, the intern, could I possibly have the stapler when you've a "
+        "minute?",
+        "Morning, Mia here, be a gem and set the small box on the belt, would you?",
+        "The poulterer's just dropped the birds off, so Marco could do with the tongs; be a dear "
+        "and hand them over.",
+        "Person B needs the cup for his penny whistle practice, a sip between tunes.",
+        "Person A fancies the apple, and Person B would murder a bag of chips.",
+        "Person B has set his sights on the chips after an afternoon on the cowbell.",
+        "Person A's got a craving for the chips after her kite-flying, and Person B would like "
+        "the bottle.",
+        "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
+        "Zoe needs the glue stick for her dot-to-dot collage.",
+        "Jess needs the power drill to hang the new shelves.",
+        "Person B was on at me for the bottle between dances at the merengue class. Take it to "
+        "him, would you.",
+        "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
+        "castle contest.",
+        "Person B's got his eye on the chips after all that double dutch; give them him.",
+        "Hand it over to Person A, the bottle, I mean.",
+        "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
+        "Emma's the visitor; she'd like a banana, can you bring her one?",
+        "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
+        "one'll do.",
+        "Noah's forgotten his ruler; lend him ours, would you.",
+        "The cup for Person A. The chips for Person B. The bottle and the apple can stay put.",
+        "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
+        "Person A's doing her wordsearch she's parched bottle to her.",
+        "Ruth's doing her rounds the thermometer's for her.",
+        "Salt shaker to Mr Novak he's asked twice now and the blue plate is for Marco.",
+        "Bib on the highchair. Lily's lunch is next.",
+        "Person B isn't fussed after his french skipping, the bottle or the crisps, he'll take "
+        "either.",
+        "Person B can take his pick of the cup or the bottle.",
+        "Any one of the four will do for Person A, she's not fussy after the roller skating.",
+        "Each of them gets one thing on the way to the etch a sketch contest, Person A the cup "
+        "and Person B the bottle.",
+        "Any bottle will do for Person A, she just wants a swig before her lyre lesson.",
+        "Both of them are worn out after the psaltery recital, so each gets something: the "
+        "bottle to Person A and the chips to Person B.",
+        "Dana'll take either cup, no preference, running late for the night watchman's handover.",
+        "Sam can grab any of the pens except the red.",
+        "Put one of the boxes on the belt, the small or the medium, whichever's handier.",
+        "Marco and Lena both want a plate: white for him and blue for her.",
+        "Ava can pick whatever block she likes.",
+        "Both people need a drink: the bottle to Person A and the cup to Person B.",
+        "That one bag of chips is for Person B to share round at the rebec rehearsal.",
+        "Both cups into the sink, please, the constable left cold tea in them.",
+        "Jess needs the pair of spanners to strip down the old mangle for the laundress.",
+        "Not the red mug, the blue one, to Alice, she's off to her bodhrán lesson and likes that "
+        "one.",
+        "Person B gets the chips; leave the bottle, he drank his fill at the snowman competition.",
+        "Everything but the apple to Person A, she can't stand apples and she's off to french "
+        "skipping.",
+        "Person B has gone off chips since the limbo contest; it's the cup he's after.",
+        "After the washerwoman's race, Person A wants nothing but the chips.",
+        "The bottle's not for me, it's for Person A.",
+        "Omar needs neither cup, just the bowl.",
+        "Tom needs all the kit apart from the boxes and the gloves.",
+        "Not the white plate, Lena wants the one on the rack.",
+        "Noah can have the scissors for his snowflake cut-outs, but the glue's off limits, he "
+        "made a mess last time.",
+        "Lily's had enough of the red block; give her the teddy, not another block.",
+        "Bottle to Person A, sorry, I meant Person B, I've got the constable on the other line.",
+        "The chips for Person B, oh no hang on, the bottle for Person B.",
+        "Cup to Person A, no, actually, she'd rather the apple, she's just had a brew at the "
+        "needle maker's.",
+        "The bottle stays put, oh, hold on, Person A's asking for it after all, so give it her.",
+        "Chips to Person B, oh wait, he's not peckish, so Person A gets them, and the bottle "
+        "goes to Person B.",
+        "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the "
+        "salads.",
+        "person a wants the chips and the apple to take up to the airfix club",
+        "the water jug on mr lee's locker please he's been coughing all night",
+        "zoe needs the scissors for her paper snowman and noah the ruler",
+        "Give Person A the bottler now, her bodhrán lesson starts in five.",
+        "Jess needs the hanmer to knock together a stand for the serpent.",
+        "Would you mind giving Person B the bottle while he tunes the cittern?",
+        "Can Person A have the chips now she's back from the limbo contest?",
+        "Can the bowl go on the tray, Emma keeps knocking it over?",
+        "Marco's done with the knife, could you put it on the worktop?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -393,6 +481,15 @@ KNOWN_UNCLEAR = frozenset(
         "Hand Person A the one she was eyeing up during the knucklebones game.",
         "Noah and Zoe both stuck their hands up; give the scissors to the other one.",
         "Can you give the bottle to the one who was at the pétanque with me? I forget who.",
+        # blind46 (tuned on in session 48)
+        "Carol wanted one of the mugs, I'm sure of it, but I can't for the life of me recall "
+        "which colour.",
+        "Alice and Carol came in from the lantern parade; she asked for the cup, so give it to "
+        "her.",
+        "Person A asked for one of the two, I just can't remember which one she said.",
+        "Zoe was reading one of the two books before break, and she wants that one back.",
+        "Give Person A the chips, no, hang on, the other one, the one she had at the chair "
+        "bodger's.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -485,9 +582,10 @@ KNOWN_UNCLEAR = frozenset(
 # "blind45" written in session 46 by another engineer and committed alone, reviewed by a second
 # one, measured once at the end of session 46 (1 wrong, read right since session 47), tuned on in
 # session 47: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind46" written in
-# session 47 by another engineer and committed alone, measured once at the end of session 47, not
-# asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind46"})
+# session 47 by another engineer and committed alone, measured once at the end of session 47 (1
+# wrong, refused since session 48), tuned on in session 48: asserted now, the rest in KNOWN_MISSES
+# and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -146,7 +146,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # committed alone, never opened by the engineers who change the grounder before its one measurement
 # at the end of session 46; tuned on in session 47), blind46 (written in session 47 by another
 # engineer and committed alone, never opened by the engineers who change the grounder before its
-# one measurement at the end of session 47; tests do not assert it).
+# one measurement at the end of session 47; tuned on in session 48).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

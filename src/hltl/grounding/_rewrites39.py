@@ -528,10 +528,12 @@ def _it_remark39(text: str, lexicon: Lexicon) -> str:
 # "Person B wants the cup or the apple, I can't remember which": a choice the speaker does not
 # know the answer to, not one left to the robot
 _DOUBT_WHICH39 = re.compile(
-    r"(?P<a>\b(?:the|a|an) [a-z]+(?: [a-z]+)?) or (?P<b>(?:the|a|an) [a-z]+(?: [a-z]+)?)"
+    r"(?P<a>\b(?:the|a|an) [a-z]+(?: [a-z]+)?) or "
+    r"(?P<b>(?:the|a|an) [a-z]+(?: (?!but\b|and\b)[a-z]+)?)"
     r"(?:,|\.|;|\s*-)?\s*(?:but |and )?(?:I (?:can't|cannot|can not|don't|do not|didn't|"
     r"couldn't) (?:remember|recall|know|say)|I forget|I've forgotten|I'm not sure|not sure|no idea|"
-    r"dunno)(?: now| exactly| offhand)? which\b",
+    r"dunno|it(?:'s| has)? slipped my mind|it's gone (?:clean |right )?out of my head)"
+    r"(?: now| exactly| offhand)? which\b",
     _F,
 )
 

@@ -552,6 +552,9 @@ from hltl.grounding._rewrites46s import _STEPS46S, _STEPS46S_FIRST
 from hltl.grounding._rewrites47 import _STEPS47, _STEPS47_FIRST
 from hltl.grounding._rewrites47r import _STEPS47R, _STEPS47R_FIRST
 from hltl.grounding._rewrites47s import _STEPS47S, _STEPS47S_FIRST
+from hltl.grounding._rewrites48 import _STEPS48, _STEPS48_FIRST
+from hltl.grounding._rewrites48r import _STEPS48R, _STEPS48R_FIRST
+from hltl.grounding._rewrites48s import _STEPS48S, _STEPS48S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -883,6 +886,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS48S_FIRST,
+    *_STEPS48R_FIRST,
+    *_STEPS48_FIRST,
     *_STEPS47S_FIRST,
     *_STEPS47R_FIRST,
     *_STEPS47_FIRST,
@@ -924,6 +930,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS48R,
     *_STEPS47R,
     *_STEPS46R,
     *_STEPS45R,
@@ -965,6 +972,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS48S,
     *_STEPS47S,
     *_STEPS46S,
     *_STEPS45S,
@@ -1053,6 +1061,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS48,
     *_STEPS47,
     *_STEPS46,
     *_STEPS45,

@@ -42,6 +42,9 @@ from hltl.grounding import (
     _rewrites47l,
     _rewrites47r,
     _rewrites47s,
+    _rewrites48,
+    _rewrites48r,
+    _rewrites48s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -130,6 +133,9 @@ _REFUSALS = (
     *_rewrites47.REFUSE47,
     *_rewrites47r.REFUSE47R,
     *_rewrites47s.REFUSE47S,
+    *_rewrites48.REFUSE48,
+    *_rewrites48r.REFUSE48R,
+    *_rewrites48s.REFUSE48S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -158,6 +164,9 @@ _CHECKS = (
     *_rewrites47.CHECK47,
     *_rewrites47r.CHECK47R,
     *_rewrites47s.CHECK47S,
+    *_rewrites48.CHECK48,
+    *_rewrites48r.CHECK48R,
+    *_rewrites48s.CHECK48S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -568,8 +577,13 @@ def _unclear_it(text: str, lexicon: Lexicon) -> str:
         return ""
     listed: list[str] = []
     joined = True  # nothing but list words since the last object
-    for it in items:
+    for k, it in enumerate(items):
         if it.kind == "word" and it.text.lower() == "it":
+            after = [i.text.lower() for i in items[k + 1 : k + 4]]
+            if after[:1] in (["'s"], ["has"]):
+                after = after[1:]
+            if after[:1] == ["slipped"] or (after[:1] == ["gone"] and after[1:2] != ["to"]):
+                return ""  # "it's slipped my mind which": the 'it' names no object
             said = list(dict.fromkeys(listed))
             return f"'it' could mean {' or '.join(said)}" if len(said) > 1 else ""
         if it.kind == "ent":
