@@ -261,12 +261,6 @@ KNOWN_MISSES = frozenset(
         "Not the crisps, Bob wants the bottle after basketry.",
         "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
         # blind44 (tuned on in session 46): refusals left at its one measurement (docs/grounding.md)
-        "The ostler's boots keep catching the bottle; up on the shelf with it, would you.",
-        "Since the timpani rehearsal Person B keeps on about the cup; let him have it, for peace.",
-        "That apple was set aside for Person A at the swan upping; run it over to her.",
-        "Person B was after the bottle. Bring it him, please, he's back from the polka.",
-        "The bottle's Person A's. Hand it across to her, thanks.",
-        "Mr Lee's tablets are overdue by the clock on the wall; take them over to him.",
         "Blue mug first, for Alice, as she's off bodging stools. After that the apple goes to Bob.",
         "Bottle goes to Person A the apple to Person B no rush the pipe fitter's only just started",
         "Lena first, she wants the white plate; the tongs can go on the worktop after.",
@@ -321,8 +315,6 @@ KNOWN_MISSES = frozenset(
         "notebook to priya thanks she has minutes to take",
         "tin of screws on the workbench kofi wants to count them",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
-        "Mrs Khan is in pain, so would you take her medication over to her?",
-        "Could Mr Novak have the blue plate, the white one's too plain for him?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -340,7 +332,6 @@ KNOWN_UNCLEAR = frozenset(
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         # blind43 (tuned on in session 45)
         # blind44 (tuned on in session 46)
-        "Take that one to her as well.",
         "The bottle goes to the one who asked. The chips stay put.",
         "Tom asked for a box. Bring him the one he used yesterday.",
         "Person B asked for one of the cup or the apple at the footvolley match, I can't recall "

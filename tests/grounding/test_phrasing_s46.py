@@ -7,7 +7,10 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.errors import GroundingError
 from hltl.grounding import _rewrites46
+from hltl.grounding.offline import parse_instruction
+from hltl.world.scene import Scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -158,3 +161,116 @@ test_to_purpose = PURPOSE.test(
 
 def test_to_purpose_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     PURPOSE.refused_without((_rewrites46._to_purpose46,), monkeypatch)
+
+
+# -- a remark naming the thing, then the request by a pronoun (_remark_it46) --------------------
+
+REMARK_IT = PhrasingCases()
+test_remark_it = REMARK_IT.test(
+    (
+        "The porter's elbow keeps catching the lemon; up on the rack with it, would you.",
+        "lemon@rack",
+        KITCHEN,
+    ),
+    ("Mrs Khan's tablets are due by the clock; take them over to her.", "pills>C", WARD),
+    ("The tape's Tom's. Hand it across to him, thanks.", "tape>B", DEPOT),
+    ("The glue was saved for Zoe after assembly; pass it to her.", "glue>C", CLASSROOM),
+    (
+        "Since the safety talk Jess keeps on about the drill; let her have it, for peace.",
+        "drill>B",
+        WORKSHOP,
+    ),
+    (
+        "Lily was after the teddy. Bring it her, please, she's back from the swings.",
+        "teddy>A",
+        NURSERY,
+    ),
+    # a negation, another person, two things, a condition, a request in the remark
+    ("The tape isn't Tom's. Hand it across to him.", None, DEPOT),
+    ("The tape's Tom's. Hand it across to her.", None, DEPOT),
+    ("The tape or the gloves are Tom's. Hand it to him.", None, DEPOT),
+    ("If the lemon's spare; take it to Marco.", None, KITCHEN),
+    ("Mr Lee's tablets are due; take them over to her.", None, WARD),
+    ("The apple was set aside for Bob; run it over to Carol.", None, CELL),
+)
+
+
+def test_remark_it_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    REMARK_IT.refused_without((_rewrites46._remark_it46,), monkeypatch)
+
+
+# -- the place first, then 'with it' (_with_it46) -----------------------------------------------
+
+WITH_IT = PhrasingCases()
+test_with_it = WITH_IT.test(
+    ("Up on the rack with them, the tongs I mean.", "tongs@rack", KITCHEN),
+    ("Up on the rack with it.", None, KITCHEN),
+)
+
+
+def test_with_it_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WITH_IT.refused_without((_rewrites46._with_it46,), monkeypatch)
+
+
+# -- ', for peace' (_for_peace46) ----------------------------------------------------------------
+
+PEACE = PhrasingCases()
+test_for_peace = PEACE.test(
+    ("Give Bob the apple, for peace.", "apple>B", CELL),
+    (
+        "Noah keeps going on about the ruler, give it to him, for peace and quiet.",
+        "ruler>B",
+        CLASSROOM,
+    ),
+)
+
+
+def test_for_peace_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PEACE.refused_without((_rewrites46._for_peace46,), monkeypatch)
+
+
+# -- 'take her medication over to her' (_own_thing46) ---------------------------------------------
+
+OWN = PhrasingCases()
+test_own_thing = OWN.test(
+    ("Mrs Khan is in pain, so would you take her medication over to her?", "pills>C", WARD),
+    ("Would you take his blanket over to her?", None, WARD),
+)
+
+
+def test_own_thing_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    OWN.refused_without((_rewrites46._own_thing46,), monkeypatch)
+
+
+# -- why not the other one of the kind (_other_too46) --------------------------------------------
+
+OTHER = PhrasingCases()
+test_other_too = OTHER.test(
+    ("Give Zoe the red book, the green one's a bit babyish for her.", "book_red>C", CLASSROOM),
+    ("Could Priya have the blue pen, the black one's too faint?", "pen_blue>A", OFFICE),
+    ("Pass Dana the white cup, the green cup is too small.", "cup_white>A", LAB),
+    # the one handed, a pronoun for no one given to, another kind of thing
+    ("Give Zoe the red book, the red one's too hard for her.", None, CLASSROOM),
+    ("Give Zoe the red book, the green one's too hard for him.", None, CLASSROOM),
+    ("Could Priya have the blue pen, the stapler's too heavy?", None, OFFICE),
+)
+
+
+def test_other_too_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    OTHER.refused_without((_rewrites46._other_too46,), monkeypatch)
+
+
+# -- 'that one' with no thing named: refused naming each thing (_that_one46) --------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "names"),
+    [
+        ("Take that one to Tom as well.", DEPOT, ("box_small", "scanner", "tape")),
+        ("Give this one to Bob.", CELL, ("cup", "bottle", "apple")),
+    ],
+)
+def test_that_one_names_things(text: str, scene: Scene, names: tuple[str, ...]) -> None:
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, scene)
+    assert all(n in str(refused.value) for n in names)

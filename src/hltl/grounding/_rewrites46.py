@@ -4,19 +4,24 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import (
     _COMMON,
     _F,
     _KEEP_WORDS,
+    _ids,
     _names,
     _objects_only,
+    _only_person,
+    _reading,
     _unknown_word,
 )
 from hltl.grounding._normalise2 import _asks_nothing29
+from hltl.grounding._rewrites44 import _PRONOUNS44
 from hltl.grounding._rewrites45 import _fits_only45, _person, _read_for, _read_for_said
-from hltl.grounding.lexicon import VERBS, Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.lexicon import PRONOUN_SEX, VERBS, Lexicon
+from hltl.grounding.tree import Node, tasks
 
 # -- session 46 (engineer 12): blind44's refusals of politeness and fillers, wants and needs,
 # pronouns and ellipsis and questions, each read as a family. Every rule rewrites to words the
@@ -239,6 +244,218 @@ def _to_purpose46(text: str, lexicon: Lexicon) -> str:
     return _read_for_said(text[: m.start()] + m["end"].strip(), text, words, lexicon)
 
 
+# -- a remark naming the thing (and whose it is, or who is after it), then the request for it by a
+# pronoun ("The ostler's boots keep catching the bottle; up on the shelf with it, would you.",
+# "That apple was set aside for Person A at the swan upping; run it over to her.", "Mr Lee's
+# tablets are overdue by the clock on the wall; take them over to him.", "The bottle's Person A's.
+# Hand it across to her, thanks."): the request alone, the thing said for its 'it' / 'them' (of
+# the thing's number) and the person for its 'him' / 'her' (who must fit, _fits_only45). The
+# remark names one thing and at most one person, names no surface, says nothing of a condition,
+# a choice or a negation, and reads as nothing or as what the request then reads as; the request
+# names no thing itself.
+_REMARK_IT46 = re.compile(r"^(?P<r>[^;.:!?]+?)\s*(?:;|:|[.!?](?=\s+[A-Z]))\s+(?P<q>\S.*)$")
+_NOT_REMARK46 = re.compile(
+    r"\b(?:if|unless|not|no|never|nobody|nothing|none|or|instead|except|without|rather|but|"
+    r"only|whether|whoever|whichever|either|neither|another|other|else|both|all|each|every|any|"
+    r"and|it|them|him|her|he|she|they|give|hand|pass|bring|take|put|get)\b|n't\b",
+    _F,
+)
+
+
+def _remark_it46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the request after the remark above, its pronouns said."""
+    m = _REMARK_IT46.match(text)
+    if m is None or _NOT_REMARK46.search(m["r"]):
+        return text
+    named = _names(m["r"], lexicon)
+    things = [it for it in named if all(r.kind == "object" for r in it.refs)]
+    people = [it for it in named if all(r.kind == "human" for r in it.refs)]
+    if len(things) != 1 or len(people) > 1 or len(things) + len(people) != len(named):
+        return text
+    if len({r.id for r in things[0].refs}) != 1 or _ids(m["q"], lexicon, "object"):
+        return text
+    (thing,) = things
+    plural = thing.refs[0].plural or thing.text.lower().endswith("s")
+    pron = "them" if plural else "it"
+    q = _IT_HIM46.sub(r"\g<v> \g<x> to ", m["q"])  # 'bring it him' (below)
+    if not re.search(rf"\b{pron}\b", q, _F):
+        return text
+    out = re.sub(rf"\b{pron}\b", f"the {thing.text}", q, count=1, flags=_F)
+    said = _PRONOUNS44.findall(out)
+    pid = people[0].refs[0].id if people else None
+    if said:
+        if pid is None or len({PRONOUN_SEX[w.lower()] for w in said}) != 1:
+            return text
+        if not _fits_only45(pid, " ".join(said), lexicon):
+            return text
+        out = re.sub(r"\b(?:him|her)\b", people[0].text, out, count=1, flags=_F)
+    read = _reading(out, lexicon)
+    if read is None:
+        return text
+    if pid is not None and {t.target for t in tasks(read) if t.kind == "deliver"} - {pid}:
+        return text
+    alone = _reading(m["r"], lexicon)
+    if alone is not None and set(tasks(alone)) != set(tasks(read)):
+        return text
+    return out
+
+
+# -- the place first, then 'with it' ("Up on the shelf with it, would you.", "Onto the desk with
+# the stapler, please.", "Over to Bob with the apple."): said 'put it up on the shelf' (a
+# surface) or 'take the apple over to Bob' (a person)
+_WITH_IT46 = re.compile(
+    r"^(?P<o>(?:(?:right|so|now|ok|okay|and|then|go on)[,!]? )*)(?P<where>(?:(?:up|down|back|"
+    r"over|across|round) )?(?:on|onto|on to|in|into|to) (?:the )?[A-Za-z][\w ]*?) with "
+    r"(?P<x>it|them|(?:the|that|this|those|these) [a-z][a-z ]*?)(?P<rest>\s*(?:[,.!?].*)?)$",
+    _F,
+)
+
+
+def _with_it46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the place above said after 'put X' / 'take X'."""
+    if " with " not in text.lower():
+        return text
+    m = _WITH_IT46.match(text)
+    if m is None:
+        return text
+    where = m["where"]
+    if _ids(where, lexicon, "surface") and not _ids(where, lexicon, "human"):
+        verb = "put"
+    elif _only_person(where, lexicon):
+        verb = "take"
+    else:
+        return text
+    if m["x"].lower() not in ("it", "them") and not _objects_only(m["x"], lexicon):
+        return text
+    out = f"{m['o']}{verb} {m['x']} {where}{m['rest']}"
+    return _read_for(out[:1].upper() + out[1:], text, None, lexicon)
+
+
+# -- 'bring it him' (the thing before the person, without 'to': "Bring it him, please."): said
+# 'bring it to him'
+_IT_HIM46 = re.compile(
+    r"\b(?P<v>give|bring|take|hand|pass|send|fetch|get) (?P<x>it|them) (?=(?:him|her)\b)", _F
+)
+
+
+def _it_him46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: 'it him' said 'it to him'."""
+    m = _IT_HIM46.search(text)
+    if m is None:
+        return text
+    return _read_for(f"{text[: m.end('x')]} to {text[m.end('x') + 1 :]}", text, None, lexicon)
+
+
+# -- ', for peace' closing the request (why: "…, let him have it, for peace."): said ', for a quiet
+# life', which session 2x's remark rules take off
+_FOR_PEACE46 = re.compile(
+    r",\s*for (?:some |a bit of |the sake of )?peace(?: and quiet)?(?:'s sake)?(?=\s*[.!]*\s*$)",
+    _F,
+)
+
+
+def _for_peace46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: ', for peace' said ', for a quiet life'."""
+    if "peace" not in text.lower():
+        return text
+    out = _FOR_PEACE46.sub(", for a quiet life", text)
+    return text if out == text else _read_for(out, text, None, lexicon)
+
+
+# -- 'her X … to her' ('take her medication over to her', 'bring him his coat'): the thing of the
+# one the pronoun gives it to, said 'the X' (the owner is the one given to; 'his … to her' and
+# 'her … to him' name two people and stay refused, session 7's policy)
+_OWN_THING46 = re.compile(
+    r"\b(?P<v>give|bring|take|hand|pass|fetch|get|send|carry|run|pop) (?:(?P<pos>his|her) "
+    r"(?P<x>[a-z][a-z ]*?) (?P<part>(?:(?:over|across|back|up|down|round) )?to) (?P<to>him|her)"
+    r"|(?P<to2>him|her) (?P<pos2>his|her) (?P<x2>[a-z][a-z ]*?))(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _own_thing46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the owner's his / her above said 'the'."""
+    m = _OWN_THING46.search(text)
+    if m is None:
+        return text
+    pos, to, x = (m["pos"], m["to"], m["x"]) if m["pos"] else (m["pos2"], m["to2"], m["x2"])
+    if PRONOUN_SEX[pos.lower()] != PRONOUN_SEX[to.lower()] or not _objects_only(x, lexicon):
+        return text
+    start = m.start("pos") if m["pos"] else m.start("pos2")
+    out = f"{text[:start]}the{text[start + len(pos) :]}"
+    return _read_for(out, text, None, lexicon)
+
+
+# -- a closing remark of why not the other thing of the kind ("Could Mr Novak have the blue plate,
+# the white one's too plain for him?", "Give Zoe the red book, the green one's a bit babyish for
+# her."): taken off when it names a thing of the scene of the handed thing's kind ('the white
+# one': its noun for 'one') that the rest does not hand, and its him / her may be the one person
+# the rest hands to
+_OTHER_TOO46 = re.compile(
+    r",\s*(?P<x>the [a-z][a-z ]*?)(?:'s| is|'re| are) (?:(?:a bit |a touch |far |way |much |"
+    r"rather |just )?too|a bit|a touch|a little|rather) [a-z]+(?: for (?P<p>him|her|them))?"
+    r"(?P<end>\s*[.?!]*)\s*$",
+    _F,
+)
+
+
+def _other_too46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the remark above taken off."""
+    low = text.lower()
+    if "too " not in low and "a bit " not in low and "a touch " not in low and "rather " not in low:
+        return text
+    m = _OTHER_TOO46.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    out = head + (m["end"].strip() or ".")
+    read = _reading(out, lexicon)
+    if read is None:
+        return text
+    handed = {t.obj for t in tasks(read)}
+    x = m["x"]
+    nouns = {
+        it.text.split()[-1].lower()
+        for it in _names(head, lexicon)
+        if it.refs and all(r.kind == "object" for r in it.refs)
+    }
+    if len(nouns) != 1:
+        return text
+    (noun,) = nouns
+    if x.lower().endswith(" one"):
+        x = f"{x[:-4]} {noun}"
+    elif x.split()[-1].lower() != noun:
+        return text  # another kind of thing: not why this one rather than that
+    other = _ids(x, lexicon, "object")
+    if not other or other & handed or _ids(x, lexicon, "human") or _ids(x, lexicon, "surface"):
+        return text
+    given = {t.target for t in tasks(read) if t.kind == "deliver"}
+    if m["p"] and (len(given) != 1 or not _fits_only45(next(iter(given)), m["p"], lexicon)):
+        return text
+    return out
+
+
+# -- 'that one' / 'this one' with no thing named anywhere in the instruction ("Take that one to
+# her as well."): refused naming each thing of the scene it could be (the grammar refused it for
+# the pronoun, naming no thing)
+_THAT_ONE46 = re.compile(r"\b(?:that|this|the other) one\b", _F)
+
+
+def _that_one46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: 'that one' above refused naming what it could mean."""
+    if " one" not in text.lower() or _THAT_ONE46.search(text) is None:
+        return text
+    if _ids(text, lexicon, "object") or _ids(text, lexicon, "surface"):
+        return text
+    objs = [o.id for o in lexicon.scene.objects]
+    if len(objs) < 2 or re.search(r"[.;:!?]\s+\S", text):
+        return text
+    said = _THAT_ONE46.search(text)[0]  # type: ignore[index]
+    raise GroundingError(
+        f"{said!r} names nothing said before it: it could mean " + " or ".join(objs)
+    )
+
+
 _STEPS46_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _thanks_ahead46,
     _apology46,
@@ -248,6 +465,13 @@ _STEPS46_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _you_reckon46,
     _when_done46,
     _to_purpose46,
+    _remark_it46,
+    _with_it46,
+    _it_him46,
+    _for_peace46,
+    _own_thing46,
+    _other_too46,
+    _that_one46,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-45 ones)
 _STEPS46: tuple[Callable[[str, Lexicon], str], ...] = ()
