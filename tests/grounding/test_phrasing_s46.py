@@ -274,3 +274,135 @@ def test_that_one_names_things(text: str, scene: Scene, names: tuple[str, ...]) 
     with pytest.raises(GroundingError) as refused:
         parse_instruction(text, scene)
     assert all(n in str(refused.value) for n in names)
+
+
+# -- blind43's four left: the thing not for P, a cleft naming Q (_not_for_cleft46) ---------------
+
+NOT_FOR = PhrasingCases()
+test_not_for_cleft = NOT_FOR.test(
+    (
+        "The lemon's not for Marco, it's Mr Novak who's after it, he's got fish.",
+        "lemon>C",
+        KITCHEN,
+    ),
+    ("The stapler isn't for Priya, it's Sam who's asking for it.", "stapler>B", OFFICE),
+    ("The tape's not for Tom, it's Mia who's after it, she's been waiting.", "tape>A", DEPOT),
+    # the same person, two people, a pronoun that is not the person's
+    ("The tape's not for Tom, it's Tom who needs it.", None, DEPOT),
+    ("The tape's not for Tom, it's Mia or Tom who's after it.", None, DEPOT),
+    ("The tape's not for Tom, it's Mia who's after it, he's been waiting.", None, DEPOT),
+)
+
+
+def test_not_for_cleft_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_FOR.refused_without((_rewrites46._not_for_cleft46,), monkeypatch)
+
+
+# -- 'after …' in an opening remark of what the person is doing (_doing_after46) ----------------
+
+DOING_AFTER = PhrasingCases()
+test_doing_after = DOING_AFTER.test(
+    (
+        "Zoe's sorting books after assembly and either book will do, so give her one.",
+        "book_red>C | book_green>C",
+        CLASSROOM,
+    ),
+    # a thing or a person of the scene after 'after'
+    ("Jess is sanding planks after Kofi, so pass her the hammer.", None, WORKSHOP),
+)
+
+
+def test_doing_after_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DOING_AFTER.refused_without((_rewrites46._doing_after46,), monkeypatch)
+
+
+# -- a craft named bare after a want (_craft46) -------------------------------------------------
+
+CRAFT = PhrasingCases()
+test_craft = CRAFT.test(
+    ("Marco wants the lemon after woodwork.", "lemon>A", KITCHEN),
+    ("Sam needs the stapler after calligraphy.", "stapler>B", OFFICE),
+    ("Mr Lee wants the magazine after taxidermy.", "magazine>B", WARD),
+    # an event says when; an order after it is put off
+    ("Marco wants the lemon after surgery.", None, KITCHEN),
+    ("Marco wants the lemon after work.", None, KITCHEN),
+    ("Give Marco the lemon after woodwork.", None, KITCHEN),
+)
+
+
+def test_craft_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CRAFT.refused_without((_rewrites46._craft46,), monkeypatch)
+
+
+# -- an opening reason naming nothing, then 'so' (_so_reason46) ----------------------------------
+
+SO_REASON = PhrasingCases()
+test_so_reason = SO_REASON.test(
+    (
+        "The wheelwright's invoice needs stamping, so any pen at all for Sam.",
+        "pen_black>B | pen_blue>B | pen_red>B",
+        OFFICE,
+    ),
+    ("The glazier's bill wants paying, so the knife for Marco, please.", "knife>A", KITCHEN),
+    # the reason names a surface of the scene
+    ("The porter's trolley needs oiling, so put the jug on it.", None, WARD),
+)
+
+
+def test_so_reason_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SO_REASON.refused_without((_rewrites46._so_reason46,), monkeypatch)
+
+
+# -- blind42's: a purpose with a doing after its verb and the person's his / her (_to_purpose46) --
+
+PURPOSE_DOING = PhrasingCases()
+test_purpose_doing = PURPOSE_DOING.test(
+    ("Noah needs a ruler to finish drawing his chess board.", "ruler>B", CLASSROOM),
+    # the his is not the person's
+    ("Zoe needs a ruler to finish drawing his chess board.", None, CLASSROOM),
+)
+
+
+def test_purpose_doing_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PURPOSE_DOING.refused_without((_rewrites46._to_purpose46,), monkeypatch)
+
+
+# -- why or where exactly, closing a placement (_placed_so46) -----------------------------------
+
+PLACED_SO = PhrasingCases()
+test_placed_so = PLACED_SO.test(
+    ("Put the cup on the shelf so Bob stops knocking it over.", "cup@shelf", CELL),
+    ("Put the stapler on the desk so Sam knows where it is.", "stapler@desk", OFFICE),
+    ("Put the cup on the table, near where Bob keeps his tools.", "cup@table", CELL),
+    ("Pop the gloves on the pallet ready for Mia's round.", "gloves@pallet", DEPOT),
+    # 'so P can have it' may be a handover; a handover before it
+    ("Put the cup on the shelf so Bob can have it.", None, CELL),
+    ("Give Bob the cup so Alice stops nagging.", None, CELL),
+)
+
+
+def test_placed_so_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PLACED_SO.refused_without((_rewrites46._placed_so46,), monkeypatch)
+
+
+# -- the speaker's pick 'I'd say', a pastime named by its doing (_bare_doing46) ---------------
+
+BARE_DOING = PhrasingCases()
+test_bare_doing = BARE_DOING.test(
+    (
+        "Carol's gagging for something to drink after line dancing, the bottle I'd say.",
+        "bottle>C",
+        CELL,
+    ),
+    (
+        "Jess is itching for something to work with after sanding, the drill I'd think.",
+        "drill>B",
+        WORKSHOP,
+    ),
+    # an order after it is put off
+    ("Give Bob the apple after cleaning.", None, CELL),
+)
+
+
+def test_bare_doing_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BARE_DOING.refused_without((_rewrites46._bare_doing46,), monkeypatch)

@@ -18,7 +18,8 @@ from hltl.grounding._normalise1 import (
     _unknown_word,
 )
 from hltl.grounding._normalise2 import _asks_nothing29
-from hltl.grounding._rewrites44 import _PRONOUNS44
+from hltl.grounding._normalise4 import _ORDER_LAST37
+from hltl.grounding._rewrites44 import _PRONOUNS44, _agrees44
 from hltl.grounding._rewrites45 import _fits_only45, _person, _read_for, _read_for_said
 from hltl.grounding.lexicon import PRONOUN_SEX, VERBS, Lexicon
 from hltl.grounding.tree import Node, tasks
@@ -219,9 +220,11 @@ def _when_done46(text: str, lexicon: Lexicon) -> str:
 # dealer's load."): taken off when its verb is no verb the grounder reads (give, put, take, …),
 # its words name nothing of the scene and ask nothing (_asks_nothing29: no verb but the last
 # noun, no 'all', 'it', 'not', no his / her), and the rest reads handing things to one person.
-# Session 34 and 12s's session 42 know a closed list of such verbs; this is any verb.
+# Session 34 and 12s's session 42 know a closed list of such verbs; this is any verb, with a
+# doing after it ("… to finish drawing his xiangqi board").
 _TO_PURPOSE46 = re.compile(
-    r"(?P<sep>\s*,?\s+)to (?P<v>[a-z]+) (?P<det>the|a|an|his|her|their|some|its) "
+    r"(?P<sep>\s*,?\s+)to (?P<v>[a-z]+)(?: (?P<g>[a-z]{2,}ing))? (?P<det>the|a|an|his|her|their|"
+    r"some|its) "
     r"(?P<words>[a-z][a-z' -]*?)(?P<end>\s*[.!?]*)\s*$",
     _F,
 )
@@ -234,14 +237,20 @@ def _to_purpose46(text: str, lexicon: Lexicon) -> str:
     m = _TO_PURPOSE46.search(text)
     if m is None or m["v"].lower() in VERBS or m["v"].lower() not in _COMMON:
         return text
-    words = f"{m['det']} {m['words']}"
+    g = (m["g"] or "").lower()
+    if g and {g, g[:-3], g[:-3] + "e", g[:-4]} & VERBS.keys():
+        return text  # 'giving', 'putting', 'sticking': a verb the grounder reads
+    # a his / her / their is asked of the person given to (_read_for_said), not of the remark
+    owner = m["det"].lower() in ("his", "her", "their")
+    words = f"{'the' if owner else m['det']} {m['words']}"
     # a noun after a determiner or an owner ("the scrap dealer's load") is no verb to read
     *head, noun = words.rsplit(" ", 1)
     if head and (head[0].endswith("'s") or head[0] == m["det"]) and noun.lower() in VERBS:
         words = f"{head[0]} x"
     if _KEEP_WORDS.search(m["words"]) or not _asks_nothing29(words, lexicon):
         return text
-    return _read_for_said(text[: m.start()] + m["end"].strip(), text, words, lexicon)
+    said = m["det"] if owner else words
+    return _read_for_said(text[: m.start()] + m["end"].strip(), text, said, lexicon)
 
 
 # -- a remark naming the thing (and whose it is, or who is after it), then the request for it by a
@@ -456,6 +465,154 @@ def _that_one46(text: str, lexicon: Lexicon) -> str:
     )
 
 
+# -- blind43's four left (12r's notes, session 45) ------------------------------------------------
+
+# "The bottle's not for Person A, it's Person B who's after it, he's been punting.": the thing
+# not for one person, then a cleft naming the one it is for: said 'Person B is after the bottle,
+# …' (the 'not' is corrected at once, by name; a he / she after it must fit that person)
+_NOT_FOR_CLEFT46 = re.compile(
+    r"^(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)(?:'s not|'s no longer| is not| isn't|"
+    r"'re not| are not| aren't) for (?P<p>[A-Za-z][\w]*(?: [A-Za-z][\w]*)?),\s*(?:it's|it is) "
+    r"(?P<q>[A-Za-z][\w]*(?: [A-Za-z][\w]*)?) (?:who|that)(?:'s| is|'s been| has been)? "
+    r"(?:after|asking for|waiting on|waiting for|wanting|wants|needs) (?P<pron>it|them)"
+    r"(?P<rest>(?:\s*[,.;!].*)?)$",
+    _F,
+)
+
+
+def _not_for_cleft46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the correction above said as the want of the one named last."""
+    if "not for" not in text.lower() and "n't for" not in text.lower():
+        return text
+    m = _NOT_FOR_CLEFT46.match(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    p, q = _person(m["p"], lexicon), _person(m["q"], lexicon)
+    if p is None or q is None or p == q or not _agrees44(q, m["rest"] or "", lexicon):
+        return text
+    x = m["x"]
+    out = f"{m['q']} is after {x[:1].lower()}{x[1:]}{m['rest'] or '.'}"
+    return _read_for(out, text, q, lexicon)
+
+
+# a remark of what the person is doing opening the instruction, with when ("Emma's rinsing
+# brushes after lampwork and either cup will do, so take her one."): the 'after …' taken off when
+# it names nothing and asks nothing (the rest must read)
+_DOING_AFTER46 = re.compile(
+    r"^(?P<head>[A-Z][\w]*(?: [A-Z][\w]*)?(?:'s| is) [a-z]+ing(?: [a-z]+){0,3}?) (?:after|since|"
+    r"following) (?P<w>[a-z][a-z' ]*?)(?=\s*(?:,|;| and | so ))",
+    _F,
+)
+
+
+def _doing_after46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the time in the opening remark above taken off."""
+    m = _DOING_AFTER46.match(text)
+    if m is None or not _only_person(m["head"].split("'")[0].rsplit(" is", 1)[0], lexicon):
+        return text
+    if not _asks_nothing29(m["w"], lexicon) or _KEEP_WORDS.search(m["w"]):
+        return text
+    return _read_for(m["head"] + text[m.end() :], text, None, lexicon)
+
+
+# a craft named bare after a want ("Not the crisps, Bob wants the bottle after basketry."): said
+# as session 35's pastimes are ('after crochet'), which are taken off as why, not when; a closed
+# list of crafts (an event, 'after surgery', 'after work', says when and stays refused)
+_CRAFT46 = re.compile(
+    r"\b(?P<a>after|since) (?P<w>basketry|lampwork|woodwork|metalwork|leatherwork|beadwork|"
+    r"fretwork|stonework|ironwork|glasswork|marquetry|joinery|carpentry|falconry|cookery|"
+    r"tapestry|upholstery|masonry|taxidermy|calligraphy|photography|pyrography|scrimshaw|"
+    r"quillwork|papermaking|woodturning|glassblowing|silversmithing|blacksmithing)"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _craft46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the craft above said 'crochet'."""
+    m = _CRAFT46.search(text)
+    if m is None or _names(m["w"], lexicon):
+        return text
+    return _read_for(f"{text[: m.end('a')]} crochet{text[m.end() :]}", text, None, lexicon)
+
+
+# an opening reason naming nothing of the scene, then 'so' and the request ("The letter carver's
+# quote needs signing, so any pen at all for Sam, black, blue or red."): the request alone (which
+# must read; the reason names no thing, person or surface and says no negation or condition)
+_SO_REASON46 = re.compile(r"^(?P<r>[A-Z][^,;.!?]*?),? so (?P<q>\S.*)$")
+
+
+def _so_reason46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the reason above taken off."""
+    if " so " not in text:
+        return text
+    m = _SO_REASON46.match(text)
+    if m is None or _names(m["r"], lexicon) or _NOT_REMARK46.search(m["r"]):
+        return text
+    q = m["q"]
+    return _read_for(q[:1].upper() + q[1:], text, None, lexicon)
+
+
+# -- why or where exactly, closing a placement ("Can the notebook go in the box so Priya stops
+# losing it?", "Would you stick that packing tape on the pallet ready for Tom's load?", "Could
+# the apple go on the counter, next to where Alice does her cross-stitch?"): taken off when the
+# rest reads as placements only and the words name no thing or surface of the scene (a person
+# may be named: the one the placement is for, not given anything; 'so P can have it' may mean
+# a handover and stays refused)
+_NAME46 = r"(?-i:[A-Z])[\w]*(?: (?-i:[A-Z])[\w]*)?"
+_PLACED_SO46 = re.compile(
+    rf"(?P<sep>,?\s+)(?:so (?:that )?(?P<so>{_NAME46}|he|she|they) (?:stops|doesn't|won't|"
+    rf"can't|knows)\b|ready for (?P<owner>{_NAME46})'s [a-z]|(?:next to|near|by|beside) where "
+    rf"(?P<near>{_NAME46}) )(?P<words>[^,;.!?]*)(?P<end>\s*[.?!]*)\s*$",
+    _F,
+)
+
+
+def _placed_so46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the closer above taken off a placement."""
+    m = _PLACED_SO46.search(text)
+    if m is None or m.start() == 0:
+        return text
+    tail = text[m.start() : m.start("end")]
+    if _ids(tail, lexicon, "object") or _ids(tail, lexicon, "surface"):
+        return text
+    who = m["so"] or m["owner"] or m["near"]
+    if who.lower() not in ("he", "she", "they") and not _only_person(who, lexicon):
+        return text
+    out = text[: m.start()] + (m["end"].strip() or ".")
+    read = _reading(out, lexicon)
+    if read is None or any(t.kind != "place" for t in tasks(read)):
+        return text
+    return out
+
+
+# -- a want closed by the speaker's pick ("Bob's dying for something to nibble on after axe
+# throwing, the apple I'd say."): 'I'd say' said 'I reckon' (which the grammar reads as the pick),
+# and a pastime named bare by its doing after a want ('after axe throwing') taken off as why, not
+# when, when the clause it closes is no order (an order 'after cleaning' is put off) and it names
+# nothing and asks nothing
+_ID_SAY46 = re.compile(r"(?<=[a-z]) i'd (?:say|think|guess)(?=\s*[.!]*\s*$)", _F)
+_BARE_DOING46 = re.compile(
+    r"\s+(?:after|since) (?P<d>(?:[a-z]+ ){0,2}[a-z]{3,}ing)(?=\s*(?:[,;.!?]|$))", _F
+)
+
+
+def _bare_doing46(text: str, lexicon: Lexicon) -> str:
+    """Session 46: the pick and the doing above."""
+    if "'d " not in text and " after " not in text.lower() and " since " not in text.lower():
+        return text
+    out = _ID_SAY46.sub(" I reckon", text)
+    m = _BARE_DOING46.search(out)
+    if (
+        m is not None
+        and not _ORDER_LAST37.search(out[: m.start()])
+        and _asks_nothing29(m["d"], lexicon)
+        and not _KEEP_WORDS.search(m["d"])
+    ):
+        out = out[: m.start()] + out[m.end() :]
+    return text if out == text else _read_for(out, text, None, lexicon)
+
+
 _STEPS46_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _thanks_ahead46,
     _apology46,
@@ -472,6 +629,12 @@ _STEPS46_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _own_thing46,
     _other_too46,
     _that_one46,
+    _not_for_cleft46,
+    _doing_after46,
+    _craft46,
+    _so_reason46,
+    _placed_so46,
+    _bare_doing46,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-45 ones)
 _STEPS46: tuple[Callable[[str, Lexicon], str], ...] = ()
