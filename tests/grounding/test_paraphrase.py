@@ -231,10 +231,8 @@ KNOWN_MISSES = frozenset(
         "Does Person B want the chips? He does, so give them to him.",
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
-        "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
         "Lena has lemon wedges to do for table six and nothing sharp to do them with; sort her "
         "out.",
-        "Noah's desperate for a ruler to finish drawing his xiangqi board.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
         "her.",
         "Person A gets her bottle first; once she's got it, it's the turn of Person B, who's "
@@ -245,21 +243,8 @@ KNOWN_MISSES = frozenset(
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
         "marco's plating up on blue so that plate's his and lena has the white",
-        "Could the apple go on the counter, next to where Alice does her cross-stitch?",
-        "Can the notebook go in the box so Priya stops losing it?",
-        "Would you stick that packing tape on the pallet ready for Tom's load?",
         # blind43 (tuned on in session 45): refusals left at its one measurement (docs/grounding.md)
-        "Emma's rinsing brushes after lampwork and either cup will do, so take her one.",
-        "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
-        "Not the crisps, Bob wants the bottle after basketry.",
-        "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
         # blind44 (tuned on in session 46): refusals left at its one measurement (docs/grounding.md)
-        "The ostler's boots keep catching the bottle; up on the shelf with it, would you.",
-        "Since the timpani rehearsal Person B keeps on about the cup; let him have it, for peace.",
-        "That apple was set aside for Person A at the swan upping; run it over to her.",
-        "Person B was after the bottle. Bring it him, please, he's back from the polka.",
-        "The bottle's Person A's. Hand it across to her, thanks.",
-        "Mr Lee's tablets are overdue by the clock on the wall; take them over to him.",
         "Blue mug first, for Alice, as she's off bodging stools. After that the apple goes to Bob.",
         "Bottle goes to Person A the apple to Person B no rush the pipe fitter's only just started",
         "Lena first, she wants the white plate; the tongs can go on the worktop after.",
@@ -285,8 +270,6 @@ KNOWN_MISSES = frozenset(
         "notebook to priya thanks she has minutes to take",
         "tin of screws on the workbench kofi wants to count them",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
-        "Mrs Khan is in pain, so would you take her medication over to her?",
-        "Could Mr Novak have the blue plate, the white one's too plain for him?",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
         "Go on then, if you're not run off your feet, let Person A have the bottle, bless you.",
         "Ruth says jullay, which is Ladakhi for thank you, and asks nicely that the magazine be "
@@ -412,7 +395,6 @@ KNOWN_UNCLEAR = frozenset(
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         # blind43 (tuned on in session 45)
         # blind44 (tuned on in session 46)
-        "Take that one to her as well.",
         "The bottle goes to the one who asked. The chips stay put.",
         "Tom asked for a box. Bring him the one he used yesterday.",
         "Not the big box for Tom, the one he asked for this morning.",
