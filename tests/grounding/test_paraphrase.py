@@ -170,7 +170,6 @@ KNOWN_MISSES = frozenset(
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
-        "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
@@ -228,7 +227,6 @@ KNOWN_MISSES = frozenset(
         "Put Lily's sippy cup on the high chair for her.",
         "Set both of Lily's blocks up on her high chair.",
         "Persohn A left her bottle with you earlier; she'd like it returned.",
-        "Does Person B want the chips? He does, so give them to him.",
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
         "Lena has lemon wedges to do for table six and nothing sharp to do them with; sort her "
