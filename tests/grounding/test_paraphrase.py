@@ -269,17 +269,6 @@ KNOWN_MISSES = frozenset(
         "tin of screws on the workbench kofi wants to count them",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
-        "Go on then, if you're not run off your feet, let Person A have the bottle, bless you.",
-        "Ruth says jullay, which is Ladakhi for thank you, and asks nicely that the magazine be "
-        "put on the locker.",
-        "Pretty please with a cherry on top, sit the teddy bear on the high chair before Lily's "
-        "nap.",
-        "Kammagar, Yapese for thank you, and the flashlight to Kofi if you'd be so good.",
-        "Bob's hankering for the crisps after a long shift as a pinsetter.",
-        "Person A's in sore need of the bottle, the escapologist's act left her wrung out.",
-        "Tom requires the work gloves for loading the basketmaker's order onto his van.",
-        "Noah is keen to get hold of the ruler, he's drawing up a yahtzee score sheet.",
-        "Lily's wanting her bib, she's all mucky from making loom bands with Ava.",
         "Alice put in for the bottle and she's owed it, so it's hers; Bob can have the crisps "
         "for his trouble.",
         "Person A would like the apple; she'll be after the cup too, so both of them to her.",
@@ -366,16 +355,6 @@ KNOWN_MISSES = frozenset(
         "Sam's got a notebokk to fill with the rector's notices, so pass it to Sam.",
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
-        "Is there any chance of the blue mug landing on the counter before the precentor's "
-        "rehearsal?",
-        "Would it be a hardship to get Person B the bottle while he rests from the step dancing?",
-        "Might Person A be given the bottle now she's back from the contra dancing?",
-        "Jullay in advance; is it possible for Person A to receive the bottle before her celesta "
-        "solo?",
-        "Could you pop the bowl into the sink now the kefir's all finished?",
-        "Would you put the red pen on the desk for Priya's paper marbling?",
-        "Might the ruler find a home on the bookshelf before the scrapbook club?",
-        "Can the big sister, Ava, be handed the bib so she can feed Lily?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
