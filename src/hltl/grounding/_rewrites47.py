@@ -234,10 +234,11 @@ def _for_doing47(text: str, lexicon: Lexicon) -> str:
     return _read_for_said(out, text, m["words"], lexicon)
 
 
-# -- 'all' before a word of how someone or something is, in a remark ("she's all mucky from
-# making loom bands", "now the kefir's all finished"): 'all' says 'wholly', no thing of the
-# scene; taken off when the word after it names nothing (a closed list, or a word of how one is
-# ending -ed / -y) and what is left reads
+# -- 'all' before a word of how someone or something is, in a remark after the request or a
+# 'now' ("…, she's all mucky from making loom bands", "now the kefir's all finished"): 'all' says
+# 'wholly', no thing of the scene; taken off when the word after it names nothing (a closed list,
+# or a word of how one is ending -ed / -y) and what is left reads (an opening "Tom's all sweaty,
+# …" is session 44's)
 _ALL_HOW47 = re.compile(
     r"(?<=\w)(?P<be>'s|'re| is| are| was| were| got| gets| looks| look) all "
     r"(?P<w>finished|done|gone|over|set|ready|in|out|alone|wet|hot|cold|ears|smiles|thumbs|"
@@ -254,6 +255,8 @@ def _all_how47(text: str, lexicon: Lexicon) -> str:
     for m in list(_ALL_HOW47.finditer(text))[::-1]:
         if _names(m["w"], lexicon) or _KEEP_WORDS.fullmatch(m["w"]):
             return text
+        if not re.search(r"[,;]|\bnow\b", text[: m.start()], _F):
+            return text  # "Tom's all sweaty, he needs …" opening the text is session 44's
         out = out[: m.start()] + m["be"] + " " + out[m.end("w") - len(m["w"]) :]
     if out == text:
         return text
@@ -297,17 +300,19 @@ def _with_other_read47(text: str, lexicon: Lexicon) -> str:
 # X?" ('Could P have X?'), "… for P to receive X" ('to have'), "Would it be a hardship / an
 # imposition to …?" ('Would it be a pain to …?'), "now the kefir's finished", "while he rests
 # from the step dancing" (said as the remarks ', the kefir's finished', ', he's resting from …',
-# which the grammar reads in a question too); each kept only when the whole reads
+# which the grammar reads in a question too), "now she's back from …" (said with a comma); each
+# kept only when the whole reads
 _ON47 = r"(?=(?:on|onto|in|into|on to) (?:the|my|our|his|her) )"
 _ASKED47: tuple[tuple[re.Pattern[str], str], ...] = (
-    (re.compile(r"^is there (?=any chance of )", _F), ""),
+    # ('is there' only with such a gerund: "Is there any chance of the cup for Bob?" is
+    # session 36's)
     (
         re.compile(
-            r"\b(?:landing|ending up|winding up|finding its way|finding a (?:home|place|spot)|"
-            rf"making its way) {_ON47}",
+            r"^(?:is there )?(?P<a>any chance of [^,;.?!]+?) (?:landing|ending up|winding up|"
+            rf"finding its way|finding a (?:home|place|spot)|making its way) {_ON47}",
             _F,
         ),
-        "going ",
+        r"\g<a> going ",
     ),
     (
         re.compile(
@@ -349,9 +354,9 @@ _ASKED47: tuple[tuple[re.Pattern[str], str], ...] = (
         ),
         r", \g<who>'s resting",
     ),
-    # 'now she's back from …' in a question: said as the remark ', she's back from …' (which the
-    # grammar reads there as in an order)
-    (re.compile(r"\s+now (?P<who>he|she)(?:'s| is) back from\b", _F), r", \g<who>'s back from"),
+    # 'now she's back from …' in a question: said with the comma session 45 reads it with
+    # (with its comma, session 45's `_now_she45` reads it)
+    (re.compile(r"(?<![,;])\s+now (?=(?:he|she)(?:'s| is) back from\b)", _F), ", now "),
 )
 
 
