@@ -140,8 +140,9 @@ def _owned_occasion47(text: str, lexicon: Lexicon) -> str:
 _WANT_SAID47 = (
     (
         re.compile(
-            r"(?:'s| is| are|'re) in (?:sore|desperate|great|serious|real|urgent|dire|terrible|"
-            r"awful|bad|dreadful|pressing) need of\b",
+            # ('dire / real / urgent need of' is session 37's)
+            r"(?:'s| is| are|'re) in (?:sore|desperate|great|serious|terrible|awful|bad|dreadful|"
+            r"pressing) need of\b",
             _F,
         ),
         " needs",
@@ -371,7 +372,12 @@ def _asked_said47(text: str) -> str:
 def _asked47(text: str, lexicon: Lexicon) -> str:
     """Session 47: the question forms above said as the grammar's."""
     out = _asked_said47(text)
-    return text if out == text else _read_for(out, text, None, lexicon)
+    if out == text:
+        return text
+    now = re.search(r"\bnow (?:that )?the (?P<w>[a-z]+(?: [a-z]+)?)(?:'s| is)", text, _F)
+    if now is not None and _names(now["w"], lexicon):
+        return text  # "Tom wants the scanner now the tape is done." is session 43's to refuse
+    return _read_for(out, text, None, lexicon)
 
 
 # -- what the one given to will do with the thing, naming another person of the scene ("Can the
