@@ -170,6 +170,7 @@ KNOWN_MISSES = frozenset(
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
+        "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
