@@ -340,8 +340,6 @@ KNOWN_MISSES = frozenset(
         "Hiya, sorry, Sam here, the intern, could I possibly have the stapler when you've a "
         "minute?",
         "Morning, Mia here, be a gem and set the small box on the belt, would you?",
-        "The poulterer's just dropped the birds off, so Marco could do with the tongs; be a dear "
-        "and hand them over.",
         "Person B needs the cup for his penny whistle practice, a sip between tunes.",
         "Person A fancies the apple, and Person B would murder a bag of chips.",
         "Person B has set his sights on the chips after an afternoon on the cowbell.",
@@ -350,8 +348,6 @@ KNOWN_MISSES = frozenset(
         "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "Zoe needs the glue stick for her dot-to-dot collage.",
         "Jess needs the power drill to hang the new shelves.",
-        "Person B was on at me for the bottle between dances at the merengue class. Take it to "
-        "him, would you.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
         "Person B's got his eye on the chips after all that double dutch; give them him.",
@@ -414,7 +410,6 @@ KNOWN_MISSES = frozenset(
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         "Jess needs the hanmer to knock together a stand for the serpent.",
         "Would you mind giving Person B the bottle while he tunes the cittern?",
-        "Can Person A have the chips now she's back from the limbo contest?",
         "Can the bowl go on the tray, Emma keeps knocking it over?",
         "Marco's done with the knife, could you put it on the worktop?",
     }
