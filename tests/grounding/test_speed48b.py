@@ -10,21 +10,13 @@ where the pass itself changes nothing."""
 
 from __future__ import annotations
 
-import itertools
-from collections.abc import Callable
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hltl.errors import GroundingError
 from hltl.grounding import phrasing
-from hltl.grounding.lexicon import Item, Lexicon, lex
-from hltl.world.scene import load_scene
-from tests.grounding.helpers import ROOT
-from tests.grounding.test_speed46b import _name, _run
-
-_Pass = Callable[[list[Item], Lexicon], list[Item]]
+from hltl.grounding.lexicon import Item
+from tests.grounding.test_speed47b import closed_means_unchanged, gates_of, lets_through, pool_of
 
 # each newly gated pass, with a sentence (of the cell scene) it changes or refuses at its place in
 # refine, or as lexed
@@ -43,28 +35,8 @@ _CHANGED = [
     ("_there", "Put the apple on the shelf and the cup there too"),
 ]
 _NEW = {name for name, _text in _CHANGED}
-_CELL = Lexicon.of(load_scene(ROOT / "examples/scenes/grounding_cell.yaml"))
-
-
-def _opens(step: _Pass) -> Callable[[list[Item]], bool]:
-    """A gate as a test of the items: _when keeps it as ``opens``; _said as ``needs`` of one."""
-    opens = step.__dict__.get("opens")
-    if opens is not None:
-        return opens  # type: ignore[no-any-return]
-    needs = step.__dict__["needs"]
-    return lambda items: any(needs(it) for it in items)
-
-
-def _gates() -> dict[str, tuple[_Pass, _Pass, Callable[[list[Item]], bool]]]:
-    """Each newly gated pass by name: (the gated step, the pass itself, the gate)."""
-    out = {}
-    for step in phrasing._PASSES:
-        if hasattr(step, "__wrapped__") and _name(step) in _NEW:
-            out[_name(step)] = (step, step.__wrapped__, _opens(step))  # type: ignore[attr-defined]
-    return out
-
-
-_GATES = _gates()
+_GATES = gates_of(_NEW)
+_POOL = pool_of(_CHANGED)
 
 
 def test_the_new_passes_are_gated() -> None:
@@ -79,44 +51,10 @@ def test_the_new_passes_are_gated() -> None:
 
 @pytest.mark.parametrize(("name", "text"), _CHANGED)
 def test_each_gate_lets_through_a_sentence_its_pass_changes(name: str, text: str) -> None:
-    step, plain, opens = _GATES[name]
-    lexed = lex(text, _CELL)
-    at_step = lexed  # the items as refine gives them to the pass
-    for before in itertools.takewhile(lambda s: s is not step, phrasing._PASSES):
-        at_step = before(at_step, _CELL)
-    runs = {id(said): (said, _run(plain, said, _CELL)) for said in (at_step, lexed)}
-    assert any(got != said for said, got in runs.values())
-    for said, got in runs.values():
-        assert _run(step, said, _CELL) == got
-        assert opens(said) or got == said
-
-
-def _pool() -> list[Item]:
-    """Items of sentences that say each gate's words, lexed in the cell scene, and as the passes
-    before each gate leave them."""
-    pool: list[Item] = []
-    for _pass, text in _CHANGED:
-        items = lex(text, _CELL)
-        for step in phrasing._PASSES:
-            for it in items:
-                if it not in pool:
-                    pool.append(it)
-            try:
-                items = step(items, _CELL)
-            except GroundingError:
-                break
-    return pool
-
-
-_POOL = _pool()
+    lets_through(_GATES, name, text)
 
 
 @settings(max_examples=600, deadline=None)
 @given(st.lists(st.sampled_from(_POOL), max_size=14), st.sampled_from(sorted(_NEW)))
 def test_where_a_gate_is_closed_the_pass_changes_nothing(items: list[Item], name: str) -> None:
-    step, plain, opens = _GATES[name]
-    if opens(items):
-        assert _run(step, items, _CELL) == _run(plain, items, _CELL)
-        return
-    assert step(items, _CELL) is items
-    assert _run(plain, items, _CELL) == items
+    closed_means_unchanged(_GATES, items, name)
