@@ -158,7 +158,19 @@ to ("…, I think, but it's the cup Bob wants too."; both) or put after another 
 cup Bob needs first."; the other, then the entry's); and a hedge after the entry, alone (", I
 think.") or with where its object is (", I think, but it's on the shelf."): the entry — where a
 thing is asks for nothing (session 47's probes: "Marco wants the salt, I think, but it's on the
-rack." read salt@rack). Each may be refused instead.
+rack." read salt@rack). Each may be refused instead. A twenty-second family (session 48), chains:
+a second correction after a first (tuning's "Hand the apple to Bob, no, to Carol, well, the crisps
+actually." read apple>C & chips>C; "Crisps over to Bob, or, hmm, Alice, so Alice." a choice of
+three). After an entry's one handover of a one-of-a-kind object to a person named: the person then
+the object ("…, no, Carol, well, the crisps actually."), the object then the person, the object
+or the person twice ("…, I mean Alice, or rather Carol."): the last of each; corrected and put
+back ("…, no, the cup, no, sorry, I had it right the first time: the apple."): the entry; a
+hesitation between people ("…, or, hmm, Alice, or Carol, so Carol."): the one it settles on; the
+person corrected, then a placing instead: that placing; a second object added and then one of the
+two corrected ("…, and the cup, no, Carol, well, the crisps actually."): refused, both as
+readings. After an entry's one placing of a one-of-a-kind object naming no person: the surface
+corrected, then a handover instead, put back, or the object corrected. Each may be refused
+instead.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small

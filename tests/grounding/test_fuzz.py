@@ -57,8 +57,9 @@ entry's one handover asked for with a pronoun after a sentence naming its person
 two people of that sex or someone not in the scene named before the pronoun: refused), the thoughts
 family of session 47 (an entry's one handover said as a thought and taken back after 'but' for
 another object or person: that handover; added to or put after another: both; a hedge after the
-entry, alone or with where its object is: the entry), and the wrappers and take-backs of a seed
-unchanged by them."""
+entry, alone or with where its object is: the entry), the chains family of session 48 (a second
+correction after a first: the last of each; put back: the entry; a second object added and one of
+the two corrected: refused), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
