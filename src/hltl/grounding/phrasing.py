@@ -309,11 +309,16 @@ _IS_WORDS = frozenset({"'s", "is", "are", "'re", "was", "were", "isn't", "aren't
 _THANKS_WORDS = frozenset({"thanks", "thank you", "please", "cheers", "ta", "thx", "pls"})
 
 
+_MODAL_BE48L = frozenset({"'ll", "will", "would", "'d", "might", "may"})
+
+
 def _is_after(items: list[Item]) -> list[Item]:
     """'Bob's after the chips': at the start of a clause, a person who 'is after' an object
     wants it ('after' between a person and an object orders nothing). Session 35 (12s): a
     he / she too ("Give Alice the bottle, she's after the chips." had read `chips>A ; bottle>A`,
-    the want as an order), resolved as any pronoun is."""
+    the want as an order), resolved as any pronoun is. Session 48 (lead): 'will / would / 'll /
+    'd / might / may be after' too ("Person A would like the apple; she'll be after the cup too."
+    had read `cup>A ; apple>A`; session 47 had rewritten the text before the grammar)."""
     out: list[Item] = []
     k = 0
     while k < len(items):
@@ -321,16 +326,26 @@ def _is_after(items: list[Item]) -> list[Item]:
         # session 36 (12s): after 'then' too ("Give Alice the bottle, then she's after the
         # chips." had read `chips>A ; bottle>A`, 'after' as the order)
         opens = not out or out[-1].kind == "punct" or _is(out[-1], "and", "then")
-        if (
-            opens
-            and (_humans(it) or (_is(it, "pronoun") and it.text.lower() in ("he", "she")))
-            and k + 3 < len(items)
-            and items[k + 1].text.lower() in ("'s", "is", "are", "'re")
-            and _is(items[k + 2], "after")
-            and (_objects(items[k + 3]) or _is(items[k + 3], "det"))
+        n = 0  # how many words say 'is after' / 'will be after'
+        if k + 3 < len(items) and items[k + 1].text.lower() in ("'s", "is", "are", "'re"):
+            n = 2
+        elif (
+            k + 4 < len(items)
+            and items[k + 1].text.lower() in _MODAL_BE48L
+            and items[k + 2].kind == "word"
+            and items[k + 2].text.lower() == "be"
         ):
-            out += [it, Item("word", "verb:want", f"{items[k + 1].text} {items[k + 2].text}")]
-            k += 3
+            n = 3
+        if (
+            n
+            and opens
+            and (_humans(it) or (_is(it, "pronoun") and it.text.lower() in ("he", "she")))
+            and _is(items[k + n], "after")
+            and (_objects(items[k + n + 1]) or _is(items[k + n + 1], "det"))
+        ):
+            said = " ".join(i.text for i in items[k + 1 : k + n + 1])
+            out += [it, Item("word", "verb:want", said)]
+            k += n + 1
             continue
         out.append(it)
         k += 1
