@@ -24,9 +24,9 @@ from tests.grounding.helpers import (
 )
 
 # the example scenes blind46 uses
-TWO, SQ, L44, F42, DUO, L24, T21, FIG1 = (
+TWO, SQ, L44, F42, DUO, L24, T21, FIG1, T11 = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("two_arms", "4-4-square", "4-4-line", "4-2", "2-2", "2-4-line", "2-1", "fig1")
+    for n in ("two_arms", "4-4-square", "4-4-line", "4-2", "2-2", "2-4-line", "2-1", "fig1", "1-1")
 )
 
 # -- 'like' as a filler between commas (_like48) ---------------------------------------------------
@@ -222,10 +222,18 @@ test_purpose = PURPOSE.test(
     ),
     ("Person B wants the cup to take along to the choir.", "cup>B", F42),
     ("Bob wants the crisps to take along to the darts match.", "chips>B", CELL),
+    (
+        "Jess needs the pair of spanners to strip down the old mangle for the laundress.",
+        "spanner_small>B & spanner_large>B",
+        WORKSHOP,
+    ),
+    ("Kofi needs the torch to sort out the fuse box.", "torch>A", WORKSHOP),
     # a thing of the scene, a person of it, an order
     ("Jess needs the drill to hang the torch.", None, WORKSHOP),
     ("Person B wants the cup to take along to Person A.", None, F42),
     ("Give Jess the drill to hang the shelves.", None, WORKSHOP),
+    ("Kofi needs the torch to hand over the keys.", None, WORKSHOP),
+    ("Mia needs the tape to patch up a box for Tom.", None, DEPOT),
 )
 
 
@@ -308,3 +316,41 @@ test_keeps = KEEPS.test(
 
 def test_keeps_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     KEEPS.refused_without((_rewrites48._keeps48,), monkeypatch)
+
+
+# -- blind45's: the person said first by a pronoun, named after ('She's …, Person A is') ---------
+
+SHE_IS = PhrasingCases()
+test_she_is = SHE_IS.test(
+    ("She's asking for the bottle, Person A is, so let her have it.", "bottle>A", T11),
+    ("He wants the crisps, Bob does, so give them to him.", "chips>B", CELL),
+    ("He's after the crisps, Bob is, so give them to him.", "chips>B", CELL),
+    ("She's after the red mug, Carol is.", "mug_red>C", CELL),
+    ("She wants the lemon, Lena does, so pass it over.", "lemon>B", KITCHEN),
+    # the pronoun is not theirs
+    ("She's after the red mug, Bob is.", None, CELL),
+    ("He's asking for the bottle, Person A is, so let him have it.", None, T11),
+)
+
+
+def test_she_is_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SHE_IS.refused_without((_rewrites48._she_is48,), monkeypatch)
+
+
+# -- blind45's: who a person is, asked back with a tag ('Omar's the technician, isn't he?') -------
+
+TAG = PhrasingCases()
+test_tag = TAG.test(
+    ("Omar's the technician, isn't he? Take him the bowl.", "bowl>B", LAB),
+    ("Ruth's the nurse, isn't she? Hand her the thermometer.", "thermometer>A", WARD),
+    ("Marco's the chef, isn't he? Pass him the tongs.", "tongs>A", KITCHEN),
+    # two patients
+    ("Mr Lee's the patient, isn't he? Take him the jug.", None, WARD),
+    # the role or the pronoun is another's
+    ("Omar's the doctor, isn't he? Take him the bowl.", None, LAB),
+    ("Omar's the technician, isn't she? Take her the bowl.", None, LAB),
+)
+
+
+def test_tag_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    TAG.refused_without((_rewrites48._tag48,), monkeypatch)

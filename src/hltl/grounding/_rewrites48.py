@@ -6,6 +6,7 @@ from collections.abc import Callable
 
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import (
+    _COMMON,
     _F,
     _KEEP_WORDS,
     _ids,
@@ -18,7 +19,7 @@ from hltl.grounding._normalise2 import _asks_nothing29
 from hltl.grounding._rewrites39 import _WANTED39
 from hltl.grounding._rewrites42s import _remark_only42s, _while_doing42s
 from hltl.grounding._rewrites44 import _agrees44
-from hltl.grounding._rewrites45 import _person, _read_for, _targets
+from hltl.grounding._rewrites45 import _fits_only45, _person, _read_for, _targets
 from hltl.grounding.lexicon import VERBS, Lexicon
 from hltl.grounding.tree import Node, tasks
 
@@ -286,8 +287,8 @@ def _keeps48(text: str, lexicon: Lexicon) -> str:
 # what the scene does not hold, or taking the thing to a place the scene does not hold, is no
 # task of the cell; the reading hands things to one person, whom its his / her may be
 _PURPOSE48 = re.compile(
-    r"(?P<sep>\s*,?\s+)to (?P<v>hang|put up|knock|build|make|fix|rig|run|take|bring|carry|cart|"
-    r"ferry|lug)(?: (?P<part>up|together|down|out|off|over|along|back|round))? "
+    r"(?P<sep>\s*,?\s+)to (?P<v>hang|put up|[a-z]+)(?: (?P<part>up|together|down|out|off|over|"
+    r"along|back|round))? "
     r"(?P<rest>(?P<to>to )?(?:the|a|an|his|her|their|some) [a-z][a-z' -]*?)(?P<end>\s*[.!]*)\s*$",
     _F,
 )
@@ -300,6 +301,13 @@ def _purpose48(text: str, lexicon: Lexicon) -> str:
         return text
     m = _PURPOSE48.search(text)
     if m is None or (m["v"].lower() in _MOVING48) != bool(m["to"]):
+        return text
+    # another verb: one the grounder does not read, with its particle ('strip down', 'knock
+    # together'; without one it is session 46's)
+    v = m["v"].lower()
+    if v not in _MOVING48 | {"hang", "put up"} and (
+        not m["part"] or v in VERBS or v not in _COMMON
+    ):
         return text
     before = text[: m.start()]
     if not _WANTED39.search(before) or re.search(
@@ -345,6 +353,50 @@ def _for_theirs48(text: str, lexicon: Lexicon) -> str:
     return _read_for(text[: m.start()] + text[m.end() :], text, None, lexicon)
 
 
+# -- a person said first by a pronoun and named after with the verb again ("She's asking for the
+# bottle, Person A is, so let her have it.", "He wants the crisps, Bob does, …"): said with the
+# name first, when the pronoun may be that person
+_SHE_IS48 = re.compile(
+    r"^(?P<pro>She|He)(?P<clause>(?:'s| is| wants| needs| has| would| fancies)[^,;.!?]*?),\s*"
+    r"(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?:is|does|has|would|do)\s*(?P<end>,|[.!]?\s*$)"
+)
+
+
+def _she_is48(text: str, lexicon: Lexicon) -> str:
+    """Session 48: the person above said first."""
+    if not text.startswith(("She", "He")):
+        return text
+    m = _SHE_IS48.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    pid = next(iter(_ids(m["p"], lexicon)))
+    if not _fits_only45(pid, m["pro"], lexicon) or _ids(m["clause"], lexicon, "human"):
+        return text
+    out = f"{m['p']}{m['clause']}{m['end']}{text[m.end() :]}"
+    return _read_for(out, text, None, lexicon)
+
+
+# -- who a person is, asked back with a tag ("Omar's the technician, isn't he? Take him the
+# bowl."): the tag taken off when the role is that person's own and the tag's he / she may be them
+_TAG48 = re.compile(
+    r"^(?P<r>(?P<p>[A-Z]\w*(?: [A-Z]\w*)?)(?:'s| is) (?:the|our|your) "
+    r"(?P<role>[a-z]+(?: [a-z]+)?)),\s*(?:isn't|is not|ain't) (?P<pro>he|she)\?\s+"
+)
+
+
+def _tag48(text: str, lexicon: Lexicon) -> str:
+    """Session 48: the tag above taken off."""
+    if "n't " not in text and " not " not in text:
+        return text
+    m = _TAG48.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    pid = next(iter(_ids(m["p"], lexicon)))
+    if _ids(m["role"], lexicon) != {pid} or not _fits_only45(pid, m["pro"], lexicon):
+        return text
+    return _read_for(f"{m['r']}. {text[m.end() :]}", text, pid, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-47 ones)
 _STEPS48_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _like48,
@@ -359,6 +411,8 @@ _STEPS48_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _while_asked48,
     _done_with48,
     _keeps48,
+    _she_is48,
+    _tag48,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-47 ones)
 _STEPS48: tuple[Callable[[str, Lexicon], str], ...] = ()
