@@ -278,8 +278,6 @@ KNOWN_MISSES = frozenset(
         "Person A would like the apple; she'll be after the cup too, so both of them to her.",
         "Bottle's hers, Person A's, and the chips belong with that fellow by the hatch, Person "
         "B, so sort them out.",
-        "She's asking for the bottle, Person A is, so let her have it.",
-        "Omar's the technician, isn't he? Take him the bowl.",
         "That big spanner belongs in the foreman's hands, Kofi's, he's got the wheeler's axle to "
         "tighten.",
         "Bottle to Alice crisps to Bob the costermonger's shouting about his barrow again",
@@ -365,7 +363,6 @@ KNOWN_MISSES = frozenset(
         "Both people need a drink: the bottle to Person A and the cup to Person B.",
         "That one bag of chips is for Person B to share round at the rebec rehearsal.",
         "Both cups into the sink, please, the constable left cold tea in them.",
-        "Jess needs the pair of spanners to strip down the old mangle for the laundress.",
         "Not the red mug, the blue one, to Alice, she's off to her bodhrán lesson and likes that "
         "one.",
         "Person B gets the chips; leave the bottle, he drank his fill at the snowman competition.",
