@@ -130,10 +130,11 @@ test_want_said = WANT_SAID.test(
     ),
     ("Kofi's got his eye on the torch after all that sanding; hand it him.", "torch>A", WORKSHOP),
     ("Ava's got her eye on the green block after all that hopscotch.", "block_green>C", NURSERY),
-    ("Person B has got such a hankering for the crisps.", "chips>B", TWO),
     # ('could murder a brew' is session 30's thirst: no thing named; the pronoun is another's)
     ("Person B would murder her crisps.", None, TWO),
     ("Dana would murder a brew.", None, LAB),
+    # an order naming another thing after it (sessions 33, 34, 42)
+    ("Lena would murder that lemon, give her the knife.", None, KITCHEN),
 )
 
 
@@ -307,10 +308,11 @@ test_keeps = KEEPS.test(
     ("Can the bowl go on the tray, Emma keeps knocking it over?", "bowl@tray", LAB),
     ("Could the lemon go on the rack, Marco keeps knocking it off?", "lemon@rack", KITCHEN),
     ("Put the jug on the locker, Mr Lee keeps knocking it over.", "jug@bedside", WARD),
-    ("Can the wipes go on the high chair, Lily keeps chewing them?", "wipes@highchair", NURSERY),
     # no one of the scene; a handover
     ("Put the jug on the locker, Bob keeps knocking it over.", None, WARD),
     ("Give Mr Lee the jug, Ruth keeps knocking it over.", None, WARD),
+    # taking or borrowing it is a want (session 44); two things (session 36)
+    ("Put the torch in the locker, Jess keeps borrowing it.", None, WORKSHOP),
 )
 
 

@@ -20,6 +20,7 @@ from hltl.grounding._rewrites39 import _WANTED39
 from hltl.grounding._rewrites42s import _remark_only42s, _while_doing42s
 from hltl.grounding._rewrites44 import _agrees44
 from hltl.grounding._rewrites45 import _fits_only45, _person, _read_for, _targets
+from hltl.grounding._rewrites47 import _asked47
 from hltl.grounding.lexicon import VERBS, Lexicon
 from hltl.grounding.tree import Node, tasks
 
@@ -59,10 +60,11 @@ def _like48(text: str, lexicon: Lexicon) -> str:
 # (older rules read such a word opening a request)
 _GLOSS48 = re.compile(
     r"^(?P<w>[A-Z][a-z]+(?: [a-z]+)?),\s*(?:as (?:we|they|folk|people|my [a-z]+) (?:say|would "
-    r"say|used to say|like to say)|that's what (?:we|they|folk|people|my [a-z]+) (?:say|says|"
-    r"would say|used to say|always says?))(?: it)?(?: back home| at home| where I'm from| over "
-    r"there| up north| down south)?(?: (?:in|on|at|up in|down in|out in|over in) (?P<place>[A-Z]"
-    r"[a-z]+(?: [A-Z][a-z]+)?))?\s*,\s*"
+    r"say|used to say|like to say)(?: it)?(?P<home> back home| at home| where I'm from| over "
+    r"there| up north| down south)|that's what (?:we|they|folk|people|my [a-z]+) (?:say|says|"
+    r"would say|used to say|always says?)(?: it)?(?P<home2> back home| at home| where I'm from| "
+    r"over there| up north| down south)?)(?: (?:in|on|at|up in|down in|out in|over in) "
+    r"(?P<place>[A-Z][a-z]+(?: [A-Z][a-z]+)?))?\s*,\s*"
 )
 
 
@@ -73,7 +75,8 @@ def _gloss48(text: str, lexicon: Lexicon) -> str:
     m = _GLOSS48.match(text)
     if m is None or not all(_unknown_word(w, lexicon) for w in m["w"].split()):
         return text
-    if m["place"] and _names(m["place"], lexicon):
+    # ('as they say in Russian', 'as my gran would say' alone are session 41's)
+    if not m["place"] or _names(m["place"], lexicon):
         return text
     return _read_for(f"{m['w']}, {text[m.end() :]}", text, None, lexicon)
 
@@ -100,6 +103,9 @@ def _here48(text: str, lexicon: Lexicon) -> str:
     if m is None or not _only_person(m["p"], lexicon):
         return text
     pid = next(iter(_ids(m["p"], lexicon)))
+    human = next(h for h in lexicon.scene.humans if h.id == pid)
+    if m["p"] not in (human.name, *human.aliases):
+        return text  # said by a role ('Teacher here, give me the globe.' stays refused: session 29)
     if m["role"] and _ids(m["role"], lexicon) != {pid}:
         return text
     rest = text[m.end() :]
@@ -116,16 +122,22 @@ def _here48(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# an order's verb (a text holding one is no want statement alone)
+_ORDER48 = re.compile(
+    r"(?:^|[,;.!?]\s*|\band\s+|\bso\s+)(?:give|hand|pass|bring|take|put|get|fetch|pop|set|stick|"
+    r"run)\b",
+    _F,
+)
+
+
 # -- wants said in other words ("Person B would murder a bag of chips", "has set his sights on
 # the chips", "has his sights set on", "'s got his eye on", "has got a craving for"): said
 # 'wants', when the person said before it is one of the scene whom its his / her may be; kept
 # when the whole reads. ('could murder a drink' is session 30's: a thing of the scene must follow)
 _WANT_SAID48 = re.compile(
-    r"(?P<head>(?:'s| has| had)(?: got)? set (?P<a>his|her|their) sights on|(?:'s| has)(?: got)? "
-    r"(?P<b>his|her|their) sights set on|(?:'s| has) got (?P<c>his|her|their) eyes? on|"
-    r"(?:'s| has)(?: got)? (?:a|such a|a real|a right|a proper) (?:craving|hankering|yen|"
-    r"longing|yearning) for| (?:would|could) (?:murder|kill|demolish|devour) (?=(?:a|an|the|"
-    r"some|that|those|these) ))",
+    r"(?P<head>(?:'s| has| had)(?: got)? set (?P<a>his|her|their) sights on|(?:'s| has) got "
+    r"(?P<c>his|her|their) eyes? on| would (?:murder|demolish|devour) (?=(?:a|an|the|some|that|"
+    r"those|these) ))",
     _F,
 )
 
@@ -133,17 +145,19 @@ _WANT_SAID48 = re.compile(
 def _want_said48(text: str, lexicon: Lexicon) -> str:
     """Session 48: the want above said 'wants'."""
     low = text.lower()
-    if not any(w in low for w in (" sights", " eye", " for", " would ", " could ")):
+    if not any(w in low for w in (" sights", " eye", " would ")):
         return text
+    if _ORDER48.search(text) and len(_ids(text, lexicon, "object")) > 1:
+        return text  # an order naming another thing: the want may be why, or a second request
     out, pos = text, 0
     while (m := _WANT_SAID48.search(out, pos)) is not None:
         pos = m.start() + 1
         clause = re.split(r"[,;.!?]\s*|\band\s+", out[: m.start()])[-1]
         pid = _person(clause.strip(), lexicon)
-        pron = m["a"] or m["b"] or m["c"] or ""
+        pron = m["a"] or m["c"] or ""
         if pid is None or not _agrees44(pid, pron, lexicon):
             continue
-        if "would" in m[0].lower() or "could" in m[0].lower():
+        if "would" in m[0].lower():
             thing = re.split(r"[,;.!?]|\band\b", out[m.end() :])[0]
             if not _ids(thing, lexicon, "object"):
                 continue
@@ -179,14 +193,14 @@ def _stretch48(text: str, lexicon: Lexicon) -> str:
 # dot-to-dot collage"): said as one word, as session 38's _idle38s reads it ('three-legged'),
 # when no part of it names a thing of the scene
 _HYPHENED48 = re.compile(
-    r"\b(?P<prep>after|for|before|from) (?P<det>(?:his|her|their|the|a|an|all that) )?"
+    r"\b(?P<prep>after|for) (?P<det>(?:his|her|their|the|a|an|all that) )?"
     r"(?P<c>[a-z]+(?:-[a-z]+)+)\b"
 )
 
 
 def _hyphened48(text: str, lexicon: Lexicon) -> str:
     """Session 48: the compound above said as one word."""
-    if "-" not in text:
+    if "-" not in text or _ORDER48.search(text) or not _WANTED39.search(text):
         return text
     out = text
     for m in reversed(list(_HYPHENED48.finditer(text))):
@@ -234,6 +248,8 @@ def _while_asked48(text: str, lexicon: Lexicon) -> str:
     """Session 48: the 'while he / she …' of a question taken off."""
     if " while " not in text or not text.rstrip().endswith("?"):
         return text
+    if _asked47(text, lexicon) != text:
+        return text  # ('be handed … while he rests from …' is session 47's)
     asked = text.rstrip()[:-1] + "."
     out = _while_doing42s(asked, lexicon)
     if out is asked:
@@ -264,8 +280,9 @@ def _done_with48(text: str, lexicon: Lexicon) -> str:
 # the tray, Emma keeps knocking it over?"): taken off when it names one person of the scene and
 # nothing else, its verb is none the grounder reads, and the reading places things only
 _KEEPS48 = re.compile(
-    r"[,;]\s*(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) keeps (?P<v>[a-z]+ing) (?:it|them)(?P<w>(?: (?:over|off|"
-    r"down|flying|everywhere|about|around|on the floor))?)\s*(?P<end>[.!?]?)\s*$"
+    r"[,;]\s*(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) keeps (?P<v>knocking|tipping|kicking|bumping|"
+    r"dropping|spilling|elbowing|nudging) it(?P<w>(?: (?:over|off|down|flying|everywhere|about|"
+    r"around|on the floor))?)\s*(?P<end>[.!?]?)\s*$"
 )
 
 
