@@ -4,14 +4,111 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids, _reading
+from hltl.grounding._rewrites46r import _person46r
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, Task
+
+# -- someone else is to do it ---------------------------------------------------------------------
+
+# "Bob will be given the apple by Alice.", "Bob's to be handed the cup by Carol."
+_GIVEN_BY48R = re.compiled(
+    r"\b(?:be|being|get|gets|getting)\s+(?:given|handed|passed|brought|taken|sent|fetched|"
+    r"delivered|lent|tossed|thrown)\b[^.;!?]*?\s(?P<by>by\s+(?P<who>[a-z][\w ]*?))"
+    r"(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def given_by48r(text: str, lexicon: Lexicon) -> None:
+    """Session 48 (12r; the lead's decision): "Bob will be given the apple by Alice." says Alice
+    is to give it, as "Alice will give Bob the apple." does (refused: the robots deliver); it had
+    read as the robots' delivery. Refused naming the giver ('by' a person of the scene only:
+    "… by the shelf" is where)."""
+    low = text.lower()
+    if " by " not in low or ("be" not in low and "get" not in low):
+        return
+    for m in _GIVEN_BY48R.finditer(text):
+        who = _person46r(m["who"], lexicon)
+        if who is None:
+            continue
+        raise GroundingError(
+            f"{m['by']!r} says {m['who']} ({who}) is to hand it over, not the robots: say what "
+            "the robots are to do"
+        )
+
+
+# -- a correction that could say where the thing is -----------------------------------------------
+
+# "Marco wants the salt, no, it's on the rack."
+_WHERE_IT_IS48R = re.compiled(
+    r"^(?P<req>[^.;!?]+?)\s*[,.;!]\s*(?:oh\s+)?(?:no|sorry|actually|wait|no wait|no sorry)\s*,?\s*"
+    r"(?:it|they)(?:'s| is|'re| are) (?:on|in|at|inside|on top of|in the middle of) "
+    r"(?P<s>the [a-z]+(?: [a-z]+)?)\s*[.!]?\s*$",
+    _F,
+)
+
+
+def where_it_is48r(text: str, lexicon: Lexicon) -> None:
+    """Session 48 (12r; the lead's decision): "Marco wants the salt, no, it's on the rack." could
+    tell where the salt is (the want stands: salt>A) or correct the request to a placing
+    (salt@rack): refused naming both (it had read salt@rack). Only after a request handing one
+    thing to a person ("Salt on the counter, no, it's on the rack." corrects a place by a
+    place)."""
+    low = text.lower()
+    if "it" not in low and "they" not in low:
+        return
+    m = _WHERE_IT_IS48R.match(text.strip())
+    if m is None:
+        return
+    place = _ids(m["s"], lexicon)
+    if len(place) != 1 or _ids(m["s"], lexicon, "surface") != place:
+        return
+    asked = _reading(m["req"], lexicon)
+    if not isinstance(asked, Task) or asked.kind != "deliver":
+        return
+    raise GroundingError(
+        f"{m[0][len(m['req']) :].strip(' ,.;!')!r} after the request could say where it "
+        f"is ({asked.obj}>{asked.target} as asked) or move it there instead "
+        f"({asked.obj}@{next(iter(place))}): say which"
+    )
+
+
+# -- a choice that offers the same thing twice ----------------------------------------------------
+
+
+def _choice_twice48r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 48 (12r): a reading offering the robot the same task twice in one choice
+    ("Give Bob or Alice the crisps, so Alice." had read chips>B | chips>A | chips>A: the name
+    said again is the speaker settling, not a third choice) is refused: which one is meant is
+    not said where the grammar read it."""
+    if isinstance(node, Task):
+        return
+    if node.op == "or":
+        seen: set[Node] = set()
+        for child in node.children:
+            if child in seen:
+                raise GroundingError(
+                    f"a choice that offers {_said48r(child)} twice: say which one is meant"
+                )
+            seen.add(child)
+    for child in node.children:
+        _choice_twice48r(text, child, lexicon)
+
+
+def _said48r(node: Node) -> str:
+    if isinstance(node, Task):
+        return f"{node.obj}{'>' if node.kind == 'deliver' else '@'}{node.target}"
+    return "(" + f" {node.op} ".join(_said48r(c) for c in node.children) + ")"
+
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-47 ones)
 _STEPS48R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-47 ones)
 _STEPS48R: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-47 ones)
-REFUSE48R: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE48R: tuple[Callable[[str, Lexicon], None], ...] = (given_by48r, where_it_is48r)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-47 ones)
-CHECK48R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK48R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_choice_twice48r,)

@@ -1912,6 +1912,8 @@ def _instead(items: list[Item]) -> list[Item]:
         body = items[start : stop - 1]
         while body and _is(body[-1], ","):
             body.pop()
+        if marked:
+            body = _instead_again48r(body)
         opens = next((x for x in items[start:stop] if not _is(x, "filler", ",")), None)
         leads = not marked or (opens is not None and _is(opens, "correct"))
         lead = [Item("word", "correct", "instead")] if leads and start > 0 else []
@@ -1919,9 +1921,73 @@ def _instead(items: list[Item]) -> list[Item]:
     return items
 
 
+def _settled48r(items: list[Item]) -> list[Item]:
+    """Session 48 (12r; a bug fix): "Crisps over to Bob, or, hmm, Alice, so Alice.": a name
+    said after 'so' ending the sentence, after a choice of two names said with 'or', is the one
+    the speaker settles on (it had been read as a third choice, "chips>B | chips>A | chips>A");
+    one that is neither of the two is refused."""
+    k = 0
+    while k < len(items):
+        if not (items[k].kind == "word" and items[k].text.lower() == "so"):
+            k += 1
+            continue
+        z = _past_dets(items, k + 1)
+        if z >= len(items) or items[z].kind != "ent" or not _is(items[k - 1], ","):
+            k += 1
+            continue
+        e = z + 1
+        while e < len(items) and _is(items[e], ",", "filler"):
+            e += 1  # "…, so Alice, please."
+        if e < len(items) and not (items[e].kind == "punct" and items[e].lemma in _END):
+            k += 1
+            continue
+        y = k - 1
+        while y > 0 and _is(items[y], ",", "filler", "det"):
+            y -= 1
+        o = y - 1
+        while o > 0 and _is(items[o], ",", "filler", "det"):
+            o -= 1
+        x = o - 1
+        while x > 0 and _is(items[x], ",", "filler", "det"):
+            x -= 1
+        w = x - 1
+        while w > 0 and _is(items[w], "det", "filler"):
+            w -= 1
+        if not (
+            o > 0
+            and _is(items[o], "or")
+            and not _is(items[w], "or", ",", "and")  # a choice of two, not of a list
+            and items[x].kind == "ent"
+            and items[y].kind == "ent"
+            and {r.kind for r in items[x].refs} == {r.kind for r in items[y].refs}
+        ):
+            k += 1
+            continue
+        if items[z].refs not in (items[x].refs, items[y].refs):
+            raise GroundingError(
+                f"'so {items[z].text}' after a choice of {items[x].text!r} or {items[y].text!r} "
+                "names neither: say which one"
+            )
+        items = [*items[:x], items[z], *items[z + 1 :]]
+        k = x + 1
+    return items
+
+
+def _instead_again48r(body: list[Item]) -> list[Item]:
+    """Session 48 (12r; a bug fix): "…, no, to Carol, the crisps instead": a name said alone
+    after a comma that follows the correction is a correction again, as '…, the crisps actually'
+    (``body``: the sentence without its 'instead'; the crisps had read as one more thing)."""
+    comma = _name_alone48r(body, len(body))
+    if comma is None or not any(
+        _is(x, "correct") or (x.text.lower() == "no" and _is(x, "not")) for x in body[:comma]
+    ):
+        return body
+    return [*body[: comma + 1], Item("word", "correct", "instead"), *body[comma + 1 :]]
+
+
 def _corrections(items: list[Item]) -> list[Item]:
     """'X, no, Y' / 'X — sorry, I mean Y': Y replaces the last name of its kind (or the clause)."""
-    items = _instead(items)
+    items = _instead(_settled48r(items))
     k = 0
     while k < len(items):
         it = items[k]
@@ -2202,7 +2268,38 @@ def _without_trailing_markers(after: list[Item]) -> list[Item]:
         and after[cut - 1].text.lower() in _STRESS
     ):
         cut -= 1
+    said = _said_again48r(after, cut, stop)
+    if said is not None:
+        return said
     return after[:cut] + after[stop:] if cut > 0 else after
+
+
+def _said_again48r(after: list[Item], cut: int, stop: int) -> list[Item] | None:
+    """Session 48 (12r; a bug fix): "…, no, to Carol, (well,) the crisps actually.": the
+    'actually' ends a name said alone after a comma in the correction, so it corrects again what
+    that name replaces, as "…, no, to Carol, actually the crisps" does (it had been taken for
+    the stress of the first correction, and the crisps read as one more thing for Carol)."""
+    if not any(x.text.lower() == "actually" for x in after[cut:stop]):
+        return None
+    comma = _name_alone48r(after, cut)
+    if comma is None:
+        return None
+    again = next(x for x in after[cut:stop] if x.text.lower() == "actually")
+    return [*after[: comma + 1], again, *after[comma + 1 : cut], *after[stop:]]
+
+
+def _name_alone48r(items: list[Item], end: int) -> int | None:
+    """The last comma before ``end`` (not the first item) when only a name follows it (its
+    article, fillers)."""
+    comma = next((c for c in range(end - 1, 0, -1) if _is(items[c], ",")), None)
+    if comma is None:
+        return None
+    alone = items[comma + 1 : end]
+    if not any(x.kind == "ent" for x in alone) or not all(
+        x.kind == "ent" or _is(x, "det", "filler") for x in alone
+    ):
+        return None
+    return comma
 
 
 def _apply_correction(
