@@ -40,6 +40,9 @@ SECOND = (
     ("Hand Noah the globe, no, Zoe, well, the ruler actually.", "ruler>C", CLASSROOM),
     ("Tongs to Marco, no, to Lena, the salt instead.", "salt>B", KITCHEN),
     ("Give the red book to Noah, no, to Zoe, the globe instead.", "globe>C", CLASSROOM),
+    # a clause said again (12c's probes: "cup@table & cup>B")
+    ("Put the cup on the shelf, no, the table, well, give it to Bob instead.", "cup>B", CELL),
+    ("Put the spoon on the tray, no, the sink, hand it to Omar instead.", "spoon>B", LAB),
 )
 test_second_correction = CASES.test(
     *SECOND,
@@ -48,7 +51,28 @@ test_second_correction = CASES.test(
     ("Hand the apple to Bob, no, to Carol actually.", "apple>C", CELL),
     # 'instead' with nothing before it to correct
     ("Hand the apple to Carol, the crisps instead.", None, CELL),
+    # the request named two of the kind: which one the second correction replaces is not said
+    ("Give Bob the apple and the cup, no, Carol, well, the crisps actually.", None, CELL),
+    ("Give Bob the apple and the cup, no, Carol, actually the crisps.", None, CELL),
+    ("Give Marco and Lena the salt, no, the lemon, well, Mr Novak actually.", None, KITCHEN),
 )
+
+CHAINED = (
+    ("Give Bob the apple and the cup, no, Carol, actually the crisps.", "apple>C & chips>C"),
+    ("Give Bob the apple and the cup, no, Carol, no, the crisps.", "apple>C & chips>C"),
+)
+
+
+def test_a_chained_correction_of_one_of_two_is_refused_by_the_rule(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """12c's probes: without _chained48r the crisps replace the last thing named (a guess)."""
+    for text, _ in CHAINED:
+        assert_refused(text, CELL, match="could replace 'apple' or 'cup'")
+    monkeypatch.setattr(phrasing, "_chained48r", lambda items: None)
+    for text, was in CHAINED:
+        assert show_tree(parse_instruction(text, CELL)) == was
+
 
 # -- a choice settled with 'so' --------------------------------------------------------------------
 
@@ -59,6 +83,7 @@ SETTLED = (
     ("The lemon to Marco, or, um, Lena, so Lena.", "lemon>B", KITCHEN),
     ("Bowl to Dana, or, er, Omar, so Omar.", "bowl>B", LAB),
     ("Pass Zoe the ruler or, er, the globe, so the globe.", "globe>C", CLASSROOM),
+    ("Tongs to Marco, or, hmm, Lena, so Marco.", "tongs>A", KITCHEN),
     ("Give Dana the banana or the spoon, so the spoon.", "spoon>A", LAB),
     ("Crisps to Bob or Alice, so Alice, please.", "chips>A", CELL),
 )
@@ -142,6 +167,21 @@ UNCLEAR: list[Unclear] = [
         KITCHEN,
         ("tongs>B", "tongs@counter"),
     ),
+    (
+        "Lena needs the lemon, no, the lemon's on the counter.",
+        KITCHEN,
+        ("lemon>B", "lemon@counter"),
+    ),
+    # the lead's decisions on 12c's questions: a placing corrected or where the thing is; whose
+    # want, or whose thing (each read as the correction)
+    (
+        "Put the lemon on the rack, no, it's on the counter.",
+        KITCHEN,
+        ("lemon@rack", "lemon@counter"),
+    ),
+    ("Salt on the counter, no, it's on the rack.", KITCHEN, ("salt@counter", "salt@rack")),
+    ("Bob wants the apple, no, it's Carol's.", CELL, ("apple>C", "apple>B")),
+    ("Noah wants the globe, sorry, it's Zoe's.", CLASSROOM, ("globe>C", "globe>B")),
 ]
 # each refusal names its readings; without REFUSE48R none does
 test_refusals_name_readings, test_refusals_are_these = unclear_tests(
@@ -149,10 +189,10 @@ test_refusals_name_readings, test_refusals_are_these = unclear_tests(
 )
 
 test_still_read = CASES.test(
-    # near forms the refusals leave: no giver said, 'by' a place; a place corrected by a place, a
-    # placing said with a verb, a person said after the cue
+    # near forms the refusals leave: no giver said; a placing said with a verb; a person said
+    # after the cue
     ("Bob will be given the apple.", "apple>B", CELL),
-    ("Salt on the counter, no, it's on the rack.", "salt@rack", KITCHEN),
+    ("Put the lemon on the rack, no, it goes on the counter.", "lemon@counter", KITCHEN),
     ("Salt to Marco, no, it goes on the rack.", "salt@rack", KITCHEN),
     ("Marco wants the salt, no, it's for Lena.", "salt>B", KITCHEN),
     ("Give Mr Lee the jug, no, Mrs Khan.", "jug>C", WARD),

@@ -42,37 +42,55 @@ def given_by48r(text: str, lexicon: Lexicon) -> None:
 
 # -- a correction that could say where the thing is -----------------------------------------------
 
-# "Marco wants the salt, no, it's on the rack."
+# "Marco wants the salt, no, it's on the rack.", "Put the lemon on the rack, no, the lemon's on the
+# counter.", "Bob wants the apple, no, it's Carol's."
 _WHERE_IT_IS48R = re.compiled(
     r"^(?P<req>[^.;!?]+?)\s*[,.;!]\s*(?:oh\s+)?(?:no|sorry|actually|wait|no wait|no sorry)\s*,?\s*"
-    r"(?:it|they)(?:'s| is|'re| are) (?:on|in|at|inside|on top of|in the middle of) "
-    r"(?P<s>the [a-z]+(?: [a-z]+)?)\s*[.!]?\s*$",
+    r"(?P<it>it|they|the [a-z]+(?: [a-z]+)?)(?:'s| is|'re| are) (?:(?:on|in|at|inside|on top of|"
+    r"in the middle of) (?P<s>the [a-z]+(?: [a-z]+)?)|(?P<q>[a-z]+(?: [a-z]+)?)'s?)\s*[.!]?\s*$",
     _F,
 )
 
 
 def where_it_is48r(text: str, lexicon: Lexicon) -> None:
-    """Session 48 (12r; the lead's decision): "Marco wants the salt, no, it's on the rack." could
+    """Session 48 (12r; the lead's decisions): "Marco wants the salt, no, it's on the rack." could
     tell where the salt is (the want stands: salt>A) or correct the request to a placing
-    (salt@rack): refused naming both (it had read salt@rack). Only after a request handing one
-    thing to a person ("Salt on the counter, no, it's on the rack." corrects a place by a
-    place)."""
+    (salt@rack); "Put the lemon on the rack, no, it's on the counter." where the lemon is or a
+    new place; "Bob wants the apple, no, it's Carol's." Carol's want (apple>C) or Carol's apple
+    for Bob (someone else's thing: refused since session 7). Each refused naming both (they had
+    read as the correction: salt@rack, lemon@counter, apple>C). 'it' may be the thing's name
+    ("no, the lemon's on the counter"); the request is one task of one thing."""
     low = text.lower()
-    if "it" not in low and "they" not in low:
+    if "it" not in low and "they" not in low and "'s" not in low:
         return
     m = _WHERE_IT_IS48R.match(text.strip())
     if m is None:
         return
-    place = _ids(m["s"], lexicon)
-    if len(place) != 1 or _ids(m["s"], lexicon, "surface") != place:
-        return
     asked = _reading(m["req"], lexicon)
-    if not isinstance(asked, Task) or asked.kind != "deliver":
+    if not isinstance(asked, Task):
+        return
+    it = m["it"].lower()
+    if it not in ("it", "they") and _ids(m["it"], lexicon) != {asked.obj}:
+        return
+    said = m[0][len(m["req"]) :].strip(" ,.;!")
+    was = f"{asked.obj}{'>' if asked.kind == 'deliver' else '@'}{asked.target}"
+    if m["s"] is not None:
+        place = _ids(m["s"], lexicon)
+        if len(place) != 1 or _ids(m["s"], lexicon, "surface") != place:
+            return
+        if asked.kind == "place" and place == {asked.target}:
+            return
+        raise GroundingError(
+            f"{said!r} after the request could say where it is ({was} as asked) or move it "
+            f"there instead ({asked.obj}@{next(iter(place))}): say which"
+        )
+    who = _person46r(m["q"], lexicon)
+    if who is None or asked.kind != "deliver" or who == asked.target:
         return
     raise GroundingError(
-        f"{m[0][len(m['req']) :].strip(' ,.;!')!r} after the request could say where it "
-        f"is ({asked.obj}>{asked.target} as asked) or move it there instead "
-        f"({asked.obj}@{next(iter(place))}): say which"
+        f"{said!r} after the request could say {m['q']} wants it ({asked.obj}>{who}) or that "
+        f"the {asked.obj} is {m['q']}'s ({asked.obj}>{asked.target} as asked, someone else's "
+        "thing): say which"
     )
 
 

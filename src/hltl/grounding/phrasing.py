@@ -1974,13 +1974,20 @@ def _settled48r(items: list[Item]) -> list[Item]:
 
 
 def _instead_again48r(body: list[Item]) -> list[Item]:
-    """Session 48 (12r; a bug fix): "…, no, to Carol, the crisps instead": a name said alone
-    after a comma that follows the correction is a correction again, as '…, the crisps actually'
-    (``body``: the sentence without its 'instead'; the crisps had read as one more thing)."""
-    comma = _name_alone48r(body, len(body))
-    if comma is None or not any(
-        _is(x, "correct") or (x.text.lower() == "no" and _is(x, "not")) for x in body[:comma]
-    ):
+    """Session 48 (12r; a bug fix): "…, no, to Carol, the crisps instead" / "…, no, the table,
+    well, give it to Bob instead": a name said alone, or a clause, after a comma that follows the
+    correction is a correction again, as '…, the crisps actually' (``body``: the sentence without
+    its 'instead'; the crisps had read as one more thing, the clause as one more task)."""
+    first = next(
+        (
+            k
+            for k, x in enumerate(body)
+            if _is(x, "correct") or (x.text.lower() == "no" and _is(x, "not"))
+        ),
+        None,
+    )
+    comma = _said_alone48r(body, len(body), body[:first] if first is not None else [])
+    if first is None or comma is None or comma < first:
         return body
     return [*body[: comma + 1], Item("word", "correct", "instead"), *body[comma + 1 :]]
 
@@ -1988,6 +1995,7 @@ def _instead_again48r(body: list[Item]) -> list[Item]:
 def _corrections(items: list[Item]) -> list[Item]:
     """'X, no, Y' / 'X — sorry, I mean Y': Y replaces the last name of its kind (or the clause)."""
     items = _instead(_settled48r(items))
+    _chained48r(items)
     k = 0
     while k < len(items):
         it = items[k]
@@ -2012,7 +2020,7 @@ def _corrections(items: list[Item]) -> list[Item]:
         before = items[:k]
         while before and _is(before[-1], ",", "-", "filler"):
             before.pop()  # "… to Alice. Oh wait, …": 'oh' is not what is corrected
-        after = _without_trailing_markers(items[j:])
+        after = _without_trailing_markers(items[j:], before)
         cut_off = not after or (after[0].kind == "punct" and after[0].lemma in _END)
         apology = all(
             x.text.lower() in ("sorry", "oops", "whoops") or _is(x, ",", "-") for x in items[k:j]
@@ -2258,7 +2266,7 @@ _STRESS = frozenset({"actually", "instead", "please", "then"})
 _SPEAKER_WORDS = frozenset({"i", "me", "my", "we", "us", "our", "i'll", "i'm", "i'd", "we'll"})
 
 
-def _without_trailing_markers(after: list[Item]) -> list[Item]:
+def _without_trailing_markers(after: list[Item], before: list[Item]) -> list[Item]:
     """'…, to Bob actually.': a correction word ending the correction only stresses it."""
     stop = _clause_stop(after, 0, to_comma=False)
     cut = stop
@@ -2268,38 +2276,95 @@ def _without_trailing_markers(after: list[Item]) -> list[Item]:
         and after[cut - 1].text.lower() in _STRESS
     ):
         cut -= 1
-    said = _said_again48r(after, cut, stop)
+    said = _said_again48r(after, cut, stop, before)
     if said is not None:
         return said
     return after[:cut] + after[stop:] if cut > 0 else after
 
 
-def _said_again48r(after: list[Item], cut: int, stop: int) -> list[Item] | None:
+def _said_again48r(after: list[Item], cut: int, stop: int, before: list[Item]) -> list[Item] | None:
     """Session 48 (12r; a bug fix): "…, no, to Carol, (well,) the crisps actually.": the
-    'actually' ends a name said alone after a comma in the correction, so it corrects again what
-    that name replaces, as "…, no, to Carol, actually the crisps" does (it had been taken for
-    the stress of the first correction, and the crisps read as one more thing for Carol)."""
+    'actually' ends a name said alone (or a clause) after a comma in the correction, so it
+    corrects again what that name replaces, as "…, no, to Carol, actually the crisps" does (it
+    had been taken for the stress of the first correction, and the crisps read as one more thing
+    for Carol). ``before``: what the first correction corrects."""
     if not any(x.text.lower() == "actually" for x in after[cut:stop]):
         return None
-    comma = _name_alone48r(after, cut)
+    comma = _said_alone48r(after, cut, before)
     if comma is None:
         return None
     again = next(x for x in after[cut:stop] if x.text.lower() == "actually")
     return [*after[: comma + 1], again, *after[comma + 1 : cut], *after[stop:]]
 
 
-def _name_alone48r(items: list[Item], end: int) -> int | None:
+def _said_alone48r(items: list[Item], end: int, before: list[Item]) -> int | None:
     """The last comma before ``end`` (not the first item) when only a name follows it (its
-    article, fillers)."""
+    article, fillers) or a clause opens after it. A name of a kind ``before`` (the request the
+    first correction corrects) says more than once is refused: which it replaces is not said
+    ("Give Bob the apple and the cup, no, Carol, well, the crisps actually")."""
     comma = next((c for c in range(end - 1, 0, -1) if _is(items[c], ",")), None)
     if comma is None:
         return None
     alone = items[comma + 1 : end]
+    opens = next((x for x in alone if not _is(x, "filler")), None)
+    if opens is not None and _is_verb_item(opens):
+        return comma
     if not any(x.kind == "ent" for x in alone) or not all(
         x.kind == "ent" or _is(x, "det", "filler") for x in alone
     ):
         return None
+    _replaces_one48r(alone, before)
     return comma
+
+
+def _replaces_one48r(alone: list[Item], before: list[Item]) -> None:
+    """Refuse a name said alone in a second correction whose kind the request before the first
+    correction (``before``, its last sentence) names more than once: which it replaces is not
+    said."""
+    kinds = {r.kind for x in alone if x.kind == "ent" for r in x.refs}
+    start = _sentences(before)[-1][0] if before else 0
+    said = [x for x in before[start:] if x.kind == "ent" and {r.kind for r in x.refs} == kinds]
+    if len(said) > 1:
+        named = " ".join(x.text for x in alone if not _is(x, "filler", "correct", ","))
+        raise GroundingError(
+            f"{named!r} after the correction could replace "
+            f"{' or '.join(repr(x.text) for x in said)}: say the whole request again"
+        )
+
+
+def _cue48r(items: list[Item], k: int) -> bool:
+    """Whether ``items[k]`` is a correction cue ('no' only after a pause)."""
+    x = items[k]
+    return _is(x, "correct") or (
+        x.text.lower() == "no" and _is(x, "not") and k > 0 and _is(items[k - 1], ",", "-")
+    )
+
+
+def _chained48r(items: list[Item]) -> None:
+    """Session 48 (12r; 12c's probes): "Give Bob the apple and the cup, no, Carol, (well,)
+    actually the crisps": a second correction naming one thing alone, after a first, where the
+    request named two of its kind, is refused (the grammar's rule that it replaces the last one
+    read apple>C & chips>C)."""
+    for start, end in _sentences(items):
+        cues = [k for k in range(start, end) if _cue48r(items, k)]
+        if len(cues) < 2:
+            continue
+        g = cues[-1]
+        while g > cues[0] and (_cue48r(items, g - 1) or _is(items[g - 1], ",", "-", "filler")):
+            g -= 1
+        if g == cues[0]:
+            continue  # one run of cues ("no, wait, sorry")
+        j = cues[-1] + 1
+        stop = end
+        while stop > j and (
+            _is(items[stop - 1], ",", "filler") or items[stop - 1].text.lower() in _STRESS
+        ):
+            stop -= 1
+        alone = items[j:stop]
+        if any(x.kind == "ent" for x in alone) and all(
+            x.kind == "ent" or _is(x, "det", "filler", ",") for x in alone
+        ):
+            _replaces_one48r(alone, items[start : cues[0]])
 
 
 def _apply_correction(
