@@ -94,34 +94,6 @@ def where_it_is48r(text: str, lexicon: Lexicon) -> None:
     )
 
 
-# -- a choice that offers the same thing twice ----------------------------------------------------
-
-
-def _choice_twice48r(text: str, node: Node, lexicon: Lexicon) -> None:
-    """Session 48 (12r): a reading offering the robot the same task twice in one choice
-    ("Give Bob or Alice the crisps, so Alice." had read chips>B | chips>A | chips>A: the name
-    said again is the speaker settling, not a third choice) is refused: which one is meant is
-    not said where the grammar read it."""
-    if isinstance(node, Task):
-        return
-    if node.op == "or":
-        seen: set[Node] = set()
-        for child in node.children:
-            if child in seen:
-                raise GroundingError(
-                    f"a choice that offers {_said48r(child)} twice: say which one is meant"
-                )
-            seen.add(child)
-    for child in node.children:
-        _choice_twice48r(text, child, lexicon)
-
-
-def _said48r(node: Node) -> str:
-    if isinstance(node, Task):
-        return f"{node.obj}{'>' if node.kind == 'deliver' else '@'}{node.target}"
-    return "(" + f" {node.op} ".join(_said48r(c) for c in node.children) + ")"
-
-
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-47 ones)
 _STEPS48R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-47 ones)
@@ -129,4 +101,4 @@ _STEPS48R: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-47 ones)
 REFUSE48R: tuple[Callable[[str, Lexicon], None], ...] = (given_by48r, where_it_is48r)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-47 ones)
-CHECK48R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_choice_twice48r,)
+CHECK48R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()

@@ -1925,7 +1925,8 @@ def _settled48r(items: list[Item]) -> list[Item]:
     """Session 48 (12r; a bug fix): "Crisps over to Bob, or, hmm, Alice, so Alice.": a name
     said after 'so' ending the sentence, after a choice of two names said with 'or', is the one
     the speaker settles on (it had been read as a third choice, "chips>B | chips>A | chips>A");
-    one that is neither of the two is refused."""
+    one that is neither of the two is refused, and so is one after any other choice said with
+    'or' in its sentence."""
     k = 0
     while k < len(items):
         if not (items[k].kind == "word" and items[k].text.lower() == "so"):
@@ -1961,6 +1962,14 @@ def _settled48r(items: list[Item]) -> list[Item]:
             and items[y].kind == "ent"
             and {r.kind for r in items[x].refs} == {r.kind for r in items[y].refs}
         ):
+            start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
+            if any(_is(items[n], "or") for n in range(start, k)):
+                # "Give Bob or Alice the crisps, so Alice.", "… Bob or Alice or Carol, so Carol.":
+                # the name said again had read as one more choice
+                raise GroundingError(
+                    f"'so {items[z].text}' after a choice could settle it or be one more choice: "
+                    "say the whole request again"
+                )
             k += 1
             continue
         if items[z].refs not in (items[x].refs, items[y].refs):
@@ -1986,8 +1995,13 @@ def _instead_again48r(body: list[Item]) -> list[Item]:
         ),
         None,
     )
-    comma = _said_alone48r(body, len(body), body[:first] if first is not None else [])
-    if first is None or comma is None or comma < first:
+    if first is None:
+        return body
+    start = first
+    while start < len(body) and (_is(body[start], "correct", ",", "-", "not", "filler")):
+        start += 1
+    comma = _said_alone48r(body, len(body), body[:first], start)
+    if comma is None or comma < first:
         return body
     return [*body[: comma + 1], Item("word", "correct", "instead"), *body[comma + 1 :]]
 
@@ -2290,25 +2304,31 @@ def _said_again48r(after: list[Item], cut: int, stop: int, before: list[Item]) -
     for Carol). ``before``: what the first correction corrects."""
     if not any(x.text.lower() == "actually" for x in after[cut:stop]):
         return None
-    comma = _said_alone48r(after, cut, before)
+    comma = _said_alone48r(after, cut, before, 0)
     if comma is None:
         return None
     again = next(x for x in after[cut:stop] if x.text.lower() == "actually")
     return [*after[: comma + 1], again, *after[comma + 1 : cut], *after[stop:]]
 
 
-def _said_alone48r(items: list[Item], end: int, before: list[Item]) -> int | None:
-    """The last comma before ``end`` (not the first item) when only a name follows it (its
-    article, fillers) or a clause opens after it. A name of a kind ``before`` (the request the
-    first correction corrects) says more than once is refused: which it replaces is not said
-    ("Give Bob the apple and the cup, no, Carol, well, the crisps actually")."""
-    comma = next((c for c in range(end - 1, 0, -1) if _is(items[c], ",")), None)
+def _said_alone48r(items: list[Item], end: int, before: list[Item], start: int) -> int | None:
+    """The last comma before ``end`` (after ``start``, where the first correction's words begin)
+    when only a name follows it (its article, fillers), or a clause when the first correction is
+    a name alone ("…, no, the table, well, give it to Bob"; not "…, oh no, hold on, Alice wants
+    it, give it to her"). A name of a kind ``before`` (the request the first correction corrects)
+    says more than once is refused: which it replaces is not said ("Give Bob the apple and the
+    cup, no, Carol, well, the crisps actually")."""
+    comma = next((c for c in range(end - 1, start, -1) if _is(items[c], ",")), None)
     if comma is None:
         return None
     alone = items[comma + 1 : end]
     opens = next((x for x in alone if not _is(x, "filler")), None)
     if opens is not None and _is_verb_item(opens):
-        return comma
+        first = items[start:comma]
+        named = any(x.kind == "ent" for x in first) and all(
+            x.kind == "ent" or _is(x, "det", "filler", "to", "on", "for", ",") for x in first
+        )
+        return comma if named else None
     if not any(x.kind == "ent" for x in alone) or not all(
         x.kind == "ent" or _is(x, "det", "filler") for x in alone
     ):
