@@ -1923,10 +1923,11 @@ def _instead(items: list[Item]) -> list[Item]:
 
 def _settled48r(items: list[Item]) -> list[Item]:
     """Session 48 (12r; a bug fix): "Crisps over to Bob, or, hmm, Alice, so Alice.": a name
-    said after 'so' ending the sentence, after a choice of two names said with 'or', is the one
-    the speaker settles on (it had been read as a third choice, "chips>B | chips>A | chips>A");
-    one that is neither of the two is refused, and so is one after any other choice said with
-    'or' in its sentence."""
+    said after 'so' ending the sentence, after a choice said with 'or' ("…, or, hmm, Alice, or
+    Carol, so Carol"; "give Bob the chips, thanks, or, hmm, Alice, so Alice"), is the one the
+    speaker settles on (it had been read as one more choice, "chips>B | chips>A | chips>A"); one
+    that is none of them is refused, and so is one after any other choice said with 'or' in its
+    sentence ("Give Bob or Alice the crisps, so Alice.")."""
     k = 0
     while k < len(items):
         if not (items[k].kind == "word" and items[k].text.lower() == "so"):
@@ -1942,44 +1943,67 @@ def _settled48r(items: list[Item]) -> list[Item]:
         if e < len(items) and not (items[e].kind == "punct" and items[e].lemma in _END):
             k += 1
             continue
-        y = k - 1
-        while y > 0 and _is(items[y], ",", "filler", "det"):
-            y -= 1
-        o = y - 1
-        while o > 0 and _is(items[o], ",", "filler", "det"):
-            o -= 1
-        x = o - 1
-        while x > 0 and _is(items[x], ",", "filler", "det"):
-            x -= 1
-        w = x - 1
-        while w > 0 and _is(items[w], "det", "filler"):
-            w -= 1
-        if not (
-            o > 0
-            and _is(items[o], "or")
-            and not _is(items[w], "or", ",", "and")  # a choice of two, not of a list
-            and items[x].kind == "ent"
-            and items[y].kind == "ent"
-            and {r.kind for r in items[x].refs} == {r.kind for r in items[y].refs}
-        ):
-            start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
+        start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
+        said = _or_chain48r(items, start, k)
+        if said is None:
             if any(_is(items[n], "or") for n in range(start, k)):
-                # "Give Bob or Alice the crisps, so Alice.", "… Bob or Alice or Carol, so Carol.":
-                # the name said again had read as one more choice
                 raise GroundingError(
                     f"'so {items[z].text}' after a choice could settle it or be one more choice: "
                     "say the whole request again"
                 )
             k += 1
             continue
-        if items[z].refs not in (items[x].refs, items[y].refs):
+        x, first_or, names = said
+        if items[z].refs not in {items[n].refs for n in (x, *names)}:
             raise GroundingError(
-                f"'so {items[z].text}' after a choice of {items[x].text!r} or {items[y].text!r} "
-                "names neither: say which one"
+                f"'so {items[z].text}' after a choice of "
+                f"{' or '.join(repr(items[n].text) for n in (x, *reversed(names)))} names none "
+                "of them: say which one"
             )
-        items = [*items[:x], items[z], *items[z + 1 :]]
+        cut = first_or
+        while cut > x + 1 and _is(items[cut - 1], ",", "filler"):
+            cut -= 1
+        items = [*items[:x], items[z], *items[x + 1 : cut], *items[z + 1 :]]
         k = x + 1
     return items
+
+
+def _or_chain48r(items: list[Item], start: int, k: int) -> tuple[int, int, list[int]] | None:
+    """Before ``k`` (a closing 'so'), the names said each after 'or' (', or, hmm, Alice, or
+    Carol'), the first 'or', and the name they are choices against: the last name of their kind
+    before it in the sentence (``start``), no other 'or' before; None when there is no such
+    choice."""
+    names: list[int] = []
+    first_or = -1
+    p = k - 1
+    while True:
+        while p > start and _is(items[p], ",", "filler", "det"):
+            p -= 1
+        if p <= start or items[p].kind != "ent":
+            break
+        q = p - 1
+        while q > start and _is(items[q], ",", "filler", "det"):
+            q -= 1
+        if not _is(items[q], "or"):
+            break
+        names.append(p)
+        first_or, p = q, q - 1
+    if not names:
+        return None
+    kinds = {r.kind for r in items[names[0]].refs}
+    if any({r.kind for r in items[n].refs} != kinds for n in names):
+        return None
+    if any(_is(items[n], "or") for n in range(start, first_or)):
+        return None
+    x = next(
+        (
+            n
+            for n in range(first_or - 1, start - 1, -1)
+            if items[n].kind == "ent" and {r.kind for r in items[n].refs} == kinds
+        ),
+        None,
+    )
+    return None if x is None else (x, first_or, names)
 
 
 def _instead_again48r(body: list[Item]) -> list[Item]:
@@ -2362,24 +2386,33 @@ def _cue48r(items: list[Item], k: int) -> bool:
 
 def _chained48r(items: list[Item]) -> None:
     """Session 48 (12r; 12c's probes): "Give Bob the apple and the cup, no, Carol, (well,)
-    actually the crisps": a second correction naming one thing alone, after a first, where the
-    request named two of its kind, is refused (the grammar's rule that it replaces the last one
-    read apple>C & chips>C)."""
+    actually the crisps" ("…, no, Carol, well, the crisps actually"): a second correction naming
+    one thing alone, after a first, where the request named two of its kind, is refused (the
+    grammar's rule that it replaces the last one read apple>C & chips>C). Also asked of the text
+    before it is read (`_rewrites48r.second_fix48r`): a rewrite must not read it either."""
     for start, end in _sentences(items):
-        cues = [k for k in range(start, end) if _cue48r(items, k)]
-        if len(cues) < 2:
-            continue
-        g = cues[-1]
-        while g > cues[0] and (_cue48r(items, g - 1) or _is(items[g - 1], ",", "-", "filler")):
-            g -= 1
-        if g == cues[0]:
-            continue  # one run of cues ("no, wait, sorry")
-        j = cues[-1] + 1
         stop = end
-        while stop > j and (
-            _is(items[stop - 1], ",", "filler") or items[stop - 1].text.lower() in _STRESS
-        ):
+        while stop > start and _is(items[stop - 1], ",", "filler"):
             stop -= 1
+        closing = stop > start and items[stop - 1].text.lower() in ("actually", "instead")
+        if closing:
+            stop -= 1
+        cues = [k for k in range(start, stop) if _cue48r(items, k)]
+        if not cues:
+            continue
+        if closing:
+            j = next((c + 1 for c in range(stop - 1, cues[-1], -1) if _is(items[c], ",")), None)
+            if j is None:
+                continue
+        else:
+            g = cues[-1]
+            while g > cues[0] and (_cue48r(items, g - 1) or _is(items[g - 1], ",", "-", "filler")):
+                g -= 1
+            if g == cues[0]:
+                continue  # one run of cues ("no, wait, sorry")
+            j = cues[-1] + 1
+            while stop > j and items[stop - 1].text.lower() in _STRESS:
+                stop -= 1
         alone = items[j:stop]
         if any(x.kind == "ent" for x in alone) and all(
             x.kind == "ent" or _is(x, "det", "filler", ",") for x in alone
