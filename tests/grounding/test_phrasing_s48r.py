@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from hltl.bench.grounding import show_tree
 from hltl.grounding import _rewrites48r, phrasing
 from hltl.grounding.offline import parse_instruction
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -21,6 +21,7 @@ from tests.grounding.helpers import (
     LAB,
     NURSERY,
     OFFICE,
+    ROOT,
     WARD,
     WORKSHOP,
     PhrasingCases,
@@ -219,6 +220,7 @@ test_still_read = CASES.test(
 # -- blind46: choices left to one person, one thing each, which of two, what was left in them ------
 
 STEPS = PhrasingCases()
+TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")
 
 test_choice_left = STEPS.test(
     # _take_pick48r: "P can take his pick of X or Y" ('ll take either K, can grab any of the Ks
@@ -259,17 +261,18 @@ test_one_thing_each = STEPS.test(
     # _each_lead48r: a lead-in "each of them gets one thing / both of them need a K", then the
     # handing out said whole
     (
-        "Each of them gets one thing after the quiz, Alice the cup and Bob the apple.",
-        "cup>A & apple>B",
-        CELL,
+        "Each of them gets one thing after the quiz, Alice the bottle and Bob the crisps.",
+        "bottle>A & chips>B",
+        TWO,
     ),
     (
-        "Both of them are shattered after service, so each gets something: the salt to Marco and "
-        "the lemon to Lena.",
-        "salt>A & lemon>B",
-        KITCHEN,
+        "Both of them are shattered after the night shift, so each gets something: the drill to "
+        "Kofi and the torch to Jess.",
+        "drill>A & torch>B",
+        WORKSHOP,
     ),
-    # one person twice; a lead-in naming someone; a kind the things are not
+    # one person twice; a lead-in naming someone; a kind the things are not; not everyone
+    ("Each of them gets one thing after the quiz, Alice the cup and Bob the apple.", None, CELL),
     ("Each of them gets one thing, Alice the cup and Alice the apple.", None, CELL),
     (
         "Each of them gets one thing after Carol's quiz, Alice the cup and Bob the apple.",

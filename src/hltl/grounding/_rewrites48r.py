@@ -74,12 +74,18 @@ _WHERE_IT_IS48R = re.compiled(
 )
 
 
+_WANTED48R = re.compiled(
+    r"\b(?:wants?|wanted|needs?|needed|would like|'d like|asked for|(?:is|'s) after|fancies)\b", _F
+)
+
+
 def where_it_is48r(text: str, lexicon: Lexicon) -> None:
     """Session 48 (12r; the lead's decisions): "Marco wants the salt, no, it's on the rack." could
     tell where the salt is (the want stands: salt>A) or correct the request to a placing
     (salt@rack); "Put the lemon on the rack, no, it's on the counter." where the lemon is or a
     new place; "Bob wants the apple, no, it's Carol's." Carol's want (apple>C) or Carol's apple
-    for Bob (someone else's thing: refused since session 7). Each refused naming both (they had
+    for Bob (someone else's thing: refused since session 7; only after a want: "The chips are for
+    Bob, no, they're Carol's." says for whom, session 40). Each refused naming both (they had
     read as the correction: salt@rack, lemon@counter, apple>C). 'it' may be the thing's name
     ("no, the lemon's on the counter"); the request is one task of one thing."""
     low = text.lower()
@@ -109,6 +115,8 @@ def where_it_is48r(text: str, lexicon: Lexicon) -> None:
     who = _person46r(m["q"], lexicon)
     if who is None or asked.kind != "deliver" or who == asked.target:
         return
+    if _WANTED48R.search(m["req"]) is None:
+        return  # "The chips are for Bob, no, they're Carol's.": for whom (session 40's reading)
     raise GroundingError(
         f"{said!r} after the request could say {m['q']} wants it ({asked.obj}>{who}) or that "
         f"the {asked.obj} is {m['q']}'s ({asked.obj}>{asked.target} as asked, someone else's "
@@ -245,10 +253,10 @@ def _not_fussed48r(text: str, lexicon: Lexicon) -> str:
 # the bottle to Person A and the chips to Person B.", "Both people need a drink: the bottle to
 # Person A and the cup to Person B."
 _EACH_LEAD48R = re.compiled(
-    r"^(?:each of them|both of them|both people|the two of them|they both|they each|both of us|"
-    r"the pair of them)\b(?P<mid>[^:;]*?)\b(?:gets?|needs?|wants?|(?:is|are|'s|'re) getting|(?:is|"
-    r"are|'s|'re) having|could do with|deserves?) (?:one thing|something|a thing|one|an? "
-    r"(?P<k>[a-z]+))(?P<why>[^:;,]*?)\s*[:;,]\s*(?P<rest>[^:;]+?)(?P<end>\s*[.!]?)$",
+    r"^(?:each of them|both of them|both people|the two of them|the pair of them)\b"
+    r"(?P<mid>[^:;]*?)\b(?:gets?|needs?|wants?|(?:is|are|'s|'re) getting|(?:is|are|'s|'re) having|"
+    r"could do with|deserves?) (?:one thing|something|a thing|one|an? (?P<k>[a-z]+))"
+    r"(?P<why>[^:;,]*?)\s*[:;,]\s*(?P<rest>[^:;]+?)(?P<end>\s*[.!]?)$",
     _F,
 )
 # what a lead-in may call the things without naming a kind of the scene
@@ -284,6 +292,8 @@ def _each_lead48r(text: str, lexicon: Lexicon) -> str:
             return text
         if len(got) < 2 or len(set(people)) != len(people):
             return text
+        if set(people) != {h.id for h in lexicon.scene.humans}:
+            return text  # 'each of them' / 'both' are everyone the scene holds (session 33's test)
         cats = {o.id: o.category for o in lexicon.scene.objects}
         if k and k not in _GENERIC48R and any(cats.get(t.obj) != k for t in got):
             return text
