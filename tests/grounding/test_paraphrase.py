@@ -346,23 +346,7 @@ KNOWN_MISSES = frozenset(
         "Ruth's doing her rounds the thermometer's for her.",
         "Salt shaker to Mr Novak he's asked twice now and the blue plate is for Marco.",
         "Bib on the highchair. Lily's lunch is next.",
-        "Person B isn't fussed after his french skipping, the bottle or the crisps, he'll take "
-        "either.",
-        "Person B can take his pick of the cup or the bottle.",
-        "Any one of the four will do for Person A, she's not fussy after the roller skating.",
-        "Each of them gets one thing on the way to the etch a sketch contest, Person A the cup "
-        "and Person B the bottle.",
-        "Any bottle will do for Person A, she just wants a swig before her lyre lesson.",
-        "Both of them are worn out after the psaltery recital, so each gets something: the "
-        "bottle to Person A and the chips to Person B.",
-        "Dana'll take either cup, no preference, running late for the night watchman's handover.",
-        "Sam can grab any of the pens except the red.",
-        "Put one of the boxes on the belt, the small or the medium, whichever's handier.",
-        "Marco and Lena both want a plate: white for him and blue for her.",
-        "Ava can pick whatever block she likes.",
-        "Both people need a drink: the bottle to Person A and the cup to Person B.",
         "That one bag of chips is for Person B to share round at the rebec rehearsal.",
-        "Both cups into the sink, please, the constable left cold tea in them.",
         "Not the red mug, the blue one, to Alice, she's off to her bodhrán lesson and likes that "
         "one.",
         "Person B gets the chips; leave the bottle, he drank his fill at the snowman competition.",
