@@ -278,8 +278,6 @@ KNOWN_MISSES = frozenset(
         "Person A would like the apple; she'll be after the cup too, so both of them to her.",
         "Bottle's hers, Person A's, and the chips belong with that fellow by the hatch, Person "
         "B, so sort them out.",
-        "She's asking for the bottle, Person A is, so let her have it.",
-        "Omar's the technician, isn't he? Take him the bowl.",
         "That big spanner belongs in the foreman's hands, Kofi's, he's got the wheeler's axle to "
         "tighten.",
         "Bottle to Alice crisps to Bob the costermonger's shouting about his barrow again",
@@ -330,27 +328,12 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Kulo, as we say back home on Kosrae, could you pop the red mug up on the shelf for me "
-        "when you get a sec?",
-        "Um, so, like, whenever you're ready, could the cup go over to Person A? Much obliged.",
-        "Meitaki, that's what my nan says in Rarotongan, and now the cup for Person B, please.",
         "Ever so sorry to interrupt, but Person A is parched, so the bottle to her, please and "
         "thank you.",
         "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
-        "Hiya, sorry, Sam here, the intern, could I possibly have the stapler when you've a "
-        "minute?",
-        "Morning, Mia here, be a gem and set the small box on the belt, would you?",
-        "Person B needs the cup for his penny whistle practice, a sip between tunes.",
-        "Person A fancies the apple, and Person B would murder a bag of chips.",
-        "Person B has set his sights on the chips after an afternoon on the cowbell.",
-        "Person A's got a craving for the chips after her kite-flying, and Person B would like "
-        "the bottle.",
         "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
-        "Zoe needs the glue stick for her dot-to-dot collage.",
-        "Jess needs the power drill to hang the new shelves.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
-        "Person B's got his eye on the chips after all that double dutch; give them him.",
         "Hand it over to Person A, the bottle, I mean.",
         "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
         "Emma's the visitor; she'd like a banana, can you bring her one?",
@@ -363,24 +346,7 @@ KNOWN_MISSES = frozenset(
         "Ruth's doing her rounds the thermometer's for her.",
         "Salt shaker to Mr Novak he's asked twice now and the blue plate is for Marco.",
         "Bib on the highchair. Lily's lunch is next.",
-        "Person B isn't fussed after his french skipping, the bottle or the crisps, he'll take "
-        "either.",
-        "Person B can take his pick of the cup or the bottle.",
-        "Any one of the four will do for Person A, she's not fussy after the roller skating.",
-        "Each of them gets one thing on the way to the etch a sketch contest, Person A the cup "
-        "and Person B the bottle.",
-        "Any bottle will do for Person A, she just wants a swig before her lyre lesson.",
-        "Both of them are worn out after the psaltery recital, so each gets something: the "
-        "bottle to Person A and the chips to Person B.",
-        "Dana'll take either cup, no preference, running late for the night watchman's handover.",
-        "Sam can grab any of the pens except the red.",
-        "Put one of the boxes on the belt, the small or the medium, whichever's handier.",
-        "Marco and Lena both want a plate: white for him and blue for her.",
-        "Ava can pick whatever block she likes.",
-        "Both people need a drink: the bottle to Person A and the cup to Person B.",
         "That one bag of chips is for Person B to share round at the rebec rehearsal.",
-        "Both cups into the sink, please, the constable left cold tea in them.",
-        "Jess needs the pair of spanners to strip down the old mangle for the laundress.",
         "Not the red mug, the blue one, to Alice, she's off to her bodhrán lesson and likes that "
         "one.",
         "Person B gets the chips; leave the bottle, he drank his fill at the snowman competition.",
@@ -404,14 +370,8 @@ KNOWN_MISSES = frozenset(
         "goes to Person B.",
         "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the "
         "salads.",
-        "person a wants the chips and the apple to take up to the airfix club",
         "the water jug on mr lee's locker please he's been coughing all night",
-        "zoe needs the scissors for her paper snowman and noah the ruler",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
-        "Jess needs the hanmer to knock together a stand for the serpent.",
-        "Would you mind giving Person B the bottle while he tunes the cittern?",
-        "Can the bowl go on the tray, Emma keeps knocking it over?",
-        "Marco's done with the knife, could you put it on the worktop?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

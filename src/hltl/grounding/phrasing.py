@@ -1927,6 +1927,8 @@ def _instead(items: list[Item]) -> list[Item]:
         body = items[start : stop - 1]
         while body and _is(body[-1], ","):
             body.pop()
+        if marked:
+            body = _instead_again48r(body)
         opens = next((x for x in items[start:stop] if not _is(x, "filler", ",")), None)
         leads = not marked or (opens is not None and _is(opens, "correct"))
         lead = [Item("word", "correct", "instead")] if leads and start > 0 else []
@@ -1934,9 +1936,119 @@ def _instead(items: list[Item]) -> list[Item]:
     return items
 
 
+def _settled48r(items: list[Item]) -> list[Item]:
+    """Session 48 (12r; a bug fix): "Crisps over to Bob, or, hmm, Alice, so Alice.": a name
+    said after 'so' ending the sentence, after a choice said with 'or' ("…, or, hmm, Alice, or
+    Carol, so Carol"; "give Bob the chips, thanks, or, hmm, Alice, so Alice"), is the one the
+    speaker settles on (it had been read as one more choice, "chips>B | chips>A | chips>A"); one
+    that is none of them is refused, and so is one after any other choice said with 'or' in its
+    sentence ("Give Bob or Alice the crisps, so Alice.")."""
+    k = 0
+    while k < len(items):
+        if not (items[k].kind == "word" and items[k].text.lower() == "so"):
+            k += 1
+            continue
+        z = _past_dets(items, k + 1)
+        if z >= len(items) or items[z].kind != "ent" or not _is(items[k - 1], ","):
+            k += 1
+            continue
+        e = z + 1
+        while e < len(items) and _is(items[e], ",", "filler"):
+            e += 1  # "…, so Alice, please."
+        if e < len(items) and not (items[e].kind == "punct" and items[e].lemma in _END):
+            k += 1
+            continue
+        start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
+        said = _or_chain48r(items, start, k)
+        if said is None:
+            if any(_is(items[n], "or") for n in range(start, k)):
+                raise GroundingError(
+                    f"'so {items[z].text}' after a choice could settle it or be one more choice: "
+                    "say the whole request again"
+                )
+            k += 1
+            continue
+        x, first_or, names = said
+        if items[z].refs not in {items[n].refs for n in (x, *names)}:
+            raise GroundingError(
+                f"'so {items[z].text}' after a choice of "
+                f"{' or '.join(repr(items[n].text) for n in (x, *reversed(names)))} names none "
+                "of them: say which one"
+            )
+        cut = first_or
+        while cut > x + 1 and _is(items[cut - 1], ",", "filler"):
+            cut -= 1
+        items = [*items[:x], items[z], *items[x + 1 : cut], *items[z + 1 :]]
+        k = x + 1
+    return items
+
+
+def _or_chain48r(items: list[Item], start: int, k: int) -> tuple[int, int, list[int]] | None:
+    """Before ``k`` (a closing 'so'), the names said each after 'or' (', or, hmm, Alice, or
+    Carol'), the first 'or', and the name they are choices against: the last name of their kind
+    before it in the sentence (``start``), no other 'or' before; None when there is no such
+    choice."""
+    names: list[int] = []
+    first_or = -1
+    p = k - 1
+    while True:
+        while p > start and _is(items[p], ",", "filler", "det"):
+            p -= 1
+        if p <= start or items[p].kind != "ent":
+            break
+        q = p - 1
+        while q > start and _is(items[q], ",", "filler", "det"):
+            q -= 1
+        if not _is(items[q], "or"):
+            break
+        names.append(p)
+        first_or, p = q, q - 1
+    if not names:
+        return None
+    kinds = {r.kind for r in items[names[0]].refs}
+    if any({r.kind for r in items[n].refs} != kinds for n in names):
+        return None
+    if any(_is(items[n], "or") for n in range(start, first_or)):
+        return None
+    x = next(
+        (
+            n
+            for n in range(first_or - 1, start - 1, -1)
+            if items[n].kind == "ent" and {r.kind for r in items[n].refs} == kinds
+        ),
+        None,
+    )
+    return None if x is None else (x, first_or, names)
+
+
+def _instead_again48r(body: list[Item]) -> list[Item]:
+    """Session 48 (12r; a bug fix): "…, no, to Carol, the crisps instead" / "…, no, the table,
+    well, give it to Bob instead": a name said alone, or a clause, after a comma that follows the
+    correction is a correction again, as '…, the crisps actually' (``body``: the sentence without
+    its 'instead'; the crisps had read as one more thing, the clause as one more task)."""
+    first = next(
+        (
+            k
+            for k, x in enumerate(body)
+            if _is(x, "correct") or (x.text.lower() == "no" and _is(x, "not"))
+        ),
+        None,
+    )
+    if first is None:
+        return body
+    start = first
+    while start < len(body) and (_is(body[start], "correct", ",", "-", "not", "filler")):
+        start += 1
+    comma = _said_alone48r(body, len(body), body[:first], start)
+    if comma is None or comma < first:
+        return body
+    return [*body[: comma + 1], Item("word", "correct", "instead"), *body[comma + 1 :]]
+
+
 def _corrections(items: list[Item]) -> list[Item]:
     """'X, no, Y' / 'X — sorry, I mean Y': Y replaces the last name of its kind (or the clause)."""
-    items = _instead(items)
+    items = _instead(_settled48r(items))
+    _chained48r(items)
     k = 0
     while k < len(items):
         it = items[k]
@@ -1961,7 +2073,7 @@ def _corrections(items: list[Item]) -> list[Item]:
         before = items[:k]
         while before and _is(before[-1], ",", "-", "filler"):
             before.pop()  # "… to Alice. Oh wait, …": 'oh' is not what is corrected
-        after = _without_trailing_markers(items[j:])
+        after = _without_trailing_markers(items[j:], before)
         cut_off = not after or (after[0].kind == "punct" and after[0].lemma in _END)
         apology = all(
             x.text.lower() in ("sorry", "oops", "whoops") or _is(x, ",", "-") for x in items[k:j]
@@ -2207,7 +2319,7 @@ _STRESS = frozenset({"actually", "instead", "please", "then"})
 _SPEAKER_WORDS = frozenset({"i", "me", "my", "we", "us", "our", "i'll", "i'm", "i'd", "we'll"})
 
 
-def _without_trailing_markers(after: list[Item]) -> list[Item]:
+def _without_trailing_markers(after: list[Item], before: list[Item]) -> list[Item]:
     """'…, to Bob actually.': a correction word ending the correction only stresses it."""
     stop = _clause_stop(after, 0, to_comma=False)
     cut = stop
@@ -2217,7 +2329,110 @@ def _without_trailing_markers(after: list[Item]) -> list[Item]:
         and after[cut - 1].text.lower() in _STRESS
     ):
         cut -= 1
+    said = _said_again48r(after, cut, stop, before)
+    if said is not None:
+        return said
     return after[:cut] + after[stop:] if cut > 0 else after
+
+
+def _said_again48r(after: list[Item], cut: int, stop: int, before: list[Item]) -> list[Item] | None:
+    """Session 48 (12r; a bug fix): "…, no, to Carol, (well,) the crisps actually.": the
+    'actually' ends a name said alone (or a clause) after a comma in the correction, so it
+    corrects again what that name replaces, as "…, no, to Carol, actually the crisps" does (it
+    had been taken for the stress of the first correction, and the crisps read as one more thing
+    for Carol). ``before``: what the first correction corrects."""
+    if not any(x.text.lower() == "actually" for x in after[cut:stop]):
+        return None
+    comma = _said_alone48r(after, cut, before, 0)
+    if comma is None:
+        return None
+    again = next(x for x in after[cut:stop] if x.text.lower() == "actually")
+    return [*after[: comma + 1], again, *after[comma + 1 : cut], *after[stop:]]
+
+
+def _said_alone48r(items: list[Item], end: int, before: list[Item], start: int) -> int | None:
+    """The last comma before ``end`` (after ``start``, where the first correction's words begin)
+    when only a name follows it (its article, fillers), or a clause when the first correction is
+    a name alone ("…, no, the table, well, give it to Bob"; not "…, oh no, hold on, Alice wants
+    it, give it to her"). A name of a kind ``before`` (the request the first correction corrects)
+    says more than once is refused: which it replaces is not said ("Give Bob the apple and the
+    cup, no, Carol, well, the crisps actually")."""
+    comma = next((c for c in range(end - 1, start, -1) if _is(items[c], ",")), None)
+    if comma is None:
+        return None
+    alone = items[comma + 1 : end]
+    opens = next((x for x in alone if not _is(x, "filler")), None)
+    if opens is not None and _is_verb_item(opens):
+        first = items[start:comma]
+        named = any(x.kind == "ent" for x in first) and all(
+            x.kind == "ent" or _is(x, "det", "filler", "to", "on", "for", ",") for x in first
+        )
+        return comma if named else None
+    if not any(x.kind == "ent" for x in alone) or not all(
+        x.kind == "ent" or _is(x, "det", "filler") for x in alone
+    ):
+        return None
+    _replaces_one48r(alone, before)
+    return comma
+
+
+def _replaces_one48r(alone: list[Item], before: list[Item]) -> None:
+    """Refuse a name said alone in a second correction whose kind the request before the first
+    correction (``before``, its last sentence) names more than once: which it replaces is not
+    said."""
+    kinds = {r.kind for x in alone if x.kind == "ent" for r in x.refs}
+    start = _sentences(before)[-1][0] if before else 0
+    said = [x for x in before[start:] if x.kind == "ent" and {r.kind for r in x.refs} == kinds]
+    if len(said) > 1:
+        named = " ".join(x.text for x in alone if not _is(x, "filler", "correct", ","))
+        raise GroundingError(
+            f"{named!r} after the correction could replace "
+            f"{' or '.join(repr(x.text) for x in said)}: say the whole request again"
+        )
+
+
+def _cue48r(items: list[Item], k: int) -> bool:
+    """Whether ``items[k]`` is a correction cue ('no' only after a pause)."""
+    x = items[k]
+    return _is(x, "correct") or (
+        x.text.lower() == "no" and _is(x, "not") and k > 0 and _is(items[k - 1], ",", "-")
+    )
+
+
+def _chained48r(items: list[Item]) -> None:
+    """Session 48 (12r; 12c's probes): "Give Bob the apple and the cup, no, Carol, (well,)
+    actually the crisps" ("…, no, Carol, well, the crisps actually"): a second correction naming
+    one thing alone, after a first, where the request named two of its kind, is refused (the
+    grammar's rule that it replaces the last one read apple>C & chips>C). Also asked of the text
+    before it is read (`_rewrites48r.second_fix48r`): a rewrite must not read it either."""
+    for start, end in _sentences(items):
+        stop = end
+        while stop > start and _is(items[stop - 1], ",", "filler"):
+            stop -= 1
+        closing = stop > start and items[stop - 1].text.lower() in ("actually", "instead")
+        if closing:
+            stop -= 1
+        cues = [k for k in range(start, stop) if _cue48r(items, k)]
+        if not cues:
+            continue
+        if closing:
+            j = next((c + 1 for c in range(stop - 1, cues[-1], -1) if _is(items[c], ",")), None)
+            if j is None:
+                continue
+        else:
+            g = cues[-1]
+            while g > cues[0] and (_cue48r(items, g - 1) or _is(items[g - 1], ",", "-", "filler")):
+                g -= 1
+            if g == cues[0]:
+                continue  # one run of cues ("no, wait, sorry")
+            j = cues[-1] + 1
+            while stop > j and items[stop - 1].text.lower() in _STRESS:
+                stop -= 1
+        alone = items[j:stop]
+        if any(x.kind == "ent" for x in alone) and all(
+            x.kind == "ent" or _is(x, "det", "filler", ",") for x in alone
+        ):
+            _replaces_one48r(alone, items[start : cues[0]])
 
 
 def _apply_correction(
