@@ -7556,7 +7556,119 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites46:_craft46": (
+        "50bd3b9abcbdfaa0",
+        (
+            (),
+            (
+                "basketry",
+                "beadwork",
+                "blacksmithing",
+                "calligraphy",
+                "carpentry",
+                "cookery",
+                "falconry",
+                "fretwork",
+                "glassblowing",
+                "glasswork",
+                "ironwork",
+                "joinery",
+                "lampwork",
+                "leatherwork",
+                "marquetry",
+                "masonry",
+                "metalwork",
+                "papermaking",
+                "photography",
+                "pyrography",
+                "quillwork",
+                "scrimshaw",
+                "silversmithing",
+                "stonework",
+                "tapestry",
+                "taxidermy",
+                "upholstery",
+                "woodturning",
+                "woodwork",
+            ),
+            True,
+        ),
+        (
+            (
+                "_CRAFT46",
+                (
+                    "pattern",
+                    "\\b(?P<a>after|since) (?P<w>basketry|lampwork|woodwork|metalwork|leatherwork|beadwork|fretwork|stonework|ironwork|glasswork|marquetry|joinery|carpentry|falconry|cookery|tapestry|upholstery|masonry|taxidermy|calligraphy|photography|pyrography|scrimshaw|quillwork|papermaking|woodturning|glassblowing|silversmithing|blacksmithing)(?=\\s*(?:[,.;!?]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46:_doing_after46": (
+        "445cf2cd8dc2f005",
+        ((), ("after", "following", "since"), True),
+        (
+            (
+                "_DOING_AFTER46",
+                (
+                    "pattern",
+                    "^(?P<head>[A-Z][\\w]*(?: [A-Z][\\w]*)?(?:'s| is) [a-z]+ing(?: [a-z]+){0,3}?) (?:after|since|following) (?P<w>[a-z][a-z' ]*?)(?=\\s*(?:,|;| and | so ))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46:_for_peace46": ("4de7c0e837efb096", ((), ("peace",), False), ()),
     "hltl.grounding._rewrites46:_give_teeth46": ("56c1447b2e8ebeae", ((), (" give ",), False), ()),
+    "hltl.grounding._rewrites46:_it_him46": (
+        "10465fbd54a582b0",
+        ((), ("bring", "fetch", "get", "give", "hand", "pass", "send", "take"), True),
+        (
+            (
+                "_IT_HIM46",
+                (
+                    "pattern",
+                    "\\b(?P<v>give|bring|take|hand|pass|send|fetch|get) (?P<x>it|them) (?=(?:him|her)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46:_other_too46": (
+        "841bfd09a7ec2fbc",
+        ((), ("a bit ", "a touch ", "rather ", "too "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46:_own_thing46": (
+        "63d0d6deafc73b61",
+        (
+            (),
+            (
+                "bring",
+                "carry",
+                "fetch",
+                "get",
+                "give",
+                "hand",
+                "pass",
+                "pop",
+                "run",
+                "send",
+                "take",
+            ),
+            True,
+        ),
+        (
+            (
+                "_OWN_THING46",
+                (
+                    "pattern",
+                    "\\b(?P<v>give|bring|take|hand|pass|fetch|get|send|carry|run|pop) (?:(?P<pos>his|her) (?P<x>[a-z][a-z ]*?) (?P<part>(?:(?:over|across|back|up|down|round) )?to) (?P<to>him|her)|(?P<to2>him|her) (?P<pos2>his|her) (?P<x2>[a-z][a-z ]*?))(?=\\s*(?:[,.;!?]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites46:_thanks_ahead46": (
         "d5bcbd5664bc252d",
         ((), ("a lot", "a million", "again", "in advance", "muchly", "so much", "very much"), True),
@@ -7571,7 +7683,12 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
-    "hltl.grounding._rewrites46:_to_purpose46": ("52aed7cd7e249637", ((" to ",), (), False), ()),
+    "hltl.grounding._rewrites46:_that_one46": (
+        "1c70e705aee795b0",
+        ((), (" one",), False),
+        (("_THAT_ONE46", ("pattern", "\\b(?:that|this|the other) one\\b", 34)),),
+    ),
+    "hltl.grounding._rewrites46:_to_purpose46": ("ea6a89b225b19ad4", ((" to ",), (), False), ()),
     "hltl.grounding._rewrites46:_when_done46": (
         "70dfb71411eb4208",
         ((), ("when you",), True),
@@ -7685,6 +7802,18 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("whatever",), False),
         (),
     ),
+    "hltl.grounding._rewrites47:_all_how47": ("a07ba46a5a0581ed", ((" all ",), (), False), ()),
+    "hltl.grounding._rewrites47:_as_trade47": ("883e31796af5ba4d", ((" as ",), (), False), ()),
+    "hltl.grounding._rewrites47:_for_doing47": ("2bc98d5d8575a106", (("ing ",), (), False), ()),
+    "hltl.grounding._rewrites47:_gloss47": ("1ec197fc82cea51d", ((" for ",), (), False), ()),
+    "hltl.grounding._rewrites47:_not_busy47": ("c6a7c6fcf3e0041b", ((), ("if you",), False), ()),
+    "hltl.grounding._rewrites47:_owned_occasion47": ("e1c26f798f098faa", (("'s ",), (), False), ()),
+    "hltl.grounding._rewrites47:_so_can47": ("47df0011952d2a04", (("so ",), (), False), ()),
+    "hltl.grounding._rewrites47:_want_said47": (
+        "f3e0c6878db36def",
+        ((" need of", " of", " on"), (), False),
+        (),
+    ),
     "hltl.grounding._rewrites47r:_before_looks47r": (
         "03ad4078a7a96858",
         ((), ("before",), False),
@@ -7733,6 +7862,75 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites47r:_whichever_of47r": (
         "8e1b516a72d61343",
         ((), ("whichever",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48:_apposed48": ("998224eede4a9965", ((), (", a",), False), ()),
+    "hltl.grounding._rewrites48:_done_with48": ("fc665aaabffe9b79", ((" with ",), (), False), ()),
+    "hltl.grounding._rewrites48:_for_theirs48": ("a2f68135061dae79", ((" for ",), (), False), ()),
+    "hltl.grounding._rewrites48:_gloss48": ("0476e943d695a484", ((" say",), (), False), ()),
+    "hltl.grounding._rewrites48:_here48": ("b83050d21d041a50", ((" here,",), (), False), ()),
+    "hltl.grounding._rewrites48:_hyphened48": (
+        "6fb5ddce83492051",
+        (("-",), (), False),
+        (
+            (
+                "_WANTED39",
+                (
+                    "pattern",
+                    "\\b(?:wants|needs|fancies|could use|could do with|would love|would like|is after|'s after|could murder|asking for|asked for|been after|on about|(?:is|'s) (?:desperate|gasping|dying|parched|gagging|thirsty|hungry|starving|famished|peckish) for|craving|(?:is|'s) (?:thirsty|hungry|starving|parched|famished|peckish|knackered|shattered|exhausted|worn out))\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites48:_keeps48": ("6bdc1be42f9a61ce", ((" keeps ",), (), False), ()),
+    "hltl.grounding._rewrites48:_like48": ("ad3557c7052da99e", ((), ("like,",), False), ()),
+    "hltl.grounding._rewrites48:_purpose48": ("cc252e54db0a4098", ((" to ",), (), False), ()),
+    "hltl.grounding._rewrites48:_stretch48": ("2fc66d6c0f3e3d0a", ((), ("after a",), False), ()),
+    "hltl.grounding._rewrites48:_tag48": ("02fde08ce2f9f3b0", ((" not ", "n't "), (), False), ()),
+    "hltl.grounding._rewrites48:_want_said48": (
+        "39897a92d27c2075",
+        ((), (" eye", " sights", " would "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48:_while_asked48": (
+        "04e9418848f3805b",
+        ((" while ",), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48r:_both_want48r": (
+        "cbece7e9381cc426",
+        ((), ("both", "each"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48r:_each_lead48r": (
+        "68a5abddd17c4c6d",
+        ((), ("both", "each", "pair", "two of them"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48r:_left_in48r": (
+        "a379d763b650c5b6",
+        ((), (" left ", " spil"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48r:_not_fussed48r": (
+        "b278e2d29116bb7e",
+        ((), ("either", "whichever"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48r:_one_of_which48r": (
+        "f7d02311b0a30789",
+        ((), ("one of the",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48r:_take_pick48r": (
+        "33672ffdb983f446",
+        ((), (" or ", "any", "either", "one of", "whatever", "whichever"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites48r:_will_do48r": (
+        "665626f7357353ab",
+        ((), ("'ll do", "will do"), False),
         (),
     ),
     "hltl.grounding.normalise:_while_there36s": (

@@ -1293,6 +1293,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("[,;:]$", 0, True),
     ("[,;:—–]|\\s-\\s", 0, True),
     ("[,;]|\\band\\b", 2, True),
+    ("[,;]|\\bnow\\b", 2, True),
     ("[.!?;:]", 0, True),
     ("[.!?;]", 0, True),
     ("[.!?;]*\\s*$", 0, True),
@@ -2202,6 +2203,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\bthe wee ([a-z]+)\\b", 2, True),
     ("\\bthem all(?= (?:in|on|into|onto|to|over|across|back|up)\\b)", 2, True),
     ("\\bthem both(?= (?:in|on|into|onto|to|over|across|back|up)\\b)", 2, True),
+    ("\\bthem\\b", 2, True),
     ("\\bthen\\b", 2, True),
     ("\\bthings?\\b", 2, True),
     (
