@@ -148,7 +148,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineer and committed alone, never opened by the engineers who change the grounder before its
 # one measurement at the end of session 47; tuned on in session 48), blind47 (written in session 48
 # by another engineer and committed alone, never opened by the engineers who change the grounder
-# before its one measurement at the end of session 48; tests do not assert it).
+# before its one measurement at the end of session 48; tuned on in session 49).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -555,6 +555,9 @@ from hltl.grounding._rewrites47s import _STEPS47S, _STEPS47S_FIRST
 from hltl.grounding._rewrites48 import _STEPS48, _STEPS48_FIRST
 from hltl.grounding._rewrites48r import _STEPS48R, _STEPS48R_FIRST
 from hltl.grounding._rewrites48s import _STEPS48S, _STEPS48S_FIRST
+from hltl.grounding._rewrites49 import _STEPS49, _STEPS49_FIRST
+from hltl.grounding._rewrites49r import _STEPS49R, _STEPS49R_FIRST
+from hltl.grounding._rewrites49s import _STEPS49S, _STEPS49S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -886,6 +889,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS49S_FIRST,
+    *_STEPS49R_FIRST,
+    *_STEPS49_FIRST,
     *_STEPS48S_FIRST,
     *_STEPS48R_FIRST,
     *_STEPS48_FIRST,
@@ -930,6 +936,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS49R,
     *_STEPS48R,
     *_STEPS47R,
     *_STEPS46R,
@@ -972,6 +979,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS49S,
     *_STEPS48S,
     *_STEPS47S,
     *_STEPS46S,
@@ -1061,6 +1069,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS49,
     *_STEPS48,
     *_STEPS47,
     *_STEPS46,

@@ -45,6 +45,10 @@ from hltl.grounding import (
     _rewrites48,
     _rewrites48r,
     _rewrites48s,
+    _rewrites49,
+    _rewrites49l,
+    _rewrites49r,
+    _rewrites49s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -136,6 +140,10 @@ _REFUSALS = (
     *_rewrites48.REFUSE48,
     *_rewrites48r.REFUSE48R,
     *_rewrites48s.REFUSE48S,
+    *_rewrites49l.REFUSE49L,
+    *_rewrites49.REFUSE49,
+    *_rewrites49r.REFUSE49R,
+    *_rewrites49s.REFUSE49S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -167,6 +175,10 @@ _CHECKS = (
     *_rewrites48.CHECK48,
     *_rewrites48r.CHECK48R,
     *_rewrites48s.CHECK48S,
+    *_rewrites49l.CHECK49L,
+    *_rewrites49.CHECK49,
+    *_rewrites49r.CHECK49R,
+    *_rewrites49s.CHECK49S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -677,6 +689,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         text = _rewrites45l.other_person45l(text, lexicon)
         _rewrites45l.owner_either45l(text, lexicon)
         text = _rewrites47l.thought_but47l(text)
+        text = _rewrites49l.kind_lot49l(text, lexicon)
         _rewrites47l.added_correction47l(text)
         counted = count_said30(text)
         if counted is not None:
