@@ -306,15 +306,9 @@ KNOWN_MISSES = frozenset(
         "Omar's the technician, isn't he? Take him the bowl.",
         "That big spanner belongs in the foreman's hands, Kofi's, he's got the wheeler's axle to "
         "tighten.",
-        "Bottle to Alice crisps to Bob the costermonger's shouting about his barrow again",
         "Person B's bottle is the first job. When he's got it, the apple for Person A, the "
         "pigman's niece.",
-        "The chips. Person A wants them. Nobody else has asked.",
-        "Chips? Person A's. Bottle? Person B's. The farm hand sends his regards and says ta.",
-        "Sponge into the sink first. After, the bowl for Omar. Emma's fine with waiting, she's a "
-        "visitor.",
         "The black pen goes in the box it's Sam's filing day and the stapler to Priya",
-        "Small box onto the belt medium box onto the pallet the cowman's lorry is outside",
         "Give Alice and Bob one each, the bottle to her and the crisps to him.",
         "Whatever Person B chooses out of cup, bottle and apple is fine by the innkeeper, only "
         "one though.",
@@ -349,15 +343,12 @@ KNOWN_MISSES = frozenset(
         "chips or bottle.",
         "Chips aren't going to Person A this time round; Person B's turn, he won the spillikins.",
         "Person A's had her fill of water at the cha-cha social, so the bottle's for Person B.",
-        "Never mind the glass, just take the bottle to Person A.",
         "Emma's fasting for the samba gala so she's having nothing, but Dana's peckish, so the "
         "banana goes to Dana.",
         "Lena's banned from sharp things after the sword swallower incident, so she gets the "
         "tongs and no knife.",
         "Ava's building a castle that has to be green, so leave the red block out of it and "
         "fetch her the green.",
-        "Jess is off power tools until the timekeeper signs the card; hammer only for now, to "
-        "Jess.",
         "Alice wants the red mug, oh hang about, she said blue, the blue mug to Alice.",
         "Crisps over to Bob, or, hmm, Alice called dibs on them first, so Alice.",
         "Pop the bottle up on the shelf, or actually Bob's just shouted for it, so him instead.",
@@ -379,7 +370,6 @@ KNOWN_MISSES = frozenset(
         "Kofi asked for the small spanner, no, I've mixed it up, the drill's what he's after.",
         "the cup to person a and the apple to person b for the pétanque lot",
         "the visitor looks half starved after the minuet so banana to her",
-        "chef marcos got the damson jam cake to slice give him the knife",
         "Sam's got a notebokk to fill with the rector's notices, so pass it to Sam.",
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
