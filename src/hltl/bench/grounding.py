@@ -144,7 +144,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # alone, never opened by the engineers who change the grounder before its one measurement at the end
 # of session 45; tuned on in session 46), blind45 (written in session 46 by another engineer and
 # committed alone, never opened by the engineers who change the grounder before its one measurement
-# at the end of session 46; tuned on in session 47).
+# at the end of session 46; tuned on in session 47), blind46 (written in session 47 by another
+# engineer and committed alone, never opened by the engineers who change the grounder before its
+# one measurement at the end of session 47; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -207,6 +209,7 @@ PARTS = (
     "blind43",
     "blind44",
     "blind45",
+    "blind46",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -7541,6 +7541,150 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites45s:_take_to45s": ("7c64360492dce84d", ((), ("take",), False), ()),
     "hltl.grounding._rewrites45s:_they_want45s": ("300c157eaa6844e1", ((), ("they",), False), ()),
     "hltl.grounding._rewrites45s:_who_remark45s": ("a08d3e139959e095", ((), ("who",), False), ()),
+    "hltl.grounding._rewrites46:_all_said46": ("871de24093a33822", ((), ("all ",), False), ()),
+    "hltl.grounding._rewrites46:_apology46": (
+        "3b8f9dead10b2341",
+        ((), (" me for ", "excuse me", "forgive me", "hate", "pardon me", "sorry"), True),
+        (
+            (
+                "_APOLOGY_ONLY46",
+                (
+                    "pattern",
+                    "^(?:(?:i'm |i am )?(?:so |very |really |terribly |awfully )?sorry|i hate|hate|forgive me|pardon me|excuse me) (?:to|for) (?:nag|nagging|go on|going on|keep on|keeping on|harp on|harping on|pester you|pestering you|bother you|bothering you|chase|chasing|ask again|asking again|be a (?:pain|pest|nuisance|bore)|being a (?:pain|pest|nuisance|bore))(?: again| about it| you)?\\s*,\\s*(?:only|but)\\s+(?=\\S)|^(?:pardon|excuse|forgive) me(?: for (?:butting in|barging in|cutting in|jumping in|chipping in|breaking in|interrupting|intruding|asking|the interruption|the intrusion|bothering you|nagging))\\s*,\\s*(?:but\\s+)?(?=\\S)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46:_give_teeth46": ("56c1447b2e8ebeae", ((), (" give ",), False), ()),
+    "hltl.grounding._rewrites46:_thanks_ahead46": (
+        "d5bcbd5664bc252d",
+        ((), ("a lot", "a million", "again", "in advance", "muchly", "so much", "very much"), True),
+        (
+            (
+                "_THANKS_AHEAD46",
+                (
+                    "pattern",
+                    "^(?P<w>[A-Za-z][a-z]+) (?:in advance|so much|very much|ever so much|muchly|again|a lot|a million)\\s*[,:;!]\\s*(?=\\S)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46:_to_purpose46": ("52aed7cd7e249637", ((" to ",), (), False), ()),
+    "hltl.grounding._rewrites46:_when_done46": (
+        "70dfb71411eb4208",
+        ((), ("when you",), True),
+        (
+            (
+                "_DONE46",
+                (
+                    "pattern",
+                    "(?P<sep>,?\\s+)when you(?:'re| are) (?:done|through|all done)(?: there| with that| here)?(?P<end>\\s*[.?!]*)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46:_would_suit46": (
+        "81e0da69225eb9a0",
+        ((), (" will ", " would ", "'d ", "'ll "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46:_you_reckon46": (
+        "15df342b7900fb9b",
+        ((), ("figure", "imagine", "reckon", "suppose", "think"), True),
+        (
+            (
+                "_YOU_RECKON46",
+                (
+                    "pattern",
+                    "^(?P<o>(?:(?:so|and|oh|well|erm|um),? )*)(?:do|d') ?you (?:reckon|think|suppose|imagine|figure)(?: that)?,? (?P<x>(?!you\\b)[a-z][^,;.?!]*?) (?P<m>could|can|might)\\b(?! (?:have|get|take|use)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46r:_a_k_or46r": ("2949d2f27b9631ed", ((), (" or ",), False), ()),
+    "hltl.grounding._rewrites46r:_and_both46r": ("d634c2150843e552", ((), ("both",), False), ()),
+    "hltl.grounding._rewrites46r:_anything_of46r": (
+        "63cb2a46c0049615",
+        ((), (" of the ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_apiece_first46r": (
+        "30e60baaa2ca9dce",
+        ((), ("apiece", "each"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_clear_both46r": ("b53180719c8b1a9e", ((), ("alike",), False), ()),
+    "hltl.grounding._rewrites46r:_each_pronoun46r": (
+        "0c33c5c42ddcdbb4",
+        ((), (" each ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_fix_why46r": (
+        "f715efcbc2d12bf4",
+        ((" are ", " is ", "'re", "'s"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_for_whose46r": ("822e57a69591bb23", (("'s",), (), False), ()),
+    "hltl.grounding._rewrites46r:_items_there46r": (
+        "8ec345a608b9e684",
+        ((), ("here", "see", "there"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_just_the_one46r": ("64902c27592a178c", ((), ("one",), False), ()),
+    "hltl.grounding._rewrites46r:_just_those46r": (
+        "97244b9170ebd09a",
+        ((), ("just", "only"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_neither_without46r": (
+        "5f0032dc19873c29",
+        ((), ("without",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_not_fussy46r": (
+        "56eef7600e434d9c",
+        ((), ("fussy", "particular", "picky"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_one_of_hers46r": (
+        "f1c8f5c3ba1c3525",
+        ((), (" of her ", " of his "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_only_one46r": ("1bbf49bc7a655d4a", ((), ("only",), False), ()),
+    "hltl.grounding._rewrites46r:_per_head46r": ("2d71fa6cc77640b6", ((), ("out",), False), ()),
+    "hltl.grounding._rewrites46r:_placed_remark46r": (
+        "8a60364ce1e7d1a2",
+        ((), ("ing",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_scratch_lot46r": (
+        "d67317484b861c0f",
+        ((), ("scratch",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_single_thing46r": (
+        "71d711bb672bfac1",
+        ((), ("thing",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_slip_label46r": ("812600014359373f", ((), ("who",), False), ()),
+    "hltl.grounding._rewrites46r:_taking46r": ("2d9cab64faa00a73", ((), ("taking",), False), ()),
+    "hltl.grounding._rewrites46r:_then_again46r": (
+        "af268e669930e875",
+        ((), ("again", "second", "think"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites46r:_thing_needs46r": ("8a85d1366dab6593", (("'s ",), (), False), ()),
+    "hltl.grounding._rewrites46r:_whatever_there46r": (
+        "ab60f65395b6d272",
+        ((), ("whatever",), False),
+        (),
+    ),
     "hltl.grounding.normalise:_while_there36s": (
         "ce30883fd4e256c0",
         ((), ("while you",), True),

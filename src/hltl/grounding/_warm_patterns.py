@@ -717,7 +717,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("(\\s*[,;:.!?]+\\s*)", 0, True),
     ("(\\s*[,;]\\s*)", 0, True),
     ("(\\s*[.!?;:]+\\s*)", 0, True),
-    ("(\\s*[.!]+\\s*)", 0, True),
     (
         "(^|(?<=[.!?,])\\s*)(?:oh,?\\s*)?(?:thank you|thanks|cheers)(?: so much| very much| again)? for (?:earlier|before|this morning|yesterday|last time)\\s*[,.!]\\s*(?:you(?:'re| are| were) (?:very |so |really )?[a-z]+\\s*[.!,]\\s*)?(?:now,?\\s*)?",
         2,
@@ -1383,11 +1382,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b((?:put|place|set|leave|stack|store|move)s? (?:the |a |an |it\\b|them\\b)[\\w ]*?)(?<! over)(?<! right)(?<! out)(?<! up)(?<! down)(?<! back)(?<! in) there\\b",
-        2,
-        True,
-    ),
-    (
         "\\b((?:the )?[a-z]+(?: [a-z]+)? or (?:the )?[a-z]+(?: [a-z]+)?)\\s*,\\s*(?:just |only )?one of (?:them|the two|those|the pair) (?=(?:goes|go|should go|can go|is going|to)\\b)",
         2,
         True,
@@ -1622,6 +1616,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(?:them|those|these)\\b", 2, True),
+    (
+        "\\b(?:then|next|afterwards|after that|after this|later|finally|lastly)(?!'s|\\u2019s| is\\b| was\\b| has\\b)\\b",
+        2,
+        True,
+    ),
     ("\\b(?:thereafter|thereupon)\\b", 2, True),
     ("\\b(?:there|here)\\b", 2, True),
     ("\\b(?:they|they're|them|those)\\b", 2, True),
@@ -1675,11 +1674,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b(?P<any>any|just|only)? ?one (?:thing|item)(?= (?:apart from|except(?: for)?|but|besides|other than|bar) )",
-        2,
-        True,
-    ),
-    (
         "\\b(?P<cue>no|sorry|actually|wait|hang on|hold on)\\s*,\\s*(?:you know what|on second thoughts?|come to think of it|thinking about it|now i think about it)\\s*[,;]\\s*",
         2,
         True,
@@ -1716,12 +1710,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b(?P<p>Person\\ B|Person\\ A) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ A|Person\\ B) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
     (
-        "\\b(?P<p>Person\\ B|Person\\ A|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ A|Person\\ B|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
@@ -2709,11 +2703,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?:(?:up|down|back|over|out) )?(?P<prep>on|onto|in|into|on top of|inside) (?P<s>the [a-z]+(?: [a-z]+)?) with (?:(?:both of them|all of them|the lot|them all|all three of them)\\s*,\\s*)?(?P<list>the [a-z]+(?: [a-z]+)?(?:(?:,| and|, and) the [a-z]+(?: [a-z]+)?)+)(?P<end>\\s*(?:[,;.!]|$))",
-        2,
-        True,
-    ),
-    (
-        "^(?:(?P<a>(?:a|an|one) [a-z]+ (?:apiece|each)(?: for (?:the|both|all)[a-z' ]*| for (?P<p1>[A-Za-z][\\w ]*?) and (?P<p2>[A-Za-z][\\w ]*?))?)|(?P<b>(?:share|split|divide|dish|deal|hand|parcel) (?:out |up )?(?:them|these|those|the lot|it|(?:the|all|these) (?:(?P<n>two|three|four|five|six) )?(?:things|items|bits|lot)|the (?P<kinds>[a-z]+s))(?: out| up)?(?: between (?:them|the two(?: of them)?|both(?: of them)?|the pair|(?P<p3>[A-Za-z][\\w ]*?) and (?P<p4>[A-Za-z][\\w ]*?))| down the middle| evenly| fairly)?(?:\\s*,\\s*(?:one|a thing|one thing) (?:apiece|each))?)|(?P<d>the (?P<kinds2>[a-z]+s) (?:are|is) to be (?:shared|split|divided)(?: out| up)?(?: between (?:them|the two|both))?)|(?P<c>(?:each|every) (?P<role>[a-z]+) (?:gets|has|takes|is getting|is having) (?:a|an|one) [a-z]+))\\s*:\\s*(?P<rest>\\S.*)$",
         2,
         True,
     ),

@@ -665,6 +665,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _rewrites45l.owner_either45l(text, lexicon)
         text = _rewrites46l.particle_place46l(text)
         text = _rewrites47l.thought_but47l(text)
+        _rewrites47l.added_correction47l(text)
         counted = count_said30(text)
         if counted is not None:
             return _counted30(*counted, scene, lexicon)

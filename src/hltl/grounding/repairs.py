@@ -140,7 +140,12 @@ def repairs32l(text: str, lexicon: Lexicon) -> str:
 # "…, oh and Alice, I mean Bob wanted the bottle": a clause's subject repaired at once, then its
 # verb (session 33, lead)
 _SUBJECT_REPAIRED = re.compile(
-    r"(?P<pre>(?:^|[,.;:!?]\s*)(?:(?i:oh|ah|and|also|plus|then)\s+)*)"
+    r"(?P<pre>(?:^|[,.;:!?]\s*)(?:(?i:oh|ah|and|also|plus|then|after that)\s+)*"
+    # session 47 (lead): after an order word with no mark before it ("… on the workbench and
+    # then Kofi, I mean Jess gets the hammer": 12c's repairs fuzz, the repair took back the
+    # placing too); 'and' alone stays refused (session 32: the repair could take back the
+    # whole clause)
+    r"|(?<=\s)(?:(?i:and)\s+)?(?i:then|after that|afterwards)\s+)"
     r"(?P<said>[A-Z][\w]*(?: [A-Z][\w]*)?)\s*,\s*"
     rf"(?:(?i:{REPAIR_WORDS})\s*,?\s*)+"
     r"(?P<meant>[A-Z][\w]*(?: [A-Z][\w]*)?)"
