@@ -20,6 +20,7 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_case,
 )
 
 TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # Alice, Bob
@@ -124,6 +125,16 @@ test_split47s_near = SPLIT.test(
     ("Bowl for Omar. Emma can wait, he's a visitor.", None, LAB),
     ("Ruler to Noah. Zoe doesn't mind waiting, she's a student.", None, CLASSROOM),
 )
+
+
+def test_whose_question_still_reads() -> None:
+    # blind40's entry: the question is no bare name, so `_whose_answer47s` leaves it (it read
+    # before; the first form of the rule refused it, found by the identity run)
+    assert_case(
+        "Whose are the chips? Person B's. And the bottle? Also his, so take him both.",
+        "chips>B & bottle>B",
+        L24,
+    )
 
 
 def test_split47s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:

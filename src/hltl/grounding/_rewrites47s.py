@@ -111,8 +111,9 @@ def _placed_run_on47s(text: str, lexicon: Lexicon) -> str:
 
 # "Chips? Person A's. Bottle? Person B's.": a thing asked as a question and answered by whose it
 # is — session 19's telegraph form "Chips? Person A." (the chips to Person A, which reads) with
-# the answer said as the person's. The 's taken off where the question is a thing of the scene
-# alone (no verb, four words at most) and the answer one person of the scene alone.
+# the answer said as the person's. The 's taken off where the question is the name of a thing of
+# the scene alone (a determiner before it at most: not "Whose are the chips? Person B's.", which
+# reads as it is) and the answer one person of the scene alone.
 _WHOSE_ANSWER47S = re.compile(
     r"(?:^|(?<=[.!?] ))(?P<obj>[^.!?]+)\? (?P<who>[^.!?]+?)(?:'s|\u2019s)(?=\s*(?:[.!]|$))", _F
 )
@@ -125,10 +126,13 @@ def _whose_answer47s(text: str, lexicon: Lexicon) -> str:
 
     def answer(m: re.Match[str]) -> str:
         obj, who = m["obj"].strip(), m["who"].strip()
+        # the thing's name alone ("Chips?", "And the bottle?"), not "Whose are the chips?"
+        bare = re.sub(r"^(?:and |so |then )?(?:the |that |this |those |these )?", "", obj, flags=_F)
+        named = _names(bare, lexicon)
         if (
-            len(obj.split()) > 4
-            or not _objects_only(obj, lexicon)
-            or any(w.lower() in VERBS for w in obj.split())
+            len(named) != 1
+            or named[0].text.lower() != bare.lower()
+            or not _objects_only(bare, lexicon)
             or not _only_person(who, lexicon)
         ):
             return m.group(0)
