@@ -148,7 +148,17 @@ run it over to her."; "Carol's parched after the fell race, she needs the apple.
 Bob's. Hand it across to him, thanks."), and in lower case: that handover, or refused; two people
 of that sex said before the pronoun ("Alice and Carol are both parched; she needs the apple."):
 refused, both as readings; someone not in the scene said before it ("My sister's parched after
-the fell race, she needs the apple."): refused.
+the fell race, she needs the apple."): refused. A twenty-first family (session 47), thoughts: an
+entry's one handover of a one-of-a-kind object said as what the speaker thought and taken back
+after 'but' (blind45's one wrong reading, "Marco's shouting for salt, I thought, but it was lemon he
+wanted, …", and its corrections "well, I heard white, but he corrected me: it's the green cup he's
+after"): for another object ("Bob wants the apple, I thought, but it was the cup Bob wanted."; that
+object to that person) or another person ("…, but it was Carol who asked for it."; to them); added
+to ("…, I think, but it's the cup Bob wants too."; both) or put after another ("…, but it's the
+cup Bob needs first."; the other, then the entry's); and a hedge after the entry, alone (", I
+think.") or with where its object is (", I think, but it's on the shelf."): the entry — where a
+thing is asks for nothing (session 47's probes: "Marco wants the salt, I think, but it's on the
+rack." read salt@rack). Each may be refused instead.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1429,6 +1439,48 @@ ANTECEDENTS_TWO = (
 ABSENT_HE = ("my brother", "the postman", "my uncle")
 ABSENT_SHE = ("my sister", "the postwoman", "my aunt")
 ANTECEDENT_FORMS = ("named before", "two before", "absent before", "lower")
+# thoughts (session 47; blind45's one wrong reading, "Marco's shouting for salt, I thought, but it
+# was lemon he wanted, so give Marco the lemon.", and its corrections said as what the speaker
+# heard or thought: "Omar asked for the white cup, well, I heard white, but he corrected me: it's
+# the green cup he's after."): an entry's one handover of a one-of-a-kind object ({o}) to a person
+# ({p}; {P} capitalised) said as a thought, then taken back after 'but' for another one-of-a-kind
+# object ({x}): that object to that person
+THOUGHT_BACK = (
+    "{P} wants the {o}, I thought, but it was the {x} {P} wanted.",
+    "Give {p} the {o}, I thought, but it was the {x} {P} asked for.",
+    "{P} asked for the {o}, or so I thought, but it's the {x} {P}'s after.",
+    "I heard {o} for {p}, but {P} put me right: it's the {x} {P} wants.",
+    "{P} was after the {o}, I'd assumed, but no, it's the {x}.",
+    "Take {p} the {o}, I reckoned, but actually it was the {x} {P} meant.",
+)
+# ... taken back for another person of the scene ({q}): the object to them
+THOUGHT_PERSON = (  # {it} "it" or "them"
+    "Give {p} the {o}, I thought, but it was {q} who asked for {it}.",
+    "{P} wants the {o}, or so I thought, but it turns out it's {q} who's after {it}.",
+    "The {o} for {p}, I assumed, but it was {q} who wanted {it}.",
+)
+# ... not taken back but added to ('too', 'as well'): both objects to that person
+THOUGHT_ADDED = (
+    "{P} wants the {o}, I think, but it's the {x} {P} wants too.",
+    "Give {p} the {o}, I think, but {P}'s after the {x} as well.",
+    "{P} asked for the {o}, I thought, but it was the {x} {P} wanted too.",
+)
+# ... or put after another ('first', 'before that'): the other object, then the entry's
+THOUGHT_FIRST = (
+    "Give {p} the {o}, I think, but it's the {x} {P} needs first.",
+    "{P} wants the {o}, I reckon, but the {x} before that.",
+)
+# after the entry: a hedge with where its object is ({s} a surface; {its} "it's" or "they're"): the
+# entry, or refused (where a thing is asks for nothing)
+THOUGHT_WHERE = (
+    ", I think, but {its} on the {s}.",
+    ", I think, but {its} over by the {s}.",
+    ", I believe, but {its} on the {s} at the moment.",
+    ", I thought, but {its} on the {s} now.",
+)
+# after the entry: a hedge alone (the entry, or refused)
+THOUGHT_HEDGES = (", I think.", ", or so I'm told.", ", I believe.", ", if I heard right.")
+THOUGHT_FORMS = ("taken back", "person", "added", "first", "where", "hedge")
 SAID_FORMS = (
     "reason before",
     "condition",
@@ -1467,6 +1519,7 @@ Family = Literal[
     "holds",
     "texted",
     "antecedents",
+    "thoughts",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -3392,6 +3445,70 @@ def antecedents(part: str, entry: Entry, scene: Scene, rng: random.Random) -> It
     yield Variant(part, entry.scene, said.lower(), handover, "same", "antecedents", (), "lower")
 
 
+def thoughts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The thought variants of one grounded entry of one handover of a one-of-a-kind object naming
+    its one person by a name (THOUGHT_FORMS; none of another): that handover said as a thought
+    and taken back after 'but' for another one-of-a-kind object (`taken back`, THOUGHT_BACK: that
+    object to that person) or another person of the scene (`person`, THOUGHT_PERSON: the object
+    to them), added to (`added`, THOUGHT_ADDED: both objects to that person) or put after another
+    (`first`, THOUGHT_FIRST: the other object, then the entry's); and, after an entry that is no
+    question, a hedge with where its object is (`where`, THOUGHT_WHERE: the entry; where a thing
+    is asks for nothing) or a hedge alone (`hedge`, THOUGHT_HEDGES: the entry). Each may be
+    refused instead."""
+    text = entry.text.strip()
+    one = _one_person_said(text, entry.want, scene)
+    if one is None or one[1].obj not in _unique_objects(scene):
+        return
+    said, handover = one
+    p = _proper_name(scene, handover.target) or said
+    o = _name(scene, handover.obj)
+    others = [x for x in _unique_objects(scene) if x not in _objects_named(text, scene)]
+    others = [x for x in others if x != handover.obj]
+    head = o.split(" of ")[0].split()[-1]
+    plural = head.endswith("s") and not head.endswith("ss")
+    keys = {"p": p, "P": p[:1].upper() + p[1:], "o": o, "it": "them" if plural else "it"}
+
+    def task(obj: str, to: str | None = None) -> Task:
+        return Task("deliver", obj, to or handover.target)
+
+    if others:
+        xid = rng.choice(others)
+        k = keys | {"x": _name(scene, xid)}
+        for forms, form, want in (
+            (THOUGHT_BACK, "taken back", task(xid)),
+            (THOUGHT_ADDED, "added", Group("and", (task(handover.obj), task(xid)))),
+            (THOUGHT_FIRST, "first", Group("seq", (task(xid), task(handover.obj)))),
+        ):
+            fitting = [f for f in forms if _fits(f, scene)]
+            if fitting:
+                t = rng.choice(fitting).format(**k)
+                yield Variant(part, entry.scene, t, want, "same", "thoughts", (), form)
+    people = [
+        (h.id, q)
+        for h in scene.humans
+        if h.id != handover.target and (q := _proper_name(scene, h.id)) is not None
+    ]
+    fitting = [f for f in THOUGHT_PERSON if _fits(f, scene)]
+    if people and fitting:
+        qid, q = rng.choice(people)
+        t = rng.choice(fitting).format(q=q, **keys)
+        yield Variant(
+            part, entry.scene, t, task(handover.obj, qid), "same", "thoughts", (), "person"
+        )
+    if text.endswith("?"):
+        return
+    its = "they're" if plural else "it's"
+    surfaces = [n for s in scene.surfaces if (n := _surface_name(scene, s.id)) is not None]
+    fitting = [f for f in THOUGHT_WHERE if _fits(f, scene)]
+    if surfaces and fitting:
+        where = rng.choice(fitting).format(its=its, s=rng.choice(surfaces))
+        yield Variant(
+            part, entry.scene, _then(text, where), handover, "same", "thoughts", (), "where"
+        )
+    hedge = rng.choice(THOUGHT_HEDGES)
+    yield Variant(part, entry.scene, _then(text, hedge), handover, "same", "thoughts", (), "hedge")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -3477,6 +3594,7 @@ def generated(
     rng_holds = random.Random(f"holds:{seed}")
     rng_texted = random.Random(f"texted:{seed}")
     rng_antecedents = random.Random(f"antecedents:{seed}")
+    rng_thoughts = random.Random(f"thoughts:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -3544,6 +3662,9 @@ def generated(
                     yield v, scene
             if "antecedents" in families:
                 for v in antecedents(part, entry, scene, rng_antecedents):
+                    yield v, scene
+            if "thoughts" in families:
+                for v in thoughts(part, entry, scene, rng_thoughts):
                     yield v, scene
 
 

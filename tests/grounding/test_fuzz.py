@@ -54,8 +54,10 @@ neither names nor moves, or has their own one, before or after it: the entry), t
 session 45 (an entry without its stops, without its apostrophes, both in lower case, and with a
 reason of its one person run on after it: the entry), the antecedents family of session 46 (an
 entry's one handover asked for with a pronoun after a sentence naming its person: that handover;
-two people of that sex or someone not in the scene named before the pronoun: refused), and the
-wrappers and take-backs of a seed
+two people of that sex or someone not in the scene named before the pronoun: refused), the thoughts
+family of session 47 (an entry's one handover said as a thought and taken back after 'but' for
+another object or person: that handover; added to or put after another: both; a hedge after the
+entry, alone or with where its object is: the entry), and the wrappers and take-backs of a seed
 unchanged by them."""
 
 from __future__ import annotations
@@ -241,6 +243,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "holds",
         "texted",
         "antecedents",
+        "thoughts",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -261,7 +264,8 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
         "'asides', 'afterthoughts', 'frames', 'repairs', 'deferrals', 'clefts', 'counts', " in err
     )
     assert (
-        "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents')" in err
+        "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents', "
+        "'thoughts')" in err
     )
 
 
@@ -377,6 +381,140 @@ def test_over_the_corpus_each_antecedent_form_is_made() -> None:
         else:
             assert v.must == "refuse" and v.want is None
             assert len(v.readings) == (2 if v.form == "two before" else 0)
+    assert min(kinds.values()) >= 10, kinds
+
+
+# -- thoughts (session 47) ------------------------------------------------------------------------
+
+
+def _thoughts(entry: Entry, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.thoughts("t", entry, CELL, random.Random(seed)))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        ("Give Bob the apple.", "apple>B", "taken back, added, first, person, where, hedge"),
+        ("Alice wants the crisps.", "chips>A", "taken back, added, first, person, where, hedge"),
+        # a question: no remark after it
+        ("Could you give Bob the apple?", "apple>B", "taken back, added, first, person"),
+        # a kind the scene has two of, two handovers, a pronoun, a place, a refused entry: none
+        ("Give Bob the red mug.", "mug_red>B", ""),
+        ("Give Bob the apple and Alice the cup.", "apple>B & cup>A", ""),
+        ("Bob wants the apple, give it to him.", "apple>B", ""),
+        ("Put the apple on the shelf.", "apple@shelf", ""),
+        ("Give her the apple.", None, ""),
+    ],
+)
+def test_thoughts_are_made_for_one_handover_of_a_one_of_a_kind_object(
+    text: str, want: str | None, forms: str
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        made = _thoughts(entry, seed)
+        assert [v.form for v in made] == [f for f in forms.split(", ") if f]
+        for v in made:
+            assert v.family == "thoughts" and v.must == "same" and not v.readings
+            if v.form in ("where", "hedge"):
+                assert v.want == entry.want and v.text.startswith(text.rstrip("."))
+
+
+def _thought_as(text: str, forms: tuple[str, ...], keys: dict[str, str]) -> list[str]:
+    return [f for f in forms if text == f.format(**keys)]
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "p", "o", "it"),
+    [
+        ("Give Bob the apple.", "apple>B", "Bob", "apple", "it"),
+        ("Alice wants the crisps.", "chips>A", "Alice", "crisps", "them"),
+    ],
+)
+def test_each_thought_says_its_person_its_object_and_the_other(
+    text: str, want: str, p: str, o: str, it: str
+) -> None:
+    entry = _entry("cell", text, want)
+    (target,) = (t.target for t in tasks(parse_expectation(want)))
+    (obj,) = (t.obj for t in tasks(parse_expectation(want)))
+    ids = {"Alice": "A", "Bob": "B", "Carol": "C"}
+    said: set[str] = set()
+    for seed in range(80):
+        for v in _thoughts(entry, seed):
+            keys = {"p": p, "P": p, "o": o, "it": it}
+            if v.form in ("taken back", "added", "first"):
+                xs = [
+                    (x, n)
+                    for x in fuzz._unique_objects(CELL)
+                    if x != obj and (n := fuzz._name(CELL, x))
+                ]
+                forms = {
+                    "taken back": fuzz.THOUGHT_BACK,
+                    "added": fuzz.THOUGHT_ADDED,
+                    "first": fuzz.THOUGHT_FIRST,
+                }[v.form]
+                (x, form) = next(
+                    (x, f) for x, n in xs for f in _thought_as(v.text, forms, keys | {"x": n})
+                )
+                said.add(form)
+                assert {t.obj for t in tasks(v.want)} == (
+                    {x} if v.form == "taken back" else {x, obj}
+                )
+                assert {t.target for t in tasks(v.want)} == {target}
+                if v.form == "first":
+                    assert isinstance(v.want, Group) and v.want.op == "seq"
+                    assert v.want.children[0] == Task("deliver", x, target)
+            elif v.form == "person":
+                (q, form) = next(
+                    (q, f)
+                    for q in ids
+                    if q != p
+                    for f in _thought_as(v.text, fuzz.THOUGHT_PERSON, keys | {"q": q})
+                )
+                said.add(form)
+                assert v.want == Task("deliver", obj, ids[q])
+            elif v.form == "where":
+                rest = v.text[len(text.rstrip(".")) :]
+                its = "it's" if it == "it" else "they're"
+                found = [
+                    f
+                    for f in fuzz.THOUGHT_WHERE
+                    for s in ("shelf", "counter")
+                    if rest == f.format(its=its, s=s)
+                ]
+                assert len(found) == 1, rest
+                said.add(found[0])
+            else:
+                assert v.text[len(text.rstrip(".")) :] in fuzz.THOUGHT_HEDGES
+    every = {*fuzz.THOUGHT_BACK, *fuzz.THOUGHT_ADDED, *fuzz.THOUGHT_FIRST, *fuzz.THOUGHT_PERSON}
+    assert said == every | set(fuzz.THOUGHT_WHERE)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict"),
+    [
+        ("Give Bob the apple, I think.", "apple>B", "exact"),
+        ("Give Bob the apple, I think.", "apple>A", "wrong"),
+        ("Give Bob the apple, I think, but it's the cup he's after as well.", "apple>B", "wrong"),
+    ],
+)
+def test_thoughts_are_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str
+) -> None:
+    got = _judged(text, want, "thoughts", "hedge")
+    assert got == verdict or (verdict == "wrong" and got == "refused"), got
+
+
+def test_over_the_corpus_each_thought_form_is_made() -> None:
+    """Every second entry of three parts: each variant names the person and the object of a
+    grounded entry of one handover of a one-of-a-kind object."""
+    kinds = dict.fromkeys(fuzz.THOUGHT_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=47, every=2, families=("thoughts",)):
+        kinds[v.form] += 1
+        assert v.must == "same" and v.want is not None and not v.readings
+        for t in tasks(v.want):
+            assert t.kind == "deliver" and t.obj in fuzz._unique_objects(scene)
+        if v.form not in ("where", "hedge"):  # those are the entry's text
+            assert {t.obj for t in tasks(v.want)} <= fuzz._objects_named(v.text, scene), v.text
     assert min(kinds.values()) >= 10, kinds
 
 
