@@ -126,8 +126,6 @@ KNOWN_MISSES = frozenset(
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "That bottle by the door, up on the shelf with it, there's a good chap.",
-        "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
-        "I'm off to put my feet up.",
         "Any of the pens will do for Sam, as long as it writes on chalk-stripe.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "knife on the worktop please, the guests want it by their bread",
