@@ -340,6 +340,7 @@ KNOWN_MISSES = frozenset(
         "Apple's spoken for by the rector, but Person B is free to pick one other thing, cup or "
         "chips or bottle.",
         "Chips aren't going to Person A this time round; Person B's turn, he won the spillikins.",
+        "Never mind the glass, just take the bottle to Person A.",
         "Person A's had her fill of water at the cha-cha social, so the bottle's for Person B.",
         "Emma's fasting for the samba gala so she's having nothing, but Dana's peckish, so the "
         "banana goes to Dana.",

@@ -27,7 +27,6 @@ TWO = load_scene(ROOT / "examples/scenes/two_arms.yaml")  # Alice, Bob
 FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")  # Alice, Bob
 T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")  # Person A, Person B
 L24 = load_scene(ROOT / "examples/scenes/2-4-line.yaml")  # Person A, Person B
-ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")  # Person A
 
 
 # -- run-ons: a remark about someone outside the scene; two placements ----------------------------
@@ -164,15 +163,10 @@ def test_lower47s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     LOWER.refused_without((r47s._role_name_s47s,), monkeypatch)
 
 
-# -- negation and exclusion: 'never mind the X' (nothing of the scene); '<thing> only' ------------
+# -- negation and exclusion: '<thing> only' ------------------------------------------------------
 
 NOT = PhrasingCases()
 test_not47s = NOT.test(
-    ("Never mind the glass, just take the bottle to Person A.", "bottle>A", ONE),
-    ("Forget the soup ladle, hand Marco the knife.", "knife>A", KITCHEN),
-    ("Never mind the test tubes, the spoon goes to Dana.", "spoon>A", LAB),
-    ("Don't worry about the printer, pass Sam the stapler.", "stapler>B", OFFICE),
-    ("Forget about the wheelbarrow; the drill goes on the bench.", "drill@bench", WORKSHOP),
     (
         "Jess is off power tools until the timekeeper signs the card; hammer only for now, to "
         "Jess.",
@@ -185,8 +179,6 @@ test_not47s = NOT.test(
     ("Tape only, to Mia, she's packing.", "tape>A", DEPOT),
 )
 test_not47s_near = NOT.test(
-    ("Never mind the soup ladle.", None, KITCHEN),
-    ("Never mind the soup ladle, give him the knife.", None, KITCHEN),
     ("Lemon only if she asks, to Lena.", None, KITCHEN),
     ("Plate only, to Lena.", None, KITCHEN),
     ("Lemon only, to him.", None, KITCHEN),
@@ -194,4 +186,4 @@ test_not47s_near = NOT.test(
 
 
 def test_not47s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    NOT.refused_without((r47s._never_mind47s, r47s._only_after47s), monkeypatch)
+    NOT.refused_without((r47s._only_after47s,), monkeypatch)

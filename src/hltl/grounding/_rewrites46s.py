@@ -244,7 +244,8 @@ def sub_between46s(text: str, node: Node, lexicon: Lexicon) -> None:
 # 39's rules (12).
 _COURTESY_MID46S = re.compile(
     r"(?<=[a-z]) (?P<c>thx|thanks|ta|cheers|pls|plz|please|ty)"
-    r" (?!(?:he|she|it|they|hes|shes|its|theyre|he's|she's|it's|they're|i|im|i'm|you)\b)"
+    r" (?!(?:he|she|it|they|hes|shes|its|theyre|he's|she's|it's|they're|i|im|i'm|you|we|were|"
+    r"we're|weve|we've)\b)"
     r"(?=[a-z])",
     _F,
 )

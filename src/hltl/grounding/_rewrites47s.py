@@ -63,6 +63,10 @@ def _remark_the47s(text: str, lexicon: Lexicon) -> str:
         last = words[-1].lower()
         if last in _NOT_BEFORE45S or last in VERBS:
             continue
+        if len(words) >= 2 and words[-2].lower() == "to" and not _names(words[-1], lexicon):
+            continue  # "Tom needs the tape to wrap the courier's parcels": the verb's object
+        if len(remark[len(m["who"]) + 4 :].split()) < 3:
+            continue  # "the courier's parcels": a possessive, no clause
         if last in _COURTESY45S:
             continue  # "bottle to bob cheers the lads are thirsty": session 46's `_courtesy_mid46s`
         if _names(remark, lexicon) or _REMARK_HELD47S.search(remark):
@@ -266,28 +270,6 @@ def _role_name_s47s(text: str, lexicon: Lexicon) -> str:
 
 # -- session 47 (12s): negation and exclusion (blind45) -----------------------------------------
 #
-# "Never mind the glass, just take the bottle to Person A.": 'never mind / forget (about) / don't
-# worry about the X' opening a request, X naming nothing of the scene (no running task can hold
-# it, so nothing is changed): the opener taken off, where what follows reads alone. 'Never mind
-# the cup, …' (a thing of the scene) stays refused (it may change a running task).
-_NEVER_MIND47S = re.compile(
-    r"^(?:oh,? |ah,? |so,? )?(?:never mind|nevermind|forget about|forget|don't worry about|"
-    r"no need for) (?P<x>(?:the|that|this|any|a|an) (?:[a-z-]+ ){0,2}[a-z-]+)\s*[,;.:]\s*"
-    r"(?P<rest>\S.*)$",
-    _F,
-)
-
-
-def _never_mind47s(text: str, lexicon: Lexicon) -> str:
-    """Session 47 (12s): 'never mind the X, …' (X nothing of the scene) taken off (above)."""
-    m = _NEVER_MIND47S.match(text)
-    if m is None or _names(m["x"], lexicon):
-        return text
-    rest = m["rest"]
-    rest = rest[0].upper() + rest[1:]
-    return rest if _reading(rest, lexicon) is not None else text
-
-
 # "Jess is off power tools until the timekeeper signs the card; hammer only for now, to Jess.":
 # '<a thing> only' opening a piece says just that thing ("Just the hammer for now, to Jess."
 # reads): said so, where the words name one object of the scene and the whole then reads.
@@ -322,7 +304,6 @@ _STEPS47S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _nobody_else47s,
     _waits47s,
     _role_name_s47s,
-    _never_mind47s,
     _only_after47s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-46 ones)
