@@ -3,10 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from hypothesis import given
-from hypothesis import strategies as st
 
-from hltl.grounding import _rewrites46l
 from hltl.world.scene import Scene
 from tests.grounding.helpers import KITCHEN, LAB, OFFICE, WORKSHOP, assert_reads, assert_refused
 
@@ -61,16 +58,3 @@ def test_a_break_or_no_place_keeps_the_wanting(text: str, want: str, scene: Scen
 
 def test_both_of_three_is_still_refused() -> None:
     assert_refused("Priya wants both pens back in the box.", OFFICE)
-
-
-@given(
-    particle=st.sampled_from(["down", "up", "over", "back", "across"]),
-    prep=st.sampled_from(["on", "onto", "in", "into"]),
-    head=st.sampled_from(["wants", "needs", "would like", "'d like", "is after"]),
-)
-def test_the_rewrite_only_drops_the_particle(particle: str, prep: str, head: str) -> None:
-    who = "Omar" + ("" if head.startswith("'") else " ") + head
-    text = f"{who} the spoon and the bowl {particle} {prep} the sink."
-    assert _rewrites46l.particle_place46l(text) == f"{who} the spoon and the bowl {prep} the sink."
-    broken = f"{who} the spoon, and the bowl {particle} {prep} the sink."
-    assert _rewrites46l.particle_place46l(broken) == broken

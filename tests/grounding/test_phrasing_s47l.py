@@ -7,8 +7,18 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hltl.grounding import _rewrites47l
-from hltl.world.scene import Scene
-from tests.grounding.helpers import KITCHEN, LAB, WARD, WORKSHOP, assert_reads, assert_refused
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import (
+    KITCHEN,
+    LAB,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+    assert_refused,
+)
+
+FOUR_ONE = load_scene(ROOT / "examples/scenes/4-1.yaml")  # bottle, chips, cup, apple; A, B
 
 # -- "X, I thought, but it was Y he wanted": the thought is taken back (blind45's one wrong reading
 # kept the salt wanted)
@@ -149,3 +159,35 @@ def test_a_subject_repaired_after_and_alone_reads_as_before() -> None:
         "screws@bench & hammer>B",
         WORKSHOP,
     )
+
+
+# -- "she'll be after the cup": a want, not the order word 'after' (engineer 12 found `cup>A ;
+# apple>A` on main)
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("Person A would like the apple; she'll be after the cup too.", "apple>A & cup>A"),
+        ("Person A would like the apple; she'll be after the cup.", "apple>A & cup>A"),
+        ("Person A would like the apple, then she'll be after the cup.", "apple>A ; cup>A"),
+        ("Person B'll be after the chips.", "chips>B"),
+    ],
+)
+def test_a_person_who_will_be_after_a_thing_wants_it(text: str, want: str) -> None:
+    assert_reads(text, want, FOUR_ONE)
+
+
+def test_a_thing_that_will_be_after_another_is_not_a_want() -> None:
+    assert_refused("The bottle will be after the chips.", FOUR_ONE)
+
+
+@given(
+    who=st.sampled_from(["she", "he", "they", "Omar", "Person B"]),
+    aux=st.sampled_from(["'ll", " will", " would", "'d", " might", " may"]),
+)
+def test_the_rewrite_says_want(who: str, aux: str) -> None:
+    text = f"{who}{aux} be after the bowl"
+    assert _rewrites47l.be_after47l(text) == f"{who}{aux} want the bowl"
+    thing = f"the spoon{aux} be after the bowl"
+    assert _rewrites47l.be_after47l(thing) == thing

@@ -94,7 +94,8 @@ def test_the_new_passes_are_gated() -> None:
     assert set(_GATES) == _NEW
     # every gate of _PASSES that asked `_is` of an item (or a text) is a set look-up now
     said = [s for s in phrasing._PASSES if "needs" in getattr(s, "__dict__", {})]
-    assert len(said) == 37 and len([s for s in phrasing._PASSES if hasattr(s, "__wrapped__")]) == 42
+    # (37 and 42 in session 46; session 47 gates more: test_speed47b)
+    assert len(said) >= 37 and len([s for s in phrasing._PASSES if hasattr(s, "__wrapped__")]) >= 42
 
 
 @pytest.mark.parametrize(("name", "scene", "text"), _CHANGED)

@@ -36,7 +36,6 @@ from hltl.grounding import (
     _rewrites45r,
     _rewrites45s,
     _rewrites46,
-    _rewrites46l,
     _rewrites46r,
     _rewrites46s,
     _rewrites47,
@@ -663,8 +662,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         _rewrites44l.held_beside44l(text, lexicon)
         text = _rewrites45l.other_person45l(text, lexicon)
         _rewrites45l.owner_either45l(text, lexicon)
-        text = _rewrites46l.particle_place46l(text)
         text = _rewrites47l.thought_but47l(text)
+        text = _rewrites47l.be_after47l(text)
         _rewrites47l.added_correction47l(text)
         counted = count_said30(text)
         if counted is not None:

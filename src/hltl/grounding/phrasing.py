@@ -120,26 +120,51 @@ def _said(
     step: _Pass,
     lemmas: Sequence[str] | frozenset[str] = (),
     texts: Sequence[str] | frozenset[str] = (),
+    item: Callable[[Item], bool] | None = None,
 ) -> _Pass:
     """``step`` run only where an item has one of ``lemmas`` (as ``_is`` asks, or as the lemma
     of an unknown word) or one of ``texts`` (lower-cased) (session 46, 12b): as _only_with, but
     the gate is two set look-ups on what _present found, not a walk over the items. Every lemma
     or text a pass needs before it can change the items or refuse must be in its gate
-    (``needs`` is the gate as an item test, for the tests)."""
+    (``needs`` is the gate as an item test, for the tests). ``item`` (session 47, 12b) is what
+    no set can say (a prefix, a digit, a field): asked of each item only when the sets miss."""
     want_lemmas = frozenset(lemmas)
     want_texts = frozenset(texts)
 
     def needs(it: Item) -> bool:
-        return it.lemma in want_lemmas or it.text.lower() in want_texts
+        return (
+            it.lemma in want_lemmas
+            or it.text.lower() in want_texts
+            or (item is not None and item(it))
+        )
 
     @functools.wraps(step)
     def gated(items: list[Item], lexicon: Lexicon) -> list[Item]:
         found, words = _present(items)
-        if want_lemmas.isdisjoint(found) and want_texts.isdisjoint(words):
+        if (
+            want_lemmas.isdisjoint(found)
+            and want_texts.isdisjoint(words)
+            and (item is None or not any(item(it) for it in items))
+        ):
             return items
         return step(items, lexicon)
 
     gated.__dict__["needs"] = needs
+    return gated
+
+
+def _when(step: _Pass, opens: Callable[[list[Item]], bool]) -> _Pass:
+    """``step`` run only where ``opens(items)`` (session 47, 12b): for passes whose trigger is
+    two items next to each other, which no item alone can show. ``opens`` must hold wherever
+    ``step`` would change the items or refuse (kept as ``opens``, for the tests)."""
+
+    @functools.wraps(step)
+    def gated(items: list[Item], lexicon: Lexicon) -> list[Item]:
+        if opens(items):
+            return step(items, lexicon)
+        return items
+
+    gated.__dict__["opens"] = opens
     return gated
 
 
@@ -5605,6 +5630,7 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
         if wanted is not None:
             n, j = wanted
             things = items[n + 1 : j]
+            j = _particle_place47p(items, j, things)
             m = j + 1
             m = _past_dets(items, m)
             if (
@@ -5621,6 +5647,64 @@ def _wanted_on(items: list[Item], lexicon: Lexicon) -> list[Item]:
         out.append(x)
         k += 1
     return out
+
+
+def _particle_place47p(items: list[Item], j: int, things: list[Item]) -> int:
+    """Where the place of a wanted list begins: at ``j``, or after a particle before it
+    ('down', 'up', 'over', 'back', 'across') when two things are wanted ("Marco wants the knife
+    and the lemon down on the counter": the particle says nothing the place does not)."""
+    if (
+        j + 1 < len(items)
+        and _is(items[j], "filler")
+        and items[j].text.lower() in ("down", "up", "over", "back", "across")
+        and items[j + 1].text.lower() in ("on", "onto", "in", "into")
+        and any(_is(y, "and") for y in things)
+        and not any(_is(y, ",") for y in things)  # "…, and the bowl down in the sink"
+    ):
+        return j + 1
+    return j
+
+
+def _said_want_on47p(items: list[Item], lexicon: Lexicon) -> list[Item]:
+    """Session 47 (12p, the lead's word): 'Omar is after the spoon and the bowl in the sink',
+    'Omar (has) asked for the spoon and the bowl (down) in the sink' — a want said as 'is after' /
+    'asked for' (made a want by _is_after / _asked_for, after _wanted_on has run) of a list of
+    objects and a place: the place may say which of the last thing is meant or where all of them
+    go; the grammar had given the first to the person and put the last there. Refused, naming the
+    readings. A want said as 'wants' / 'needs' is read by _wanted_on (all put there)."""
+    for n, it in enumerate(items):
+        said_as = it.text.lower().rsplit(" ", 1)
+        if it.lemma not in _WANTS or len(said_as) < 2 or said_as[1] not in ("after", "for"):
+            continue  # 'wants', 'would like': _wanted_on's
+        j = n + 1
+        while j < len(items) and (_objects(items[j]) or _is(items[j], "det", "and", ",")):
+            j += 1
+        things = items[n + 1 : j]
+        if sum(1 for y in things if _objects(y)) < 2 or not any(_is(y, "and") for y in things):
+            continue
+        if (
+            j + 1 < len(items)
+            and _is(items[j], "filler")
+            and items[j].text.lower() in ("down", "up", "over", "back", "across")
+        ):
+            j += 1
+        m = _past_dets(items, j + 1)
+        if (
+            j + 1 < len(items)
+            and _is(items[j], "on")
+            and _starts_surface(items, j + 1)
+            and (m + 1 == len(items) or _is(items[m + 1], *_SEPARATORS, "filler"))
+            and not _lying_on(things, items[m], lexicon)
+        ):
+            said = " ".join(x.text for x in items[n : m + 1])
+            listed = " ".join(x.text for x in things if not _is(x, ","))
+            place = " ".join(x.text for x in items[j + 1 : m + 1])
+            raise GroundingError(
+                f"{said!r} could say where all of {listed} go or which of the last one is "
+                f"meant (the first handed over): say 'put {listed} {items[j].text} {place}', or "
+                "who gets what"
+            )
+    return items
 
 
 # the forms of a moving or placing verb that can follow its object ("the cup put on the shelf")
@@ -6108,8 +6192,53 @@ def _saying46b(it: Item) -> bool:
     return it.kind == "unknown" and (not it.lemma.split() or it.lemma.split()[0] in _SAYING)
 
 
+# Session 47 (12b): what eleven more passes need before they can change the items or refuse, read
+# off their code as the gates of sessions 44-46 were. _quantifiers: every branch of _folded starts
+# at one of these lemmas or texts (_quant_word's words, 'both', 'other', 'something', 'either one',
+# 'each', 'apiece'), at a 'q:people:N' lemma or a number in digits, and its last loop at a mention
+# that is already a choice (quant 'some').
+_QUANT_LEMMAS47B = frozenset(
+    {"q:everything", "q:everyone", "q:some", "q:both", "q:all", "both", "other", "something"}
+)
+_QUANT_TEXTS47B = frozenset(
+    {"a", "an", "either", "all", "every", "each", "apiece", "either one", "any one", *NUMBERS}
+)
+
+
+def _quantified47b(it: Item) -> bool:
+    """_quantifiers, beyond its words: a choice already made, 'the two people', '2 mugs'."""
+    return it.quant == "some" or it.lemma.startswith("q:people:") or it.text.isdigit()
+
+
+def _may_run_on47b(items: list[Item]) -> bool:
+    """_run_ons: a split needs a command or placing verb right after a name, or a person right
+    after a name and before a possession verb ('… the bottle bob needs the chips')."""
+    found, _words = _present(items)
+    if found.isdisjoint(_COMMANDS | _PUTS) and found.isdisjoint(_POSSESSION):
+        return False
+    for k in range(1, len(items)):
+        x = items[k]
+        if items[k - 1].kind == "ent" and (
+            x.lemma in _COMMANDS
+            or x.lemma in _PUTS
+            or (x.kind == "ent" and k + 1 < len(items) and items[k + 1].lemma in _POSSESSION)
+        ):
+            return True
+    return False
+
+
+def _people_together47b(items: list[Item]) -> bool:
+    """_people_named: a person named right after a person, or a name several people share."""
+    for n, x in enumerate(items):
+        if x.kind != "ent" or not _humans(x):
+            continue
+        if len(x.refs) > 1 or (n and items[n - 1].kind == "ent" and _humans(items[n - 1])):
+            return True
+    return False
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
-    _plain(_definite_ones35l),
+    _said(_plain(_definite_ones35l), texts=("one",)),
     _plain(_two_names29),
     _said(_plain(_for_me_alone), texts=("for me", "for us")),
     _said(_plain(_any_described), ("q:some",)),
@@ -6117,8 +6246,8 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_choice_restated), ("q:some", "either")),
     _said(_plain(_any_order), ("any_order",)),
     _said(_plain(_closing_also), ("also", "whoever")),
-    _people_named,
-    _plain(_restated),
+    _when(_people_named, _people_together47b),
+    _said(_plain(_restated), ("to", "and", "or"), ("them", "one")),
     _said(_plain(_notes), ("to", "for", "on")),
     _only_with(_is_surface, _plain(_surface_notes)),
     _said(_plain(_in_between), ("between",)),
@@ -6129,10 +6258,10 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _only_with(_humans, _plain(_bare_notes)),  # a note needs two people
     _said(_plain(_floating_all), texts=("all", "both")),
     _said(_plain(_listed_subjects), ("verb:go", "verb:belong")),
-    _plain(_ellipsis),
+    _said(_plain(_ellipsis), texts=_ELLIPTIC),
     _plain(_drop_onto),
     _plain(_telegraphic),
-    _plain(_run_ons),
+    _when(_plain(_run_ons), _may_run_on47b),
     _plain(_let),
     _plain(_both_people),
     _only_with(_is_surface, _plain(_sources)),
@@ -6142,8 +6271,9 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _preambles,
     _said(_plain(_hedges), ("hedge",)),
     _plain(_infinitives),
-    _plain(_is_after),
+    _said(_plain(_is_after), ("after",)),
     _plain(_asked_for),
+    _said(_said_want_on47p, ("on",)),
     _plain(_questions),
     _said(_plain(_do_for), ("do",)),
     _plain(_after_all),
@@ -6153,20 +6283,20 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_whatever_near, ("whatever",)),
     _said(_plain(_any_restated), ("q:some",)),
     _said(_whichever_nearer, ("nearest", "farthest")),
-    _plain(_whichever),
+    _said(_plain(_whichever), ("whichever", "whatever")),
     _said(_relatives, texts=("that", "which")),
-    _one_anaphora,
+    _said(_one_anaphora, texts=("one",)),
     _said(_plain(_appositions), (",",)),  # narrowed after a comma
-    _plain(_demonstratives),
+    _said(_plain(_demonstratives), texts=("that", "this", "those", "these")),
     _one_each_of,
-    _quantifiers,
+    _said(_quantifiers, _QUANT_LEMMAS47B, _QUANT_TEXTS47B, _quantified47b),
     _said(_plain(_never_mind), ("cancel",)),
     _said(_plain(_i_mean_after), texts=("i mean", "i meant")),
     _plain(_swaps),
     _corrections_named,
     _said(_plain(_nobody), ("nobody", "no-one"), ("anything", "nothing", "not", "no")),
     _said(_plain(_instead_of), ("instead_of",)),
-    _exclusions,
+    _said(_exclusions, ("except", "not"), ("but",)),
     _said(_plain(_respectively), ("respectively",)),
     _plain(_so_after_remark),
     _only_with(_saying46b, _plain(_said_after)),
