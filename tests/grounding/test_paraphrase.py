@@ -340,7 +340,6 @@ KNOWN_MISSES = frozenset(
         "Person B ordered the apple but changed his tune at the pétanque; chips for him instead.",
         "Mr Lee's done with temperatures for today; the thermometer ought to be with Mrs Khan, "
         "my slip.",
-        "the cup to person a and the apple to person b for the pétanque lot",
         "the visitor looks half starved after the minuet so banana to her",
         "Sam's got a notebokk to fill with the rector's notices, so pass it to Sam.",
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
@@ -387,11 +386,6 @@ KNOWN_MISSES = frozenset(
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
         "one'll do.",
         "Noah's forgotten his ruler; lend him ours, would you.",
-        "The cup for Person A. The chips for Person B. The bottle and the apple can stay put.",
-        "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
-        "Person A's doing her wordsearch she's parched bottle to her.",
-        "Ruth's doing her rounds the thermometer's for her.",
-        "Salt shaker to Mr Novak he's asked twice now and the blue plate is for Marco.",
         "Bib on the highchair. Lily's lunch is next.",
         "Person B isn't fussed after his french skipping, the bottle or the crisps, he'll take "
         "either.",
@@ -411,16 +405,9 @@ KNOWN_MISSES = frozenset(
         "That one bag of chips is for Person B to share round at the rebec rehearsal.",
         "Both cups into the sink, please, the constable left cold tea in them.",
         "Jess needs the pair of spanners to strip down the old mangle for the laundress.",
-        "Not the red mug, the blue one, to Alice, she's off to her bodhrán lesson and likes that "
-        "one.",
         "Person B gets the chips; leave the bottle, he drank his fill at the snowman competition.",
-        "Everything but the apple to Person A, she can't stand apples and she's off to french "
-        "skipping.",
         "Person B has gone off chips since the limbo contest; it's the cup he's after.",
         "After the washerwoman's race, Person A wants nothing but the chips.",
-        "The bottle's not for me, it's for Person A.",
-        "Omar needs neither cup, just the bowl.",
-        "Tom needs all the kit apart from the boxes and the gloves.",
         "Not the white plate, Lena wants the one on the rack.",
         "Noah can have the scissors for his snowflake cut-outs, but the glue's off limits, he "
         "made a mess last time.",
@@ -435,7 +422,6 @@ KNOWN_MISSES = frozenset(
         "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the "
         "salads.",
         "person a wants the chips and the apple to take up to the airfix club",
-        "the water jug on mr lee's locker please he's been coughing all night",
         "zoe needs the scissors for her paper snowman and noah the ruler",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         "Jess needs the hanmer to knock together a stand for the serpent.",
