@@ -226,13 +226,10 @@ KNOWN_MISSES = frozenset(
         "Put Lily's sippy cup on the high chair for her.",
         "Set both of Lily's blocks up on her high chair.",
         "Persohn A left her bottle with you earlier; she'd like it returned.",
-        "Does Person B want the chips? He does, so give them to him.",
         "Is it possible to get Omar both his banana and a bowl for it?",
         # blind42 (tuned on in session 44): refusals left at its one measurement (docs/grounding.md)
-        "Bob's dying for something to nibble on after axe throwing, the apple I'd say.",
         "Lena has lemon wedges to do for table six and nothing sharp to do them with; sort her "
         "out.",
-        "Noah's desperate for a ruler to finish drawing his xiangqi board.",
         "Person B's finished his smocking so he can have the chips now, and the bottle goes to "
         "her.",
         "Person A gets her bottle first; once she's got it, it's the turn of Person B, who's "
@@ -243,21 +240,8 @@ KNOWN_MISSES = frozenset(
         "since he skipped lunch the crisps are bob's and the bottle is for alice who's been at "
         "the go club",
         "marco's plating up on blue so that plate's his and lena has the white",
-        "Could the apple go on the counter, next to where Alice does her cross-stitch?",
-        "Can the notebook go in the box so Priya stops losing it?",
-        "Would you stick that packing tape on the pallet ready for Tom's load?",
         # blind43 (tuned on in session 45): refusals left at its one measurement (docs/grounding.md)
-        "Emma's rinsing brushes after lampwork and either cup will do, so take her one.",
-        "The letter carver's quote needs signing, so any pen at all for Sam, black, blue or red.",
-        "Not the crisps, Bob wants the bottle after basketry.",
-        "The bottle's not for Person A, it's Person B who's after it, he's been punting.",
         # blind44 (tuned on in session 46): refusals left at its one measurement (docs/grounding.md)
-        "The ostler's boots keep catching the bottle; up on the shelf with it, would you.",
-        "Since the timpani rehearsal Person B keeps on about the cup; let him have it, for peace.",
-        "That apple was set aside for Person A at the swan upping; run it over to her.",
-        "Person B was after the bottle. Bring it him, please, he's back from the polka.",
-        "The bottle's Person A's. Hand it across to her, thanks.",
-        "Mr Lee's tablets are overdue by the clock on the wall; take them over to him.",
         "Blue mug first, for Alice, as she's off bodging stools. After that the apple goes to Bob.",
         "Bottle goes to Person A the apple to Person B no rush the pipe fitter's only just started",
         "Lena first, she wants the white plate; the tongs can go on the worktop after.",
@@ -281,23 +265,10 @@ KNOWN_MISSES = frozenset(
         "Never mind the hammer where it is; it's the drill that wants to go on the workbench.",
         "notebook to priya thanks she has minutes to take",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
-        "Mrs Khan is in pain, so would you take her medication over to her?",
-        "Could Mr Novak have the blue plate, the white one's too plain for him?",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
         "All four things to Person B: bottle, chips, cup and apple.",
         "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
         "and cup alike.",
-        "Go on then, if you're not run off your feet, let Person A have the bottle, bless you.",
-        "Ruth says jullay, which is Ladakhi for thank you, and asks nicely that the magazine be "
-        "put on the locker.",
-        "Pretty please with a cherry on top, sit the teddy bear on the high chair before Lily's "
-        "nap.",
-        "Kammagar, Yapese for thank you, and the flashlight to Kofi if you'd be so good.",
-        "Bob's hankering for the crisps after a long shift as a pinsetter.",
-        "Person A's in sore need of the bottle, the escapologist's act left her wrung out.",
-        "Tom requires the work gloves for loading the basketmaker's order onto his van.",
-        "Noah is keen to get hold of the ruler, he's drawing up a yahtzee score sheet.",
-        "Lily's wanting her bib, she's all mucky from making loom bands with Ava.",
         "Alice put in for the bottle and she's owed it, so it's hers; Bob can have the crisps "
         "for his trouble.",
         "Person A would like the apple; she'll be after the cup too, so both of them to her.",
@@ -344,16 +315,6 @@ KNOWN_MISSES = frozenset(
         "Sam's got a notebokk to fill with the rector's notices, so pass it to Sam.",
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
-        "Is there any chance of the blue mug landing on the counter before the precentor's "
-        "rehearsal?",
-        "Would it be a hardship to get Person B the bottle while he rests from the step dancing?",
-        "Might Person A be given the bottle now she's back from the contra dancing?",
-        "Jullay in advance; is it possible for Person A to receive the bottle before her celesta "
-        "solo?",
-        "Could you pop the bowl into the sink now the kefir's all finished?",
-        "Would you put the red pen on the desk for Priya's paper marbling?",
-        "Might the ruler find a home on the bookshelf before the scrapbook club?",
-        "Can the big sister, Ava, be handed the bib so she can feed Lily?",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
         "Kulo, as we say back home on Kosrae, could you pop the red mug up on the shelf for me "
         "when you get a sec?",
@@ -365,8 +326,6 @@ KNOWN_MISSES = frozenset(
         "Hiya, sorry, Sam here, the intern, could I possibly have the stapler when you've a "
         "minute?",
         "Morning, Mia here, be a gem and set the small box on the belt, would you?",
-        "The poulterer's just dropped the birds off, so Marco could do with the tongs; be a dear "
-        "and hand them over.",
         "Person B needs the cup for his penny whistle practice, a sip between tunes.",
         "Person A fancies the apple, and Person B would murder a bag of chips.",
         "Person B has set his sights on the chips after an afternoon on the cowbell.",
@@ -375,8 +334,6 @@ KNOWN_MISSES = frozenset(
         "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "Zoe needs the glue stick for her dot-to-dot collage.",
         "Jess needs the power drill to hang the new shelves.",
-        "Person B was on at me for the bottle between dances at the merengue class. Take it to "
-        "him, would you.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
         "Person B's got his eye on the chips after all that double dutch; give them him.",
@@ -426,7 +383,6 @@ KNOWN_MISSES = frozenset(
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         "Jess needs the hanmer to knock together a stand for the serpent.",
         "Would you mind giving Person B the bottle while he tunes the cittern?",
-        "Can Person A have the chips now she's back from the limbo contest?",
         "Can the bowl go on the tray, Emma keeps knocking it over?",
         "Marco's done with the knife, could you put it on the worktop?",
     }
@@ -446,7 +402,6 @@ KNOWN_UNCLEAR = frozenset(
         "Noah and Zoe were squabbling over a book; give him the one he wanted.",
         # blind43 (tuned on in session 45)
         # blind44 (tuned on in session 46)
-        "Take that one to her as well.",
         "The bottle goes to the one who asked. The chips stay put.",
         "Tom asked for a box. Bring him the one he used yesterday.",
         "Not the big box for Tom, the one he asked for this morning.",

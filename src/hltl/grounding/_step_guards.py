@@ -7624,7 +7624,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites46r:_fix_why46r": (
-        "f715efcbc2d12bf4",
+        "9fc1d8b6e2eb1d8e",
         ((" are ", " is ", "'re", "'s"), (), False),
         (),
     ),
@@ -7683,6 +7683,56 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites46r:_whatever_there46r": (
         "ab60f65395b6d272",
         ((), ("whatever",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_before_looks47r": (
+        "03ad4078a7a96858",
+        ((), ("before",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_claimed47r": ("fb612bbb3ad4861a", ((), ("so ",), False), ()),
+    "hltl.grounding._rewrites47r:_clear_of47r": (
+        "f9e50f7f493f344f",
+        ((), ("clear of",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_each_given47r": ("235ae55bb770b1be", ((), (" each",), False), ()),
+    "hltl.grounding._rewrites47r:_fix_why_goes47r": (
+        "dcb4233e3303af93",
+        ((), ("to go",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_heard_but47r": (
+        "21d2b4e06106ed49",
+        (("corrected", "put me right", "straight"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_mixed_up47r": ("8ab9a5ce4fc26641", ((), ("what",), False), ()),
+    "hltl.grounding._rewrites47r:_no_preference47r": (
+        "0ef857eb87255dec",
+        ((), ("either", "favourite", "preference", "whatever", "whichever"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_none_there47r": (
+        "8d82052ed62a43af",
+        ((), ("there ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_one_back47r": ("564451df0974c68d", ((), ("the one",), False), ()),
+    "hltl.grounding._rewrites47r:_restated47r": ("f328799b1b96503b", ((), ("said",), False), ()),
+    "hltl.grounding._rewrites47r:_state_like47r": (
+        "e3f6bf9c5dd574b4",
+        ((), (" like ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_whatever_chooses47r": (
+        "6333786773dc573d",
+        ((), ("whatever", "whichever"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47r:_whichever_of47r": (
+        "8e1b516a72d61343",
+        ((), ("whichever",), False),
         (),
     ),
     "hltl.grounding.normalise:_while_there36s": (
