@@ -65,6 +65,8 @@ def _remark_the47s(text: str, lexicon: Lexicon) -> str:
             continue
         if len(words) >= 2 and words[-2].lower() == "to" and not _names(words[-1], lexicon):
             continue  # "Tom needs the tape to wrap the courier's parcels": the verb's object
+        if last.endswith("ing") and not _names(words[-1], lexicon):
+            continue  # "… the stapler for binding the rector's notices …": the doing's object
         if len(remark[len(m["who"]) + 4 :].split()) < 3:
             continue  # "the courier's parcels": a possessive, no clause
         if last in _COURTESY45S:
