@@ -343,6 +343,10 @@ KNOWN_MISSES = frozenset(
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
         "one'll do.",
         "Noah's forgotten his ruler; lend him ours, would you.",
+        "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
+        "Person A's doing her wordsearch she's parched bottle to her.",
+        "Ruth's doing her rounds the thermometer's for her.",
+        "Salt shaker to Mr Novak he's asked twice now and the blue plate is for Marco.",
         "Bib on the highchair. Lily's lunch is next.",
         "Person B isn't fussed after his french skipping, the bottle or the crisps, he'll take "
         "either.",
@@ -365,6 +369,7 @@ KNOWN_MISSES = frozenset(
         "Person B gets the chips; leave the bottle, he drank his fill at the snowman competition.",
         "Person B has gone off chips since the limbo contest; it's the cup he's after.",
         "After the washerwoman's race, Person A wants nothing but the chips.",
+        "Tom needs all the kit apart from the boxes and the gloves.",
         "Not the white plate, Lena wants the one on the rack.",
         "Noah can have the scissors for his snowflake cut-outs, but the glue's off limits, he "
         "made a mess last time.",
@@ -379,6 +384,7 @@ KNOWN_MISSES = frozenset(
         "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the "
         "salads.",
         "person a wants the chips and the apple to take up to the airfix club",
+        "the water jug on mr lee's locker please he's been coughing all night",
         "zoe needs the scissors for her paper snowman and noah the ruler",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         "Jess needs the hanmer to knock together a stand for the serpent.",

@@ -109,29 +109,6 @@ def test_neither48s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     NEITHER.refused_without((r48s._neither48s,), monkeypatch)
 
 
-# -- 'all the kit' before what is left out ----------------------------------------------------
-
-ALL_THE = PhrasingCases()
-test_all_the48s = ALL_THE.test(
-    ("Tom needs all the kit apart from the boxes and the gloves.", "scanner>B & tape>B", DEPOT),
-    ("Give Bob all the gear except the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
-    (
-        "Kofi gets all the kit but the drill and the screws.",
-        "spanner_small>A & hammer>A & torch>A & spanner_large>A",
-        WORKSHOP,
-    ),
-    ("Sam can have all the bits and bobs except the pens.", "notebook>B & stapler>B", OFFICE),
-)
-test_all_the48s_near = ALL_THE.test(
-    ("Give Bob all the kit.", None, CELL),
-    ("Tom needs all the kit apart from what Mia has.", None, DEPOT),
-)
-
-
-def test_all_the48s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    ALL_THE.refused_without((r48s._all_the48s,), monkeypatch)
-
-
 # -- a closing remark of a dislike of a thing the person does not get -------------------------
 
 DISLIKE = PhrasingCases()
@@ -183,42 +160,6 @@ test_can_stay48s_near = CAN_STAY.test(
 
 def test_can_stay48s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     CAN_STAY.refused_without((r48s._can_stay48s,), monkeypatch)
-
-
-# -- run-ons of several clauses ---------------------------------------------------------------
-
-RUN_ON = PhrasingCases()
-test_run_on48s = RUN_ON.test(
-    (
-        "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
-        "apple>A",
-        F41,
-    ),
-    ("Person A's doing her wordsearch she's parched bottle to her.", "bottle>A", T12),
-    ("Ruth's doing her rounds the thermometer's for her.", "thermometer>A", WARD),
-    (
-        "Salt shaker to Mr Novak he's asked twice now and the blue plate is for Marco.",
-        "salt>C & plate_blue>A",
-        KITCHEN,
-    ),
-    ("the water jug on mr lee's locker please he's been coughing all night", "jug@bedside", WARD),
-    ("Omar wants the bowl he's been at the bench all day so take it to him", "bowl>B", LAB),
-    ("Kofi's fixing the mangle he's worn out torch to him", "torch>A", WORKSHOP),
-    ("Sam's doing the filing the stapler's for him", "stapler>B", OFFICE),
-    ("Tape to Mia she's asked three times and the gloves are for Tom", "tape>A & gloves>B", DEPOT),
-)
-test_run_on48s_near = RUN_ON.test(
-    ("Alice wants the apple she's hungry so give it to Bob", None, CELL),
-    ("Give Bob the cup he's after", None, CELL),
-    ("Kofi's fixing the mangle he's worn out torch to her", None, WORKSHOP),
-    ("Sam's doing the filing the stapler's for Priya's desk", None, OFFICE),
-    ("Tape to Mia she's asked for the gloves and the scanner is for Tom", None, DEPOT),
-    ("Omar wants the bowl he's not hungry so take it to him", None, LAB),
-)
-
-
-def test_run_on48s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    RUN_ON.refused_without((r48s._run_on48s,), monkeypatch)
 
 
 # -- a scene name with an accent: read as written or without it ---------------------------------

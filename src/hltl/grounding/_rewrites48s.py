@@ -7,11 +7,9 @@ from collections.abc import Callable
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
 from hltl.grounding._rewrites42r import _WHO42R
-from hltl.grounding._rewrites42s import _NEGATED42S
 from hltl.grounding._rewrites44l import held_beside44l
 from hltl.grounding._rewrites44s import _agrees44s
-from hltl.grounding._rewrites45s import _CORRECTS45S, _COURTESY45S, _NOT_BEFORE45S
-from hltl.grounding.lexicon import VERBS, Lexicon, _one_edit, unaccented
+from hltl.grounding.lexicon import Lexicon, _one_edit, unaccented
 from hltl.grounding.tree import Node, tasks
 
 # -- session 48 (12s): a word with an accent (the lead's decision, session 48) -------------------
@@ -126,26 +124,6 @@ def _neither48s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
-# "Tom needs all the kit apart from the boxes and the gloves.": 'all the kit / gear / stuff' with
-# what is left out after it is 'everything' (which the grammar reads with 'apart from', 'except',
-# 'but', 'bar'), when the word names nothing of the scene.
-_ALL_THE48S = re.compile(
-    r"\ball (?:of )?the (?P<w>kit|gear|stuff|bits|bits and bobs|equipment|odds and ends|lot)"
-    r"(?=\s*,?\s*(?:apart from|except|but|bar|other than|save)\b)",
-    _F,
-)
-
-
-def _all_the48s(text: str, lexicon: Lexicon) -> str:
-    """Session 48 (12s): 'all the kit' before what is left out read as 'everything' (above)."""
-    if "all " not in text.lower():
-        return text
-    m = _ALL_THE48S.search(text)
-    if m is None or _names(m["w"], lexicon):
-        return text
-    return f"{text[: m.start()]}everything{text[m.end() :]}"
-
-
 # "Everything but the apple to Person A, she can't stand apples and she's off to french
 # skipping.": a closing remark that the person the request names dislikes a thing ('can't stand',
 # 'can't abide', 'hates' …) which that person does not get there: it changes nothing of who gets
@@ -233,109 +211,6 @@ def _can_stay48s(text: str, lexicon: Lexicon) -> str:
     return out
 
 
-# -- session 48 (12s): run-ons with several clauses (blind46's sentence splits and run-ons) -----
-#
-# "Person A wants the apple she's been on the pogo stick all morning so get it to her.", "Person
-# A's doing her wordsearch she's parched bottle to her.", "Ruth's doing her rounds the
-# thermometer's for her.", "Salt shaker to Mr Novak he's asked twice now and the blue plate is for
-# Marco.": a text with no mark inside, whose clauses run on; the commas the writer left out put
-# back at each of these (the older rules then read the clauses: the remarks taken off, the pronoun
-# of the request the person said before):
-# - before he's / she's / he is / she has … (the clause names nothing of the scene, negates and
-#   corrects nothing, and the word before it is no verb, joining word, preposition or article:
-#   session 45's `_run_on45s` test for one such clause at the end; after a courtesy word, before
-#   that word too: "the water jug on mr lee's locker please he's been coughing all night");
-# - before 'so' and a verb of handing ("so get it to her");
-# - before 'the <thing>'s / is / goes for / to / on …' and 'and the <thing> …' (a thing of the
-#   scene named whole);
-# - before a bare thing of the scene then 'to' / 'for' and a person or him / her ("bottle to her");
-# where the whole then reads, and each clause that names a thing of the scene gives it.
-_HE_SHE48S = re.compile(
-    r" (?=(?:he|she)(?:'s|\s+(?:is|was|has|had)) [a-z])",
-    _F,
-)
-_SO_VERB48S = re.compile(
-    r" (?=so (?:get|give|pass|hand|bring|take|put|send|pop|fetch|carry|run)\b)",
-    _F,
-)
-_THE_THING48S = re.compile(
-    r" (?=(?:and )?the (?P<x>[a-z]+(?: [a-z]+)?)(?:'s| is| are|'re| goes| go) "
-    r"(?:for|to|on|in|into|onto)\b)",
-    _F,
-)
-_BARE_THING48S = re.compile(
-    r" (?=(?P<x>[a-z]+(?: [a-z]+)?) (?:to|for) (?P<p>him|her|[a-z]+(?: [a-z]+)?)\b)",
-    _F,
-)
-
-
-def _boundaries48s(text: str, lexicon: Lexicon) -> list[int]:
-    """Where the commas of the run-on go (above), in order."""
-    at: set[int] = set()
-    for m in _HE_SHE48S.finditer(text):
-        words = text[: m.start()].split()
-        last = words[-1].lower() if words else ""
-        if len(words) > 2 and last in _COURTESY45S:
-            # "… on mr lee's locker please he's been coughing": the courtesy between commas
-            at.update((m.start(), m.start() - len(words[-1]) - 1))
-            continue
-        if not last or last in _NOT_BEFORE45S or last in VERBS:
-            continue
-        at.add(m.start())
-    at.update(m.start() for m in _SO_VERB48S.finditer(text))
-    for m in _THE_THING48S.finditer(text):
-        named = _names(f"the {m['x']}", lexicon)
-        if (
-            len(named) == 1
-            and named[0].text.lower() == m["x"].lower()
-            and all(r.kind == "object" for r in named[0].refs)
-        ):
-            at.add(m.start())
-    for m in _BARE_THING48S.finditer(text):
-        words = text[: m.start()].split()
-        last = words[-1].lower() if words else ""
-        if not last or last in _NOT_BEFORE45S or last in VERBS:
-            continue
-        named = _names(m["x"], lexicon)
-        if len(named) != 1 or named[0].text.lower() != m["x"].lower():
-            continue
-        if any(r.kind != "object" for r in named[0].refs):
-            continue
-        if m["p"].lower() not in ("him", "her") and not _only_person(m["p"], lexicon):
-            continue
-        at.add(m.start())
-    return sorted(at)
-
-
-def _run_on48s(text: str, lexicon: Lexicon) -> str:
-    """Session 48 (12s): the commas of a run-on of several clauses put back (above)."""
-    said = text.strip()
-    end = said[-1] if said[-1:] in (".", "!") else ""
-    body = said[: len(said) - len(end)]
-    # the comma an older run-on rule put after a courtesy word (session 40's `_run_on40s`)
-    body = re.sub(r"\b(please|thanks|ta|cheers), ", r"\1 ", body, flags=_F)
-    if re.search(r"[,;:.!?–—]", body) or " " not in body:
-        return text
-    at = _boundaries48s(body, lexicon)
-    if not at:
-        return text
-    pieces = [body[i:j].strip() for i, j in zip([0, *at], [*at, len(body)], strict=True)]
-    for piece in pieces[1:]:
-        if re.match(r"(?:he|she)\b", piece, _F) and (
-            _names(piece, lexicon) or _NEGATED42S.search(piece) or _CORRECTS45S.search(piece)
-        ):
-            return text
-    out = ", ".join(pieces) + (end or ".")
-    node = _reading(out, lexicon)
-    if node is None:
-        return text
-    given = {t.obj for t in tasks(node)}
-    for piece in pieces:
-        if not re.match(r"(?:he|she)\b", piece, _F) and not _ids(piece, lexicon, "object") <= given:
-            return text
-    return out
-
-
 # -- session 48 (12s): what a person holds, said with their trade after the name -----------------
 #
 # 12c's asides fuzz (blind46 #163 with an aside): "person a the juggler already has the cup,
@@ -374,10 +249,8 @@ _STEPS48S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_accents48s,)
 _STEPS48S: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_for_me48s,
     _neither48s,
-    _all_the48s,
     _dislike48s,
     _can_stay48s,
-    _run_on48s,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-47 ones)
 REFUSE48S: tuple[Callable[[str, Lexicon], None], ...] = ()
