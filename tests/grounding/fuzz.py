@@ -158,7 +158,19 @@ to ("…, I think, but it's the cup Bob wants too."; both) or put after another 
 cup Bob needs first."; the other, then the entry's); and a hedge after the entry, alone (", I
 think.") or with where its object is (", I think, but it's on the shelf."): the entry — where a
 thing is asks for nothing (session 47's probes: "Marco wants the salt, I think, but it's on the
-rack." read salt@rack). Each may be refused instead.
+rack." read salt@rack). Each may be refused instead. A twenty-second family (session 48), chains:
+a second correction after a first (tuning's "Hand the apple to Bob, no, to Carol, well, the crisps
+actually." read apple>C & chips>C; "Crisps over to Bob, or, hmm, Alice, so Alice." a choice of
+three). After an entry's one handover of a one-of-a-kind object to a person named: the person then
+the object ("…, no, Carol, well, the crisps actually."), the object then the person, the object
+or the person twice ("…, I mean Alice, or rather Carol."): the last of each; corrected and put
+back ("…, no, the cup, no, sorry, I had it right the first time: the apple."): the entry; a
+hesitation between people ("…, or, hmm, Alice, or Carol, so Carol."): the one it settles on; the
+person corrected, then a placing instead: that placing; a second object added and then one of the
+two corrected ("…, and the cup, no, Carol, well, the crisps actually."): refused, both as
+readings. After an entry's one placing of a one-of-a-kind object naming no person: the surface
+corrected, then a handover instead, put back, or the object corrected. Each may be refused
+instead.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1481,6 +1493,93 @@ THOUGHT_WHERE = (
 # after the entry: a hedge alone (the entry, or refused)
 THOUGHT_HEDGES = (", I think.", ", or so I'm told.", ", I believe.", ", if I heard right.")
 THOUGHT_FORMS = ("taken back", "person", "added", "first", "where", "hedge")
+# chains (session 48; tuning's "Hand the apple to Bob, no, to Carol, well, the crisps actually."
+# read apple>C & chips>C, and "Crisps over to Bob, or, hmm, Alice, so Alice." a choice of three,
+# from blind45's "…, or, hmm, Alice called dibs on them first, so Alice."): after an entry's one
+# handover of a one-of-a-kind object ({o}) to a person named ({p}), a first correction and a second
+# after it. The person ({q}, another of the scene) then the object ({x}, another one-of-a-kind
+# object): {x} to {q}
+CHAIN_PERSON_OBJECT = (
+    ", no, {q}, well, the {x} actually.",
+    ". No, {q}. Actually, the {x}.",
+    ", sorry, {q}, and I meant the {x}, not the {o}.",
+    ", I mean {q}, and make that the {x}.",
+)
+# ... the object then the person: {x} to {q}
+CHAIN_OBJECT_PERSON = (
+    ", no, the {x}, well, {q} actually.",
+    ". Sorry, the {x}. And it's for {q}, not {p}.",
+    ", I mean the {x}, and to {q} rather than {p}.",
+    ". Make that the {x}. Oh, and {q}, not {p}.",
+)
+# ... the object twice ({y} a third one-of-a-kind object): {y} to {p}
+CHAIN_OBJECTS = (
+    ", no, the {x}, no, the {y}.",
+    ". Sorry, the {x}. No wait, the {y}.",
+    ", I mean the {x}, or rather the {y}.",
+    ", no, the {x}, well, the {y} actually.",
+)
+# ... the person twice ({r} a third person): {o} to {r}
+CHAIN_PEOPLE = (
+    ", no, {q}, sorry, {r}.",
+    ". Make that {q}. No, {r}, I mean.",
+    ", I mean {q}, or rather {r}.",
+    ", no, {q}, well, {r} actually.",
+)
+# ... corrected and put back: the entry
+CHAIN_BACK = (
+    ", no, the {x}, no, sorry, I had it right the first time: the {o}.",
+    ". Or the {x}? No, the {o}, I had it right.",
+    ", no, {q}, hang on, I had it right the first time: {p}.",
+    ". Or {q}? No, {p}, I had it right.",
+)
+# ... a hesitation between people and what it settles on (the key of the person): {o} to them
+CHAIN_HESITATIONS = (
+    (", or, hmm, {q}, so {q}.", "q"),
+    (", or, um, {q}? No, {p}, stick with {p}.", "p"),
+    (", or maybe {q}, yes, {q}.", "q"),
+    (", or, hmm, {q}, or {r}, so {r}.", "r"),
+)
+# ... a second object added, then the person and an object of the two corrected: refused (which
+# does {y} replace? {o} and {x} as readings)
+CHAIN_WHICH = (
+    ", and the {x}, no, {q}, well, the {y} actually.",
+    ". And the {x}. No, {q}, well, the {y} actually.",
+)
+# ... the person corrected, then a placing instead ({s} a surface): {o} on {s}
+CHAIN_PLACED = (
+    ", no, {q}, well, put it on the {s} instead.",
+    ", no, {q}, actually, just pop it on the {s} instead.",
+)
+# After an entry's one placing of a one-of-a-kind object ({o}) on a surface ({s}) naming no person:
+# the surface corrected ({t} another) then a handover instead: {o} to {q}
+CHAIN_SURFACE_PERSON = (
+    ", no, the {t}, well, give it to {q} instead.",
+    ". Sorry, the {t}. Actually, just hand it to {q} instead.",
+)
+# ... the surface corrected and put back: the entry
+CHAIN_SURFACE_BACK = (
+    ", no, the {t}, sorry, I had it right the first time: the {s}.",
+    ". Or the {t}? No, the {s}, I had it right.",
+)
+# ... the surface then the object: {x} on {t}
+CHAIN_SURFACE_OBJECT = (
+    ", no, the {t}, and the {x}, not the {o}.",
+    ". The {t}, sorry. And it's the {x}, not the {o}.",
+)
+CHAIN_FORMS = (
+    "person, object",
+    "object, person",
+    "objects",
+    "people",
+    "back",
+    "hesitation",
+    "which",
+    "placed",
+    "surface, person",
+    "surface back",
+    "surface, object",
+)
 SAID_FORMS = (
     "reason before",
     "condition",
@@ -1520,6 +1619,7 @@ Family = Literal[
     "texted",
     "antecedents",
     "thoughts",
+    "chains",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -3509,6 +3609,109 @@ def thoughts(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Itera
     yield Variant(part, entry.scene, _then(text, hedge), handover, "same", "thoughts", (), "hedge")
 
 
+def chains(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The chain variants of one grounded entry that is no question (CHAIN_FORMS; none of
+    another): a first correction and a second after it. After an entry of one handover of a
+    one-of-a-kind object naming its one person by a name and nothing else of the scene: the person
+    then the object (`person, object`, CHAIN_PERSON_OBJECT), the object then the person (`object,
+    person`, CHAIN_OBJECT_PERSON): the other object to the other person; the object twice
+    (`objects`, CHAIN_OBJECTS: the last object to the person), the person twice (`people`,
+    CHAIN_PEOPLE: the object to the last person), corrected and put back (`back`, CHAIN_BACK: the
+    entry), a hesitation between people (`hesitation`, CHAIN_HESITATIONS: the object to the one it
+    settles on), the person corrected then a placing instead (`placed`, CHAIN_PLACED: the object
+    on that surface); a second object added and then one of the two corrected (`which`,
+    CHAIN_WHICH: refused, both as readings). After an entry of one placing of a one-of-a-kind
+    object naming no person and nothing else of the scene: the surface then a handover instead
+    (`surface, person`), the surface corrected and put back (`surface back`: the entry), the
+    surface then the object (`surface, object`: the other object on the other surface). Each may
+    be refused instead."""
+    text = entry.text.strip()
+    want = entry.want
+    if text.endswith("?") or not isinstance(want, Task) or want.obj not in _unique_objects(scene):
+        return
+    others = [x for x in _unique_objects(scene) if x not in _objects_named(text, scene)]
+    others = [x for x in others if x != want.obj]
+    rng.shuffle(others)
+    o = _name(scene, want.obj)
+
+    def one(forms: tuple[str, ...], **keys: str) -> str | None:
+        fitting = [f for f in forms if _fits(f, scene)]
+        return _then(text, rng.choice(fitting).format(o=o, **keys)) if fitting else None
+
+    def variant(
+        said: str | None, to: Node | None, form: str, readings: tuple[str, ...] = ()
+    ) -> Iterator[Variant]:
+        if said is not None:
+            yield Variant(
+                part, entry.scene, said, to, "same" if to else "refuse", "chains", readings, form
+            )
+
+    if want.kind == "place":
+        if _people_said(text, scene) or _named(text, scene, "surface") != {want.target}:
+            return
+        s = _surface_name(scene, want.target)
+        surfaces = [
+            (sid, t)
+            for x in scene.surfaces
+            if x.id != want.target and (t := _surface_name(scene, (sid := x.id))) is not None
+        ]
+        people = [(h.id, q) for h in scene.humans if (q := _proper_name(scene, h.id))]
+        if s is None or not surfaces:
+            return
+        tid, t = rng.choice(surfaces)
+        if people:
+            qid, q = rng.choice(people)
+            said = one(CHAIN_SURFACE_PERSON, t=t, q=q)
+            yield from variant(said, Task("deliver", want.obj, qid), "surface, person")
+        yield from variant(one(CHAIN_SURFACE_BACK, s=s, t=t), want, "surface back")
+        if others:
+            said = one(CHAIN_SURFACE_OBJECT, t=t, x=_name(scene, others[0]))
+            yield from variant(said, Task("place", others[0], tid), "surface, object")
+        return
+    said_as = _one_person_said(text, want, scene)
+    if said_as is None:
+        return
+    p = _proper_name(scene, want.target) or said_as[0]
+    people = [
+        (h.id, q)
+        for h in scene.humans
+        if h.id != want.target and (q := _proper_name(scene, h.id)) is not None
+    ]
+    rng.shuffle(people)
+    if people and others:
+        (qid, q), x = people[0], _name(scene, others[0])
+        said = one(CHAIN_PERSON_OBJECT, q=q, x=x)
+        yield from variant(said, Task("deliver", others[0], qid), "person, object")
+        said = one(CHAIN_OBJECT_PERSON, q=q, x=x, p=p)
+        yield from variant(said, Task("deliver", others[0], qid), "object, person")
+    if len(others) >= 2:
+        said = one(CHAIN_OBJECTS, x=_name(scene, others[0]), y=_name(scene, others[1]))
+        yield from variant(said, Task("deliver", others[1], want.target), "objects")
+    if len(people) >= 2:
+        (_, q), (rid, r) = people[:2]
+        yield from variant(one(CHAIN_PEOPLE, q=q, r=r), Task("deliver", want.obj, rid), "people")
+    if people and others:
+        said = one(CHAIN_BACK, x=_name(scene, others[0]), q=people[0][1], p=p)
+        yield from variant(said, want, "back")
+    if people:
+        ids = {"p": want.target, "q": people[0][0], "r": people[-1][0]}
+        forms = [(f, k) for f, k in CHAIN_HESITATIONS if _fits(f, scene)]
+        forms = [(f, k) for f, k in forms if len(people) >= 2 or "{r}" not in f]
+        if forms:
+            f, k = rng.choice(forms)
+            said = _then(text, f.format(p=p, q=people[0][1], r=people[-1][1]))
+            yield from variant(said, Task("deliver", want.obj, ids[k]), "hesitation")
+    if people and len(others) >= 2:
+        x, y = (_name(scene, i) for i in others[:2])
+        said = one(CHAIN_WHICH, x=x, q=people[0][1], y=y)
+        yield from variant(said, None, "which", (want.obj, others[0]))
+    surfaces = [(x.id, n) for x in scene.surfaces if (n := _surface_name(scene, x.id))]
+    if people and surfaces:
+        sid, s = rng.choice(surfaces)
+        said = one(CHAIN_PLACED, q=people[0][1], s=s)
+        yield from variant(said, Task("place", want.obj, sid), "placed")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -3595,6 +3798,7 @@ def generated(
     rng_texted = random.Random(f"texted:{seed}")
     rng_antecedents = random.Random(f"antecedents:{seed}")
     rng_thoughts = random.Random(f"thoughts:{seed}")
+    rng_chains = random.Random(f"chains:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -3665,6 +3869,9 @@ def generated(
                     yield v, scene
             if "thoughts" in families:
                 for v in thoughts(part, entry, scene, rng_thoughts):
+                    yield v, scene
+            if "chains" in families:
+                for v in chains(part, entry, scene, rng_chains):
                     yield v, scene
 
 

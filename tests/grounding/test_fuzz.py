@@ -57,8 +57,9 @@ entry's one handover asked for with a pronoun after a sentence naming its person
 two people of that sex or someone not in the scene named before the pronoun: refused), the thoughts
 family of session 47 (an entry's one handover said as a thought and taken back after 'but' for
 another object or person: that handover; added to or put after another: both; a hedge after the
-entry, alone or with where its object is: the entry), and the wrappers and take-backs of a seed
-unchanged by them."""
+entry, alone or with where its object is: the entry), the chains family of session 48 (a second
+correction after a first: the last of each; put back: the entry; a second object added and one of
+the two corrected: refused), and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -244,6 +245,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "texted",
         "antecedents",
         "thoughts",
+        "chains",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -265,7 +267,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     )
     assert (
         "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents', "
-        "'thoughts')" in err
+        "'thoughts', 'chains')" in err
     )
 
 
@@ -490,17 +492,28 @@ def test_each_thought_says_its_person_its_object_and_the_other(
 
 
 @pytest.mark.parametrize(
-    ("text", "want", "verdict"),
+    ("text", "want", "verdict", "family"),
     [
-        ("Give Bob the apple, I think.", "apple>B", "exact"),
-        ("Give Bob the apple, I think.", "apple>A", "wrong"),
-        ("Give Bob the apple, I think, but it's the cup he's after as well.", "apple>B", "wrong"),
+        ("Give Bob the apple, I think.", "apple>B", "exact", "thoughts"),
+        ("Give Bob the apple, I think.", "apple>A", "wrong", "thoughts"),
+        (
+            "Give Bob the apple, I think, but it's the cup he's after as well.",
+            "apple>B",
+            "wrong",
+            "thoughts",
+        ),
+        ("Give Bob the apple, no, Carol, sorry, Alice.", "apple>A", "exact", "chains"),
+        ("Give Bob the apple, no, Carol, sorry, Alice.", "apple>C", "wrong", "chains"),
+        # a second correction that adds instead of replacing (tuning #186's kind) is wrong
+        ("Give Bob the apple, no, Carol, and the crisps too.", "chips>C", "wrong", "chains"),
+        # a choice of three where one was settled on is wrong
+        ("Give Bob the apple or the cup or the crisps.", "chips>B", "wrong", "chains"),
     ],
 )
-def test_thoughts_are_judged_by_what_the_grounder_reads(
-    text: str, want: str | None, verdict: str
+def test_thoughts_and_chains_are_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str, family: fuzz.Family
 ) -> None:
-    got = _judged(text, want, "thoughts", "hedge")
+    got = _judged(text, want, family, "")
     assert got == verdict or (verdict == "wrong" and got == "refused"), got
 
 
@@ -516,6 +529,156 @@ def test_over_the_corpus_each_thought_form_is_made() -> None:
         if v.form not in ("where", "hedge"):  # those are the entry's text
             assert {t.obj for t in tasks(v.want)} <= fuzz._objects_named(v.text, scene), v.text
     assert min(kinds.values()) >= 10, kinds
+
+
+# -- chains (session 48) --------------------------------------------------------------------------
+
+
+def _chains(entry: Entry, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.chains("t", entry, CELL, random.Random(seed)))
+
+
+_HANDOVER_CHAINS = fuzz.CHAIN_FORMS[:8]  # the rest are of a placing
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        ("Give Bob the apple.", "apple>B", _HANDOVER_CHAINS),
+        ("Alice wants the crisps.", "chips>A", _HANDOVER_CHAINS),
+        ("Put the apple on the shelf.", "apple@shelf", fuzz.CHAIN_FORMS[-3:]),
+        # a question, a kind the scene has two of, two handovers, a pronoun, a person and a place,
+        # a refused entry: none
+        ("Could you give Bob the apple?", "apple>B", ()),
+        ("Give Bob the red mug.", "mug_red>B", ()),
+        ("Put the red mug on the shelf.", "mug_red@shelf", ()),
+        ("Give Bob the apple and Alice the cup.", "apple>B & cup>A", ()),
+        ("Bob wants the apple, give it to him.", "apple>B", ()),
+        ("Give her the apple.", None, ()),
+    ],
+)
+def test_chains_are_made_for_one_handover_or_placing_of_a_one_of_a_kind_object(
+    text: str, want: str | None, forms: tuple[str, ...]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        made = _chains(entry, seed)
+        assert tuple(v.form for v in made) == forms
+        for v in made:
+            assert v.family == "chains" and v.text.startswith(text.rstrip("."))
+            assert (v.want is None) is (v.form == "which") is (v.must == "refuse")
+            assert bool(v.readings) is (v.form == "which")
+
+
+def _chain_form(rest: str) -> tuple[str, dict[str, str]]:
+    """The chain form ``rest`` (what follows the entry) says, and its keys."""
+    forms = [
+        *fuzz.CHAIN_PERSON_OBJECT,
+        *fuzz.CHAIN_OBJECT_PERSON,
+        *fuzz.CHAIN_OBJECTS,
+        *fuzz.CHAIN_PEOPLE,
+        *fuzz.CHAIN_BACK,
+        *(f for f, _ in fuzz.CHAIN_HESITATIONS),
+        *fuzz.CHAIN_WHICH,
+        *fuzz.CHAIN_PLACED,
+    ]
+    found = []
+    for form in forms:
+        out = re.escape(form)
+        for key in ("o", "p", "q", "r", "x", "y", "s"):
+            said = "Alice|Bob|Carol" if key in "pqr" else "[a-z ]+"
+            group = f"(?P<{key}>{said})"
+            out = out.replace(re.escape("{" + key + "}"), group, 1)
+            out = out.replace(re.escape("{" + key + "}"), f"(?P={key})")
+        if m := re.fullmatch(out, rest):
+            found.append((form, m.groupdict()))
+    assert len(found) == 1, (rest, found)
+    return found[0]
+
+
+def test_each_chain_says_its_corrections_and_reads_as_the_last() -> None:
+    entry = _entry("cell", "Give Bob the apple.", "apple>B")
+    ids = {"Alice": "A", "Bob": "B", "Carol": "C", "shelf": "shelf", "counter": "table"}
+    objects = {"cup": "cup", "water bottle": "bottle", "crisps": "chips", "apple": "apple"}
+    said: set[str] = set()
+    for seed in range(60):
+        for v in _chains(entry, seed):
+            form, k = _chain_form(v.text[len("Give Bob the apple") :])
+            said.add(form)
+            assert k.get("o", "apple") == "apple" and k.get("p", "Bob") == "Bob"
+            people = [k[n] for n in ("q", "r") if n in k]
+            assert "Bob" not in people and len(set(people)) == len(people)
+            things = [objects[k[n]] for n in ("x", "y") if n in k]
+            assert "apple" not in things and len(set(things)) == len(things)
+            if v.form == "which":
+                assert v.readings == ("apple", things[0])
+                continue
+            assert isinstance(v.want, Task)
+            if v.form == "placed":
+                assert v.want == Task("place", "apple", ids[k["s"]])
+            elif v.form == "hesitation":
+                last = re.findall(r"Alice|Bob|Carol", v.text)[-1]
+                assert v.want == Task("deliver", "apple", ids[last])
+            else:
+                obj = things[-1] if things and v.form != "back" else "apple"
+                to = ids[people[-1]] if people and v.form != "back" else "B"
+                assert v.want == Task("deliver", obj, to), v.text
+    hesitations = {f for f, _ in fuzz.CHAIN_HESITATIONS}
+    every = {
+        *fuzz.CHAIN_PERSON_OBJECT,
+        *fuzz.CHAIN_OBJECT_PERSON,
+        *fuzz.CHAIN_OBJECTS,
+        *fuzz.CHAIN_PEOPLE,
+        *fuzz.CHAIN_BACK,
+        *fuzz.CHAIN_WHICH,
+        *fuzz.CHAIN_PLACED,
+    }
+    assert said == every | hesitations
+
+
+def test_each_placing_chain_reads_as_the_last() -> None:
+    entry = _entry("cell", "Put the apple on the shelf.", "apple@shelf")
+    said: set[str] = set()
+    for seed in range(40):
+        for v in _chains(entry, seed):
+            rest = v.text[len("Put the apple on the shelf") :]
+            forms = {
+                "surface, person": fuzz.CHAIN_SURFACE_PERSON,
+                "surface back": fuzz.CHAIN_SURFACE_BACK,
+                "surface, object": fuzz.CHAIN_SURFACE_OBJECT,
+            }[v.form]
+            keys = {"o": "apple", "s": "shelf", "t": "counter"}
+            found = [
+                f
+                for f in forms
+                for x in ("cup", "water bottle", "crisps")
+                for q in ("Alice", "Bob", "Carol")
+                if rest == f.format(x=x, q=q, **keys)
+            ]
+            assert found, rest
+            said.add(found[0])
+            if v.form == "surface back":
+                assert v.want == entry.want
+            elif v.form == "surface, person":
+                assert isinstance(v.want, Task) and v.want.kind == "deliver"
+                assert v.want.obj == "apple"
+            else:
+                assert isinstance(v.want, Task) and v.want.kind == "place"
+                assert v.want.target == "table" and v.want.obj != "apple"
+    every = {*fuzz.CHAIN_SURFACE_PERSON, *fuzz.CHAIN_SURFACE_BACK, *fuzz.CHAIN_SURFACE_OBJECT}
+    assert said == every
+
+
+def test_over_the_corpus_each_chain_form_is_made() -> None:
+    """Every second entry of three parts: each variant names what it reads as."""
+    kinds = dict.fromkeys(fuzz.CHAIN_FORMS, 0)
+    for v, scene in fuzz.generated(PARTS, seed=48, every=2, families=("chains",)):
+        kinds[v.form] += 1
+        assert (v.want is None) is (v.form == "which")
+        for t in tasks(v.want) if v.want is not None else ():
+            assert t.obj in fuzz._unique_objects(scene)
+            assert t.obj in fuzz._objects_named(v.text, scene), v.text
+    assert min(kinds.values()) >= 5, kinds
 
 
 # -- references (session 26) ----------------------------------------------------------------------

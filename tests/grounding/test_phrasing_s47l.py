@@ -183,11 +183,14 @@ def test_a_thing_that_will_be_after_another_is_not_a_want() -> None:
 
 
 @given(
-    who=st.sampled_from(["she", "he", "they", "Omar", "Person B"]),
+    who=st.sampled_from(["she", "he", "Person B"]),
     aux=st.sampled_from(["'ll", " will", " would", "'d", " might", " may"]),
 )
-def test_the_rewrite_says_want(who: str, aux: str) -> None:
-    text = f"{who}{aux} be after the bowl"
-    assert _rewrites47l.be_after47l(text) == f"{who}{aux} want the bowl"
-    thing = f"the spoon{aux} be after the bowl"
-    assert _rewrites47l.be_after47l(thing) == thing
+def test_the_grammar_reads_be_after_as_want(who: str, aux: str) -> None:
+    # session 48 (lead): the grammar's `_is_after` reads it (session 47 rewrote the text first)
+    person = "Person B" if who != "she" else "Person A"
+    thing = "chips" if who != "she" else "cup"
+    first = "Person A would like the apple" if who == "she" else "Person B would like the apple"
+    text = f"{first}; {who}{aux} be after the {thing}."
+    assert_reads(text, f"apple>{person[-1]} & {thing}>{person[-1]}", FOUR_ONE)
+    assert_refused(f"The bottle{aux} be after the {thing}.", FOUR_ONE)

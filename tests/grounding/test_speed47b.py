@@ -55,16 +55,19 @@ def _opens(step: _Pass) -> Callable[[list[Item]], bool]:
     return lambda items: any(needs(it) for it in items)
 
 
-def _gates() -> dict[str, tuple[_Pass, _Pass, Callable[[list[Item]], bool]]]:
-    """Each newly gated pass by name: (the gated step, the pass itself, the gate)."""
+_Gates = dict[str, tuple[_Pass, _Pass, Callable[[list[Item]], bool]]]
+
+
+def gates_of(names: set[str]) -> _Gates:
+    """Each gated pass of ``names`` by name: (the gated step, the pass itself, the gate)."""
     out = {}
     for step in phrasing._PASSES:
-        if hasattr(step, "__wrapped__") and _name(step) in _NEW:
+        if hasattr(step, "__wrapped__") and _name(step) in names:
             out[_name(step)] = (step, step.__wrapped__, _opens(step))  # type: ignore[attr-defined]
     return out
 
 
-_GATES = _gates()
+_GATES = gates_of(_NEW)
 
 
 def test_the_new_passes_are_gated() -> None:
@@ -77,9 +80,10 @@ def test_the_new_passes_are_gated() -> None:
     assert len(gated) >= 53 and len(said) >= 46 and len(when) >= 2
 
 
-@pytest.mark.parametrize(("name", "text"), _CHANGED)
-def test_each_gate_lets_through_a_sentence_its_pass_changes(name: str, text: str) -> None:
-    step, plain, opens = _GATES[name]
+def lets_through(gates: _Gates, name: str, text: str) -> None:
+    """The gate of ``name`` lets through ``text``, which its pass changes (at its place in refine
+    or as lexed), and the gated step gives what the pass gives."""
+    step, plain, opens = gates[name]
     lexed = lex(text, _CELL)
     at_step = lexed  # the items as refine gives them to the pass
     for before in itertools.takewhile(lambda s: s is not step, phrasing._PASSES):
@@ -91,11 +95,16 @@ def test_each_gate_lets_through_a_sentence_its_pass_changes(name: str, text: str
         assert opens(said) or got == said
 
 
-def _pool() -> list[Item]:
+@pytest.mark.parametrize(("name", "text"), _CHANGED)
+def test_each_gate_lets_through_a_sentence_its_pass_changes(name: str, text: str) -> None:
+    lets_through(_GATES, name, text)
+
+
+def pool_of(changed: list[tuple[str, str]]) -> list[Item]:
     """Items of sentences that say each gate's words, lexed in the cell scene, and as the passes
     before each gate leave them."""
     pool: list[Item] = []
-    for _pass, text in _CHANGED:
+    for _pass, text in changed:
         items = lex(text, _CELL)
         for step in phrasing._PASSES:
             for it in items:
@@ -108,18 +117,24 @@ def _pool() -> list[Item]:
     return pool
 
 
-_POOL = _pool()
+_POOL = pool_of(_CHANGED)
 
 
-@settings(max_examples=600, deadline=None)
-@given(st.lists(st.sampled_from(_POOL), max_size=14), st.sampled_from(sorted(_NEW)))
-def test_where_a_gate_is_closed_the_pass_changes_nothing(items: list[Item], name: str) -> None:
-    step, plain, opens = _GATES[name]
+def closed_means_unchanged(gates: _Gates, items: list[Item], name: str) -> None:
+    """Where the gate of ``name`` is closed, the pass itself gives ``items`` back; where it is
+    open, the gated step gives what the pass gives."""
+    step, plain, opens = gates[name]
     if opens(items):
         assert _run(step, items, _CELL) == _run(plain, items, _CELL)
         return
     assert step(items, _CELL) is items
     assert _run(plain, items, _CELL) == items
+
+
+@settings(max_examples=600, deadline=None)
+@given(st.lists(st.sampled_from(_POOL), max_size=14), st.sampled_from(sorted(_NEW)))
+def test_where_a_gate_is_closed_the_pass_changes_nothing(items: list[Item], name: str) -> None:
+    closed_means_unchanged(_GATES, items, name)
 
 
 @settings(max_examples=200, deadline=None)

@@ -146,7 +146,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # committed alone, never opened by the engineers who change the grounder before its one measurement
 # at the end of session 46; tuned on in session 47), blind46 (written in session 47 by another
 # engineer and committed alone, never opened by the engineers who change the grounder before its
-# one measurement at the end of session 47; tuned on in session 48).
+# one measurement at the end of session 47; tuned on in session 48), blind47 (written in session 48
+# by another engineer and committed alone, never opened by the engineers who change the grounder
+# before its one measurement at the end of session 48; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -210,6 +212,7 @@ PARTS = (
     "blind44",
     "blind45",
     "blind46",
+    "blind47",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -76,26 +76,3 @@ def added_correction47l(text: str) -> None:
         f"cannot read the correction {said}: {word!r} in it could add to what it takes back "
         "or order it; say the whole request again"
     )
-
-
-# -- session 47 (lead): "she'll be after the cup" is a want, not an order word -------------------
-#
-# Engineer 12 found (f41, on main): "Person A would like the apple; she'll be after the cup too."
-# read `cup>A ; apple>A`: 'after' was read as the order word, so the apple came after the cup.
-# 'be after <a thing>' said of a person with 'will', 'would', 'might' or 'may' is wanting it: said
-# 'want', which the grammar reads ("she'll want the cup too" → `apple>A & cup>A`). Only after a
-# person ('she', 'he', 'they', a capitalised name) and before a determiner: "The bottle will be
-# after the chips" (an order of things) is not touched.
-_BE_AFTER47L = re.compiled(
-    r"(?P<who>\b(?:she|he|they)|(?-i:\b[A-Z][a-z]+(?: [A-Z])?))"
-    r"(?P<aux>'ll| will| would|'d| might| may) be after "
-    r"(?=(?:the|a|an|his|her|their|some|one|both|either|that|this|those|these)\b)",
-    _F,
-)
-
-
-def be_after47l(text: str) -> str:
-    """Session 47: "she'll be after the cup" (above) said "she'll want the cup"."""
-    if "be after" not in text:
-        return text
-    return _BE_AFTER47L.sub(lambda m: f"{m['who']}{m['aux']} want ", text)

@@ -677,7 +677,6 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         text = _rewrites45l.other_person45l(text, lexicon)
         _rewrites45l.owner_either45l(text, lexicon)
         text = _rewrites47l.thought_but47l(text)
-        text = _rewrites47l.be_after47l(text)
         _rewrites47l.added_correction47l(text)
         counted = count_said30(text)
         if counted is not None:

@@ -309,11 +309,16 @@ _IS_WORDS = frozenset({"'s", "is", "are", "'re", "was", "were", "isn't", "aren't
 _THANKS_WORDS = frozenset({"thanks", "thank you", "please", "cheers", "ta", "thx", "pls"})
 
 
+_MODAL_BE48L = frozenset({"'ll", "will", "would", "'d", "might", "may"})
+
+
 def _is_after(items: list[Item]) -> list[Item]:
     """'Bob's after the chips': at the start of a clause, a person who 'is after' an object
     wants it ('after' between a person and an object orders nothing). Session 35 (12s): a
     he / she too ("Give Alice the bottle, she's after the chips." had read `chips>A ; bottle>A`,
-    the want as an order), resolved as any pronoun is."""
+    the want as an order), resolved as any pronoun is. Session 48 (lead): 'will / would / 'll /
+    'd / might / may be after' too ("Person A would like the apple; she'll be after the cup too."
+    had read `cup>A ; apple>A`; session 47 had rewritten the text before the grammar)."""
     out: list[Item] = []
     k = 0
     while k < len(items):
@@ -321,16 +326,26 @@ def _is_after(items: list[Item]) -> list[Item]:
         # session 36 (12s): after 'then' too ("Give Alice the bottle, then she's after the
         # chips." had read `chips>A ; bottle>A`, 'after' as the order)
         opens = not out or out[-1].kind == "punct" or _is(out[-1], "and", "then")
-        if (
-            opens
-            and (_humans(it) or (_is(it, "pronoun") and it.text.lower() in ("he", "she")))
-            and k + 3 < len(items)
-            and items[k + 1].text.lower() in ("'s", "is", "are", "'re")
-            and _is(items[k + 2], "after")
-            and (_objects(items[k + 3]) or _is(items[k + 3], "det"))
+        n = 0  # how many words say 'is after' / 'will be after'
+        if k + 3 < len(items) and items[k + 1].text.lower() in ("'s", "is", "are", "'re"):
+            n = 2
+        elif (
+            k + 4 < len(items)
+            and items[k + 1].text.lower() in _MODAL_BE48L
+            and items[k + 2].kind == "word"
+            and items[k + 2].text.lower() == "be"
         ):
-            out += [it, Item("word", "verb:want", f"{items[k + 1].text} {items[k + 2].text}")]
-            k += 3
+            n = 3
+        if (
+            n
+            and opens
+            and (_humans(it) or (_is(it, "pronoun") and it.text.lower() in ("he", "she")))
+            and _is(items[k + n], "after")
+            and (_objects(items[k + n + 1]) or _is(items[k + n + 1], "det"))
+        ):
+            said = " ".join(i.text for i in items[k + 1 : k + n + 1])
+            out += [it, Item("word", "verb:want", said)]
+            k += n + 1
             continue
         out.append(it)
         k += 1
@@ -6237,6 +6252,23 @@ def _people_together47b(items: list[Item]) -> bool:
     return False
 
 
+def _stops_inside48b(items: list[Item]) -> bool:
+    """_telegraphic (session 48, 12b): a sentence only of a person joins the next sentence, so
+    a sentence must end before the last item (a full stop, '!', '?', ';' or ':' with an item
+    after it)."""
+    found, _words = _present(items)
+    if _END.isdisjoint(found):
+        return False
+    return any(x.kind == "punct" and x.lemma in _END for x in items[:-1])
+
+
+def _opening_dropped48b(items: list[Item]) -> bool:
+    """_preambles (session 48, 12b): an opening is dropped only up to a comma and only with a
+    word the grammar does not know in it."""
+    found, _words = _present(items)
+    return "," in found and any(x.kind == "unknown" for x in items)
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_definite_ones35l), texts=("one",)),
     _plain(_two_names29),
@@ -6259,24 +6291,24 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_floating_all), texts=("all", "both")),
     _said(_plain(_listed_subjects), ("verb:go", "verb:belong")),
     _said(_plain(_ellipsis), texts=_ELLIPTIC),
-    _plain(_drop_onto),
-    _plain(_telegraphic),
+    _said(_plain(_drop_onto), texts=("drop",)),
+    _when(_plain(_telegraphic), _stops_inside48b),
     _when(_plain(_run_ons), _may_run_on47b),
-    _plain(_let),
-    _plain(_both_people),
+    _said(_plain(_let), ("let",)),
+    _said(_plain(_both_people), ("both",)),
     _only_with(_is_surface, _plain(_sources)),
     _said(_plain(_then_inside), ("then",)),
     _said(_plain(_do_whose), ("do",)),
     _said(_plain(_wished_for), _WISHED),
-    _preambles,
+    _when(_preambles, _opening_dropped48b),
     _said(_plain(_hedges), ("hedge",)),
     _plain(_infinitives),
     _said(_plain(_is_after), ("after",)),
-    _plain(_asked_for),
+    _said(_plain(_asked_for), ("ask_for",)),
     _said(_said_want_on47p, ("on",)),
-    _plain(_questions),
+    _said(_plain(_questions), ("?", "wh"), _QUESTION_VERBS),
     _said(_plain(_do_for), ("do",)),
-    _plain(_after_all),
+    _said(_plain(_after_all), ("after", "once")),
     _said(_plain(_superlatives), ("nearest", "farthest")),
     _said(_places_named, ("near", "nearest", "farthest")),
     _only_with(_rest_needs45b, _rest),
@@ -6288,17 +6320,17 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_one_anaphora, texts=("one",)),
     _said(_plain(_appositions), (",",)),  # narrowed after a comma
     _said(_plain(_demonstratives), texts=("that", "this", "those", "these")),
-    _one_each_of,
+    _said(_one_each_of, texts=("one",)),
     _said(_quantifiers, _QUANT_LEMMAS47B, _QUANT_TEXTS47B, _quantified47b),
     _said(_plain(_never_mind), ("cancel",)),
     _said(_plain(_i_mean_after), texts=("i mean", "i meant")),
-    _plain(_swaps),
+    _said(_plain(_swaps), ("swap",)),
     _corrections_named,
     _said(_plain(_nobody), ("nobody", "no-one"), ("anything", "nothing", "not", "no")),
     _said(_plain(_instead_of), ("instead_of",)),
     _said(_exclusions, ("except", "not"), ("but",)),
     _said(_plain(_respectively), ("respectively",)),
-    _plain(_so_after_remark),
+    _said(_plain(_so_after_remark), texts=("so",)),
     _only_with(_saying46b, _plain(_said_after)),
     _speaker,
     _persons,
@@ -6307,7 +6339,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_not_after), ("not",)),
     _said(_plain(_each_nearest), ("nearest", "farthest")),
     _places,
-    _plain(_there),
+    _said(_plain(_there), ("there",)),
     _remarks,
     _said(_plain(_ordinals), texts=tuple(_RANKS)),
     _said(_plain(_last), ("last",)),
