@@ -394,7 +394,6 @@ KNOWN_MISSES = frozenset(
         "Emma skipped lunch for the stonecarver's talk and would appreciate the banana.",
         "Mrs Khan is keen to have the magazine to pass the time.",
         "Mia requires the packing tape for the last of the parcels.",
-        "Lily's grizzling for her teddy bear again, poor mite.",
         "Midway through pass the parcel, Person B put in a request for the bottle; Person A's "
         "request was the chips.",
         "That bottle over there, Person A's been asking after it since fly tying finished.",
@@ -450,12 +449,7 @@ KNOWN_MISSES = frozenset(
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
         "Bob's been hinting about the crisps all morning, any chance he could have them?",
-        "Person B's thirsty, would you mind sorting him out with the bottle?",
-        "Could the bottle go over to Person A, seeing she's asked twice?",
-        "Person B's hungry, any objection to giving him the chips?",
-        "Would you set the bowl down on the tray, it's in Dana's way?",
         "Is it all right for Lily to have her sippy cup now she's up from her nap?",
-        "Jess is putting up brackets, could you fetch Jess the power drill for that?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
