@@ -119,7 +119,6 @@ def test_for_that_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 OBJECTION = PhrasingCases()
 test_objection = OBJECTION.test(
     ("Person B's hungry, any objection to giving him the chips?", "chips>B", T21),
-    ("Carol's thirsty, any chance of passing her the bottle?", "bottle>C", CELL),
     ("Any objection to handing Marco the knife?", "knife>A", KITCHEN),
     ("Got any objection to passing Sam the stapler?", "stapler>B", OFFICE),
     ("Any objection to the bottle?", None, CELL),
@@ -179,8 +178,8 @@ test_could_use = COULD_USE.test(
         "chips>B",
         F41,
     ),
-    ("Carol could really do with the bottle after her run.", "bottle>C", CELL),
-    ("Lena could really do with the lemon after her shift.", "lemon>B", KITCHEN),
+    ("Carol could really do with the bottle after her shift.", "bottle>C", CELL),
+    ("Lena could really use the tongs after her shift as a cook.", "tongs>B", KITCHEN),
     ("Could use the bottle after the run.", None, CELL),
 )
 
@@ -199,8 +198,7 @@ test_grateful = GRATEFUL.test(
         F42,
     ),
     ("I'd be ever so grateful if Mr Lee got the grey blanket.", "blanket_grey>B", WARD),
-    ("I'd be most grateful if Mrs Khan could have the magazine.", "magazine>C", WARD),
-    ("I'd be so grateful if you gave Bob the cup.", "cup>B", CELL),
+    ("I'd be really grateful if Mrs Khan were given the magazine.", "magazine>C", WARD),
     ("I'd be grateful if Mr Lee got it.", None, WARD),
     ("Bob would be grateful if Carol got the cup.", None, CELL),
 )

@@ -5,10 +5,11 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _names, _only_person, _reading
+from hltl.grounding._normalise1 import _F, _names, _only_person, _unknown_word
 from hltl.grounding._rewrites45 import _read_for, _read_for_said
+from hltl.grounding._rewrites48 import _placing48
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node, tasks
+from hltl.grounding.tree import Node
 
 # -- session 49 (engineer 12): blind47's refusals of politeness and fillers, wants and needs,
 # pronouns and ellipsis and questions, each read as a family. Every rule rewrites to words the
@@ -33,12 +34,18 @@ def _poor49(text: str, lexicon: Lexicon) -> str:
     m = _POOR49.search(text)
     if m is None or _names(m.group(0).strip(", ").removeprefix("the "), lexicon):
         return text
+    if " poor " + m["w"] in m.group(0) and not _unknown_word(m["w"], lexicon):
+        return text  # ('…, poor man' and the courtesy list's other words are read already)
     return _read_for(f"{text[: m.start()]}{text[m.end() :]}", text, None, lexicon)
 
 
-# -- 'seeing' alone opening a reason ("Could the bottle go over to Person A, seeing she's asked
-# twice?"): read as 'seeing as' (session 28's reasons read that)
-_SEEING49 = re.compile(r",\s*seeing (?=(?:she|he|they|it|we|I)(?:'s|'ve|'d|'re| has| is| was) )")
+# -- 'seeing' alone opening a reason that the person asked or waited ("Could the bottle go over
+# to Person A, seeing she's asked twice?"): read as 'seeing as' (session 28's reasons read that;
+# other reasons after a bare 'seeing' are older rules')
+_SEEING49 = re.compile(
+    r",\s*seeing (?=(?:she|he|they)(?:'s|'ve| has| have) (?:asked|been asking|waited|been waiting|"
+    r"requested|put in for|been after)\b)"
+)
 
 
 def _seeing49(text: str, lexicon: Lexicon) -> str:
@@ -94,7 +101,7 @@ _FOR_THAT49 = re.compile(r" for (?:that|this|the job)(?=\s*[.!?]?$)")
 
 def _for_that49(text: str, lexicon: Lexicon) -> str:
     """Session 49: a closing 'for that' taken off a request after a remark."""
-    if " for th" not in text and " for the job" not in text:
+    if not text.rstrip(" .!?").endswith(("for that", "for this", "for the job")):
         return text
     m = _FOR_THAT49.search(text)
     if m is None or "," not in text[: m.start()]:
@@ -102,18 +109,19 @@ def _for_that49(text: str, lexicon: Lexicon) -> str:
     return _read_for(f"{text[: m.start()]}{text[m.end() :]}", text, None, lexicon)
 
 
-# -- 'any objection to' / 'any chance of' before what to do ("Person B's hungry, any objection to
-# giving him the chips?"): asked as 'would you mind'
+# -- 'any objection to' before what to do ("Person B's hungry, any objection to giving him the
+# chips?"): asked as 'would you mind' ('any chance of' is session 44's _ask_chance44)
 _OBJECTION49 = re.compile(
-    r"(?P<lead>^|,\s*)(?:(?:is there|would there be|have you got|got) )?any (?:objection to|"
-    r"chance of) (?=(?:giving|handing|passing|bringing|taking|putting|setting|getting) )",
+    r"(?P<lead>^|,\s*)(?:(?:is there|would there be|have you got|got) )?any objection to "
+    r"(?=(?:giving|handing|passing|bringing|taking|putting|setting|getting) )",
     _F,
 )
 
 
 def _objection49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'any objection to V-ing' read as 'would you mind V-ing'."""
-    if "any " not in text.lower():
+    low = text.lower()
+    if "any objection to " not in low:
         return text
     m = _OBJECTION49.search(text)
     if m is None:
@@ -167,12 +175,13 @@ def _thanks_from49(text: str, lexicon: Lexicon) -> str:
     return _read_for(f"With thanks, {text[m.end() :]}", text, None, lexicon)
 
 
-# -- 'could (really) use / do with' and an 'after …' said of the person ("Person B could really
-# use the chips after his shift as a kilnman.", "Carol could do with the bottle after her run."):
-# a want, read as 'wants' (the grammar reads 'wants … after his shift')
+# -- 'could (really) use / do with' and 'after his shift' ("Person B could really use the chips
+# after his shift as a kilnman."): a want, read as 'wants' (the grammar reads 'wants … after his
+# shift'; with 'could use' it took 'shift' for the verb; other 'after …' are older rules')
 _COULD_USE49 = re.compile(
     r"\b(?:could|can) (?:really |honestly |seriously |certainly |definitely )?(?:use|do with) "
-    r"(?=(?:the|a|an|some|her|his|their) )"
+    r"(?=(?:the|a|an|some|her|his|their) [^,;.!?]*? after (?:his|her|their) (?:shift|stint|turn|"
+    r"set|move)(?: as an? [a-z]+)?\s*(?:[.!?]|$))"
 )
 
 
@@ -189,8 +198,8 @@ def _could_use49(text: str, lexicon: Lexicon) -> str:
 # -- 'I'd be (ever so) grateful if P got the X' ("If it's no trouble at all, I'd be ever so
 # grateful if Person A got the bottle."): read as 'I'd be grateful if you gave P the X'
 _GRATEFUL49 = re.compile(
-    r"\bgrateful if (?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?:got|could get|could have|had|were given|"
-    r"was given|were to get) (?=(?:the|a|an|some|her|his|their) )"
+    r"\bgrateful if (?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?:got|were given|was given|were to get) "
+    r"(?=(?:the|a|an|some|her|his|their) )"
 )
 _SO_GRATEFUL49 = re.compile(
     r"\b(?:ever so|so|very|really|most|awfully|terribly|eternally|truly|hugely) grateful\b"
@@ -203,11 +212,10 @@ def _grateful49(text: str, lexicon: Lexicon) -> str:
         return text
     out = _SO_GRATEFUL49.sub("grateful", text)
     m = _GRATEFUL49.search(out)
-    if m is not None:
-        if not _only_person(m["p"], lexicon):
-            return text
-        out = f"{out[: m.start()]}grateful if you gave {m['p']} {out[m.end() :]}"
-    return text if out == text else _read_for(out, text, None, lexicon)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text  # ('ever so grateful' alone, 'if P could have' are older rules')
+    out = f"{out[: m.start()]}grateful if you gave {m['p']} {out[m.end() :]}"
+    return _read_for(out, text, None, lexicon)
 
 
 # -- 'to pass the time' after a want ("Mrs Khan is keen to have the magazine to pass the time."):
@@ -220,7 +228,7 @@ _PASS_TIME49 = re.compile(
 
 def _pass_time49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'to pass the time' taken off a request."""
-    if " to " not in text:
+    if not any(w in text for w in ("pass the", "while away", "kill ", "fill the")):
         return text
     m = _PASS_TIME49.search(text)
     if m is None:
@@ -237,7 +245,7 @@ _LAST_OF49 = re.compile(
 
 def _last_of49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'for the last of the Ns' read as 'for the Ns'."""
-    if " of the " not in text:
+    if not any(f"{w} of the " in text for w in ("last", "rest", "remainder", "few", "half")):
         return text
     m = _LAST_OF49.search(text)
     if m is None or _names(m["n"], lexicon):
@@ -279,16 +287,16 @@ def _had_nothing49(text: str, lexicon: Lexicon) -> str:
     return _read_for(out, text, None, lexicon)
 
 
-# -- 'the X is his / hers' closing after a clause about one person ("Person B hasn't eaten since
-# breakfast; the chips are his."): read as 'the X is for him / her'
+# -- 'the X is his / hers' closing after a semicolon ("Person B hasn't eaten since breakfast; the
+# chips are his."): read as 'the X is for him / her' (after a comma it is session 44's)
 _THEIRS49 = re.compile(
-    r"(?P<sep>[;,]\s*)the (?P<x>[a-z]+(?: [a-z]+)?) (?P<v>is|are) (?P<p>his|hers)(?=\s*[.!]?$)"
+    r"(?P<sep>;\s*)the (?P<x>[a-z]+(?: [a-z]+)?) (?P<v>is|are) (?P<p>his|hers)(?=\s*[.!]?$)"
 )
 
 
 def _theirs49(text: str, lexicon: Lexicon) -> str:
     """Session 49: a closing 'the X are his' read as 'the X are for him'."""
-    if " his" not in text and " hers" not in text:
+    if not text.rstrip(" .!").endswith((" his", " hers")):
         return text
     m = _THEIRS49.search(text)
     if m is None or not _names(m["x"], lexicon):
@@ -357,7 +365,7 @@ _MIDWAY49 = re.compile(r"^(?:Midway|Halfway|Partway|Part way|Half way) through [
 
 def _midway49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'Midway through X,' opening the request taken off."""
-    if " through " not in text:
+    if not text.startswith(("Midway ", "Halfway ", "Partway ", "Part way ", "Half way ")):
         return text
     m = _MIDWAY49.match(text)
     if m is None or _names(m.group(0), lexicon):
@@ -394,7 +402,7 @@ _SKIPPED49 = re.compile(
 
 def _skipped49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'P skipped lunch … and would like the X' read as 'P would like the X'."""
-    if " and " not in text:
+    if not any(w in text for w in (" skipped ", " missed ", " went without ", " gave up ")):
         return text
     m = _SKIPPED49.match(text)
     if m is None or not _only_person(m["p"], lexicon):
@@ -403,12 +411,12 @@ def _skipped49(text: str, lexicon: Lexicon) -> str:
 
 
 # -- 'the X is what P would like' ("…, and the bottle is what Person B would like."): read as
-# 'P would like the X'
+# 'P would like the X' ('is what P wants / is after / asked for' are older rules')
 _WHAT_WANTS49 = re.compile(
     r"(?P<lead>^|,\s*(?:and |while |but )?|;\s*)(?P<x>[Tt]he [a-z]+(?: [a-z]+)?) (?:is|'s|are) "
     r"what "
-    r"(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?P<v>would like|wants|is after|'s after|fancies|needs|"
-    r"asked for|would love|'d like)(?=\s*(?:[.!?,;]|$))"
+    r"(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?P<v>would like|'d like|would love|'d love|fancies)"
+    r"(?=\s*(?:[.!?,;]|$))"
 )
 
 
@@ -428,25 +436,31 @@ def _what_wants49(text: str, lexicon: Lexicon) -> str:
 # -- a pastime after 'after' in a want said as a state now ("Person A is craving the chips after
 # leapfrog with the kids, …", "After three rounds of twister Person B is in real need of the
 # bottle."): why the person wants it now, not when to do it; taken off when it names nothing of
-# the scene ('Bob wants the apple after lunch' may say when: refused as before)
+# the scene ('Bob wants the apple after lunch' may say when: refused as before); a bare pastime
+# ('after leapfrog', not 'after the long hike') and an opener with no comma (with one, or with a
+# determiner, older rules read it)
 _STATE49 = (
     r"(?:'s|is)(?: been)? (?:craving|gasping for|desperate for|dying for|longing for|crying out "
     r"for|in (?:real |dire |desperate |urgent )?need of)"
 )
 _AFTER_PASTIME49 = re.compile(
     rf"(?P<want>\b{_STATE49}(?: the| a| an| some| her| his| their) [a-z]+(?: [a-z]+)?)"
-    r" after (?P<c>[a-z][^,;.!?]*?)(?=\s*(?:[,;.!?]|$))"
+    r" after (?P<c>(?!(?:the|a|an|his|her|their|my|our|all|that|this|some|one|two|three)\b)"
+    r"[a-z][^,;.!?]*?)(?=\s*(?:[,;.!?]|$))"
 )
 _AFTER_OPENER49 = re.compile(
     r"^After (?P<c>(?:a|an|one|two|three|four|five|six|several|a few|a couple of|all that|hours "
-    r"of|all those) [^,;]+?)(?:,\s*|\s+)(?=(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) ?"
+    r"of|all those) [^,;]+?)\s+(?=(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) ?"
     rf"{_STATE49} )"
 )
 
 
 def _after_pastime49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'after leapfrog' in a want, or opening it, taken off."""
-    if "fter " not in text:
+    if "fter " not in text or not any(
+        w in text
+        for w in ("need of", "craving", "gasping", "desperate", "dying", "longing", "crying")
+    ):
         return text
     m = _AFTER_OPENER49.match(text)
     if m is not None:
@@ -464,7 +478,7 @@ def _after_pastime49(text: str, lexicon: Lexicon) -> str:
 # 'any chance he could have them' asked as 'could he have them'
 _HINTING49 = re.compile(
     r"\b(?P<p>[A-Z]\w*(?: [A-Z]\w*)?)(?P<b>'s been| has been| was) (?:hinting (?:about|at)|"
-    r"dropping hints about|going on about|banging on about|on about) "
+    r"dropping hints about|going on about|banging on about) "
     r"(?=(?:the|a|an|some|her|his|their) )"
 )
 _ANY_CHANCE49 = re.compile(
@@ -476,7 +490,7 @@ _ANY_CHANCE49 = re.compile(
 def _hinting49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'hinting about the X' read as 'angling for the X'; ', any chance he could
     have them' as ', could he have them'."""
-    if " any chance " not in text and " about " not in text:
+    if not any(w in text for w in ("hinting ", "hints about", "going on about", "banging on")):
         return text
     out = text
     m = _HINTING49.search(out)
@@ -501,7 +515,7 @@ _ASKS_WHETHER49 = re.compile(
 
 def _asks_whether49(text: str, lexicon: Lexicon) -> str:
     """Session 49: 'P asks whether the X could go …' read as 'Could the X go …?'."""
-    if "whether " not in text and " if " not in text:
+    if " ask" not in text and " wonder" not in text:
         return text
     m = _ASKS_WHETHER49.match(text)
     if m is None or not _only_person(m["p"], lexicon) or not _names(m["x"], lexicon):
@@ -509,15 +523,7 @@ def _asks_whether49(text: str, lexicon: Lexicon) -> str:
     if any(i.kind != "ent" for i in _names(m["x"], lexicon)):
         return text
     out = f"{m['v'].capitalize()} {m['x']} {m['rest']}?"
-    return _placing49(out, text, lexicon)
-
-
-def _placing49(out: str, text: str, lexicon: Lexicon) -> str:
-    """``out`` when it reads placing things only; else ``text``."""
-    read = _reading(out, lexicon)
-    if read is None or any(t.kind != "place" for t in tasks(read)):
-        return text
-    return out
+    return _placing48(out, text, lexicon)
 
 
 # -- 'has had her heart set on' ("…, Person A has had her heart set on the bottle."): read as
