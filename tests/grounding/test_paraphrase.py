@@ -328,13 +328,10 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Ever so sorry to interrupt, but Person A is parched, so the bottle to her, please and "
-        "thank you.",
         "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
         "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
-        "Hand it over to Person A, the bottle, I mean.",
         "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
         "Emma's the visitor; she'd like a banana, can you bring her one?",
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "

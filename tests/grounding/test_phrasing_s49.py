@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites49
+from hltl.grounding import _rewrites49, offline
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -525,3 +525,43 @@ test_asking_after = ASKING_AFTER.test(
 
 def test_asking_after_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     ASKING_AFTER.refused_without((_rewrites49._asking_after49,), monkeypatch)
+
+
+# -- 'Ever so sorry …' opening, in a one-person scene: 'Ever' is no stranger's name there
+# (offline._stranger_dropped34s, a bug fix: 'Ever' is a listed first name) -------------------------
+
+EVER_SO = PhrasingCases()
+test_ever_so = EVER_SO.test(
+    (
+        "Ever so sorry to interrupt, but Person A is parched, so the bottle to her, please and "
+        "thank you.",
+        "bottle>A",
+        T12,
+    ),
+    ("Ever so sorry to bother you, but could the bottle go to her?", "bottle>A", ONE),
+    ("Ever so sorry, but Person A wants the bottle, give it to her.", "bottle>A", T12),
+    ("Ever is thirsty, the bottle to her.", None, T12),
+    ("Ever so thirsty, she is, the bottle to her.", None, T12),
+)
+
+
+def test_ever_so_refused_with_the_name(monkeypatch: pytest.MonkeyPatch) -> None:
+    EVER_SO.refused_with(offline, "_next_word", lambda *_: "", monkeypatch)
+
+
+# -- the thing an 'it' is, named after the request with 'I mean' (offline._cut_off's exemption
+# _rewrites49.thing_named49) -----------------------------------------------------------------------
+
+IT_I_MEAN = PhrasingCases()
+test_it_i_mean = IT_I_MEAN.test(
+    ("Hand it over to Person A, the bottle, I mean.", "bottle>A", T12),
+    ("Give it to Person A, the bottle, I mean.", "bottle>A", T12),
+    ("Pass it to Carol, the red mug, I mean.", "mug_red>C", CELL),
+    ("Hand the chips to Person A, the bottle, I mean.", None, T12),
+    ("Put it on the shelf, the apple, I mean.", None, CELL),
+    ("Hand it over, the bottle, I mean.", None, T12),
+)
+
+
+def test_it_i_mean_refused_as_cut_off(monkeypatch: pytest.MonkeyPatch) -> None:
+    IT_I_MEAN.refused_with(_rewrites49, "thing_named49", lambda _text: False, monkeypatch)

@@ -562,6 +562,25 @@ def _asking_after49(text: str, lexicon: Lexicon) -> str:
     return text if out == text else _read_for(out, text, None, lexicon)
 
 
+# -- the thing an 'it' of the request is, named after it with 'I mean' ("Hand it over to Person A,
+# the bottle, I mean."): says what 'it' is (as session 42's "…; Person A, I mean" says who a
+# pronoun is), no correction cut off (offline._cut_off asks `thing_named49`); older rules then
+# read it as "Hand it over to Person A, the bottle."
+_IT_I_MEAN49 = re.compile(
+    r"^(?P<head>[^,;]+?)\s*,\s*(?P<x>the [a-z]+(?: [a-z]+)?),? I mean(?P<end>\s*[.!]?)$", _F
+)
+
+
+def thing_named49(text: str) -> bool:
+    """Session 49: whether ``text`` ends "…, the X, I mean" after a request with one 'it' or
+    'them' and no other 'the' (what older rules read once it is not refused as cut off)."""
+    m = _IT_I_MEAN49.match(text.strip())
+    if m is None:
+        return False
+    head = m["head"].lower()
+    return len(re.findall(r"\b(?:it|them)\b", head)) == 1 and " the " not in f" {head} "
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-48 ones)
 _STEPS49_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _poor49,
