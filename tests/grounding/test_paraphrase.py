@@ -314,13 +314,10 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Ever so sorry to interrupt, but Person A is parched, so the bottle to her, please and "
-        "thank you.",
         "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
         "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
-        "Hand it over to Person A, the bottle, I mean.",
         "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
         "Emma's the visitor; she'd like a banana, can you bring her one?",
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
@@ -352,32 +349,8 @@ KNOWN_MISSES = frozenset(
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
-        "Er, sorry to be a bother, but Person B could really use the chips after his shift as a "
-        "kilnman.",
-        "If it's no trouble at all, I'd be ever so grateful if Person A got the bottle.",
         "Ko rab'a, that's thanks in Gilbertese, and now the chips across to Person B please.",
-        "Hiya, would it be at all possible to get the bottle over to Person A while she's having "
-        "five minutes off from the devil sticks?",
-        "Priya asks, very politely, whether the stapler could find its way into the box.",
-        "Sorry, sorry, just one thing: Lena needs the tongs, if you'd be so kind.",
-        "With many thanks from the teacher, the globe over to Zoe, please and thank you.",
         "Bob's desperate for a bottle of water after his cajón session.",
-        "Alice is after the crisps, she's had nothing since the cluedo tournament.",
-        "Person A's got her eye on the apple, while Person B is after the cup, having lost at "
-        "kerplunk.",
-        "After three rounds of twister Person B is in real need of the bottle.",
-        "An hour on the bongos has left Person A gasping for the bottle.",
-        "Since she came in from the wormery, Person A has had her heart set on the bottle.",
-        "Person A is craving the chips after leapfrog with the kids, and the bottle is what "
-        "Person B would like.",
-        "Emma skipped lunch for the stonecarver's talk and would appreciate the banana.",
-        "Mrs Khan is keen to have the magazine to pass the time.",
-        "Mia requires the packing tape for the last of the parcels.",
-        "Lily's grizzling for her teddy bear again, poor mite.",
-        "Midway through pass the parcel, Person B put in a request for the bottle; Person A's "
-        "request was the chips.",
-        "That bottle over there, Person A's been asking after it since fly tying finished.",
-        "Person B hasn't eaten since breakfast; the chips are his.",
         "Alice is back from the pitch and putt she wants the bottle give it her",
         "Person A, the apple. Person B, the cup, he's got the boxercise class after. And the "
         "bottle to Person A on top.",
@@ -428,13 +401,6 @@ KNOWN_MISSES = frozenset(
         "Person A asked nicely for the cfhips, pass them over.",
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
-        "Bob's been hinting about the crisps all morning, any chance he could have them?",
-        "Person B's thirsty, would you mind sorting him out with the bottle?",
-        "Could the bottle go over to Person A, seeing she's asked twice?",
-        "Person B's hungry, any objection to giving him the chips?",
-        "Would you set the bowl down on the tray, it's in Dana's way?",
-        "Is it all right for Lily to have her sippy cup now she's up from her nap?",
-        "Jess is putting up brackets, could you fetch Jess the power drill for that?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
