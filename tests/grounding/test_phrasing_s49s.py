@@ -336,3 +336,66 @@ def test_has_now49s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(offline, "_CHECKS", kept)
     assert_reads(HAS_NOW[0][0], "cup>A", SQ)
     assert_reads(HAS_NOW[2][0], "cup>B", CELL)
+
+
+# -- lower case: an opening 'go on' with no comma ------------------------------------------------
+
+GO_ON = PhrasingCases()
+test_go_on49s = GO_ON.test(
+    ("go on hand the chips over to person a she's starving", "chips>A", DUO),
+    ("go on give bob the apple", "apple>B", CELL),
+    ("go on then pass alice the cup", "cup>A", CELL),
+    ("come on hand kofi the torch", "torch>A", WORKSHOP),
+)
+test_go_on49s_near = GO_ON.test(
+    ("go on the shelf", None, CELL),
+    ("go on give her the apple", None, CELL),
+)
+
+
+def test_go_on49s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    GO_ON.refused_without((r49s._go_on49s,), monkeypatch)
+
+
+# -- 'when there's a minute' said 'when you get a minute' ----------------------------------------
+
+THERES_MINUTE = PhrasingCases()
+test_theres_minute49s = THERES_MINUTE.test(
+    ("pop the bottle over to person a when there's a minute", "bottle>A", ONE),
+    ("Give Bob the apple when there's a moment.", "apple>B", CELL),
+    ("Pass Sam the stapler when there's a sec.", "stapler>B", OFFICE),
+)
+test_theres_minute49s_near = THERES_MINUTE.test(
+    ("Give Bob the apple when there's a cup.", None, CELL),
+    ("Give Bob the apple when there's a minute left on the clock.", None, CELL),
+)
+
+
+def test_theres_minute49s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    THERES_MINUTE.refused_without((r49s._theres_minute49s,), monkeypatch)
+
+
+# -- a run-on: 'P's <doing> … so <request>' with no marks ----------------------------------------
+
+SO_RUN_ON = PhrasingCases()
+test_so_run_on49s = SO_RUN_ON.test(
+    ("sam's taking minutes so the notepad goes to sam", "notebook>B", OFFICE),
+    (
+        "person a's been eyeing the bottle so pop it over to her when there's a minute",
+        "bottle>A",
+        ONE,
+    ),
+    ("priya's filing reports so the stapler goes to priya", "stapler>A", OFFICE),
+    ("kofi's been eyeing the torch so pass it to him", "torch>A", WORKSHOP),
+    ("tom's packing parcels so the tape goes to tom", "tape>B", DEPOT),
+    ("emma's been eyeing the banana so pop it over to her", "banana>C", LAB),
+)
+test_so_run_on49s_near = SO_RUN_ON.test(
+    ("sam's taking minutes so the notepad goes to priya", None, OFFICE),
+    ("sam's not taking minutes so the notepad goes to sam", None, OFFICE),
+    ("the cup's meant for bob so take the apple over", None, CELL),
+)
+
+
+def test_so_run_on49s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SO_RUN_ON.refused_without((r49s._so_run_on49s,), monkeypatch)

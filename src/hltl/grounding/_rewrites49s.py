@@ -8,7 +8,9 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person, _reading
 from hltl.grounding._rewrites42r import _WHO42R
+from hltl.grounding._rewrites42s import _NEGATED42S
 from hltl.grounding._rewrites44s import _agrees44s
+from hltl.grounding._rewrites45s import _CORRECTS45S
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node, tasks
 
@@ -495,6 +497,86 @@ def _has_now49s(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
+# -- session 49 (12s): lower case (blind47's) ----------------------------------------------------
+#
+# "go on hand the chips over to person a she's starving": 'go on (then)' before the request's verb
+# with no comma (an urging: "Go on, give Bob the apple." reads) taken off.
+_GO_ON49S = re.compile(
+    r"^(?:go on|come on|go on then|come on then|go on now)\s+(?=(?:give|hand|pass|bring|take|pop|"
+    r"put|get|fetch|chuck|send|drop|set|place|stick|leave)\b)",
+    _F,
+)
+
+
+def _go_on49s(text: str, lexicon: Lexicon) -> str:
+    """Session 49 (12s): an opening 'go on' with no comma taken off (above)."""
+    if not text[:8].lower().startswith(("go on", "come on")):
+        return text
+    m = _GO_ON49S.match(text)
+    if m is None:
+        return text
+    out = text[m.end() :]
+    out = out[:1].upper() + out[1:] if text[:1].isupper() else out
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "… so pop it over to her when there's a minute": 'when there's a minute (moment, sec)' said
+# 'when you get a minute' (the older rules take that off: the hearer's time, not a condition).
+_THERES_MINUTE49S = re.compile(
+    r"\bwhen (?:there's|there is|theres) (?P<t>a (?:minute|moment|sec|second|mo|tick|spare "
+    r"minute|spare moment)|time)(?=\s*(?:[.!,;]|$))",
+    _F,
+)
+
+
+def _theres_minute49s(text: str, lexicon: Lexicon) -> str:
+    """Session 49 (12s): 'when there's a minute' said 'when you get a minute' (above)."""
+    if "there" not in text.lower():
+        return text
+    out = _THERES_MINUTE49S.sub(lambda m: f"when you get {m['t']}", text)
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "sam's taking minutes so the notepad goes to sam", "person a's been eyeing the bottle so pop it
+# over to her …": a text with no marks that opens on what a person is doing ('P's / P is / P's been
+# <verb>ing …'), then 'so' and the request: the comma before 'so' put back (the older rules read
+# "P's taking minutes, so …"), when the opening names one person and nothing else but objects,
+# negates and corrects nothing, and what follows 'so' names no other person.
+_SO_RUN_ON49S = re.compile(
+    rf"^(?P<a>(?P<p>{_WHO42R})(?:'s|'s been| is| was| has been) [a-z]+ing\b[a-z' ]*?) so "
+    r"(?P<b>(?!(?:much|many|far|long|that|he|she|they|it)\b)[a-z][a-z' ]*)$",
+    _F,
+)
+
+
+def _so_run_on49s(text: str, lexicon: Lexicon) -> str:
+    """Session 49 (12s): the comma before 'so' put back (above)."""
+    if " so " not in text.lower() or re.search(r"[,;:.!?]", text.rstrip(".!")):
+        return text
+    m = _SO_RUN_ON49S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    a, b = m["a"], m["b"]
+    if _NEGATED42S.search(a) or _CORRECTS45S.search(a) or _CORRECTS45S.search(b):
+        return text
+    people = _ids(a, lexicon, "human")
+    if people != _ids(m["p"], lexicon, "human") or not _ids(b, lexicon, "human") <= people:
+        return text
+    out = f"{a}, so {b}"
+    node = _reading(out, lexicon)
+    if node is None or {t.target for t in tasks(node)} - people:
+        return text
+    # what is handed over is what the request names (or its 'it' / 'them', when it names none)
+    said = _ids(b, lexicon, "object")
+    if not said and re.search(r"\b(?:it|them)\b", b, _F):
+        said = _ids(a, lexicon, "object")
+    if not {t.obj for t in tasks(node)} <= said:
+        return text
+    return out
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-48 ones)
 _STEPS49S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _dont_go49s,
@@ -510,6 +592,9 @@ _STEPS49S: tuple[Callable[[str, Lexicon], str], ...] = (
     _isnt_either49s,
     _no_point49s,
     _own_other49s,
+    _go_on49s,
+    _theres_minute49s,
+    _so_run_on49s,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-48 ones)
 REFUSE49S: tuple[Callable[[str, Lexicon], None], ...] = ()
