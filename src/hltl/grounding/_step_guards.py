@@ -4048,6 +4048,28 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_only_one_here32r": (
+        "a959edece3f3f3a0",
+        ((), (" here", " only "), True),
+        (
+            (
+                "_ONLY_ONE_HERE32R",
+                (
+                    "pattern",
+                    "^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\\w ]*?),\\s*(?:(?:no|sorry|oops|wait),\\s*)+there(?:'s| is) only (?P<p>[A-Za-z][\\w ]*?) here,\\s*(?:so )?(?:to|for) (?:her|him|them)(?: then| instead)?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_ONLY_ONE_HERE_SO32R",
+                (
+                    "pattern",
+                    "^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\\w ]*?)\\.\\s*(?:oops|sorry|whoops),?\\s*(?:(?:wrong (?:bay|room|person|one|ward)|no),?\\s*)?it(?:'s| is) (?:just|only) (?P<p>[A-Za-z][\\w ]*?) here,?\\s*so (?P<p2>[A-Za-z][\\w ]*?|she|he|they) (?:gets|has|should get|can have) it(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_only_one_item31r": (
         "75991ab67b8b2344",
         ((), ("item", "object", "thing"), True),
@@ -4346,6 +4368,34 @@ GUARDS: dict[str, Entry | str] = {
         ((" or ",), (" left ", "either ", "then the ", "while "), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise3:_said_aside27r": (
+        "dfc888b01ca2b709",
+        (
+            (),
+            (
+                " as ",
+                " as well",
+                " back",
+                " too",
+                "all ",
+                "alongside",
+                "beside",
+                "et",
+                "matter",
+                "mind",
+                "next to",
+                "ot",
+                "that are",
+                "that aren't",
+                "that is",
+                "that isn't",
+                "whichever",
+                "whoever",
+            ),
+            True,
+        ),
+        (("re", ("module", "hltl.grounding.gate")),),
+    ),
     "hltl.grounding._normalise3:_says_she_is28s": (
         "93167b8c7e718afb",
         ((), ("he is", "he's", "they are", "they're"), True),
@@ -4640,6 +4690,14 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("i mean",), True),
         (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
+    "hltl.grounding._normalise3:_verb_last27": (
+        "dc5dc02d1de26e7e",
+        ((), ("bring", "deliver", "give", "hand", "leave", "pass", "place", "put", "set"), True),
+        (
+            ("_LAST_VERB27", ("value", "'(give|hand|pass|bring|deliver|put|place|set|leave)'")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._normalise3:_waited30r": (
         "0913e7fc9dc59c11",
         ((), ("been waiting", "waited"), True),
@@ -4804,6 +4862,28 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise3:_whose33t": ("49eed6193e7768c7", (("'s ",), (), False), ()),
+    "hltl.grounding._normalise3:_will_do_for31r": (
+        "4536c2a1b989d533",
+        ((), (" for ", "is fine", "will do", "works", "would do"), True),
+        (
+            (
+                "_WILL_DO_BUT31R",
+                (
+                    "pattern",
+                    "^(?P<q>either|any) (?P<x>[a-z]+) (?:will do|would do|is fine|works),?\\s*(?:but|and|only) (?:it's|it is|it'll be|it will be|that's|that is) (?:for|going to) (?P<p>[A-Za-z][\\w ]*?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_WILL_DO_FOR31R",
+                (
+                    "pattern",
+                    "^(?P<q>either|any) (?P<x>[a-z]+) (?:will do|would do|is fine|works) for (?P<p>[A-Za-z][\\w ]*?)(?=\\s*,)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_wont_mind31r": (
         "1101f8a0f826bfd1",
         ((), (" mind",), True),
@@ -7524,6 +7604,28 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_the_one35r": (
+        "3d6ef90d8b983e5b",
+        ((), ("the one ", "there"), True),
+        (
+            (
+                "_THE_ONE35R",
+                (
+                    "pattern",
+                    "^there(?:'s| is) (?:just |only )?the one (?P<k>[a-z]+)(?: here)? and it(?:'s| is) (?:meant |intended )?for (?P<p>[^,.;!?]+?)(?P<rest>\\s*(?:[,.;!?].*)?)$",
+                    34,
+                ),
+            ),
+            (
+                "_THE_SINGLE35R",
+                (
+                    "pattern",
+                    "^there(?:'s| is) (?:just |only )?the (?:one|single|lone) (?P<k>[a-z]+)(?: here)?,\\s*so (?P<v>hand|give|pass|take|bring) (?:that|it)(?: one)? (?:over |across )?to (?P<p>[^,.;!?]+?)(?P<rest>\\s*(?:[,.;!?].*)?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_the_one_item37r": (
         "61f4cfacd01c40e4",
         ((), ("the one ",), True),
@@ -7956,6 +8058,28 @@ GUARDS: dict[str, Entry | str] = {
                     "pattern",
                     "\\b(?P<head>(?:apiece|each) for [a-z][\\w ]*? and [a-z][\\w ]*?),\\s*(?:i|we) (?:don't|do not) (?:care|mind) (?:who (?:ends up with|gets|has) which|which (?:one )?(?:goes to|gets) who)(?P<end>\\s*[.!]?)$",
                     34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_whose_then36": (
+        "fa6793c93006350e",
+        (("dropped", "forgotten", "left", "lost", "mislaid", "misplaced"), ("so ",), True),
+        (
+            (
+                "_ARE_WHOSE36",
+                (
+                    "pattern",
+                    "^(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:are|is|'s|belongs? to) (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s)?,\\s*so (?P<req>.+)$",
+                    34,
+                ),
+            ),
+            (
+                "_LOST_HIS36",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| has) (?:lost|forgotten|mislaid|misplaced|dropped|left) (?P<pos>his|her|their) (?P<x>[a-z][a-z ]*?),\\s*(?:so\\s+)?(?P<req>.+)$",
+                    32,
                 ),
             ),
         ),

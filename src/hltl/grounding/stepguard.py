@@ -17,8 +17,9 @@ from typing import Any
 
 from hltl.grounding import gate
 
-# an atom of a guard: ("in", word, 1 if asked of the lower-cased text else 0), or ("re", pattern,
-# flags): the step does something only where one of its atoms is present in the text
+# an atom of a guard: ("in", word, 1 if asked of the lower-cased text else 0), ("re", pattern,
+# flags), or ("re-low", pattern, flags) for a search of the lower-cased text (session 49): the
+# step does something only where one of its atoms is present in the text
 Atom = tuple[str, str, int]
 # a module name the guard was read with, and what it held: ("value", repr) for a string or an
 # int, ("pattern", pattern, flags) for a compiled pattern, ("function", name, fingerprint),
@@ -97,7 +98,7 @@ _BUILTIN_WRAPS = ("reversed", "list", "tuple")  # the same items, or none where 
 _HELPER_DEPTH = 3
 
 
-def _plain(value: object) -> object:
+def _plain(value: Any) -> Any:
     """A function cached by functools (``_rx``) as the function it wraps (session 49: the
     ``_rx(P).search(text)`` form was never read, ``_rx`` being cached)."""
     if isinstance(value, functools._lru_cache_wrapper):
@@ -258,12 +259,14 @@ class _Reader:
         if func.attr not in kinds:
             raise _Unread("not a search")
         if self._re_module(func.value):  # re.search(P, text[, flags])
-            if len(args) < 2 or not self._is_text(args[1], stripped=True) or set(kw) - {"flags"}:
+            if len(args) < 2 or set(kw) - {"flags"}:
                 raise _Unread("search args")
+            kind = self._searched(args[1])
             flags = args[2] if len(args) > 2 else kw.get("flags")
-            return frozenset({("re", self._str(args[0]), self._flags(flags))})
-        if len(args) != 1 or kw or not self._is_text(args[0], stripped=True):
+            return frozenset({(kind, self._str(args[0]), self._flags(flags))})
+        if len(args) != 1 or kw:
             raise _Unread("search args")
+        kind = self._searched(args[0])
         target = func.value
         if (
             isinstance(target, ast.Call)
@@ -271,12 +274,28 @@ class _Reader:
             and not target.keywords
             and self._helper(target.func, _RX)
         ):  # _rx(P).search(text): case-blind
-            return frozenset({("re", self._str(target.args[0]), int(re.IGNORECASE))})
+            return frozenset({(kind, self._str(target.args[0]), int(re.IGNORECASE))})
         if isinstance(target, ast.Name):  # a module's compiled pattern
             value = self._global(target.id)
             if isinstance(value, re.Pattern):
-                return frozenset({("re", value.pattern, int(value.flags))})
+                return frozenset({(kind, value.pattern, int(value.flags))})
         raise _Unread("search target")
+
+    def _searches(self, node: ast.expr) -> frozenset[Atom]:
+        """A search, or searches joined by 'or' (session 49: 'A.match(text) or B.match(text)'
+        is None where neither finds anything)."""
+        if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.Or):
+            return frozenset().union(*(self._search(v) for v in node.values))
+        return self._search(node)
+
+    def _searched(self, node: ast.expr) -> str:
+        """The atom kind of a search of ``node``: "re" of the text (or it stripped), "re-low" of
+        it lower-cased (session 49: its words are asked of the lower-cased text)."""
+        if self._is_text(node, stripped=True):
+            return "re"
+        if isinstance(node, ast.Name) and node.id in self.lowers:
+            return "re-low"
+        raise _Unread("search args")
 
     def present(self, node: ast.expr) -> frozenset[Atom]:
         """Atoms one of which is present in the text wherever ``node`` is true."""
@@ -672,8 +691,7 @@ class _Reader:
             if isinstance(stmt, ast.Assign | ast.AnnAssign):
                 target = stmt.targets[0] if isinstance(stmt, ast.Assign) else stmt.target
                 if (
-                    isinstance(stmt, ast.Assign)
-                    and len(stmt.targets) != 1
+                    (isinstance(stmt, ast.Assign) and len(stmt.targets) != 1)
                     or not isinstance(target, ast.Name)
                     or stmt.value is None
                 ):
@@ -697,7 +715,7 @@ class _Reader:
                     self._hay(stmt.value)
                 except _Unread:
                     try:
-                        self.matches[target.id] = self._search(stmt.value)
+                        self.matches[target.id] = self._searches(stmt.value)
                     except _Unread:
                         if not self._fresh(stmt.value):
                             raise
@@ -730,8 +748,8 @@ class _Reader:
         return False
 
     def _if(self, stmt: ast.If, atoms: set[Atom]) -> bool:
-        """Read an ``if`` into ``atoms``: True where it returns the text wherever none of them is
-        present; False where the statements after it are read on; _Unread where it cannot be read."""
+        """Read an ``if`` into ``atoms``: True where it returns the text wherever none of them
+        is present; False where the statements after it are read on (_Unread: not read)."""
         if (
             not stmt.orelse
             and len(stmt.body) == 1
@@ -801,11 +819,16 @@ class _Reader:
                 and (func.value.id in self.same or func.value.id in self.lowers)
                 and not node.keywords
                 and (
-                    func.attr in ("lower", "strip", "rstrip", "lstrip", "isascii") and not node.args
-                    or func.attr in ("startswith", "endswith")
-                    and len(node.args) == 1
-                    and isinstance(node.args[0], ast.Constant)
-                    and isinstance(node.args[0].value, str)
+                    (
+                        func.attr in ("lower", "strip", "rstrip", "lstrip", "isascii")
+                        and not node.args
+                    )
+                    or (
+                        func.attr in ("startswith", "endswith")
+                        and len(node.args) == 1
+                        and isinstance(node.args[0], ast.Constant)
+                        and isinstance(node.args[0].value, str)
+                    )
                 )
             ):
                 return True  # a string method of the text that raises nothing
@@ -854,7 +877,10 @@ def read_guard(fn: Callable[..., Any]) -> Entry | None:
         if found is None:
             return None  # a pattern that may match without any word: the step always runs
         words, fold = found
-        (folded if fold else plain).update(words)
+        if kind == "re-low":  # a match in the lower-cased text holds a word lower-cased
+            folded.update(w.lower() for w in words)
+        else:
+            (folded if fold else plain).update(words)
         patterned = True
     if "" in plain or "" in folded:
         return None  # '' is in every text
