@@ -320,3 +320,64 @@ def test_a_name_a_helper_reads_changed_drops_the_guard(monkeypatch: pytest.Monke
     assert entry is not None and stepguard.guard(_block_kept, entry) is not None
     monkeypatch.setitem(_block_kept.__globals__, "_ASIDE49P", gate.compile(r"\bbtw\b", _F))
     assert stepguard.guard(_block_kept, entry) is None
+
+
+# -- the guards indexed by their words' first letters (_normalise1._run_indexed) ----------------
+
+
+def _calls(text: str, scene: Scene, indexed: bool) -> tuple[list[tuple[str, str]], str]:
+    """The steps a whole pass calls, each with the text it is handed, and what the pass gives."""
+    called: list[tuple[str, str]] = []
+
+    def spied(step: _Step) -> _Step:
+        def run(text: str, lexicon: Lexicon) -> str:
+            called.append((stepguard.key(step), text))
+            return step(text, lexicon)
+
+        return run
+
+    lexicon = Lexicon.of(scene)
+    lexicon.forget()
+    lexicon.rewrites.clear()
+    with pytest.MonkeyPatch.context() as mp:
+        for name in ("_STEPS19", "_STEPS"):
+            steps = getattr(normalise, name)
+            mp.setattr(normalise, name, tuple(spied(s) for s in steps))
+            rules = stepguard.guards(steps, GUARDS)
+            mp.setitem(
+                _normalise1._GUARDED,
+                id(getattr(normalise, name)),
+                (getattr(normalise, name), rules),
+            )
+        if not indexed:
+            mp.setattr(_normalise1, "_INDEXED_FROM", 10**9)
+        try:
+            out = normalise.canonical19(text, lexicon)
+        except GroundingError as refused:
+            out = f"refused: {refused}"
+    return called, out
+
+
+@settings(max_examples=60, deadline=None)
+@given(_texts())
+def test_a_pass_through_the_index_calls_what_the_loop_over_every_guard_calls(
+    said: tuple[str, Scene],
+) -> None:
+    text, scene = said
+    assert _calls(text, scene, indexed=True) == _calls(text, scene, indexed=False)
+
+
+def test_the_index_leaves_out_only_steps_whose_words_are_absent() -> None:
+    steps = normalise._STEPS19
+    rules = _normalise1._guards_of(steps)
+    index = _normalise1._index_of(rules)
+    assert index is not None and _normalise1._index_of(rules[:5]) is None
+    for text, _ in _sentences()[::7]:
+        low = " ".join(text.split()).lower()
+        if not low.isascii():
+            continue
+        picked = set(_normalise1._may_act(index, low, 0))
+        for k, rule in enumerate(rules):
+            if k not in picked:
+                assert rule is not None
+                assert not stepguard.may_act(rule, " ".join(text.split()), low, True)
