@@ -92,8 +92,9 @@ def _run(
                     continue
         new = steps[k](out, lexicon)
         if new is not out:
+            if new != out:  # (a new string equal to it: what is asked of it is the same)
+                low, plain = new.lower(), new.isascii()
             out = new
-            low, plain = out.lower(), out.isascii()
     return out
 
 
@@ -179,11 +180,13 @@ def _run_indexed(
                     continue
         new = steps[k](out, lexicon)
         if new is not out:
+            changed = new != out  # (a new string equal to it picks the same steps)
             out = new
-            if not out.isascii():
-                return _run(steps, rules, out, lexicon, k + 1)
-            low = out.lower()
-            todo, n = _may_act(index, low, k + 1), 0
+            if changed:
+                if not out.isascii():
+                    return _run(steps, rules, out, lexicon, k + 1)
+                low = out.lower()
+                todo, n = _may_act(index, low, k + 1), 0
     return out
 
 
