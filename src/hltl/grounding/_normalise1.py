@@ -54,29 +54,139 @@ def _rewritten(
     if isinstance(known, str):
         return known
     rules = _guards_of(steps)
-    low, plain = out.lower(), out.isascii()
+    index = _index_of(rules)
     try:
-        for step, rule in zip(steps, rules, strict=True):
-            if rule is not None and (plain or not rule[2]):
-                # the step's guard (stepguard.py): it does nothing to a text holding none of
-                # its words, so it is not called (a loop: any() over a generator costs more)
-                for word in rule[1]:
-                    if word in low:
-                        break
-                else:
-                    for word in rule[0]:
-                        if word in out:
-                            break
-                    else:
-                        continue
-            new = step(out, lexicon)
-            if new is not out:
-                out = new
-                low, plain = out.lower(), out.isascii()
+        if index is None or not out.isascii():
+            out = _run(steps, rules, out, lexicon, 0)
+        else:
+            out = _run_indexed(steps, rules, index, out, lexicon)
     except GroundingError as refused:
         lexicon.rewrites[key] = refused
         raise
     lexicon.rewrites[key] = out
+    return out
+
+
+def _run(
+    steps: tuple[Callable[[str, Lexicon], str], ...],
+    rules: tuple[Guard | None, ...],
+    out: str,
+    lexicon: Lexicon,
+    start: int,
+) -> str:
+    """``out`` through ``steps`` from ``start`` on, each step's guard asked before it is called."""
+    low, plain = out.lower(), out.isascii()
+    for k in range(start, len(steps)):
+        rule = rules[k]
+        if rule is not None and (plain or not rule[2]):
+            # the step's guard (stepguard.py): it does nothing to a text holding none of
+            # its words, so it is not called (a loop: any() over a generator costs more)
+            for word in rule[1]:
+                if word in low:
+                    break
+            else:
+                for word in rule[0]:
+                    if word in out:
+                        break
+                else:
+                    continue
+        new = steps[k](out, lexicon)
+        if new is not out:
+            if new != out:  # (a new string equal to it: what is asked of it is the same)
+                low, plain = new.lower(), new.isascii()
+            out = new
+    return out
+
+
+# Session 49 (12p): the guards indexed by their words' first three letters (lower-cased; a
+# shorter word whole). A guarded step can act on an ASCII text only where one of its words is
+# in it, so only where that word's first letters are among the text's (lower-cased) pieces of
+# one to three letters; the text's pieces pick out the steps that may act, and each of those is
+# asked its guard as before (the others are not asked at all). Only for a long tuple of steps
+# (_STEPS19's ~1,240: the loop over every guard was most of a pass's own time) and an ASCII
+# text (lower() of other letters may depend on the letters beside them).
+_INDEXED_FROM = 300
+# the steps that may act, by piece, and those without a guard (always asked)
+_Index = tuple[dict[str, tuple[int, ...]], tuple[int, ...]]
+_INDEXES: dict[
+    int, tuple[tuple[Guard | None, ...], dict[str, tuple[int, ...]], tuple[int, ...]]
+] = {}
+
+
+def _index_of(rules: tuple[Guard | None, ...]) -> _Index | None:
+    """The steps' guards by their words' first letters, and the steps without a guard (None for
+    a short tuple)."""
+    if len(rules) < _INDEXED_FROM:
+        return None
+    kept = _INDEXES.get(id(rules))
+    if kept is None or kept[0] is not rules:
+        index: dict[str, set[int]] = {}
+        always: list[int] = []
+        for k, rule in enumerate(rules):
+            if rule is None:
+                always.append(k)
+                continue
+            for word in (*rule[0], *rule[1]):
+                index.setdefault(word.lower()[:3], set()).add(k)
+        if len(_INDEXES) > 64:
+            _INDEXES.clear()
+        kept = _INDEXES[id(rules)] = (
+            rules,
+            {piece: tuple(sorted(ks)) for piece, ks in index.items()},
+            tuple(always),
+        )
+    return kept[1], kept[2]
+
+
+def _may_act(index: _Index, low: str, start: int) -> list[int]:
+    """The steps from ``start`` on that may act on a text whose lower case is ``low``: those
+    without a guard, and those with a word whose first letters are a piece of ``low``, in order."""
+    by_piece, always = index
+    found = set(always)
+    n = len(low)
+    for size in (1, 2, 3):
+        for piece in {low[i : i + size] for i in range(n - size + 1)}:
+            ks = by_piece.get(piece)
+            if ks is not None:
+                found.update(ks)
+    return sorted(k for k in found if k >= start)
+
+
+def _run_indexed(
+    steps: tuple[Callable[[str, Lexicon], str], ...],
+    rules: tuple[Guard | None, ...],
+    index: _Index,
+    out: str,
+    lexicon: Lexicon,
+) -> str:
+    """``out`` (ASCII) through the steps that may act on it (_may_act), each step's guard asked
+    before it is called; the steps after one that changes the text picked again."""
+    low = out.lower()
+    todo = _may_act(index, low, 0)
+    n = 0
+    while n < len(todo):
+        k = todo[n]
+        n += 1
+        rule = rules[k]
+        if rule is not None:
+            for word in rule[1]:
+                if word in low:
+                    break
+            else:
+                for word in rule[0]:
+                    if word in out:
+                        break
+                else:
+                    continue
+        new = steps[k](out, lexicon)
+        if new is not out:
+            changed = new != out  # (a new string equal to it picks the same steps)
+            out = new
+            if changed:
+                if not out.isascii():
+                    return _run(steps, rules, out, lexicon, k + 1)
+                low = out.lower()
+                todo, n = _may_act(index, low, k + 1), 0
     return out
 
 

@@ -10,6 +10,20 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("after ",), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
+    "hltl.grounding._normalise1:_after_those": (
+        "71e6db83a7cf4867",
+        ((), ("after th",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise1:_all_counted": (
+        "5cc20fda53ea1f4a",
+        ((), (" taking ", "all "), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._normalise1:_answered": (
         "cdf84d04e312708b",
         ((), ("which ",), True),
@@ -35,9 +49,68 @@ GUARDS: dict[str, Entry | str] = {
             ("re", ("module", "hltl.grounding.gate")),
         ),
     ),
+    "hltl.grounding._normalise1:_both_got_theirs": (
+        "097754a92730c4b7",
+        ((), (" theirs",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise1:_both_of31s": (
+        "95e6c13f5c44b5ba",
+        ((), (" of th", "all three", "both"), True),
+        (
+            (
+                "_BOTH_OF31S",
+                (
+                    "pattern",
+                    "(?:^|(?<=[.!?] ))(?:(?P<both>both|the two|all three|the three) of (?:them|those|these)(?P<list>,\\s*[^,.;!?]+?,)?|(?P<alone>both|all three),\\s*(?P<listed>[^,.;!?]+?),)(?= (?:to|for|on|onto|in|into|go|goes|over|up|across)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise1:_both_them17": (
+        "a43a0bee24a06018",
+        ((), (" and the ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_can_wait": (
+        "f4261757cbca8011",
+        ((), (" can wait",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise1:_chance": (
         "263234e68df7b76d",
         ((), ("any ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_choice": (
+        "d8e7264cb9c5845b",
+        (
+            (),
+            (
+                " and one ",
+                "a couple of ",
+                "any ",
+                "both ",
+                "choose",
+                "fancies",
+                "fancy",
+                "item",
+                "like",
+                "object",
+                "pick",
+                "prefer",
+                "the only ",
+                "thing",
+                "want",
+            ),
+            True,
+        ),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_choices17": (
+        "522e4e2c31f4f0f1",
+        ((), ("either ", "one of the ", "whichever ", "whoever"), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise1:_confirmed": (
@@ -49,15 +122,136 @@ GUARDS: dict[str, Entry | str] = {
             ("re", ("module", "hltl.grounding.gate")),
         ),
     ),
+    "hltl.grounding._normalise1:_correction_frames": (
+        "2e57a693c026edbd",
+        (
+            (),
+            (" wanted?", "correction", "my mistake", "no,", "not ", "silly me", "the ", "wait"),
+            True,
+        ),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise1:_corrections17": (
+        "2ff2c2c1cae6856c",
+        ((), (" not ", " to ", "actually", "i meant", "swap the "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_corrections18": (
+        "d546bab66801d9ae",
+        (
+            (),
+            (
+                "correction",
+                "gets",
+                "i mean the ",
+                "leave ",
+                "make that",
+                "needs",
+                "sorry,",
+                "wait,",
+                "wants",
+            ),
+            True,
+        ),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_counted_list": (
+        "a2205ab2db9353fa",
+        ((), ("each of ", "for", "in", "on", "to"), True),
+        (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._normalise1:_counts17": (
+        "2977bae890caebfb",
+        (
+            (),
+            (" there is", "a couple of things", "every one of the ", "the one", "the pair of "),
+            True,
+        ),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_counts18": (
+        "81f2dc6c9c77eac9",
+        (
+            (),
+            (
+                " and ",
+                " of the ",
+                " trio of ",
+                "'s for the ",
+                "for each ",
+                "pair of ",
+                "per ",
+                "the two of them,",
+                "there's ",
+            ),
+            True,
+        ),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_courtesy17": (
+        "2d31544ad88924f7",
+        (
+            (),
+            (
+                " and ",
+                "cheers",
+                "could i ",
+                "now then",
+                "oh dear",
+                "sorry to ",
+                "ta",
+                "thank you",
+                "thanks",
+                "there's a",
+                "won't you",
+            ),
+            True,
+        ),
+        (
+            (
+                "_ENDEARING",
+                (
+                    "value",
+                    "'(?:love|dear|darling|pet|sweetheart|star|good (?:robot|lad|girl|boy|helper))'",
+                ),
+            ),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise1:_courtesy_ifs": (
         "53e3ae9e16d5d7b1",
         ((), ("hand-over", "handover", "if ", "needful", "notes", "while "), False),
         (("_said_any", ("function", "hltl.grounding._normalise1:_said_any", "0b8ee6b8c4d04658")),),
     ),
+    "hltl.grounding._normalise1:_described": (
+        "984981f00c4673b9",
+        ((), ("that one", "the "), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
+    "hltl.grounding._normalise1:_dictated": (
+        "eaf6756aa73992c9",
+        ((), ("done",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise1:_either_fine": (
         "1d964c8933bf8256",
         ((), ("either ", "either's "), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_either_of": (
+        "d5cfd01aa9bad2b8",
+        ((), ("each of the ", "either of ", "whoever"), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
     ),
     "hltl.grounding._normalise1:_either_one": (
         "5f3c16e306e8a5ba",
@@ -69,6 +263,31 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("apart from", "aside from", "besides", "except", "other than"), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
+    "hltl.grounding._normalise1:_exclusion_frames": (
+        "9507f701bf9e57a3",
+        (
+            (),
+            (
+                " for ",
+                " is the one ",
+                " the rest",
+                "everything",
+                "just ",
+                "nothing else",
+                "the lot",
+            ),
+            True,
+        ),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise1:_exclusions17": (
+        "22eaf198ca6f6931",
+        ((), (" having", " only ", "besides", "but not ", "leave ", "whichever "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise1:_fronted": (
         "cc07857c948bc8bb",
         ((), ("apart from", "except", "not", "other than"), True),
@@ -79,9 +298,30 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("nothing",), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise1:_handy": (
+        "bbdca50a14360cc0",
+        ((), ("atever", "ichever"), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            (
+                "_HANDY",
+                (
+                    "value",
+                    "'nearer|closer|nearest|closest|handiest|handier|easiest|easier|quickest|quicker|easiest to reach|easier to reach|nearest to hand|closest to hand|within reach|to hand'",
+                ),
+            ),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._normalise1:_i_mean_it": (
         "962263c8af5c9054",
         ((), ("i mean",), True),
+        (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._normalise1:_just_one": (
+        "33bdd96d8943f1e4",
+        ((), ("one ",), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
     "hltl.grounding._normalise1:_labels": (
@@ -123,6 +363,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("likewise", "same again", "same thing", "the same"), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise1:_listed": (
+        "1623db2210e1ca93",
+        ((), (" of th", "all", "both", "these", "those"), True),
+        (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
     "hltl.grounding._normalise1:_my_mistake": (
         "fd7c5cd9ba339965",
         (
@@ -142,6 +387,38 @@ GUARDS: dict[str, Entry | str] = {
         ),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
+    "hltl.grounding._normalise1:_negated": (
+        "371e87bcd0592155",
+        ((), ("do not", "don't", "dont", "never", "not "), True),
+        (
+            (
+                "_DONT",
+                (
+                    "value",
+                    '"(?:please |just |and |but |so |also )*(?:don\'t|do not|dont|never)\\\\s+"',
+                ),
+            ),
+            (
+                "_DO_VERBS",
+                (
+                    "value",
+                    "'(?:give|hand|pass|bring|take|send|put|place|move|leave|set|drop|deliver)\\\\b'",
+                ),
+            ),
+            ("_F", ("value", "re.IGNORECASE")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
+    "hltl.grounding._normalise1:_negation18": (
+        "83f8ffce29a6a55d",
+        ((), (" for ", " that ", "bar the", "don't give ", "just the "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_not_first": (
+        "bae04469d9c2a480",
+        ((), ("leave the ", "not "), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise1:_one_each": (
         "b42daabfc20c6777",
         ((), ("one each",), True),
@@ -155,6 +432,25 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._normalise1:_purpose": (
         "00bdb76d1296a08f",
         ((), ("for ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_questions17": (
+        "47c31f95f21e6e1c",
+        (
+            (),
+            (
+                " along to",
+                " can ",
+                " over to ",
+                "any chance of ",
+                "charging",
+                "cleaning",
+                "drying",
+                "washing",
+                "you can ",
+            ),
+            True,
+        ),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise1:_rather": (
@@ -210,6 +506,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("leave the", "not the"), False),
         (("_said_any", ("function", "hltl.grounding._normalise1:_said_any", "0b8ee6b8c4d04658")),),
     ),
+    "hltl.grounding._normalise1:_remark_owner": (
+        "84f74e2ec57ef247",
+        ((), (" is", " was", "'s"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise1:_reordered": (
         "494210e07bafc543",
         ((), (" first",), True),
@@ -243,15 +544,72 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" so ", "listen up"), False),
         (("_said_any", ("function", "hltl.grounding._normalise1:_said_any", "0b8ee6b8c4d04658")),),
     ),
+    "hltl.grounding._normalise1:_run_on_remarks": (
+        "c10566d7e79e5ea9",
+        ((), (" the ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_said_otherwise31s": (
+        "fb24a3ef5c96a75a",
+        (
+            (),
+            (
+                " and ",
+                " this morning",
+                "after",
+                "darling",
+                "dear",
+                "do likewise",
+                "hun",
+                "love",
+                "mate",
+                "pet",
+            ),
+            True,
+        ),
+        (
+            (
+                "_BOTH_AFTER31S",
+                (
+                    "pattern",
+                    "\\b(?P<list>(?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?) both(?=\\s*(?:[,.;!?]|$))",
+                    34,
+                ),
+            ),
+            ("_F", ("value", "re.IGNORECASE")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._normalise1:_said_why": (
         "d76b34f7f764fafa",
         ((), ("actually,", "no,", "sorry,"), False),
         (("_said_any", ("function", "hltl.grounding._normalise1:_said_any", "0b8ee6b8c4d04658")),),
     ),
+    "hltl.grounding._normalise1:_same_but17": (
+        "2c4f9347fc0cef97",
+        ((), (" do the same for ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_same_person": (
+        "df244e91f42d285b",
+        ((), (" the same ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise1:_see_it17": (
+        "2ace60985f5b9a7a",
+        ((), ("the ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise1:_sign_offs": (
         "ae36e8d421ae73dc",
         ((), ("before i", "before we", "from me", "from us", "that's me", "that's us"), False),
         (("_said_any", ("function", "hltl.grounding._normalise1:_said_any", "0b8ee6b8c4d04658")),),
+    ),
+    "hltl.grounding._normalise1:_sold18": (
+        "4eaa702b9eb1e405",
+        ((), ("sold to ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise1:_speaker": (
         "5504b0a629bc50f5",
@@ -324,6 +682,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("they",), False),
         (("_said_any", ("function", "hltl.grounding._normalise1:_said_any", "0b8ee6b8c4d04658")),),
     ),
+    "hltl.grounding._normalise1:_them_over": (
+        "86e285a5539143e7",
+        ((), (" over",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise1:_there": (
         "65d75e346e486ead",
         ((), (" there",), True),
@@ -343,6 +706,30 @@ GUARDS: dict[str, Entry | str] = {
         "78b4a36efed96ece",
         ((",",), (), True),
         (("re", ("module", "hltl.grounding.gate")),),
+    ),
+    "hltl.grounding._normalise1:_want_frames": (
+        "a81556b71dce33ab",
+        (
+            (),
+            (
+                "'d like",
+                "about to",
+                "fine with",
+                "going to",
+                "gonna",
+                "happy with",
+                "need",
+                "want",
+                "would like",
+            ),
+            True,
+        ),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise1:_wanted_for": (
+        "53820db2fb19cfb4",
+        ((), ("after", "need", "said", "says", "want", "would like"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise1:_wanted_placed": (
         "f6d9722cb685de93",
@@ -370,6 +757,138 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
             ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
+    "hltl.grounding._normalise1:_wants": (
+        "f7da6905f84059ef",
+        (
+            (),
+            (
+                " ask is for",
+                " asking",
+                "'d like",
+                "asked for",
+                "could use",
+                "crying out",
+                "desperate",
+                "dying",
+                "for ",
+                "gagging",
+                "gasping",
+                "ike",
+                "is after",
+                "itching",
+                "keen",
+                "longing",
+                "needs",
+                "ove",
+                "wants",
+                "would like",
+            ),
+            True,
+        ),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_wants17": (
+        "f6c73ee50a9dd1a9",
+        ((), (" could do with", " for h", "borrowing", "due", "hoping to get", "to have"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_when": (
+        "0573aa6153e2f1a8",
+        ((), ("efore", "y the time"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise1:_where_it_is31s": (
+        "9de094626e2d45e4",
+        ((), ("th",), True),
+        (
+            (
+                "_WHERE_IT_IS31S",
+                (
+                    "pattern",
+                    "(?:^|(?<=[.!?] ))(?P<see>(?:(?:so |and )?(?:do |can )?you see |see ))?(?P<det>the|that|this) (?P<obj>[a-z]+(?: [a-z]+)?)(?P<loc> (?:by|next to|near|beside|behind|in front of|right by|just by|over by) (?:you|(?:the|your|my|that|this) [a-z]+(?: [a-z]+)?))?(?P<end>\\s*[?,])",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise1:_why_said_first": (
+        "a8292c39f2375a55",
+        (
+            (),
+            (
+                " are both ",
+                " back",
+                " busy",
+                " hands full",
+                " it ",
+                " lost ",
+                " them to ",
+                "break",
+                "going home",
+                "leaving",
+                "lunch",
+                "off",
+                "round",
+                "shift",
+            ),
+            True,
+        ),
+        (
+            (
+                "_STATE",
+                (
+                    "value",
+                    "\"(?:(?:'s|is|has|'s got|has got) (?:finishing|starting|ending|off on|going on|on) (?:her|his|their) (?:shift|break|lunch|rounds|round)|(?:'s|is) (?:off home|leaving|going home|off)|(?:'s|has) got (?:his|her|their) hands full|has (?:his|her|their) hands full|(?:'s|is) busy|(?:'s|is) back)\"",
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise1:_will_do31s": (
+        "7e4e6e853f83f094",
+        (
+            (),
+            (
+                " is fine",
+                " is ok",
+                " will do",
+                " works",
+                " would do",
+                "'ll do",
+                "'s fine",
+                "any",
+                "either",
+            ),
+            True,
+        ),
+        (
+            (
+                "_FINE_AFTER31S",
+                (
+                    "pattern",
+                    "(?:^|(?<=[.!?] ))(?P<choice>(?:either|any)(?: one)?(?: of (?:the|those|these)(?: two| three| four)?)? [a-z]+(?: [a-z]+)?) (?P<to>for|to) (?P<who>[^,.;!?]+?)(?: will do| would do|'ll do| is fine|'s fine| is okay| is ok| works)(?=\\s*(?:[,.;!?]|$))",
+                    34,
+                ),
+            ),
+            (
+                "_KIND_FINE31S",
+                (
+                    "pattern",
+                    ",\\s*(?:either|any) (?:colour|color|size|one|kind|sort)(?:'s| is) (?:fine|ok|okay)(?=\\s*(?:[,.!]|$))",
+                    34,
+                ),
+            ),
+            (
+                "_WILL_DO31S",
+                (
+                    "pattern",
+                    "(?:^|(?<=[.!?] ))(?P<choice>(?:either|any)(?: one)?(?: of (?:the|those|these)(?: two| three| four)?)? [a-z]+(?: [a-z]+)?)(?: will do| would do|'ll do| is fine|'s fine| is okay| is ok| works) (?P<to>for|to) (?P<who>[^,.;!?]+?)(?=\\s*(?:[,.;!?]|$))",
+                    34,
+                ),
+            ),
         ),
     ),
     "hltl.grounding._normalise1:_wrappers": (
@@ -548,6 +1067,65 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._normalise2:_as_used_to34": ("ea2826d793973b3d", ((" say",), (), False), ()),
     "hltl.grounding._normalise2:_as_we_say31": ("1aa6e947dee5b5cf", ((), (" say ",), False), ()),
+    "hltl.grounding._normalise2:_asked36": (
+        "a16347420987853f",
+        (
+            (" out ",),
+            ("any chance of ", "do you reckon", "i wonder if", "i wonder whether", "you think"),
+            True,
+        ),
+        (
+            (
+                "_ANY_CHANCE36",
+                (
+                    "pattern",
+                    "^(?:is there )?any chance of (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:for|going to|going over to|over to|to) (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?=\\s*[,?])",
+                    34,
+                ),
+            ),
+            (
+                "_THINK_MANAGE36",
+                (
+                    "pattern",
+                    "^(?:do you think|d'you think|do you reckon|you think|I wonder if|I wonder whether) you (?P<ask>could|can) manage (?=[a-z])",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise2:_asked_after32": (
+        "6773e810add086b7",
+        ((), (" where ", "back from"), False),
+        (),
+    ),
+    "hltl.grounding._normalise2:_asked_as32": (
+        "778d2d5ebd1c60be",
+        ((), (" if ", " suppose you", " we say", "find "), True),
+        (
+            (
+                "_BE_GOOD32",
+                (
+                    "pattern",
+                    "^(?:(?:it|that)(?:'d| would) |would )?be (?:good|great|nice|lovely|handy|grand|brilliant|ace) if (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:could|can|would) (?P<v>get|have|take) (?P<rest>[^,?!.]+?)\\s*(?P<end>[?.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            ("_FIND_WAY32", ("pattern", "\\bfind (?P<pos>its|their) way\\b", 34)),
+            (
+                "_SHALL_WE_SAY32",
+                ("pattern", "^(?:shall|should) we say,? (?:that )?(?P<rest>[^?]+)\\?\\s*$", 34),
+            ),
+            (
+                "_SUPPOSE32",
+                (
+                    "pattern",
+                    "(?:^|(?<=[.!?]\\s))(?:I )?(?:don't|do not) suppose (?:you could|you'd|you would)\\b",
+                    34,
+                ),
+            ),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._normalise2:_at_table30": (
         "7fe2c8f4951aba8f",
         ((), (" at ", " in ", " on "), False),
@@ -598,6 +1176,11 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise2:_both_after28": ("d297f46b78eab33e", ((), (" both ",), False), ()),
+    "hltl.grounding._normalise2:_brought26": (
+        "930be14a0f6a0593",
+        ((), ("brought", "fetched", "passed", "sent"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise2:_by_any_chance30": (
         "b6b0f6bc24f2b91f",
         ((), ("chance",), False),
@@ -615,6 +1198,11 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._normalise2:_can_take30": ("c8cfa2b4a3e236da", ((), (" can ",), False), ()),
     "hltl.grounding._normalise2:_care35": ("1da351db281e5209", ((",",), (), False), ()),
+    "hltl.grounding._normalise2:_choices26": (
+        "7ee6fb40589e428d",
+        ((), ("any ", "both ", "both of them", "the pair of them", "the two of them"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise2:_clear_up32": (
         "d550ef185778273a",
         ((), (" you",), True),
@@ -638,6 +1226,54 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._normalise2:_cleft_who33": ("5c76eb3836111bbb", ((" who ",), (), False), ()),
     "hltl.grounding._normalise2:_clefts35": ("480ed8c541fa724b", ((), ("it",), False), ()),
     "hltl.grounding._normalise2:_closing_cause33": ("3983b1d549552495", ((",",), (), False), ()),
+    "hltl.grounding._normalise2:_corrected_first26": (
+        "262b2ba2c5f9e91d",
+        ((), ("the ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise2:_counted26": (
+        "ae6ff63f9aba842b",
+        ((), ("them all", "them both"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise2:_courtesies36": (
+        "301c8b553877f38a",
+        ((), (" favo", " from ", " if you", " of you"), True),
+        (
+            (
+                "_FAVOUR36",
+                (
+                    "pattern",
+                    "^(?:a |one )?(?:quick|small|little|tiny|wee) favou?r(?: to ask)?(?: (?:before|ahead of) my (?:(?P<act>[a-z]+(?: [a-z]+)?) )?(?:lesson|class|practice|rehearsal|session|shift|appointment|match|game|run|swim|walk|meeting))?\\s*:\\s*",
+                    34,
+                ),
+            ),
+            (
+                "_GOOD_OF_YOU36",
+                (
+                    "pattern",
+                    "^(?:(?:that's|that is|it's|it is|how|so|very|really|ever so|too) )*(?:kind|good|nice|sweet|decent|lovely|thoughtful|generous) of you(?:,\\s*(?:really|truly|honestly))?\\s*[,.!]\\s*",
+                    34,
+                ),
+            ),
+            (
+                "_OBLIGED36",
+                (
+                    "pattern",
+                    "^(?:much obliged|most obliged|(?:I'd|I would|I'll|I will|we'd|we would) be (?:much |most |very |ever so )?obliged) if you(?:'d| would| could)(?: kindly)? (?=[a-z])",
+                    34,
+                ),
+            ),
+            (
+                "_THANKS_GROUP36",
+                (
+                    "pattern",
+                    ",\\s*(?:and\\s+)?(?:thanks|thank you|cheers|many thanks)(?: a million| a bunch| a lot| very much| so much| loads)? from (?:the whole|all the|all of the|everyone in the|everyone at the|the) (?P<what>[a-z]+ )?(?:class|club|team|group|crew|choir|band|troupe|squad|gang|lot|staff|family)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_courtesy24": (
         "71d45d0f7a50da2f",
         (
@@ -695,7 +1331,69 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_courtesy_please33": (
+        "cf7cd4de7c73cfb5",
+        (
+            (),
+            (
+                "a",
+                "big up",
+                "bless up",
+                "bun",
+                "cies",
+                "cze",
+                "dzi",
+                "e se",
+                "hei",
+                "hej",
+                "innit",
+                "istuti",
+                "khrub",
+                "kiitti",
+                "krub",
+                "kuji",
+                "kuju",
+                "leh",
+                "meh",
+                "merci",
+                "mersi",
+                "mesi",
+                "milesker",
+                "o",
+                "permisi",
+                "privet",
+                "pryvit",
+                "r ederim",
+                "respect",
+                "sthuthi",
+                "stuthi",
+                "sveiki",
+                "sz",
+                "tenkyu",
+                "tere",
+                "tesekkurler",
+                "umesc",
+                "xie xie",
+            ),
+            True,
+        ),
+        (
+            (
+                "_COURTESY24",
+                (
+                    "value",
+                    "'habari(?: yako| gani)?|jambo|hujambo|sawasdee|sawatdee|sawasdi|dobryi den|dobryy den|dobry den|dobriy den|pryvit|vitayu|selamat (?:pagi|petang|siang|malam|datang)|apa khabar|merhaba|yassou|yassas|geia sou|xin chao|kumusta|kamusta|magandang (?:umaga|hapon|gabi)|namaste|namaskar|salaam|salam|as-?salaamu? alaikum|shalom|hola|bonjour|ciao|konnichiwa|ni hao|kia ora|sawubona|ahoj|asante(?: sana)?|khop khun(?: mak)?|khob khun(?: mak)?|kop khun|diakuiu|dyakuyu|diakuyu|spasibo|terima kasih|salamat|tesekkurler|efharisto|efcharisto|cam on|dhanyavaad|dhanyavad|shukriya|shukran|gracias|merci(?: beaucoup)?|grazie(?: mille)?|danke(?: schon)?|arigato(?: gozaimasu)?|xie xie|obrigado|obrigada|dziekuje|diolch|toda|kiitos|mamnoon|mamnun|khahesh mikonam|terima kasih banyak|makasih|köszönöm|koszonom|köszi|koszi|jó napot(?: kívánok)?|jo napot(?: kivanok)?|szia|permisi|sudah|terserah|mas|mbak|bless up|big up|respect|one love|dobrý den|dobry den|děkuji|dekuji|děkuju|dekuju|bună ziua|buna ziua|bună|mulțumesc|mulţumesc|multumesc|mersi(?: mult)?|vanakkam|vanakam|nandri|nanri|chale|medaase|akwaaba|gamarjoba(?:t)?|(?:didi )?madloba|genatsvale|nakhvamdis|labas(?: rytas| vakaras)?|laba diena|ačiū(?: labai)?|aciu(?: labai)?|tena yistilign|tena yistiligne|tena yistilgn|selam(?: new)?|(?:betam )?(?:ameseginalehu|amesegnalehu|ameseginalew)|ayubowan|(?:bohoma )?(?:sthuthi|sthuthiy|stuthi|isthuthi|istuti)|labdien|paldies|sveiki|tere|aitäh|aitah|tänan|tanan|barev(?: dzez)?|shnorhakalutyun|sağ ?ol|sag ?ol|çox sağ ?ol|chox sag ?ol|hvala(?: lijepa| puno| vam)?|zdravo|dobar dan|dzień dobry|dzien dobry|cześć|czesc|dziękuję|privet|zdravstvuyte|blagodaryu|blagodarya|tack(?: så mycket| sa mycket)?|takk|tusen takk|mange tak|hej|hei|dank je(?: wel)?|dank u(?: wel)?|bedankt|goedemorgen|goedemiddag|annyeonghaseyo|annyeong|kamsahamnida|gamsahamnida|gomawo|mingalaba|mingalarba|dhanyabad|dhonnobad|nomoskar|sat sri akal|sannu|na gode|daalu|ndewo|ngiyabonga|siyabonga|enkosi|mahalo(?: nui)?|aloha|toda raba|marhaba|ahlan(?: wa sahlan)?|teşekkür ederim|tesekkur ederim|olá|bom dia|buenos (?:días|dias)|buenas tardes|muchas gracias|e kaaro|e kaasan|e kaale|e ku aaro|e ku irole|e se(?: gan| o)?|o se(?: gan| o)?|ole hyvä|ole hyva|moi|kiitti|faleminderit|grazas|moitas grazas|meur ras|zikomo(?: kwambiri)?|mesi(?: anpil)?|malo aupito|mālō aupito|sulpayki|añay|anay|tenkyu(?: tru)?|kadrinchey(?: la)?|kadrin chhe(?: la)?|natotela(?: sana)?|ua tsaug(?: ntau)?|ke a leboga|kea leboga|kealeboga|eskerrik asko|mila esker|milesker|gràcies|gracies|moltes gràcies|moltes gracies|ďakujem(?: pekne)?|dakujem(?: pekne)?|vďaka|vdaka|bless you|amen(?: to that)?|inshallah|mashallah|pole pole|innit|khrap|khrub|krap|krub|hor|kha|lah|leh|lor|meh|opo|paa|sha|ah|ja|la|po|o'",
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+        ),
+    ),
     "hltl.grounding._normalise2:_do_that34": ("20bdb2d4971a3232", (("so do ",), (), False), ()),
+    "hltl.grounding._normalise2:_doing25": (
+        "685d32d139faf3d4",
+        ((), (" to",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise2:_done_with34": (
         "402edb2774a65aa5",
         ((" done", " finished"), (), False),
@@ -765,7 +1463,68 @@ GUARDS: dict[str, Entry | str] = {
         (("'em", "them"), (), False),
         (),
     ),
+    "hltl.grounding._normalise2:_hand_over32": (
+        "2001cda4fd9e1cd1",
+        ((), (" you ",), True),
+        (
+            (
+                "_HAND_OVER32",
+                (
+                    "pattern",
+                    ",\\s*(?:can|could|would|will) you (?P<v>hand|pass|give|bring) (?P<o>it|them) over\\s*\\?\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise2:_handed28": (
+        "213365c0003f1597",
+        ((), (" hand", " palm", " something", " them ", "make it", "out of the way"), True),
+        (
+            (
+                "_GIVE_THEM28",
+                ("pattern", "\\b(give|hand|pass|bring|fetch|get) them (?=(?:the|a|an|both) )", 34),
+            ),
+            (
+                "_SOMETHING28",
+                (
+                    "pattern",
+                    "^(both|all|each) of the ([a-z]+(?: [a-z]+)?) (wants?|needs?) something\\s*:",
+                    34,
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+        ),
+    ),
+    "hltl.grounding._normalise2:_handover_frames34": (
+        "f4aabb1067b58373",
+        ((" hands", " the one "), (" to",), True),
+        (
+            (
+                "_TROT34",
+                (
+                    "pattern",
+                    "\\b(?:trot|scoot|nip|zip|run|whizz) (?P<x>it|them|(?:the|that|this|those|these) [a-z][a-z ]*?) (?:over|down|up|across|along|round) to\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise2:_has_coming34": (
+        "8cd6d684ae43c31b",
+        ((" coming", " owed "), (), False),
+        (),
+    ),
     "hltl.grounding._normalise2:_has_going30": ("465d668a0ccebb0e", ((), (" got ",), False), ()),
+    "hltl.grounding._normalise2:_headed26": (
+        "e224246e4ee68428",
+        ((), ("clear ", "need", "want"), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._normalise2:_headed_for35": (
         "a9385e0cde9d87ff",
         (("bound", "destined", "earmarked", "head"), (), True),
@@ -775,6 +1534,11 @@ GUARDS: dict[str, Entry | str] = {
         "de0eb4677b4cf69f",
         ((), ("deliveries", "job", "request", "task", "thing"), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._normalise2:_her_surface31": (
+        "2f8decb7b0ec8e3d",
+        ((), ("her", "his", "their"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise2:_his_way32": ("058223ff72e28436", ((" way",), (), False), ()),
     "hltl.grounding._normalise2:_how_about30": ("37056ac5fe11891a", ((), ("about",), False), ()),
@@ -831,6 +1595,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_if_so_good28": (
+        "8cc40907120d439e",
+        ((), (". if ", "if "), False),
+        (),
+    ),
     "hltl.grounding._normalise2:_if_sort35": ("21ca71af24666e02", ((" if ",), (), False), ()),
     "hltl.grounding._normalise2:_if_spare34": (
         "674061d8faf564f1",
@@ -846,6 +1615,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_interjected31": (
+        "fcccf27e689edf16",
+        ((), ("ah", "aw", "er", "hmm", "oh", "uh", "um", "well"), True),
+        (
+            (
+                "_INTERJECTED31",
+                (
+                    "pattern",
+                    "^(?:oh|ooh|ah|aah|aw|ooh la la|oh dear|well|hmm|um|erm|er|uh)\\s*,\\s*(?=(?:could|would|can|will|might|may) (?:you|someone|somebody|one of you)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_is_the_and32": (
         "fe19e3ec39e2e82f",
         ((), (" is the ",), True),
@@ -855,6 +1638,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) is the (?P<trade>[a-z]+) and (?P<pron>she|he|they)(?P<want>'d like|'d love| would like| wants| needs| is after)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise2:_it_her31": (
+        "c7260e79b709e89e",
+        ((), ("bring", "fetch", "give", "hand", "pass", "send", "take"), True),
+        (
+            (
+                "_IT_HER31",
+                (
+                    "pattern",
+                    "\\b(?P<v>bring|give|hand|pass|take|fetch|send) (?P<x>it|them) (?P<p>her|him|them)\\b(?=\\s*(?:[,.;!?]|$))",
                     34,
                 ),
             ),
@@ -875,6 +1672,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_kinds_named26s": (
+        "723b8f57f0631497",
+        ((), (" or ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise2:_left_it32": (
         "91561256c58348c7",
         ((), (" left ",), True),
@@ -890,8 +1692,23 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise2:_lent33": ("fa453ba3bcb78a1b", ((" lent ",), (), False), ()),
+    "hltl.grounding._normalise2:_let_go26": (
+        "0be285f68640718d",
+        ((), (" the ", "leave "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise2:_let_take30": ("dc541ccd775462b0", ((), (" if ",), False), ()),
     "hltl.grounding._normalise2:_like_a31": ("416a9269357c3390", ((), (" like ",), False), ()),
+    "hltl.grounding._normalise2:_located26": (
+        "f7eef0438b5f4fa2",
+        ((), (" the ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise2:_made_it26": (
+        "eb3d9463b12b3b04",
+        ((), ("make ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise2:_make_way31": ("a7c4e3e74d4f43f4", ((), ("way",), False), ()),
     "hltl.grounding._normalise2:_mid_aside34": ("5338068b8861685f", ((",",), (), False), ()),
     "hltl.grounding._normalise2:_mind30": (
@@ -919,6 +1736,11 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._normalise2:_my_hands33": ("13cca339bc231806", ((), ("my hands",), False), ()),
+    "hltl.grounding._normalise2:_named_after30": (
+        "99f5f1054861992e",
+        ((), ("her", "him", "them"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise2:_needed_at35": ("9776f59b6ea83544", (("'s ",), (), False), ()),
     "hltl.grounding._normalise2:_needs_doing30": (
         "288ed343037cc42a",
@@ -956,6 +1778,27 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_negation19": (
+        "c21549dff76dba4f",
+        ((), (" any", " save ", " that isn't ", "except ", "not ", "nothing ", "that"), True),
+        (
+            (
+                "_nothing_for20",
+                (
+                    "guarded",
+                    "hltl.grounding._normalise2:_nothing_for20",
+                    "b7e337ff86bd6f7c",
+                    (
+                        (
+                            "_sub",
+                            ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77"),
+                        ),
+                    ),
+                ),
+            ),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise2:_next30": ("9e62e08138fc8aff", ((), ("next",), False), ()),
     "hltl.grounding._normalise2:_not_had35": (
         "af865293fd0d9acf",
@@ -972,6 +1815,11 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise2:_note_and30": ("99729c71911e2af9", ((":",), (), False), ()),
+    "hltl.grounding._normalise2:_object_wants28": (
+        "b0a9fcfce6f7ff92",
+        ((), (" to ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise2:_off_the31": (
         "6775ccfdd242d541",
         ((), (" from ", " off ", " out "), False),
@@ -987,7 +1835,26 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_on_about33": (
+        "5dfdb5fddba01b9d",
+        ((" it",), ("on about",), True),
+        (
+            (
+                "_ON_ABOUT33",
+                (
+                    "pattern",
+                    "(?:\\s+has|'s) been (?:going )?on about\\b(?= (?:the|that|this|those|these)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_on_with35": ("a7f2bdabdc59a71a", ((" with ",), (), False), ()),
+    "hltl.grounding._normalise2:_one_person22": (
+        "8491882b840d10cc",
+        ((), (" the ", "chef ", "doctor ", "mr ", "mrs ", "nurse "), False),
+        (("_said_any", ("function", "hltl.grounding._normalise1:_said_any", "0b8ee6b8c4d04658")),),
+    ),
     "hltl.grounding._normalise2:_one_task_two_sentences31": (
         "5788136c8c29cb97",
         ((".",), (), False),
@@ -1007,6 +1874,79 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._normalise2:_purpose28": ("d6e701891f7e88fb", ((), ("for ",), False), ()),
+    "hltl.grounding._normalise2:_questions26": (
+        "4313f36eeaac91e7",
+        ((), (" you ", "is it "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise2:_questions34": (
+        "58d38a1801fae29c",
+        ((), (" about ", " you ", "see your way"), True),
+        (
+            (
+                "_SEE_WAY34",
+                (
+                    "pattern",
+                    "^(?P<ask>(?:could|can|would) you) (?:possibly )?see your way(?: clear)? to (?P<v>[a-z]+)ing\\b",
+                    34,
+                ),
+            ),
+            (
+                "_THEN_ASKED34",
+                (
+                    "pattern",
+                    "^(?P<q>(?:can|could|would|will) you [^,.;!?]+?),\\s*then\\s*\\?\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_WOULD_WORK34",
+                (
+                    "pattern",
+                    "^(?P<q>(?:what|how) about [a-z]+ing\\b[^,.;!?]*?),\\s*(?:would|does|will|is) that (?:work|do|be (?:okay|ok|alright|all right|possible|fine)|suit you)\\s*\\?\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise2:_questions35": (
+        "b014a186c6016d27",
+        (
+            (),
+            (
+                "how does that sound",
+                "is it ",
+                "sound good",
+                "sound ok",
+                "what d'you reckon",
+                "what d'you say",
+                "what do you reckon",
+                "what do you say",
+                "what say you",
+            ),
+            True,
+        ),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            (
+                "_SEND_OFF35",
+                (
+                    "pattern",
+                    "\\bis it (?:alright|all right|ok|okay|fine) (?:to|if (?:i|we|you)) send (?P<p>her|him|them|[A-Z][a-z]+(?: [A-Z][a-z]*)?) (?:off|away|home) with (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)(?P<end>\\s*\\?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_WHAT_SAY35",
+                (
+                    "pattern",
+                    ",\\s*(?:what do you say|what d'you say|what say you|what do you reckon|what d'you reckon|how does that sound|sound good|sound ok|sound okay)\\s*\\?\\s*$",
+                    34,
+                ),
+            ),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._normalise2:_rather26": (
         "456eedcc861a7e53",
         ((), ("prefer", "rather have"), True),
@@ -1065,6 +2005,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise2:_restated26": (
+        "f0978a380117197b",
+        ((), ("the",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise2:_run_on_close31": (
         "8384c2c1bed3981c",
@@ -1392,8 +2337,23 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_the_moment31": (
+        "6904e7d17a14e390",
+        ((), ("as soon as", "the minute", "the moment", "the second"), True),
+        (
+            (
+                "_THE_MOMENT31",
+                (
+                    "pattern",
+                    "\\b(?:the moment|the minute|the second|as soon as) (?:you've|you have|you're|you are) (?:done|finished|through with) (?:that|it|this)(?: one)?,?\\s+(?=[a-z])",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_then_after30": ("3c48555774bf0419", ((), ("after",), False), ()),
     "hltl.grounding._normalise2:_then_trade35": ("8ca2e08f0bbdec39", (("then ",), (), False), ()),
+    "hltl.grounding._normalise2:_there_it33": ("1d0571fff257be4f", ((), ("there",), False), ()),
     "hltl.grounding._normalise2:_this_time26": (
         "02ce81f272f6a0d3",
         ((), ("this time",), True),
@@ -1404,6 +2364,28 @@ GUARDS: dict[str, Entry | str] = {
         "cb40b829564e6776",
         ((), ("till", "until"), False),
         (),
+    ),
+    "hltl.grounding._normalise2:_time_for36": (
+        "1cbe0bb2ea799851",
+        ((), (" so it", "for the "), True),
+        (
+            (
+                "_FOR_THE_LAST36",
+                (
+                    "pattern",
+                    "\\s+for the (?:first|last|next|early|late|morning|afternoon|evening|night) (?P<n>[a-z]+)(?: of the (?:day|night|week|shift|morning|afternoon|evening))?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_TIME_SO36",
+                (
+                    "pattern",
+                    "^(?P<what>[a-z]+) (?:time|o'clock|oclock),? so (?:it's|its|it is) ",
+                    34,
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._normalise2:_to_do31": ("567d878bed5a169e", ((), (" to ",), False), ()),
     "hltl.grounding._normalise2:_to_do34": ("445fd33f47425e84", ((" to ",), (), False), ()),
@@ -1441,6 +2423,48 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" is ", "'s "), False),
         (),
     ),
+    "hltl.grounding._normalise2:_trade_said36": (
+        "92244f96a7bebaf4",
+        (
+            ("the ",),
+            (" at ", " first with ", "afterwards", "in a bit", "later", "likes", "prefers"),
+            True,
+        ),
+        (
+            (
+                "_FINISHES_AT36",
+                (
+                    "pattern",
+                    ",\\s*(?P<what>[a-z]+) (?:finishes|ends|starts|kicks off|is over) at (?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|[0-9]{1,2})(?: o'clock| oclock| ?[ap]m)?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_FIRST_WITH36",
+                (
+                    "pattern",
+                    "^(?P<p>(?:person [a-z]|[a-z]+)) first with (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)(?= and (?:after that|then)\\b|,? then\\b)",
+                    34,
+                ),
+            ),
+            (
+                "_TRADE_COMPOUND36",
+                (
+                    "pattern",
+                    "(?P<p>\\b(?:Person [A-Z]|[A-Z][a-z]+(?: [A-Z][a-z]+)?)),\\s*the (?P<w1>[a-z]+) (?P<w2>[a-z]+(?:er|or|ist|man|woman|keeper|hand|maker))(?=\\s*(?:[,.;!?]|$))",
+                    32,
+                ),
+            ),
+            (
+                "_TRADE_REMARK36",
+                (
+                    "pattern",
+                    ",\\s*(?:the|our|my) (?P<trade>[a-z]+) (?:(?:likes|prefers|likes to have|likes to keep) (?:things|everything|it all|stuff) (?:stowed|tidy|neat|put away|shipshape|in order|just so|squared away|off the floor)|(?:will|'ll|is going to) (?:eat|snack|have a snack|have lunch|have tea|have supper) (?:later|in a bit|afterwards))(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_trade_says33": ("bb3268e4a62c2fd2", ((" says",), (), False), ()),
     "hltl.grounding._normalise2:_trade_wants31": (
         "221d4c76d1fb1dbc",
@@ -1457,6 +2481,80 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise2:_trades31": ("d9118d4503c0654c", ((",",), (), False), ()),
+    "hltl.grounding._normalise2:_translated25": (
+        "09ff1b95f43e3ef6",
+        (
+            ("ak", "as", "u"),
+            (
+                " rog",
+                "alsjeblieft",
+                "alstublieft",
+                "bebakhsheed",
+                "bebakhshid",
+                "bebakhshin",
+                "bitte",
+                "dat",
+                "di",
+                "dzu",
+                "ebakachihu",
+                "ebakih",
+                "ebakish",
+                "fi",
+                "gtkhovt",
+                "jus",
+                "karunakarala",
+                "kripya",
+                "lotfan",
+                "maaf",
+                "mek",
+                "mesedez",
+                "mi mean",
+                "molim",
+                "nuh",
+                "onegaishimasu",
+                "palun",
+                "parakalo",
+                "per favore",
+                "pon",
+                "por favor",
+                "pozhaluista",
+                "pozhaluysta",
+                "pra",
+                "pros",
+                "s'il vous pla",
+                "si us plau",
+                "sil vous plait",
+                "tafadhali",
+                "tfen",
+                "tolong",
+                "wid",
+            ),
+            True,
+        ),
+        (
+            (
+                "_HONORIFIC25",
+                ("pattern", "\\b(?:[Bb]u|[Ii]bu|[Pp]ak|[Bb]apak|[Mm]as|[Mm]bak)\\s+(?=[A-Z])", 32),
+            ),
+            (
+                "_PATOIS_WORD25",
+                (
+                    "pattern",
+                    "\\b(?:di|dat|dis|fi mi|fi|jus|mek|pon|wid|mi mean|nuh matter)\\b(?=[\\s',.;!?]|$)|\\s*\\bnuh\\b(?=\\s*[,.;!?])",
+                    34,
+                ),
+            ),
+            (
+                "_PLEASE25",
+                (
+                    "pattern",
+                    "\\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog|prašau|prasau|prašom|prasom|gtkhovt|ebakih|ebakish|ebakachihu|karunakarala|lūdzu|ludzu|palun|proszę|prosze|molim|alstublieft|alsjeblieft|lütfen|lutfen|pozhaluysta|pozhaluista|parakalo|tafadhali|kripya|s'il vous pla[iî]t|sil vous plait|per favore|onegaishimasu|si us plau|mesedez)(?!\\w)",
+                    34,
+                ),
+            ),
+            ("_SORRY25", ("pattern", "\\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\\b", 34)),
+        ),
+    ),
     "hltl.grounding._normalise2:_up_on31": ("efb5be3d96628325", ((), (" in", " on"), False), ()),
     "hltl.grounding._normalise2:_verb_last34": (
         "74178e2a1299fd0e",
@@ -1481,6 +2579,44 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
             ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
+    "hltl.grounding._normalise2:_wants_said36": (
+        "b0ee35a8a020026d",
+        ((), (" been ", " out", " out,", "is where "), True),
+        (
+            (
+                "_ASKED_BY36",
+                (
+                    "pattern",
+                    "^(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)(?:'s| has|'ve| have) been (?:asked for|requested|ordered|bagged|claimed|put aside) by (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?P<aside>,\\s*who [^,]+,)?",
+                    34,
+                ),
+            ),
+            (
+                "_LEFT_OUT36",
+                (
+                    "pattern",
+                    "(?P<lead>,\\s*)(?:the|our|my) (?P<trade>[a-z]+) (?:left|got|took|has left|'s left) (?P<pron>it|them) out(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_LEFT_X_OUT36",
+                (
+                    "pattern",
+                    "^(?:the|our|my) (?P<trade>[a-z]+) (?:left|got|took|has left|'s left) (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) out,\\s*so (?P<req>.+)$",
+                    34,
+                ),
+            ),
+            (
+                "_WHERE_OUGHT36",
+                (
+                    "pattern",
+                    "\\bis where (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:ought to|has to|must|wants to) (?P<v>be|go)\\b",
+                    34,
+                ),
+            ),
         ),
     ),
     "hltl.grounding._normalise2:_what_like34": (
@@ -1511,6 +2647,28 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_what_waiting34": (
+        "84cc764273d923fc",
+        (("what ",), ("over to ",), True),
+        (
+            (
+                "_OVER_WITH34",
+                (
+                    "pattern",
+                    "\\b(?P<so>so |and )?over to (?P<who>her|him|them) with (?P<x>it|them)(?=\\s*[.!]?\\s*$)",
+                    34,
+                ),
+            ),
+            (
+                "_WHAT_WAITING34",
+                (
+                    "pattern",
+                    "^(?P<x>(?:[Tt]he|[Tt]hat|[Tt]his|[Tt]hose|[Tt]hese) [a-z][a-z ]*?) (?:is|are|'s) (?:just )?what (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?P<v>(?:'s| has) been (?:waiting (?:on|for)|after|asking for|wanting)|(?:'s| is) (?:waiting (?:on|for)|after)| wants| needs| asked for)(?=\\s*[,.;!?]|\\s+(?:and|so)\\b|\\s*$)",
+                    32,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_where_goes35": ("75cb0111680dd3f3", ((" where ",), (), False), ()),
     "hltl.grounding._normalise2:_where_she_is34": (
         "adf030300b6bbaee",
@@ -1522,16 +2680,97 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("while ",), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
+    "hltl.grounding._normalise2:_while29": (
+        "9e54a1a908a5d004",
+        ((), (" after ", " while "), False),
+        (),
+    ),
     "hltl.grounding._normalise2:_while31": ("761a6a90d3944313", ((), (" while ",), False), ()),
     "hltl.grounding._normalise2:_while_go30": ("39cad0bd92e99148", ((), ("while",), False), ()),
     "hltl.grounding._normalise2:_who_is30": ("e9890f1e282f57ea", ((), (" and ",), False), ()),
+    "hltl.grounding._normalise2:_who_she_is35": (
+        "8b7eabbbbbd17ad9",
+        ((), (" having a ", " take ", "but "), True),
+        (
+            (
+                "_CAN_P_TAKE35",
+                (
+                    "pattern",
+                    "^(?P<ask>can|could|may) (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?) take (?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?)\\s*\\?\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_HAVING_A35",
+                (
+                    "pattern",
+                    ",\\s*(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| is) having a (?:tidy-up|tidy up|tidy|clear-out|clear out|sort-out|sort out|break|nap|lie-down|lie down|rest|day off)(?P<end>\\s*[.!?]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_JUST_A35",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| is) (?:just|only|merely) an? (?P<role>[a-z]+),?\\s+but (?P<ask>can|could|may) (?P<pron>she|he) (?P<rest>have|get|take) ",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_who_thats33": ("eaac3d878e40bb87", (("that's",), (), False), ()),
+    "hltl.grounding._normalise2:_who_where28": (
+        "d23cda141e66bf5b",
+        ((), (" here", "at", "by", "from", "in", "my", "near", "on", "our", "the"), True),
+        (
+            (
+                "_ROLE_FIRST28",
+                ("pattern", "^(?:the|our|my|your) ([a-z]+(?: [a-z]+)?),\\s+([^,]+?),\\s+", 34),
+            ),
+            (
+                "_WHERE_AFTER28",
+                (
+                    "pattern",
+                    "^([^,]+?),\\s+((?:up|down|over|out|back|round)?\\s*(?:at|in|on|by|near|from) (?:the|a|an|his|her|their|my|our) [a-z]+(?: [a-z]+){0,2}),\\s+(?=[a-z])",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise2:_whose_take33": ("3f61fdd6749902cb", ((), ("that",), False), ()),
+    "hltl.grounding._normalise2:_why_placed36": (
+        "23fd8c6693b91109",
+        ((), (" one", " with the other", "-one", "body"), True),
+        (
+            (
+                "_SO_NOBODY36",
+                (
+                    "pattern",
+                    "(?:,\\s*|\\s+)so (?:that )?(?:nobody|no one|no-one) (?:sits|steps|treads|stands|trips|kneels|leans|sits down|knocks|falls) (?:on|over|in|onto) (?P<pron>it|them)(?P<end>\\s*[.!?]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_WITH_OTHERS36",
+                (
+                    "pattern",
+                    "(?P<place>\\b(?:on|onto|in|into) (?P<s>the [a-z]+(?: [a-z]+)?)) with the (?:others|other ones)(?P<end>\\s*[.!?]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_will_do30": ("4d1bda72bc30b848", ((), (" do",), False), ()),
     "hltl.grounding._normalise2:_will_take31": ("ebca00d96302f330", ((), ("take",), False), ()),
     "hltl.grounding._normalise2:_with_going31": ("7f98a38471900a89", ((), (" with ",), False), ()),
     "hltl.grounding._normalise2:_with_her35": ("089eb9ec54beb9b1", ((" having ",), (), False), ()),
     "hltl.grounding._normalise2:_with_object31": ("44b4bdd1366bd736", ((), (" with ",), False), ()),
     "hltl.grounding._normalise2:_would_help33": ("a0dc0526089d2952", ((" help ",), (), False), ()),
+    "hltl.grounding._normalise3:_alike31r": (
+        "e3e7f61dda7cc979",
+        ((), ("alike", "both", "the pair of them"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_all_kit29r": (
         "abf45024587175ff",
         ((), (" all the ",), True),
@@ -1551,6 +2790,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" of the",), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise3:_along_with28s": (
+        "981822fed5a947af",
+        ((), (" together", " with "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_and_leave30r": (
         "4c485d1c15bf253b",
         ((), ("leave ",), True),
@@ -1564,6 +2808,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise3:_any_except32r": (
+        "53fee2e40d8bf2b9",
+        ((), ("any ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise3:_apiece30r": (
         "ae90f2995535a893",
@@ -1593,6 +2842,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_bare_adjective31r": (
+        "ffe9a61755c53635",
+        ((), (" not ", "make "), True),
+        (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
     "hltl.grounding._normalise3:_beg_pardon30r": (
         "a8e3cdceab212683",
         ((), ("pardon",), True),
@@ -1613,6 +2867,14 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise3:_both_for27r": ("f7eb87946908f80b", ((), ("both",), False), ()),
+    "hltl.grounding._normalise3:_both_named33t": (
+        "f9c1b3f4cd49982d",
+        ((), (" does it", " they ", "both "), True),
+        (
+            ("_drop", ("function", "hltl.grounding._normalise1:_drop", "8cf37521cc8fd8a7")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise3:_both_remark28r": ("a62d6ed218b69ef3", ((), ("both",), False), ()),
     "hltl.grounding._normalise3:_both_want_either32r": (
         "001de7f733ef5e62",
@@ -1626,6 +2888,14 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_busy_with28s": (
+        "473b000388f1d387",
+        ((), ("ing",), True),
+        (
+            ("_PERSON28S", ("value", "'person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+'")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
         ),
     ),
     "hltl.grounding._normalise3:_but_only_one30r": (
@@ -1662,6 +2932,51 @@ GUARDS: dict[str, Entry | str] = {
                     "pattern",
                     "(?P<keep>\\bnot the (?P<a>[a-z]+) (?:one|[a-z]+)),\\s*(?:(?:he|she|they|i|we)(?: just)? (?:can't stand|cannot stand|can't abide|can't bear|hates?|dislikes?|doesn't like|don't like|isn't keen on|aren't keen on|is not keen on|won't have|doesn't want|don't want)) (?P<b>[a-z]+)(?: ones?| things?)?(?P<end>\\s*[.!]?)$",
                     34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_choice_adjectives32r": (
+        "d020c8ee6b5f2ffb",
+        ((), (" of the ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_choice_said29r": (
+        "39d6102a21fa6508",
+        ((), (" of them,", " only ", "any "), True),
+        (
+            (
+                "_ANY_ONE29R",
+                (
+                    "pattern",
+                    "\\bany (?:one |single )?(?P<kind>[a-z]+),\\s*(?P<list>(?:the |a |an )?[a-z ]+? or (?:the |a |an )?[a-z ]+?)(?=\\s*(?:[,.;!?]|$))",
+                    34,
+                ),
+            ),
+            (
+                "_ONE_OF_THEM29R",
+                (
+                    "pattern",
+                    "\\b(?:one|either) of them,\\s*(?P<list>(?:the |a |an )?[a-z ]+? or (?:the |a |an )?[a-z ]+?)(?=\\s*(?:[,.;!?]|$))",
+                    34,
+                ),
+            ),
+            (
+                "_only_needs29r",
+                (
+                    "guarded",
+                    "hltl.grounding._normalise3:_only_needs29r",
+                    "70cb930bff670932",
+                    (
+                        (
+                            "_ONLY_NEEDS29R",
+                            (
+                                "pattern",
+                                "^(?P<p>[A-Za-z][\\w ]*?) only (?P<v>needs|wants|requires|would like|asked for)\\b",
+                                34,
+                            ),
+                        ),
+                    ),
                 ),
             ),
         ),
@@ -1782,6 +3097,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_counted_close33t": (
+        "7b4ab16820a5436e",
+        ((), ("five", "four", "one", "six", "three", "two"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise3:_counted_header32r": (
         "1f4c6fde50620ecf",
         ((), ("s,",), True),
@@ -1794,6 +3114,14 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_counted_those34t": (
+        "6f5ef768463e3e22",
+        ((), ("drop all ", "those "), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
         ),
     ),
     "hltl.grounding._normalise3:_couple_of31r": (
@@ -1903,6 +3231,14 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_dislocated28s": (
+        "f36ad3861cde11c5",
+        ((), ("the ",), True),
+        (
+            ("_PERSON28S", ("value", "'person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+'")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise3:_disturb28s": (
         "396453c2236547db",
         ((), ("sorry",), True),
@@ -1926,6 +3262,11 @@ GUARDS: dict[str, Entry | str] = {
         "ab416d2971e36add",
         ((), ("don't suppose ",), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_each_any33t": (
+        "fc4e0c4f5b184e6b",
+        ((), ("each of ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise3:_each_for29r": (
         "ad73eaeb045a967b",
@@ -1983,10 +3324,54 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_each_said33t": (
+        "6bba31fa175295c7",
+        ((), ("and not ", "each "), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise3:_either_title28r": (
+        "c346e3486a449564",
+        ((), ("any one of the", "either"), False),
+        (),
+    ),
+    "hltl.grounding._normalise3:_er_person32r": (
+        "eb072f8c347a2b4b",
+        ((), ("person", "the only "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_every_last30r": (
         "91314e952a334cd8",
         ((), ("one of ",), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_every_one_of_them31r": (
+        "f6a97d67c711d858",
+        (
+            (),
+            (
+                "all of them",
+                "each and every one",
+                "one of them",
+                "the lot of them",
+                "the whole lot",
+            ),
+            True,
+        ),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_everything26s": (
+        "3891a3867c0850be",
+        ((), (" of the ", "clear ", "everything ", "leave ", "the "), True),
+        (
+            (
+                "_EXCEPT26S",
+                ("value", "'(?:except(?: for)?|bar|but(?: not)?|apart from|other than|not)'"),
+            ),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
     ),
     "hltl.grounding._normalise3:_except_stays32r": (
         "164f18a08fb92875",
@@ -2017,6 +3402,47 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("for ",), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
+    "hltl.grounding._normalise3:_formal33t": (
+        "75125c9ac7daa101",
+        ((), ("is it ", "no further questions", "respect,", "would it be "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_free_split26s": (
+        "deebc1983d36afac",
+        (
+            (),
+            (
+                " bother ",
+                " matter who gets wh",
+                "any",
+                "bothered",
+                "care",
+                "fussed",
+                "makes no odds",
+                "mind",
+                "same ",
+                "way",
+            ),
+            True,
+        ),
+        (
+            (
+                "_FREE_SPLIT26S",
+                (
+                    "value",
+                    "\"(?:any|either) (?:which )?way(?: round| around)?(?: you (?:like|want|fancy|please))?|(?:i )?(?:don't|do not) mind who gets (?:what|which)(?: one)?|(?:it )?makes no odds who gets (?:what|which)(?: [a-z]+)?|(?:it )?(?:doesn't|does not) matter who gets (?:what|which)(?: [a-z]+)?\"",
+                ),
+            ),
+            (
+                "_INDIFFERENT26S",
+                (
+                    "value",
+                    "\"any|(?:(?:she|he|they|i|we)(?:'s|'re|'m| is| are| am) )?not (?:fussed|bothered)(?: which)?|(?:she|he|they|i|we) (?:doesn't|don't|does not|do not) (?:care|mind)(?: which)?|(?:it )?(?:doesn't|does not) bother (?:me|her|him|them|us)(?: which)?|(?:(?:it's|it is) )?all (?:the )?same (?:to|for) (?:me|her|him|them|us)|(?:it )?makes no odds(?: which)?\"",
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+        ),
+    ),
     "hltl.grounding._normalise3:_fronted_except28r": (
         "b6c73ba9aaa42e7e",
         ((), ("apart from", "aside from", "bar", "but for", "except", "other than"), True),
@@ -2031,10 +3457,25 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_fronted_to33t": (
+        "6e15592ac9670338",
+        ((), ("to ", "whichever "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_gather_up31r": (
         "8a0e992d427b5835",
         ((), ("collect", "gather", "round"), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._normalise3:_give_both28s": (
+        "54042418dc3a3288",
+        ((), ("both", "the two"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise3:_going_over30r": (
+        "32ba2770ca0c04fc",
+        ((), (" to ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise3:_got_them33t": ("7a5e03679b2d89d8", ((), ("got",), False), ()),
     "hltl.grounding._normalise3:_happy_with31r": (
@@ -2051,6 +3492,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_i_mean_after30r": (
+        "0217db48b57a4e6a",
+        ((), (" i mean",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_in_hand28r": ("c4129466679cf450", ((), ("hand",), False), ()),
     "hltl.grounding._normalise3:_into_with_them32r": (
         "0e91cf7b1f1712b6",
@@ -2066,6 +3512,19 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_is_to28s": (
+        "b67e752041bc8ec5",
+        ((), (" the two of them", " to "), True),
+        (
+            ("_PERSON28S", ("value", "'person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+'")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise3:_isnt_adjective32r": (
+        "cfb4c5048ad39998",
+        ((), ("the one ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_its_who_cue31r": (
         "a17138ba67a45c35",
         ((), ("it",), True),
@@ -2079,6 +3538,46 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise3:_kind_choice33t": (
+        "84fc08beb37e9db6",
+        ((), ("one of the ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise3:_kindly_verbs29s": (
+        "1672945be561bcfe",
+        ((), (" away ", "appreciated", "grateful", "obliged", "thankful", "would you mind"), True),
+        (
+            (
+                "_GRATEFUL29S",
+                (
+                    "pattern",
+                    "\\s*[,.!]\\s*(?:i'm |i am |we're |we are )?(?:ever so |very |so |really |most |much |truly )?(?:grateful|obliged|thankful|appreciated)(?: (?:to you|indeed))?\\s*[.!]*\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_MIND_LETTING29S",
+                (
+                    "pattern",
+                    "\\bwould you mind(?: (?:awfully|terribly|very much|at all))? letting\\b",
+                    34,
+                ),
+            ),
+            (
+                "_TIDY_AWAY29S",
+                (
+                    "pattern",
+                    "\\b(?:tidy|tidying|tidied) (?P<what>(?:the|that|this|those|these|both|all the) [a-z]+(?: [a-z]+)?|it|them) away (?P<where>in|into|on|onto)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_laid_out30r": (
+        "98a0f10ed5035e14",
+        ((), (" out ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise3:_leave_first31r": (
         "a7900a1ba5451629",
@@ -2126,6 +3625,21 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_leave_where33t": (
+        "af8c549c7e966b52",
+        ((), ("all of it", "everything", "the lot"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise3:_leaving_out30r": (
+        "f67874200f51daf7",
+        ((), ("but leave", "leaving"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_load_up33t": (
+        "2810add3a4040151",
+        ((), (" up with ", " with "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_lot_is30r": (
         "1551060954fe3964",
         ((), ("all of it", "everything", "the lot", "the whole lot", "whatever"), True),
@@ -2146,6 +3660,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" bother me ", "'ll matter", "matters", "will matter"), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise3:_meant_to_say31r": (
+        "967fdfe3dade7e63",
+        ((), (" to say", "be", "should"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_namely31r": (
         "ded5f23c033dbfca",
         ((), ("bits", "items", "objects", "things"), True),
@@ -2159,6 +3678,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise3:_need_over33t": (
+        "92aca7ffc30df05f",
+        ((), (" over ", "like "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise3:_needs_a30r": (
         "8173515c9ee5c00d",
@@ -2277,6 +3801,28 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_not_first29r": (
+        "920880a3435a0ad9",
+        ((), (" leave ", "ne of ", "thing"), True),
+        (
+            (
+                "_LEAVE_WHERE29R",
+                (
+                    "pattern",
+                    "^(?:please )?(?:don't|do not) leave (?P<x>the [a-z ]+?) (?:where it is|where they are|lying there|sitting there|there)\\s*[;,:.]\\s*(?P<rest>\\S.*)$",
+                    34,
+                ),
+            ),
+            (
+                "_NONE_FOR29R",
+                (
+                    "pattern",
+                    "^(?:none of (?:it|them|that|those)|nothing|not a thing) (?:goes |is )?(?:to|for) (?P<p>[A-Za-z][\\w ]*?)\\s*[;,:.]\\s*(?P<rest>\\S.*)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_not_for29r": (
         "2caf60d89596cb35",
         ((), ("are not", "aren't", "is not", "isn't"), True),
@@ -2319,6 +3865,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_not_other_person32r": (
+        "b02a87f7b79d8882",
+        ((), ("not ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_not_that28r": ("92dd653f48d7e0d6", ((), ("not ",), False), ()),
     "hltl.grounding._normalise3:_not_to_semi31r": (
         "461248fd711a0257",
@@ -2330,10 +3881,63 @@ GUARDS: dict[str, Entry | str] = {
         (("n't",), (" not ",), False),
         (),
     ),
+    "hltl.grounding._normalise3:_not_wanted32r": (
+        "f7e4e049ae2d5e0f",
+        (
+            (),
+            (
+                "is not to",
+                "isn't to",
+                "must not",
+                "mustn't",
+                "need",
+                "should not",
+                "shouldn't",
+                "want",
+            ),
+            True,
+        ),
+        (
+            (
+                "_NOT_WANTED32R",
+                (
+                    "pattern",
+                    "\\s*[;,]\\s*(?:but |and )?(?P<who>[A-Za-z][\\w ]*?) (?:doesn't|does not|don't|do not) (?:want|need) (?P<x>(?:the|a|an|any) [a-z ]+?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_SHOULDNT_GET32R",
+                (
+                    "pattern",
+                    "\\s*[;,]\\s*(?:but |and )?(?P<who>[A-Za-z][\\w ]*?) (?:shouldn't|should not|mustn't|must not|isn't to|is not to) (?:get|have|be given) (?:it|them)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_object_first28s": (
+        "7169643b56572f97",
+        ((), ("give", "hand", "pass"), True),
+        (
+            ("_PERSON28S", ("value", "'person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+'")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise3:_objects_first33t": (
+        "f793af721f4fe530",
+        ((), ("give ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise3:_of_their_own31r": (
         "b5c558798ab340fa",
         ((), ("ach", "very"), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._normalise3:_off_with30r": (
+        "4dfa3b51e13d6638",
+        ((), (" off with ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise3:_one_for_each31r": (
         "7835e4fd0d2a424b",
@@ -2349,6 +3953,22 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_one_of_them26s": (
+        "db06e7204de95cfb",
+        ((), (" one of ", " one of them", "one of them,"), True),
+        (
+            ("_PERSON26", ("value", "'((?:person |mr |mrs |ms |miss |dr )?[a-z]+)'")),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+        ),
+    ),
+    "hltl.grounding._normalise3:_one_said33t": (
+        "42358fbbd8f6fd38",
+        ((), (" together", "just the one pair", "not the ", "that's "), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise3:_one_that_isnt31r": (
         "55865bdb8570df5f",
         ((), ("of the two",), True),
@@ -2358,6 +3978,33 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^of the two(?: (?:things|items|objects))?,\\s*(?P<p>[A-Za-z][\\w ]*?) (?P<v>wants|needs|gets|should get|can have|would like) the one (?:that|which)(?:'s| is)? (?:isn't|is not|'s not|aren't|are not) (?:a (?:bag|packet|bottle|cup|box) of |the |an? )?(?P<x>[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_only_after_person31r": (
+        "be22f6d0cae0c028",
+        ((), ("just", "only"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_only_got30r": (
+        "080d2f3831ed697e",
+        ((), (" and only one ", "and "), True),
+        (
+            (
+                "_ONLY_GOT30R",
+                (
+                    "pattern",
+                    "^(?:we've|we have|we) (?:only )?(?:got|have) (?:only |just )?(?:a single|one|the one|just the one) (?P<x>[a-z]+(?: [a-z]+)??)(?: going| left| here| to spare)?,\\s*and (?P<p>[A-Za-z][\\w ]*?) (?:is having|is getting|should have|should get|can have|gets|is to have) it(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_ONLY_ONE_HERE30R",
+                (
+                    "pattern",
+                    "^(?:there's )?only one (?P<x>[a-z]+(?: [a-z]+)??) and only one (?:person|human|of you|one person)(?: here| around| about)?,\\s*so (?:she|he|they) (?:gets|can have|should have|is having) it(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -2377,6 +4024,16 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_only_not30r": (
+        "798a28d3d09bef47",
+        ((), (" not ", "but no "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_only_nothing_else32r": (
+        "be0eff4a7f67f4b3",
+        ((), ("nothing",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_only_one29r": (
         "5ae266584b7b322a",
         ((), ("there's ",), True),
@@ -2386,6 +4043,28 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^there's (?:only |just )?(?:a single|the one|one|just the one) (?P<x>[a-z ]+?),\\s*and (?P<p>[A-Za-z][\\w ]*?) (?:should have|should get|can have|gets|is to have|wants|needs) it(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_only_one_here32r": (
+        "a959edece3f3f3a0",
+        ((), (" here", " only "), True),
+        (
+            (
+                "_ONLY_ONE_HERE32R",
+                (
+                    "pattern",
+                    "^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\\w ]*?),\\s*(?:(?:no|sorry|oops|wait),\\s*)+there(?:'s| is) only (?P<p>[A-Za-z][\\w ]*?) here,\\s*(?:so )?(?:to|for) (?:her|him|them)(?: then| instead)?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_ONLY_ONE_HERE_SO32R",
+                (
+                    "pattern",
+                    "^(?P<head>.+?) (?P<prep>to|for) (?P<q>[A-Za-z][\\w ]*?)\\.\\s*(?:oops|sorry|whoops),?\\s*(?:(?:wrong (?:bay|room|person|one|ward)|no),?\\s*)?it(?:'s| is) (?:just|only) (?P<p>[A-Za-z][\\w ]*?) here,?\\s*so (?P<p2>[A-Za-z][\\w ]*?|she|he|they) (?:gets|has|should get|can have) it(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -2461,6 +4140,22 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_openers33t": (
+        "5e4a19dac8c91baa",
+        ((), ("'ll be", "'m off to", "going to", "listen", "nothing ", "quick as you like"), True),
+        (
+            (
+                "_LATER24",
+                (
+                    "pattern",
+                    "\\b(?:tomorrow|tonight|later|next|week|weekend|month|evening|afternoon|morning|lunch|dinner|breakfast|tea|hours?|minutes?|mins?|days?|o'clock|\\d)\\b",
+                    34,
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise3:_opens_a_fix29s": (
         "40b1924d054f2271",
         ((), ("actually", "hang on", "hold on", "sorry", "wait"), True),
@@ -2480,6 +4175,16 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("or not",), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise3:_other_isnt32r": (
+        "cdbd911f718ea79b",
+        ((), ("the other ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_other_not31r": (
+        "dcb1e03cfd0fb98b",
+        ((), ("the non-", "the other "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_other_one32r": (
         "094c12ed92c46647",
         ((), (" the other one",), True),
@@ -2493,6 +4198,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise3:_other_two33t": (
+        "778cb32a294fbed4",
+        ((), ("either of the other ", "either of the others", "one of the other "), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise3:_others_rest32r": (
         "b7028b289342c8ba",
@@ -2541,6 +4251,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_pair_listed28s": (
+        "e986e10d48f9bb90",
+        ((), (" and ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_person_one30s": ("661953eb74c1deac", ((), (" one",), False), ()),
     "hltl.grounding._normalise3:_place_to30r": (
         "238de91533e42598",
@@ -2571,6 +4286,14 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise3:_placed_for33t": ("11749452e54383c8", ((" for ",), (), False), ()),
+    "hltl.grounding._normalise3:_places_said33t": (
+        "b48bff011fe1f31b",
+        ((), (" ones,", " over", " the ", "not the ", "the other "), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise3:_play_with31r": (
         "6f2880c83cd4d552",
         ((), (" play with ",), True),
@@ -2583,6 +4306,21 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._normalise3:_purpose_ing33t": ("56c66530105ed94b", (("ing",), (), False), ()),
     "hltl.grounding._normalise3:_purpose_of28r": ("8dd7cb6cd322685b", (("'s ",), (), False), ()),
+    "hltl.grounding._normalise3:_rather_after30r": (
+        "0cfbfff509d69ee2",
+        ((), (" rather",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_rather_than30r": (
+        "da1175ef16cdc555",
+        ((), ("rather than ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_reach_first32r": (
+        "4d695f1bcbcba841",
+        ((), ("whichever",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_ready_for29s": (
         "46d3df4fa62f9ee2",
         ((), ("ready for ",), True),
@@ -2597,11 +4335,111 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_remark_then30r": (
+        "2e13f030f03bb4af",
+        ((), (" and ",), True),
+        (
+            (
+                "_AND_NOT_FUSSY30R",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Za-z][\\w ]*?)(?:'s| is) (?P<said>[a-z][a-z' -]*?) and (?P<not>not (?:fussy|bothered|particular|picky))(?=\\s*,\\s*so\\b)",
+                    34,
+                ),
+            ),
+            (
+                "_THEY_AFTER30R",
+                (
+                    "pattern",
+                    "^(?P<pq>[A-Za-z][\\w ]*? and [A-Za-z][\\w ]*?) (?:are|'re) (?P<said>[a-z][a-z' -]*?)\\s*[;,]\\s*(?:so )?they (?P<rest>(?:can|could|should|will|each|both|get|have)\\b.*)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_run30": ("325858544ac48012", ((), ("run",), False), ()),
+    "hltl.grounding._normalise3:_run_to28s": (
+        "f0f3773c5baa37aa",
+        ((), ("run ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_said_again33t": (
+        "8bce85ae83e1034c",
+        ((" or ",), (" left ", "either ", "then the ", "while "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise3:_said_aside27r": (
+        "dfc888b01ca2b709",
+        (
+            (),
+            (
+                " as ",
+                " as well",
+                " back",
+                " too",
+                "all ",
+                "alongside",
+                "beside",
+                "et",
+                "matter",
+                "mind",
+                "next to",
+                "ot",
+                "that are",
+                "that aren't",
+                "that is",
+                "that isn't",
+                "whichever",
+                "whoever",
+            ),
+            True,
+        ),
+        (("re", ("module", "hltl.grounding.gate")),),
+    ),
+    "hltl.grounding._normalise3:_says_she_is28s": (
+        "93167b8c7e718afb",
+        ((), ("he is", "he's", "they are", "they're"), True),
+        (
+            ("_PERSON28S", ("value", "'person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+'")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise3:_single28r": (
+        "5bdf92fa8b21b7a9",
+        ((), (" of ", "single"), False),
+        (),
+    ),
+    "hltl.grounding._normalise3:_sit_stand31r": (
+        "5faf58004a9ba40c",
+        ((), ("both", "the"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_sizes30s": (
         "5d7a042867d3436a",
         ((), ("e",), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._normalise3:_slip_owned29s": (
+        "049aaa3dfbd396e1",
+        ((), (" got ", "mistake", "silly me", "wrong"), True),
+        (
+            (
+                "_SLIP_CUE29S",
+                (
+                    "pattern",
+                    "\\s*,\\s*(?:oh,?\\s*)?(?:i (?:make|made|'ve made|have made) (?:a |my )?mistake|i(?:'ve| have)? got (?:that|it) (?:wrong|mixed up|muddled)|(?:oh,? )?silly me|i(?:'ve| have)? (?:read|heard|got|misread|misheard) (?:the|that|it|my) (?:[a-z]+ )?wrong)\\s*,\\s*",
+                    34,
+                ),
+            ),
+            (
+                "_SLIP_LAST29S",
+                (
+                    "pattern",
+                    "\\s*,\\s*(?:(?:sorry|oops|whoops),?\\s*)?(?:i (?:make|made|'ve made|have made) (?:a |my )?mistake|i(?:'ve| have)? got (?:that|it) (?:wrong|mixed up|muddled)|(?:oh,? )?silly me|i(?:'ve| have)? (?:read|heard|got|misread|misheard) (?:the|that|it|my) (?:[a-z]+ )?wrong)\\s*[.!]*\\s*$",
+                    34,
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._normalise3:_so_can32r": (
         "5287f14cb53e6527",
@@ -2615,6 +4453,30 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_solitary31r": (
+        "d34f1a0fe22e5a18",
+        (
+            (),
+            (
+                "is enough",
+                "is fine",
+                "lone",
+                "one and only",
+                "only remaining",
+                "single",
+                "sole",
+                "solitary",
+                "will do",
+                "would do",
+            ),
+            True,
+        ),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+            ("re", ("module", "hltl.grounding.gate")),
         ),
     ),
     "hltl.grounding._normalise3:_something_to30r": (
@@ -2767,10 +4629,37 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_that_there27r": (
+        "6587f96d5283861d",
+        ((), ("here",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise3:_the_one_for28r": (
         "612105f42cb74a14",
         ((), ("the one",), False),
         (),
+    ),
+    "hltl.grounding._normalise3:_theres_the30r": (
+        "8b2bbe5389f45a8a",
+        ((), (" with ", "there"), True),
+        (
+            (
+                "_THERES_THE30R",
+                (
+                    "pattern",
+                    "^there(?:'s| is) (?:the only|only the|the one|just the|the) (?P<x>[a-z]+(?: [a-z]+)??)(?: here| there)?(?:\\s*,\\s*(?P<said>[a-z][a-z' ]*?))?\\s*[;:]\\s*(?P<rest>\\S.*)$",
+                    34,
+                ),
+            ),
+            (
+                "_WITH_IT30R",
+                (
+                    "pattern",
+                    "^(?P<dir>over|across|up|down|round) to (?P<p>[A-Za-z][\\w ]*?) with (?P<x>it|them|the [a-z]+(?: [a-z]+)??)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._normalise3:_these_listed31r": (
         "90501513aaeb0951",
@@ -2795,6 +4684,19 @@ GUARDS: dict[str, Entry | str] = {
         "32d484ace9feda29",
         ((",",), (), True),
         (("_TRAILING34", ("pattern", ",\\s*(?P<said>[^,;:.!?]+?)(?P<end>\\s*[.!]?)\\s*$", 32)),),
+    ),
+    "hltl.grounding._normalise3:_unknown_fixed33t": (
+        "50878652393fddd7",
+        ((), ("i mean",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise3:_verb_last27": (
+        "dc5dc02d1de26e7e",
+        ((), ("bring", "deliver", "give", "hand", "leave", "pass", "place", "put", "set"), True),
+        (
+            ("_LAST_VERB27", ("value", "'(give|hand|pass|bring|deliver|put|place|set|leave)'")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
     ),
     "hltl.grounding._normalise3:_waited30r": (
         "0913e7fc9dc59c11",
@@ -2868,10 +4770,54 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("everything ", "whatever"), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise3:_which_arm29r": (
+        "0b5c2f8ffc6afcba",
+        ((), (" which ", "end up with", "get to", "go to", "reach"), True),
+        (
+            (
+                "_REACH29R",
+                (
+                    "pattern",
+                    "\\b(?P<x>the [a-z ]+?) (?:needs|has|have|need) to (?:reach|get to|end up with|go to) (?P<p>[A-Za-z][\\w ]*?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_WHICH_ARM29R",
+                (
+                    "pattern",
+                    "^(?:i|we) (?:don't|do not) (?:mind|care) which (?:of your arms|arm|robot|of the robots|of you|one of you)(?: (?:does it|does that|takes it|goes|handles it))?\\s*[,;:.]\\s*(?=\\S)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_which_gets28r": (
         "18d3d5b247028f4a",
         ((), ("that", "which"), False),
         (),
+    ),
+    "hltl.grounding._normalise3:_which_kind30r": (
+        "215a9483e56fc935",
+        ((), (" the one for ", " which "), True),
+        (
+            (
+                "_WHICHEVER_FIRST30R",
+                (
+                    "pattern",
+                    "^whichever (?P<x>[a-z]+)(?:'s| is) (?P<how>nearer|closer|nearest|closest|handier|easier to reach)(?: (?:to )?(?:your arm|the arm|you|the robot))?\\s*,\\s*that(?:'s| is) the one for (?P<p>[A-Za-z][\\w ]*?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_WHICH_KIND30R",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Za-z][\\w ]*?) (?:isn't|is not|'s not|doesn't mind|does not mind|doesn't care|does not care)(?: (?:bothered|fussed|fussy|particular))? which (?P<x>[a-z]+)\\s*,\\s*(?P<will>(?:either|any)(?: one)? (?:will do|is fine|'ll do))",
+                    34,
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._normalise3:_whichever_front31r": (
         "85edf3d5da77f82b",
@@ -2916,6 +4862,28 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise3:_whose33t": ("49eed6193e7768c7", (("'s ",), (), False), ()),
+    "hltl.grounding._normalise3:_will_do_for31r": (
+        "4536c2a1b989d533",
+        ((), (" for ", "is fine", "will do", "works", "would do"), True),
+        (
+            (
+                "_WILL_DO_BUT31R",
+                (
+                    "pattern",
+                    "^(?P<q>either|any) (?P<x>[a-z]+) (?:will do|would do|is fine|works),?\\s*(?:but|and|only) (?:it's|it is|it'll be|it will be|that's|that is) (?:for|going to) (?P<p>[A-Za-z][\\w ]*?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_WILL_DO_FOR31R",
+                (
+                    "pattern",
+                    "^(?P<q>either|any) (?P<x>[a-z]+) (?:will do|would do|is fine|works) for (?P<p>[A-Za-z][\\w ]*?)(?=\\s*,)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_wont_mind31r": (
         "1101f8a0f826bfd1",
         ((), (" mind",), True),
@@ -2985,6 +4953,11 @@ GUARDS: dict[str, Entry | str] = {
         "6465109aee561a02",
         ((), ("after", "following", "since"), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._normalise4:_after_those34t": (
+        "8f0fc356f0d7ba60",
+        ((), (" after ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise4:_also_hers36": (
         "e0cfea21f9ba2515",
@@ -3098,6 +5071,16 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise4:_aside_else35t": (
+        "8694840e8ea9c305",
+        ((), (" the robot ", "the robot"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise4:_asked_first34t": (
+        "8a73aed1007a965a",
+        ((), ("the ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise4:_at_table34r": (
         "04bd3833ccbdf032",
@@ -3286,6 +5269,59 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_closers34t": (
+        "7e076feaeaa18cad",
+        (
+            (),
+            (
+                "cheers",
+                "got it",
+                "i mean ",
+                "off you go",
+                "thank you",
+                "thanks",
+                "that is all",
+                "that's all of it",
+                "that's it",
+                "that's the lot",
+                "the ",
+                "when u can",
+            ),
+            True,
+        ),
+        (
+            (
+                "_CLOSERS34T",
+                (
+                    "value",
+                    "\"off you go|got it|that's all of it|that's it|that is all|that's the lot\"",
+                ),
+            ),
+            (
+                "_COURTESY24",
+                (
+                    "value",
+                    "'habari(?: yako| gani)?|jambo|hujambo|sawasdee|sawatdee|sawasdi|dobryi den|dobryy den|dobry den|dobriy den|pryvit|vitayu|selamat (?:pagi|petang|siang|malam|datang)|apa khabar|merhaba|yassou|yassas|geia sou|xin chao|kumusta|kamusta|magandang (?:umaga|hapon|gabi)|namaste|namaskar|salaam|salam|as-?salaamu? alaikum|shalom|hola|bonjour|ciao|konnichiwa|ni hao|kia ora|sawubona|ahoj|asante(?: sana)?|khop khun(?: mak)?|khob khun(?: mak)?|kop khun|diakuiu|dyakuyu|diakuyu|spasibo|terima kasih|salamat|tesekkurler|efharisto|efcharisto|cam on|dhanyavaad|dhanyavad|shukriya|shukran|gracias|merci(?: beaucoup)?|grazie(?: mille)?|danke(?: schon)?|arigato(?: gozaimasu)?|xie xie|obrigado|obrigada|dziekuje|diolch|toda|kiitos|mamnoon|mamnun|khahesh mikonam|terima kasih banyak|makasih|köszönöm|koszonom|köszi|koszi|jó napot(?: kívánok)?|jo napot(?: kivanok)?|szia|permisi|sudah|terserah|mas|mbak|bless up|big up|respect|one love|dobrý den|dobry den|děkuji|dekuji|děkuju|dekuju|bună ziua|buna ziua|bună|mulțumesc|mulţumesc|multumesc|mersi(?: mult)?|vanakkam|vanakam|nandri|nanri|chale|medaase|akwaaba|gamarjoba(?:t)?|(?:didi )?madloba|genatsvale|nakhvamdis|labas(?: rytas| vakaras)?|laba diena|ačiū(?: labai)?|aciu(?: labai)?|tena yistilign|tena yistiligne|tena yistilgn|selam(?: new)?|(?:betam )?(?:ameseginalehu|amesegnalehu|ameseginalew)|ayubowan|(?:bohoma )?(?:sthuthi|sthuthiy|stuthi|isthuthi|istuti)|labdien|paldies|sveiki|tere|aitäh|aitah|tänan|tanan|barev(?: dzez)?|shnorhakalutyun|sağ ?ol|sag ?ol|çox sağ ?ol|chox sag ?ol|hvala(?: lijepa| puno| vam)?|zdravo|dobar dan|dzień dobry|dzien dobry|cześć|czesc|dziękuję|privet|zdravstvuyte|blagodaryu|blagodarya|tack(?: så mycket| sa mycket)?|takk|tusen takk|mange tak|hej|hei|dank je(?: wel)?|dank u(?: wel)?|bedankt|goedemorgen|goedemiddag|annyeonghaseyo|annyeong|kamsahamnida|gamsahamnida|gomawo|mingalaba|mingalarba|dhanyabad|dhonnobad|nomoskar|sat sri akal|sannu|na gode|daalu|ndewo|ngiyabonga|siyabonga|enkosi|mahalo(?: nui)?|aloha|toda raba|marhaba|ahlan(?: wa sahlan)?|teşekkür ederim|tesekkur ederim|olá|bom dia|buenos (?:días|dias)|buenas tardes|muchas gracias|e kaaro|e kaasan|e kaale|e ku aaro|e ku irole|e se(?: gan| o)?|o se(?: gan| o)?|ole hyvä|ole hyva|moi|kiitti|faleminderit|grazas|moitas grazas|meur ras|zikomo(?: kwambiri)?|mesi(?: anpil)?|malo aupito|mālō aupito|sulpayki|añay|anay|tenkyu(?: tru)?|kadrinchey(?: la)?|kadrin chhe(?: la)?|natotela(?: sana)?|ua tsaug(?: ntau)?|ke a leboga|kea leboga|kealeboga|eskerrik asko|mila esker|milesker|gràcies|gracies|moltes gràcies|moltes gracies|ďakujem(?: pekne)?|dakujem(?: pekne)?|vďaka|vdaka|bless you|amen(?: to that)?|inshallah|mashallah|pole pole|innit|khrap|khrub|krap|krub|hor|kha|lah|leh|lor|meh|opo|paa|sha|ah|ja|la|po|o'",
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise4:_closing_remarks36": (
+        "0deb0c907299c027",
+        ((), (" the one ", "clock", "day", "night", "shift", "time", "week"), True),
+        (
+            (
+                "_BACK_FROM36",
+                (
+                    "pattern",
+                    "(?P<lead>\\s+(?:(?:thx|thanks|ta|cheers),?\\s+)?|,\\s*)(?P<pron>he|she)(?:'s|s| is) the one (?:just )?(?:back from|home from|in from|off to|back off) (?P<what>[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_corrected_away33r": (
         "e9ad33f39427e685",
         ((), ("done with", "finished with", "no longer", "not", "off", "too"), True),
@@ -3370,6 +5406,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_dedication34t": (
+        "9a03cbffb3665998",
+        ((), (" goes out to ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise4:_does_why36r": (
         "ef51c49b519d4aad",
         ((), (" does",), True),
@@ -3410,6 +5451,17 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_drink_in35t": (
+        "fef32d8ef7b5d6c4",
+        ((), ("'d like", "could do with", "needs", "wants", "would like"), True),
+        (
+            (
+                "_DRINKS35T",
+                ("value", "'(?:water|a drink|drink|juice|milk|squash|tea|coffee|a brew|a cuppa)'"),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
         ),
     ),
     "hltl.grounding._normalise4:_each_for_role37r": (
@@ -3492,6 +5544,48 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_every_included37r": (
+        "e7e6897be3e25a1e",
+        ((), (" one included", "including the "), True),
+        (
+            (
+                "_EVERY_INCLUDED37R",
+                (
+                    "pattern",
+                    "\\b(?P<every>every|all the) (?P<k>[a-z]+?)(?P<pl>es|s)?(?: in the (?:place|room|building))?,\\s*(?:(?:the )?(?P<a>[a-z]+) one included|including the (?P<b>[a-z]+) one),\\s*",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_every_last37r": (
+        "287e207123003678",
+        ((), ("every last ",), True),
+        (
+            (
+                "_EVERY_LAST37R",
+                (
+                    "pattern",
+                    "\\bevery last (?:thing|item|one of them|bit)(?: (?:you've|you have|we've|we have) got(?: (?:there|here|about))?| (?:here|there|about))?(?=\\s+(?:is|goes|should|can|needs)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_except_commas37r": (
+        "8fb2dd7eee49bde4",
+        ((), (" the ",), True),
+        (
+            (
+                "_EXCEPT_COMMAS37R",
+                (
+                    "pattern",
+                    "^(?P<ks>the [a-z]+s),\\s*(?P<ex>(?:except|apart from|but not|bar) the [a-z]+ one),\\s*(?=(?:go|goes|should go|want|need|belong)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_excluded_reason33r": (
         "d63b8c19a3be7ade",
         ((), ("not ",), True),
@@ -3518,6 +5612,19 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_for_said34t": (
+        "edb12884b59775d9",
+        ((), ("for ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise4:_frames34t": (
+        "f1ac6ca39e6810b6",
+        ((), (" reckon ", " with ", "for ", "i would like ", "same "), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
         ),
     ),
     "hltl.grounding._normalise4:_free_choice33r": (
@@ -3563,6 +5670,28 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^(?:except(?: for)?|apart from|other than|bar|barring|aside from) (?:the )?[a-z]+(?: [a-z]+)?,\\s*",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_fronted_you37s": (
+        "487728cd74e16335",
+        ((), (", ", ", you "), True),
+        (
+            (
+                "_FRONTED_YOU37S",
+                (
+                    "pattern",
+                    "(?:^|(?<=[.!?] ))(?P<x>(?:that|this|the) [a-z' -]+?), you (?:can |could |please )?(?P<verb>bring|give|take|hand|pass|carry|put) (?P<rest>(?:for|to|over to|on|in|onto|into) [^,.;!?]+)",
+                    34,
+                ),
+            ),
+            (
+                "_NAMED_STATE37S",
+                (
+                    "pattern",
+                    "(?:^|(?<=[.!?] ))(?P<p>[A-Z][\\w]*(?: [A-Z][\\w]*)?), (?P<pro>she|he) (?P<be>is|was|'s)\\b",
                     34,
                 ),
             ),
@@ -3714,6 +5843,20 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_handy35r": ("6ee41da7ce3fda34", ((), ("handy",), False), ()),
+    "hltl.grounding._normalise4:_hang_about37r": (
+        "7c3e511570b4b2fa",
+        ((), ("hang about,",), True),
+        (
+            (
+                "_HANG_ABOUT37R",
+                (
+                    "pattern",
+                    ",\\s*hang about,\\s*(?=(?:i mean|i meant|no|sorry|make (?:that|it))\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_has_one34r": (
         "f0e47db380765d5f",
         ((), (" got ",), True),
@@ -3723,6 +5866,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "(?P<cue>\\b(?:hang on|no|actually|wait|sorry),\\s*)(?P<pro>she|he)(?:'s| has)(?: already)? got (?:one|it)(?: already)?,\\s*(?P<rest>(?:give|hand|pass|take) it .+)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_has_to35s": (
+        "fe67f63711c2914a",
+        ((), (" to ",), True),
+        (
+            (
+                "_HAS_TO35S",
+                (
+                    "pattern",
+                    "\\b(?P<obj>(?:the |that |this )?[a-z]+(?: [a-z]+)?) (?:has|have) to (?P<v>be|go|sit)(?P<back> back)? (?P<on>on|onto|in|into) ",
                     34,
                 ),
             ),
@@ -3742,7 +5899,48 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_human_noun36t": (
+        "2d30254ae6a35cd6",
+        ((), ("human ",), True),
+        (
+            (
+                "_HUMAN_NOUN36T",
+                (
+                    "pattern",
+                    "\\bhuman (?=(?:pyramid|pyramids|chain|chains|tower|towers|shield|error|nature|touch|rights|race|resources|cannonball|statue|statues)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_hyphen_time37s": ("7867e16c9ef05ec8", (("-",), (), False), ()),
+    "hltl.grounding._normalise4:_idioms34t": (
+        "f3540c0f047a30e0",
+        (
+            (),
+            (
+                ", the ",
+                "advantage played",
+                "breathe in",
+                "breathe in,",
+                "breathe out",
+                "my ",
+                "omg",
+                "play on!",
+                "requires ",
+                "slay",
+                "the wee ",
+                "wishes to have",
+            ),
+            True,
+        ),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise4:_in_the_way35t": (
+        "b2cd82b37634bc70",
+        ((), ("all over", "blocking", "cluttering", "in the way o", "taking up "), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
     "hltl.grounding._normalise4:_into_they_go33r": (
         "b9fc9260caf404f6",
         ((), ("they go", "with "), True),
@@ -3828,6 +6026,20 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_keep_going36": ("223de288ddb424d1", (("going",), (), False), ()),
+    "hltl.grounding._normalise4:_kind_before34s": (
+        "dfc8b869aad2ea57",
+        ((), ("bite", "drink", "nibble", "refreshment", "snack", "treat"), True),
+        (
+            (
+                "_KIND_BEFORE34S",
+                (
+                    "pattern",
+                    "\\b(?:a|an|some) (?P<kind>snack|drink|bite|nibble|treat|refreshment|bite to eat)\\s*,\\s*(?=(?:the|that|this|those|these) )",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_lay_hands34r": (
         "8b9052bb2fddda19",
         ((), ("you can ",), True),
@@ -3879,6 +6091,30 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^(?:leaving|setting|putting|keeping) (?P<x>(?:the )?[a-z]+(?: [a-z]+)?) (?:aside|to one side),\\s*(?P<p>[a-z][\\w ]*?) can (?:take|have) (?:what's left|whatever's left|what is left|the rest)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_left_as_was34t": (
+        "50ddb7a4313e9801",
+        ((), ("leave ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise4:_legal34t": (
+        "70e8815e09ce2a2c",
+        ((), (" likewise", "hereinafter "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise4:_lesson_on37r": (
+        "bef8c5146f5b5aae",
+        ((), ("for ",), True),
+        (
+            (
+                "_LESSON_ON37R",
+                (
+                    "pattern",
+                    "\\bfor (?P<pro>her|his|their) (?P<what>lesson|talk|class|lecture|session|presentation|seminar|assembly) (?:on|about) (?P<topic>[a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!]|$))",
                     34,
                 ),
             ),
@@ -4127,6 +6363,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_none_of37r": (
+        "b96f6a7b263df22b",
+        ((), ("none of ",), True),
+        (("_NONE_OF37R", ("pattern", "^none of (?P<x>the [a-z]+),\\s*(?=(?:just|only) )", 34)),),
+    ),
     "hltl.grounding._normalise4:_not_first35r": (
         "3560ce0a743d8e12",
         ((), ("not ",), True),
@@ -4220,6 +6461,42 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "\\bthe (?P<a>[a-z]+) (?P<kind>one|[a-z]+)(?P<mind>,\\s*mind)?,\\s*not the (?P<b>[a-z]+)(?: one)?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_not_these33r": (
+        "19076f2494a7e736",
+        ((), ("not ",), True),
+        (
+            (
+                "_NOT_THERE33R",
+                (
+                    "pattern",
+                    "^not (?:on|in|onto|into|under) (?:the )?(?P<place>[a-z]+(?: [a-z]+)?),\\s*(?P<where>(?:into|onto|to|in|on) [^,;.!?]+?),\\s*(?P<x>the [a-z ]+?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_NOT_THESE33R",
+                (
+                    "pattern",
+                    "^(?P<nots>(?:not (?:the |a |an )?[a-z]+(?: [a-z]+)?,\\s*)+)(?P<just>(?:just|only) )?(?P<rest>the .+)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_nothing_besides37r": (
+        "20afd2fbfd0ed643",
+        ((), (" bother with anything ", "nothing "), True),
+        (
+            (
+                "_NOTHING_BESIDES37R",
+                (
+                    "pattern",
+                    ",\\s*(?:and )?(?:nothing (?:besides|beyond|on top of|apart from|other than) (?:that|it|this)|(?:don't|do not) bother with anything (?:more|else|other))(?=\\s*(?:[,.!]|$))",
                     34,
                 ),
             ),
@@ -4455,6 +6732,25 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_only_one34t": (
+        "e20c702ffb6d74af",
+        ((), ("all of us", "everyone", "the lot", "us all"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise4:_only_one_got37r": (
+        "f820a9ab8798ae83",
+        ((), (" the ",), True),
+        (
+            (
+                "_ONLY_ONE_GOT37R",
+                (
+                    "pattern",
+                    "\\b(?P<head>it(?:'s| is) the (?:only|last) one) (?:we've|we have|I've|I have|you've|you have) got( left)?(?=\\s*[.!]?$)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_only_role37s": (
         "ac7e5e9cadb67a82",
         ((), (" only ",), True),
@@ -4497,6 +6793,40 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_opening_scene33t": (
+        "e6b82910a82032e5",
+        (
+            (),
+            (
+                "bring",
+                "can",
+                "could",
+                "get",
+                "give",
+                "grab",
+                "hand",
+                "pass",
+                "please",
+                "pop",
+                "put",
+                "stick",
+                "take",
+                "will",
+                "would",
+            ),
+            True,
+        ),
+        (
+            (
+                "_OPENING33T",
+                (
+                    "value",
+                    "\"^(?P<lead>(?:(?:sorry|oh|so|well|right|okay|ok)\\\\s*,?\\\\s+)*)(?P<said>(?:the |our |my )?[a-z]+(?: [a-z]+)?(?:'s|'re| is| are) [a-z' ]+?),\\\\s+(?P<rest>(?:(?:so|and)\\\\s+)?(?:could|can|would|will|please|give|hand|pass|bring|take|grab|get|pop|put|stick)\\\\b.*)$\"",
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+        ),
+    ),
     "hltl.grounding._normalise4:_opening_state32s": (
         "3639d10128b8217a",
         ((), ("'s", "had", "has", "is", "looks", "seems", "was"), True),
@@ -4520,6 +6850,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     ",\\s*or was it (?P<a>[a-z][\\w ]*?),\\s*yes,\\s*(?P<b>[a-z][\\w ]*?)(?=\\s*(?:[,.!]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_ordeal37s": (
+        "26300d0552053baa",
+        ((), (" after ",), True),
+        (
+            (
+                "_ORDEAL37S",
+                (
+                    "pattern",
+                    "\\b(?P<frame>what [A-Za-z][\\w ]*? (?:really |actually |most )?(?:needs|wants|could use|could do with|would like)) after (?P<ordeal>(?:(?:a|an|one|two|three|four|five|six|seven|eight|nine|ten|twelve|\\d+|several|a few|many) (?:hours?|minutes?|days?|weeks?|months?|years?|shifts?|laps?|miles?) of [a-z' -]+?|a (?:long|hard|busy|tough|rough) (?:day|shift|night|week|morning|afternoon|evening|run|walk)(?: of [a-z' -]+?)?|all that)) (?=is )",
                     34,
                 ),
             ),
@@ -4599,6 +6943,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_people_in36t": (
+        "04c784dcc16f1ed1",
+        ((), ("'re", "are"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise4:_people_things36r": (
         "d2226ebd43728422",
         ((), ("items", "things"), True),
@@ -4625,6 +6974,14 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_pirate34t": (
+        "488dd0e9d0fd0444",
+        ((), (" treasures", "arr", "cap'n", "hearties", "matey"), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
         ),
     ),
     "hltl.grounding._normalise4:_place_better34r": (
@@ -4679,10 +7036,55 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("mind which",), False),
         (),
     ),
+    "hltl.grounding._normalise4:_reason_for_change34t": (
+        "aeab8575a74b7a7c",
+        (
+            (),
+            (
+                " on the brain",
+                "can't stand",
+                "doesn't like",
+                "don't like",
+                "everything you've got there",
+                "hate",
+                "is allergic to",
+                "isn't keen on",
+            ),
+            True,
+        ),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
+    "hltl.grounding._normalise4:_reasons_said34t": (
+        "ee7963d3390ec161",
+        ((), (" because ", " own one ", "'s hands"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise4:_remark_places34t": (
+        "0a37e90280960eb0",
+        ((), ("don't mind me", "here ", "ith the others"), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
     "hltl.grounding._normalise4:_reported_fix34t": (
         "8e383fb31d488ad4",
         ((), ("correction",), False),
         (),
+    ),
+    "hltl.grounding._normalise4:_reported_want34t": (
+        "d79bd42fa1dd7d40",
+        ((), ("reckons", "said", "says", "tells me", "thinks"), True),
+        (
+            (
+                "_REPORTED34T",
+                (
+                    "value",
+                    '"(?P<lead>^|[.!;]\\\\s+|,\\\\s*(?:(?:oh|and|oh and),?\\\\s+)*)(?P<p>[a-z][\\\\w ]*?) (?:says|said|reckons|thinks|tells me)(?: that)? (?P<pro>he|she|they)(?P<verb>(?:\'d| would) (?:love|like)| wants| needs| fancies)\\\\b"',
+                ),
+            ),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
     ),
     "hltl.grounding._normalise4:_restated37r": (
         "ad7176d5072f20d1",
@@ -4720,6 +7122,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_said_again36": (
+        "ff85d5004ba5f6fb",
+        ((), ("fancies", "likewise", "needs", "wants", "would like"), True),
+        (
+            (
+                "_STATE_WANTS36",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| is) (?:thirsty|hungry|starving|peckish|parched|famished|cold|freezing|tired|shattered) (?P<pron>he|she) (?P<v>wants|needs|would like|fancies)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_said_better34r": (
         "ca718fdbf9560132",
         ((), (" better,",), True),
@@ -4733,6 +7149,25 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise4:_said_object34s": (
+        "ae65910699b3b911",
+        ((), (" said ",), True),
+        (
+            (
+                "_SAID_OBJECT34S",
+                (
+                    "pattern",
+                    "(?P<lead>,\\s*)(?P<who>he|she|they) said (?:the )?(?P<what>[a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_said_wanted36t": (
+        "1f3f8be3aed3bbc7",
+        ((), (" said ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise4:_same_van36r": (
         "453d2397bc929398",
@@ -4785,6 +7220,33 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "(?P<cue>\\b(?:no|sorry|wait),\\s*)(?:she|he|they) said (?P<a>[a-z]+),\\s*(?P<rest>the (?P=a) [a-z]+)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_singlish34t": (
+        "58d214dc3b073fe2",
+        ((), ("ah", "eh", "or"), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise4:_sitting37s": (
+        "7c00b4dde7fe3228",
+        ((), ("'d like", "likes", "needs", "not ", "prefers", "wants", "would like"), True),
+        (
+            (
+                "_NOT_THERE37S",
+                (
+                    "pattern",
+                    ",\\s*(?:and )?not (?:(?:hidden|tucked|shoved|stuck|put|left|lost|buried)(?: away)? )?(?:in|on|under|inside|into|in with) (?:a|an|some|the) (?P<w>[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_SITTING37S",
+                (
+                    "pattern",
+                    "\\b(?P<want>wants|would like|'d like|likes|needs|prefers) (?P<x>the [a-z' -]+?) (?:sitting|sat|standing|stood|lying|kept|resting) (?P<on>on|in|by|next to) (?P<s>the [a-z' -]+?)(?=\\s*(?:[,.;!?]|$))",
                     34,
                 ),
             ),
@@ -4877,6 +7339,14 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_sorted_first34t": (
+        "9507963bf849ccfa",
+        ((), (" sorted", "priority is "), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
         ),
     ),
     "hltl.grounding._normalise4:_speaker_remarks": (
@@ -5065,6 +7535,14 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_takes_off35r": ("080905e026e50b8c", ((), (" takes ",), False), ()),
+    "hltl.grounding._normalise4:_target_for34t": (
+        "bad343d0a23f9766",
+        ((), (" for ", "actually", "instead", "no", "rather", "sorry", "wait"), True),
+        (
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
+            ("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),
+        ),
+    ),
     "hltl.grounding._normalise4:_task_had37s": (
         "1a2f4ed82ae7c9b8",
         ((), (", so ",), True),
@@ -5078,6 +7556,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise4:_telegraph34t": (
+        "25c49474caea84b6",
+        ((), (" order", ", ", "the "), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise4:_that_is_a34r": (
         "0dca1559a8e7a81d",
@@ -5121,6 +7604,38 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_the_one35r": (
+        "3d6ef90d8b983e5b",
+        ((), ("the one ", "there"), True),
+        (
+            (
+                "_THE_ONE35R",
+                (
+                    "pattern",
+                    "^there(?:'s| is) (?:just |only )?the one (?P<k>[a-z]+)(?: here)? and it(?:'s| is) (?:meant |intended )?for (?P<p>[^,.;!?]+?)(?P<rest>\\s*(?:[,.;!?].*)?)$",
+                    34,
+                ),
+            ),
+            (
+                "_THE_SINGLE35R",
+                (
+                    "pattern",
+                    "^there(?:'s| is) (?:just |only )?the (?:one|single|lone) (?P<k>[a-z]+)(?: here)?,\\s*so (?P<v>hand|give|pass|take|bring) (?:that|it)(?: one)? (?:over |across )?to (?P<p>[^,.;!?]+?)(?P<rest>\\s*(?:[,.;!?].*)?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_the_one_item37r": (
+        "61f4cfacd01c40e4",
+        ((), ("the one ",), True),
+        (
+            (
+                "_THE_ONE_ITEM37R",
+                ("pattern", "^(?:just |only )?the one (?:item|thing) for (?=[^:]+:)", 34),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_them_listed33r": (
         "1e32f37e3aef4c20",
         ((), (" of them,",), True),
@@ -5148,6 +7663,38 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise4:_then_header36t": (
+        "0523b834e265ca52",
+        ((), (" for ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise4:_theres_one36r": (
+        "8b1f5c3eaf1361f4",
+        ((), (" and only ", "there"), True),
+        (
+            (
+                "_ONLY_ONE_TO36R",
+                (
+                    "pattern",
+                    "^there(?:'s| is) only (?:the )?one (?P<k>[a-z]+) and only (?P<p>[a-z][\\w ]*?) to (?:give|take|hand) it to,\\s*so (?:off it goes to|(?:give|take|hand) it to) (?P<pro>her|him)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            (
+                "_THERES_ONE36R",
+                (
+                    "pattern",
+                    "^there(?:'s| is) (?:a|one|a single|just the one|only the one|only one|the one) (?P<k>[a-z]+)(?: (?:about|here|left|going|over there|on the go))?,\\s*(?:so\\s+)?(?P<v>take|give|bring|hand|pass) it (?P<rest>(?:to|over to) .+)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_thing_cleft34t": (
+        "4af6583019103a4e",
+        ((), ("the thing ",), True),
+        (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise4:_thing_each33r": (
         "3d0135d978f659ee",
@@ -5224,6 +7771,67 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_trailing_remark32s": (
+        "608fd448b729e25d",
+        (
+            (
+                "'d",
+                "'ll",
+                "'m",
+                "'re",
+                "'s",
+                "'ve",
+                "am",
+                "are",
+                "asked",
+                "can",
+                "comes",
+                "could",
+                "did",
+                "does",
+                "goes",
+                "had",
+                "has",
+                "have",
+                "is",
+                "keeps",
+                "kept",
+                "looks",
+                "must",
+                "said",
+                "says",
+                "seems",
+                "should",
+                "sounds",
+                "told",
+                "was",
+                "went",
+                "were",
+                "will",
+                "would",
+            ),
+            (),
+            True,
+        ),
+        (
+            (
+                "_BETWEEN32S",
+                (
+                    "pattern",
+                    "(?P<cut>,\\s*(?P<said>(?P<who>(?i:he|she|they|(?:his|her|their) [a-z]+)|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?P<pred>(?:'s|'re|\\s+(?:is|are|was|were|has|have|had|will|would))\\b[^,.;!?]*))\\s*,)(?=\\s*(?:and\\s+|so\\s+|just\\s+)?(?i:give|hand|pass|bring|take|put|place|pop|send|move)\\b)",
+                    32,
+                ),
+            ),
+            (
+                "_TRAILING32S",
+                (
+                    "pattern",
+                    "(?P<cut>[,.;!?]\\s*(?:(?i:and|cos|because)\\s+)?(?P<said>(?P<who>(?i:he|she|they|i|we|(?:his|her|their|my|our) [a-z]+)|[A-Z][a-z]+(?: [A-Z][a-z]+)?)(?P<pred>(?:'s|'re|'m|'ve|'ll|'d|\\s+(?:is|are|am|was|were|has|have|had|will|would|says|said|asked|told|keeps|kept|does|did|can|could|should|must|looks|seems|sounds|goes|went|came|comes))\\b[^,.;!?]*)))(?P<end>[.!?]*)\\s*$",
+                    32,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_two_one_each33r": (
         "4668ae9d662ab9fa",
         ((), (" and ",), True),
@@ -5236,6 +7844,33 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_understood35t": (
+        "30b564ae39a25218",
+        (
+            (),
+            (
+                "capiche",
+                "capisce",
+                "comprende",
+                "follow me",
+                "get it",
+                "got that",
+                "savvy",
+                "understood",
+            ),
+            True,
+        ),
+        (
+            (
+                "_UNDERSTOOD35T",
+                (
+                    "value",
+                    "',?\\\\s*(?:capisce|capiche|comprende|comprendez|savvy|understood|got that|you got that|get it|follow me)\\\\s*\\\\?\\\\s*$'",
+                ),
+            ),
+            ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
         ),
     ),
     "hltl.grounding._normalise4:_unknown_corrected37r": (
@@ -5285,6 +7920,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_way_about37r": (
+        "b4d7150b0318e76c",
+        ((), ("the other way about",), True),
+        (("_WAY_ABOUT37R", ("pattern", "\\bthe other way about\\b", 34)),),
+    ),
     "hltl.grounding._normalise4:_what_she_wants35s": (
         "8a0fcb10335b8dba",
         ((), ("what ",), True),
@@ -5300,6 +7940,20 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_whats_name36r": ("13693d6152c5b600", ((), ("name",), False), ()),
+    "hltl.grounding._normalise4:_when_talked35s": (
+        "7620f453b0bf2028",
+        ((), (" about ",), True),
+        (
+            (
+                "_WHEN_TALKED35S",
+                (
+                    "pattern",
+                    "(?P<want>\\b(?:was|were|'s been|has been|had been) (?:on|going on|banging on|asking) about (?:(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?|it|them)) (?P<when>(?:before|during|after|at) (?:the|her|his|their|this|that) (?:[a-z]+ ){0,2}[a-z]+)(?=\\s*[,;])",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_where_live34r": (
         "6da186da1d4ca2b1",
         ((), (" where ",), True),
@@ -5408,6 +8062,28 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_whose_then36": (
+        "fa6793c93006350e",
+        (("dropped", "forgotten", "left", "lost", "mislaid", "misplaced"), ("so ",), True),
+        (
+            (
+                "_ARE_WHOSE36",
+                (
+                    "pattern",
+                    "^(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) (?:are|is|'s|belongs? to) (?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s)?,\\s*so (?P<req>.+)$",
+                    34,
+                ),
+            ),
+            (
+                "_LOST_HIS36",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Z][a-z]+(?: [A-Z][a-z]*)?)(?:'s| has) (?:lost|forgotten|mislaid|misplaced|dropped|left) (?P<pos>his|her|their) (?P<x>[a-z][a-z ]*?),\\s*(?:so\\s+)?(?P<req>.+)$",
+                    32,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_will_do_for35r": (
         "0b65cc5fc7f5d167",
         ((), (" will do ",), False),
@@ -5426,6 +8102,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise4:_with_one_there35t": (
+        "0dd08a67330e7112",
+        ((), (" with ",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise4:_wont_mind_if37r": (
         "5549df5d21a84641",
@@ -5446,10 +8127,361 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("wrong way",), False),
         (),
     ),
+    "hltl.grounding._normalise4:_zero_copula34s": (
+        "af67da85a613a6b5",
+        ((), ("he",), True),
+        (
+            (
+                "_ZERO_COPULA34S",
+                (
+                    "pattern",
+                    "(?P<lead>(?:^|[,.;!?])\\s*)(?P<who>he|she|they)\\s+(?=(?:really |so |very |also |still )?(?:thirsty|hungry|parched|gasping|peckish|starving|famished|ravenous|cold|freezing|tired|knackered|shattered|exhausted|sore|sticky|soaked|boiling|sweaty)\\b)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise5:_about_them37": (
+        "a3cfda5dedb03b6c",
+        (
+            (),
+            (
+                " at ",
+                "after",
+                "all afternoon",
+                "all day",
+                "all morning",
+                "all night",
+                "all week",
+                "and that's ",
+                "between shifts",
+                "darling",
+                "from",
+                "lamb",
+                "mite",
+                "monkey",
+                "off duty",
+                "on a break",
+                "on earlies",
+                "on her day off",
+                "on his day off",
+                "on holiday",
+                "on lates",
+                "on leave",
+                "on nights",
+                "one",
+                "pickle",
+                "rascal",
+                "scamp",
+                "since dawn",
+                "since first thing",
+                "soul",
+                "sweetheart",
+                "thing",
+            ),
+            True,
+        ),
+        (
+            (
+                "_BACK_FROM37",
+                (
+                    "pattern",
+                    "(?<=[.!?])\\s+(?P<pron>he|she)(?:'s| is) (?:just |only just |only )?(?:(?:back|home|in) from|(?:tired|worn out|exhausted|shattered|knackered|sleepy|hungry|thirsty|sore|wet|cold|starving|parched|done in) (?:from|after)) (?P<doing>[a-z]+(?: [a-z]+)?)\\s*[.!]?\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_BOTH_BEEN37",
+                (
+                    "pattern",
+                    ",\\s*they(?:'ve| have) (?:both|all) been (?P<what>[a-z]+(?: [a-z]+){0,3}?) (?:all day|all morning|all afternoon|all night|all week|since dawn|since first thing)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_HERS_AT37",
+                (
+                    "pattern",
+                    "(?<=[.!?])\\s+(?P<pron>his|her) (?P<what>[a-z]+(?: [a-z]+)?) (?:starts|finishes|ends|kicks off|is over|begins) at (?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|[0-9]{1,2})(?: o'clock| oclock| ?[ap]m)?\\s*[.!]?\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_SHE_IS_A37",
+                (
+                    "pattern",
+                    ",\\s*(?P<pron>he|she)(?:'s| is) (?:a|such a|a right|a proper|a real|an) (?P<what>(?:[a-z]+ ){0,2}(?:thing|one|soul|mite|lamb|monkey|scamp|rascal|pickle|sweetheart|darling)|[a-z]+(?: [a-z]+)? (?:on leave|off duty|on holiday|on his day off|on her day off|on a break|between shifts|on nights|on earlies|on lates))(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_THATS_HER37",
+                (
+                    "pattern",
+                    "(?:,\\s*|\\s+)and that's (?P<pron>her|him|them|everyone|everybody) (?:sorted|done|set|happy|settled|seen to)(?: out)?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise5:_courtesies37": (
+        "394d34ee881935fb",
+        (
+            (),
+            (
+                "'s ",
+                "could do with",
+                "could use",
+                "from ",
+                "need",
+                "then ",
+                "too much to ask",
+                "want",
+            ),
+            True,
+        ),
+        (
+            (
+                "_MEANT_FOR37",
+                (
+                    "pattern",
+                    "\\b(?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?)'s (?=(?:meant|intended|supposed|reserved|earmarked|set aside) for\\b)",
+                    34,
+                ),
+            ),
+            (
+                "_NEED_ROOM37",
+                (
+                    "pattern",
+                    "(?P<lead>,\\s*|\\s+and\\s+)(?:I|we) (?:need|want|could use|could do with) (?:the |some |a bit of |a bit more |more )?(?P<what>room|space|elbow room|desk space|floor space)(?P<end>\\s*[.!?]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_SIGNED37",
+                (
+                    "pattern",
+                    ",\\s*(?:and\\s+)?from (?:a|an|the|one|your|yours truly, a) (?:(?:very|rather|pretty|really|ever so|so|most) )?(?:(?P<adj>tired|weary|grateful|thankful|thirsty|hungry|busy|happy|exhausted|knackered|humble|harassed|frazzled|cold|wet|worn-out|worn out|old|young|friendly|hard-working|hardworking) )?(?P<trade>[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_THEN_ALL37",
+                (
+                    "pattern",
+                    "\\s+(?:and )?then (?P<c>(?:that's|that is) (?:all|it|everything))\\b",
+                    34,
+                ),
+            ),
+            (
+                "_TOO_MUCH37",
+                (
+                    "pattern",
+                    ",?\\s*if (?:it's|it is|that's|that is|it isn't|that isn't) (?:not )?too much to ask(?: of you| of anyone)?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise5:_so_to_last37": (
+        "1c59effe5310a902",
+        ((" is what ",), ("and ",), True),
+        (
+            (
+                "_SO_TO_LAST37",
+                (
+                    "pattern",
+                    "^(?P<first>.+?),\\s*and (?P<last>[^,.;!?]+?),\\s*so (?P<req>(?:pass|give|hand|take|bring) (?:it|them)(?: over)? to )(?P<pron>him|her)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_WHAT_ASKED37",
+                (
+                    "pattern",
+                    "(?<=, and )(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) is what (?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)) (?P<v>asked for|wanted|wants|needs|ordered|is after)\\b",
+                    32,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise5:_splits37": (
+        "b2ce746c442dc7c7",
+        (
+            (),
+            (
+                " can ",
+                " with ",
+                " you ",
+                "'you reckon",
+                "'you think",
+                "o you reckon",
+                "o you think",
+                "out of ",
+            ),
+            True,
+        ),
+        (
+            (
+                "_CAN_SIT37",
+                (
+                    "pattern",
+                    "(?<=[.;!?])\\s+(?:and |also |oh, and )?(?P<x>(?:the|that|this|those|these) [a-z][a-z ]*?) can (?:sit|go|live|stay) (?P<on>on|onto|in|into) (?P<s>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[.!]|$))",
+                    34,
+                ),
+            ),
+            (
+                "_DO_FOR37",
+                (
+                    "pattern",
+                    "^(?:could|can|would|will) you (?:please )?do (?P<rest>.+?)\\s*\\?\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_DO_YOU_THINK37",
+                (
+                    "pattern",
+                    ",\\s*(?:do you think|d'you think|do you reckon|d'you reckon)(?=\\s*\\?)",
+                    34,
+                ),
+            ),
+            (
+                "_OUT_OF_REACH37",
+                (
+                    "pattern",
+                    "\\s+out of (?P<p>[a-z]+(?: [a-z])?)(?:'s|s|') reach(?:,\\s*(?P<pron>he|she)(?:'s|s| has) had (?:plenty|enough|too many|too much|loads|his fill|her fill|his share|her share)(?: already)?)?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_WITH_IT37",
+                (
+                    "pattern",
+                    "\\b(?P<to>(?:on|onto|in|into|up on|over to|to) (?P<s>the [a-z]+(?: [a-z]+)?|(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+))) with (?P<pron>it|them)(?=\\s*(?:[.!;]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise5:_wants_framed37": (
+        "b95ec4d4803db13f",
+        (
+            (" the ",),
+            (
+                " could ",
+                " have",
+                " on at ",
+                " say no to",
+                " the one ",
+                " would kill for",
+                "after",
+                "by the look",
+                "following",
+                "for ",
+                "need of",
+                "would ",
+            ),
+            True,
+        ),
+        (
+            (
+                "_BY_LOOK37",
+                (
+                    "pattern",
+                    ",\\s*by the looks? of (?P<pron>him|her|them|things|it)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_FOR_DOING37",
+                (
+                    "pattern",
+                    "\\s+for (?P<v>[a-z]{3,}ing) (?P<what>(?:the |those |these |some |a |an )?[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_HOUR_OF37",
+                (
+                    "pattern",
+                    "^(?:after|following) (?:a|an|one|two|three|the) (?:(?:whole|full|long|hard|solid|entire|busy|good) )?(?:hour|hours|day|morning|afternoon|evening|week|session|shift|stint|night) (?:of|at) (?P<doing>[a-z]+(?: [a-z]+)?),\\s*",
+                    34,
+                ),
+            ),
+            (
+                "_IN_NEED37",
+                (
+                    "pattern",
+                    "\\b(?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+))(?:(?:'s| is) the one (?:who's|who is|that's|that is) in (?:dire |real |urgent )?need of|(?:'s| is) in (?:dire |real |urgent )?need of|(?:'s| has) (?:got to|gotta) have| (?:wouldn't|would not) say no to|(?:'s| has) been on at (?:me|us) (?:about|for)|(?:'s| is) on at (?:me|us) (?:about|for)| would kill for| could (?:really |just )?go for) (?=(?:the|that|this|those|these|her|his|their) )",
+                    34,
+                ),
+            ),
+            (
+                "_THE_THING37",
+                (
+                    "pattern",
+                    "\\b(?P<be>is|are) the (?:(?:one|only|very) )?things? (?:that |which )?(?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+))(?P<v>'s been|'s|has been|is|was|had been|'d been) (?P<w>craving|wanting|after|on about|asking for|dreaming of|longing for|hankering after|going on about)\\b",
+                    32,
+                ),
+            ),
+            (
+                "_WOULD_QUITE37",
+                (
+                    "pattern",
+                    "\\bwould (?:quite|really|rather|so|just|very much|dearly|truly) (?P<v>fancy|like|love)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites38:_after_doing38": (
         "84db8dc775d8bc9b",
         ((), ("after", "following", "since"), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding._rewrites38:_courtesies38": (
+        "45a532745f9bddd3",
+        (
+            (),
+            (
+                "asked for",
+                "expects",
+                "likes",
+                "needs",
+                "on behalf of ",
+                "prefers",
+                "so if you ",
+                "wants",
+            ),
+            True,
+        ),
+        (
+            (
+                "_ON_BEHALF38",
+                (
+                    "pattern",
+                    "^on behalf of (?:our|the|my|all of us at the|everyone at the|us at the) (?P<who>[a-z]+(?: [a-z]+){0,3}),\\s*",
+                    34,
+                ),
+            ),
+            (
+                "_SO_IF38",
+                (
+                    "pattern",
+                    ",\\s*so if you (?:could|would|can|don't mind|wouldn't mind|would be so kind)(?=\\s*(?:,|[.!]?\\s*$))",
+                    34,
+                ),
+            ),
+            (
+                "_WANTS_TIDY38",
+                (
+                    "pattern",
+                    ",\\s*(?:the|our|my) (?P<who>[a-z]+(?: [a-z]+)?) (?:wants|likes|needs|prefers|expects|has asked for|asked for) (?:a|an) (?:tidy|clear|clean|empty|neat|spotless|uncluttered|free) (?P<what>[a-z]+)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._rewrites38:_fronted38": (
         "39d97f53d60e5495",
@@ -5464,6 +8496,194 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^(?P<p>(?:(?:mr|mrs|ms|miss|dr|person) )?[a-z]+?)(?:'s|s| is) (?:just )?(?P<state>(?:back|home|in|fresh) from|on (?:a|her|his) (?:diet|health kick|detox|fast|cleanse)(?: for)?|in training for|training for|off to) (?P<what>(?:the|his|her|their|a|an) [a-z' -]+?),?\\s+so (?P<rest>\\S.*)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites38:_lower38": (
+        "f17fbfba8d7b4e8a",
+        ((), ("always", "ever", "for ", "normal", "usual"), True),
+        (
+            (
+                "_FOR_TRADES38",
+                (
+                    "pattern",
+                    "\\s+for (?:the|our|my|his|her) (?P<who>[a-z]+(?: [a-z]+)?)(?:'s|s'|s) (?P<what>[a-z]+(?: [a-z]+){0,2})(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_HABIT38",
+                (
+                    "pattern",
+                    "\\s*,?\\s+(?:like|as|same as) (?:every time|always|ever|usual|per usual|normal)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites38:_pronouns38": (
+        "79e43cb5ea533879",
+        ((" with ", "asking", "enquiring", "inquiring"), ("i mean", "the one with "), True),
+        (
+            (
+                "_ASKING_AFTER38",
+                (
+                    "pattern",
+                    "\\b(?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)) (?:was|is|'s|has been|'s been|had been) (?:asking|enquiring|inquiring) (?:after|about) (?=(?:the|his|her|their|that|this) )",
+                    32,
+                ),
+            ),
+            (
+                "_DONE_WITH38",
+                (
+                    "pattern",
+                    "^(?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+))(?:'s| is| has) (?:done|finished) with (?P<x>(?:the|his|her|that|this) [a-z]+(?: [a-z]+)?),\\s*(?:(?P<pron>he|she)(?:'s| is) (?P<why>[a-z' ]+?),\\s*)?so (?:it|that) (?:can|could|should|may) (?:go|live) (?P<where>(?:back )?(?:in|on|into|onto) .+)$",
+                    32,
+                ),
+            ),
+            (
+                "_IT_I_MEAN38",
+                (
+                    "pattern",
+                    "^(?P<pre>[^,]*?)\\bit\\b(?P<mid>[^,]*),\\s*(?P<x>(?:the|that|this|her|his|their) [a-z]+(?: [a-z]+)?),\\s*I mean\\b(?P<sep>,\\s*|\\s*[.!]?\\s*$)",
+                    34,
+                ),
+            ),
+            (
+                "_ONE_WITH38",
+                (
+                    "pattern",
+                    ",\\s*the one with (?P<d>(?:a|an|the|some) [a-z' -]+?) on (?:the|its) (?:cover|front|back|label|lid|side|spine|top)(?=\\s*(?:[;,.!]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites38:_questions38": (
+        "fd9ee2b3c5ad92b6",
+        ((" about ", "ready for "), (" from ", "my", "our", "the"), True),
+        (
+            (
+                "_BACK_FROM38",
+                (
+                    "pattern",
+                    "(?<=[.!?])\\s+(?P<pron>he|she)(?:'s| is) (?:just |only just )?(?:back|home|in) from (?P<whose>his|her) (?P<doing>[a-z-]+(?: [a-z-]+){0,2})\\s*[.!]?\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_HOW_ABOUT38",
+                (
+                    "pattern",
+                    "^(?:how|How) about (?P<req>(?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)) (?:gets|has|takes|can have) .+?)(?:,\\s*(?:seeing as|since|as|because) (?:he|she|they) (?:asked|got here|came|was here|were here) first)?\\s*\\?\\s*$",
+                    32,
+                ),
+            ),
+            (
+                "_READY_FOR38",
+                (
+                    "pattern",
+                    ",\\s*(?:all )?ready for (?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+))(?:'s|s) (?:tea|lunch|dinner|breakfast|supper|snack|bath|nap|bedtime|feed|bottle time)(?: (?:after|before) (?:the|his|her) (?P<ev>[a-z-]+(?: [a-z-]+)?))?(?P<end>\\s*[.!?]?)\\s*$",
+                    32,
+                ),
+            ),
+            (
+                "_THIRD_PARTY38",
+                (
+                    "pattern",
+                    "(?<=[.!?])\\s+(?:the|our|my) (?P<words>[a-z][a-z' ]*?)\\s*[.!]?\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites38:_remarks38": (
+        "91b62b165aa6455a",
+        (
+            (),
+            (
+                " got ",
+                " out",
+                "achy",
+                "exhausted",
+                "famished",
+                "hungry",
+                "offered",
+                "owes",
+                "parched",
+                "peckish",
+                "promised",
+                "shattered",
+                "sleepy",
+                "sore",
+                "starving",
+                "stiff",
+                "sweaty",
+                "thirsty",
+                "tired",
+            ),
+            True,
+        ),
+        (
+            (
+                "_GOT_HER38",
+                (
+                    "pattern",
+                    ",\\s*(?P<pron>he|she)(?:'s| has) got (?P<whose>his|her) (?P<what>[a-z-]+(?: [a-z-]+){0,2}) (?:practice|lesson|class|rehearsal|session|shift|match|game|training|appointment|meeting|exam|audition)(?: (?:and|so) (?:wants|needs|would like|fancies|could do with) (?:a|an|some) (?:brew|cuppa|drink|snack|bite|sit down|sit-down|rest|breather|sugar boost)(?: first| beforehand| before that| before it)?)?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_LEFT_THEM38",
+                (
+                    "pattern",
+                    "(?:[,;]\\s*|(?<=[.!])\\s+)(?P<whose>his|her|their|the|all that|that) (?P<what>[a-z-]+(?: [a-z-]+){0,2}) (?:(?:makes|made|leaves|left|gets|got|has made|has left) (?P<p1>him|her|them) (?:so |really |very |a bit |proper )?(?:thirsty|hungry|peckish|parched|starving|famished|tired|sleepy|sore|sweaty|achy|stiff|worn out|exhausted|shattered)|(?:tired|wore|wears|tires|has tired|has worn|wiped|has wiped|knocked|has knocked) (?P<p2>him|her|them) out)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_PROMISED38",
+                (
+                    "pattern",
+                    ",\\s*(?:the|our|my) (?P<who>[a-z]+(?: [a-z]+)?) (?:promised|owes|offered|has promised|had promised) (?P<pron>him|her|them) (?:some|one|a few|a couple)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites38:_splits38": (
+        "2796950b3dfe84f3",
+        ((), ("done", "finished", "free", "with "), True),
+        (
+            (
+                "_DONE_FOR38",
+                (
+                    "pattern",
+                    ",\\s*(?:and )?(?:then )?(?:you're|you are|youre) (?:done|finished|free|free to go)(?: for (?:the day|today|now|the night|the week|the shift))?(?=\\s*(?:,|[.!]?\\s*$))",
+                    34,
+                ),
+            ),
+            (
+                "_WITH_AFTER38",
+                (
+                    "pattern",
+                    ",\\s*with (?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?) (?P<on>on|in|onto|into) (?P<s>the [a-z]+(?: [a-z]+)?) (?:after that|afterwards|after|last|to finish|at the end)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites38:_wants38": (
+        "90662a91493aa321",
+        ((), ("being a",), True),
+        (
+            (
+                "_BEING_A38",
+                (
+                    "pattern",
+                    ",\\s*being (?:a|an) (?P<what>[a-z]+(?: [a-z]+){0,5}),\\s*(?=(?:is|are|was)\\b)",
                     34,
                 ),
             ),
@@ -5544,6 +8764,117 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("there", "you"), False),
         (),
     ),
+    "hltl.grounding._rewrites38s:_corrections38s": (
+        "284465feb079f7cb",
+        (
+            (),
+            (
+                " called",
+                " out of ",
+                " the one ",
+                "actually",
+                "after",
+                "asked for",
+                "asking for",
+                "brain",
+                "hang on",
+                "he",
+                "head",
+                "hold on",
+                "i am",
+                "i'm",
+                "memory",
+                "mind",
+                "needs",
+                "not ",
+                "that",
+                "the ",
+                "wait",
+                "wanting",
+                "wants",
+                "who",
+            ),
+            True,
+        ),
+        (
+            (
+                "_CLEFT_WANT38S",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:no|nope|sorry|no sorry|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|oh,? correction|i mean|my mistake)\\s*,\\s*)it(?:'s| is) (?P<x>the [a-z][a-z ]*?) (?:(?P<p>he|she)(?:'s| is) (?:after|wanting|asking for)|(?P<q>he|she) (?:wants|needs|asked for))(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_FINE38S",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:no|nope|sorry|no sorry|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|oh,? correction|i mean|my mistake)\\s*,\\s*)(?P<pron>he|she)(?:'s| is) (?:fine|ok|okay|sorted|all right|alright|good|set)\\s*,\\s*(?=it(?:'s| is) )",
+                    34,
+                ),
+            ),
+            (
+                "_IT_WHO38S",
+                (
+                    "pattern",
+                    "(?P<head>\\b(?:no|nope|sorry|no sorry|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|oh,? correction|i mean|my mistake)\\s*,\\s*(?:[^,.;!?]+,\\s*)?)it(?:'s| is) (?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)) (?:who|that)(?:'s| is| has) (?P<what>[^,.;!?]+?)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_NAME_SEARCH38S",
+                (
+                    "pattern",
+                    "\\b(?P<to>to|for),\\s*(?:(?:oh|er|erm|um|uh|ah)\\s*,?\\s*)?what(?:'s| is) (?P<pron>he|she) called(?: again)?\\s*[,?]\\s*(?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+))(?:\\s*,\\s*(?:that's it|that's the one|that's right|yes|yeah)(?:\\s*,\\s*(?P<again>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)))?)?(?=\\s*(?:[.!]|$))",
+                    34,
+                ),
+            ),
+            (
+                "_NOT_TAKEN38S",
+                (
+                    "pattern",
+                    "(?P<cue>(?<!\\bno )\\b(?:wait|hang on|hold on|hang about|actually)\\s*,\\s*)not (?P<x>the [a-z][a-z ]*?)\\s*,\\s*",
+                    34,
+                ),
+            ),
+            (
+                "_OR_CUE38S",
+                ("pattern", ",\\s*or,?\\s+(?P<cue>actually|wait|hang on|hold on)\\s*,", 34),
+            ),
+            (
+                "_OUT_OF38S",
+                (
+                    "pattern",
+                    "(?P<old>(?:the |some |a |an )?(?P<x>[a-z]+))(?P<mid>\\s*,\\s*(?:no|nope|sorry|no sorry|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|oh,? correction|i mean|my mistake)\\s*,\\s*)(?P<new>(?:the|some|a|an) [a-z][a-z ]*?)\\s*,\\s*(?:we're|we are|we've|we have|they're|you're|i'm)(?: all| clean| right)?(?: run)? out of (?:the |any )?(?P<y>[a-z]+)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_SAID_SO38S",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:no|nope|sorry|no sorry|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|oh,? correction|i mean|my mistake)\\s*,\\s*)(?P<who>he|she|(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)) (?:said|says|reckons|told me)\\s+(?P<x>(?:(?:on|in|onto|into) )?the [a-z][a-z ]*?)(?=\\s*(?:[,.!]|$))",
+                    34,
+                ),
+            ),
+            (
+                "_SLIP38S",
+                (
+                    "pattern",
+                    ",\\s*(?P<er>er|erm|um|uh|oh|sorry)\\s*,\\s*(?:my (?:brain|head|mind|memory)(?:'s| is)|i'm|i am) (?P<what>[^,.;!?]+?)\\s*,\\s*(?=(?:i mean|i meant|sorry|no)\\b)",
+                    34,
+                ),
+            ),
+            (
+                "_THE_ONE38S",
+                (
+                    "pattern",
+                    "(?P<head>\\b(?:no|nope|sorry|no sorry|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|oh,? correction|i mean|my mistake)\\b[^.;!?]*?),\\s*(?:(?P<pron>he|she)|(?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)))(?:'s| is) the one (?P<what>(?:(?:who|that)(?:'s| is| has) )?(?:just )?(?:(?:back|in|home) from|been|[a-z]+ing)\\b[^,.;!?]*?)(?:,\\s*so (?P<so>him|her))?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites38s:_for_theirs38s": (
         "8cb0bab433cf5c03",
         ((), ("for ",), True),
@@ -5609,6 +8940,57 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites39:_is_to39": ("558fc4080d9b66be", ((), ("'s to ",), False), ()),
     "hltl.grounding._rewrites39:_it_remark39": ("0d7e8a46389843f5", ((), (" it",), False), ()),
     "hltl.grounding._rewrites39:_only_one39": ("ae74465d20de8fe1", ((), ("only",), False), ()),
+    "hltl.grounding._rewrites39:_order39": (
+        "4fca9b76038d26d5",
+        ((), ("after", "begin", "once ", "start", "waiting for", "waiting on", "wanting"), True),
+        (
+            (
+                "_ONCE_SORTED39",
+                (
+                    "pattern",
+                    "\\bonce (?:(?P<both>(?:both|both of them|they)(?: are|'re| have been)?|theyre)|(?P<pron>he|she)(?:'s|s| is| has been)) (?:sorted|sorted out|seen to|served|looked after|done|taken care of|dealt with)\\b",
+                    34,
+                ),
+            ),
+            (
+                "_SORT_OUT39",
+                (
+                    "pattern",
+                    "^(?P<p>[A-Za-z][\\w ]*?)(?:'s| is) (?:after|wanting|waiting for|waiting on) (?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?),\\s*so (?:sort (?P<p1>him|her) out|see to (?P<p2>him|her))(?P<first> first)?(?=\\s*(?:[.;!]|$))",
+                    34,
+                ),
+            ),
+            ("_START_OFF39", ("pattern", "^(?:start|begin) (?:off|out) (?=with\\b)", 34)),
+        ),
+    ),
+    "hltl.grounding._rewrites39:_pronouns39": (
+        "0156496a18ca3a14",
+        (("?", "if you ", "please"), ("as for ", "as regards ", "as to "), True),
+        (
+            (
+                "_WHOSE_PLEASE39",
+                (
+                    "pattern",
+                    "^(?P<x>(?:[Tt]he|[Tt]hat|[Tt]his) [a-z]+(?: [a-z]+)?)(?:'s| is) (?P<p>[A-Z][\\w ]*?)'s,\\s*(?P<c>if you (?:would|could|will|please|don't mind|wouldn't mind)|please)\\b",
+                    32,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites39:_questions39": (
+        "ca3d40ec3d4aa2f2",
+        (("?",), (" after ",), True),
+        (
+            (
+                "_WAITED_AFTER39",
+                (
+                    "pattern",
+                    "^(?P<s>(?P<p>[A-Z][\\w ]*?)(?:'s| has| is)(?: been)? (?:stood|standing|waiting|sat|sitting|queuing|queueing|hanging about|hanging around)(?: there| here| about| around)?(?: for (?:ages|a while|hours|an age|a good while|a bit))?) after (?P<pron>his|her|their) (?P<what>[a-z-]+(?: [a-z-]+){0,3})(?=[.!]\\s+\\S)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites39:_since_came39": ("a126cd703792b9dc", ((), ("since",), False), ()),
     "hltl.grounding._rewrites39:_want_idioms39": (
         "91da78d3df4c105b",
@@ -5733,6 +9115,84 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites39s:_corrections39s": (
+        "e6e281d99f7b0e45",
+        (
+            (),
+            (
+                " go",
+                " got th",
+                " the one ",
+                " what ",
+                "daft me",
+                "hold up",
+                "i keep ",
+                "ixed",
+                "my ",
+                "silly me",
+                "silly old me",
+                "that",
+                "to ",
+                "uddled",
+                "who",
+            ),
+            True,
+        ),
+        (
+            (
+                "_GOES_TO39S",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:no|nope|sorry|no sorry|oh no|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|i mean|my mistake|oops|whoops)\\s*,\\s*)(?:it|they|that|that one)(?: should| ought to| needs to| has to| have to| must| can)? go(?:es)? (?=to\\s)",
+                    34,
+                ),
+            ),
+            (
+                "_HOLD_UP39S",
+                ("pattern", "(?P<lead>,\\s*(?:(?:ah|oh)\\s*,?\\s*)?)hold up(?=\\s*,)", 34),
+            ),
+            (
+                "_ONE_NEEDING39S",
+                (
+                    "pattern",
+                    "(?P<p>\\b(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+))(?:'s| is) the one (?:needing|wanting|after|asking for) (?P<it>it|them)(?: for (?:the|her|his|their) [a-z]+(?: [a-z]+){0,2})?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_PLACE_NOT39S",
+                (
+                    "pattern",
+                    "^(?P<head>[^,;.!?]+?\\bto [^,;.!?]+?),\\s*(?:or\\s+)?(?P<cue>no|actually|sorry|no wait|rather)\\s*,\\s*(?P<where>(?:on|onto|in|into) (?:the )?[a-z][a-z ]*?)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_SLIP39S",
+                (
+                    "pattern",
+                    "(?P<lead>,\\s*)(?P<cue>(?:(?:oh|ah|well)\\s*,?\\s*)?(?:(?:no|nope|sorry|no sorry|oh no|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|i mean|my mistake|oops|whoops))\\s*,\\s*)?(?:oh\\s*,?\\s*)?(?P<slip>i keep (?:saying|calling (?:him|her|them)|getting (?:them|those) (?:mixed up|muddled(?: up)?))(?P<said>(?: [a-z]+){0,2})|i(?:'ve| have) (?:muddled|mixed) (?:them|those|it|that)(?: up)?|i(?:'ve| have) got (?:them|those) (?:mixed up|muddled(?: up)?)|my (?:muddle|mix-up|mix up|bad)|silly me|daft me|silly old me)\\s*,\\s*",
+                    34,
+                ),
+            ),
+            (
+                "_WHAT_ASKED39S",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:no|nope|sorry|no sorry|oh no|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|i mean|my mistake|oops|whoops)\\s*,\\s*)(?P<x>the [a-z][a-z ]*?)(?:'s| is) what (?P<who>he|she|(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)) (?:asked for|wants|wanted|needs|needed|ordered|is after|'s after|was after)(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_WHO_IS_ABOUT39S",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:no|nope|sorry|no sorry|oh no|actually|wait|no wait|hang on|hold on|hang about|scratch that|correction|i mean|my mistake|oops|whoops)\\s*,\\s*)(?:(?P<gone>he|she)(?:'s| is) not (?:here|about|around|in)(?: today)?\\s*,\\s*)?it(?:'s| is) (?P<p>(?:Person [A-Z]|(?:Mrs|Mr|Ms|Miss|Dr) [A-Z][a-z]+|[A-Z][a-z]+)) (?:who|that)(?:'s| is) (?:about|here|around|in)(?:\\s*,\\s*so (?:give|hand|pass|take) (?:it|them) (?:to )?(?P<pron>her|him))?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites40:_any_going40": ("41896f069a10154a", ((), (" if ",), False), ()),
     "hltl.grounding._rewrites40:_bless40": ("c66a2dfe71998bed", ((), ("bless",), False), ()),
     "hltl.grounding._rewrites40:_finish_with40": ("d70ecda554046db7", ((), (" with ",), False), ()),
@@ -5742,6 +9202,56 @@ GUARDS: dict[str, Entry | str] = {
         "a1c016dbb70145df",
         ((), ("asked for",), False),
         (),
+    ),
+    "hltl.grounding._rewrites40r:_blame40r": (
+        "97109e283d5fdb85",
+        (
+            (),
+            (
+                " my mistake",
+                " not ",
+                " that wrong",
+                "confused",
+                "correction",
+                "correction from ",
+                "er",
+                "i got ",
+                "i misspoke",
+                "i'm all over the place",
+                "mixed up",
+                "muddled",
+                "my bad",
+                "my fault",
+                "my mistake",
+                "silly me",
+                "uh",
+                "um",
+                "wrong name",
+                "wrong one",
+                "wrong person",
+                "wrong way round",
+            ),
+            True,
+        ),
+        (
+            (
+                "_BLAME40R",
+                (
+                    "value",
+                    "\"(?P<m>(?<=,\\\\s)(?:no|sorry|wait|no wait|hang on|hold on|oops|scratch that)\\\\s*,\\\\s*)(?:(?:um|erm|er|uh|oh)\\\\s*,\\\\s*)?(?:wrong name|wrong person|wrong one|my mistake|my bad|my fault|silly me|correction|i'm all over the place(?: today)?|i'm (?:getting )?(?:muddled|mixed up|confused)(?: today)?|i got (?:that|it) wrong|i misspoke)\\\\s*,\\\\s*(?=[a-z])\"",
+                ),
+            ),
+            (
+                "_CORRECTION_CUE33R",
+                (
+                    "pattern",
+                    "[,.]\\s*(?:(?:oh|ah|er|um),? )?(?:hang (?:about|on),? i (?:got|had) that wrong|(?:hmm|hm|erm|um),? no,? my mistake|(?:a )?correction from (?:the )?[a-z]+(?: [a-z]+)?|no,? (?P<way>wrong way round|the wrong way round)|(?:no|well|ah|er|um|sorry),? not (?P<x>(?:the )?[A-Za-z]+(?: [A-Za-z]+)?))\\s*,\\s*(?P<fix>.+)$",
+                    34,
+                ),
+            ),
+            ("_F", ("value", "re.IGNORECASE")),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
     ),
     "hltl.grounding._rewrites40r:_claim40r": (
         "f48f5f9c16a20373",
@@ -5782,6 +9292,15 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites40r:_gone_off40r": (
         "382f3227c81f79f6",
         ((), (" no ", " of ", " off ", " on "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites40r:_indifferent40r": (
+        "09286e0f86b1150e",
+        (
+            (),
+            ("bother", "choos", "either", "fuss", "matter", "one of the", "partic", "pick"),
+            False,
+        ),
         (),
     ),
     "hltl.grounding._rewrites40r:_leave_first40r": (
@@ -5838,6 +9357,11 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites40r:_taking_so40r": ("d0969f5945dc0e14", ((), ("taking",), False), ()),
     "hltl.grounding._rewrites40r:_theirs40r": ("f1fa8291959029a4", (("'s",), (), False), ()),
+    "hltl.grounding._rewrites40r:_whoever40r": (
+        "f50b8823c72b57b8",
+        ((), ("whichever", "whoever"), False),
+        (),
+    ),
     "hltl.grounding._rewrites40s:_been_and40s": (
         "27d40c94be7d9e06",
         ((), (" been ",), True),
@@ -6071,6 +9595,21 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites41r:_let_use41r": ("3da31606aac205e2", ((), ("let ",), False), ()),
+    "hltl.grounding._rewrites41r:_no_wait41r": (
+        "1c2204382f6389a3",
+        ((" off",), (" to wait", " waiting", "hurry", "rush"), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            (
+                "_NO_WAIT41R",
+                (
+                    "value",
+                    '"^(?:there\'s |there is )?(?:nothing to wait (?:for|on)|no (?:call|reason) to wait(?: (?:for anyone|for anything|around|about))?|no waiting(?: around)?|no (?:rush|hurry)(?: either way)?|no point waiting(?: around)?)\\\\s*[,;:]\\\\s*(?=[a-z])"',
+                ),
+            ),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._rewrites41r:_not_for_after41r": (
         "95db6de38f6845ac",
         ((" for ",), (), False),
@@ -6203,6 +9742,107 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites41s:_errand41s": (
+        "2a1d9ef0dc28bf4a",
+        (
+            (),
+            (
+                " is taking",
+                " take",
+                "'s taking",
+                "cleaned",
+                "cleared",
+                "got ",
+                "laid",
+                "set",
+                "sorted",
+                "tidied",
+                "wiped",
+            ),
+            True,
+        ),
+        (
+            (
+                "_DONE_TO41S",
+                (
+                    "pattern",
+                    "^(?P<who>[a-z]+(?: [a-z]+)?)(?:'s| has) (?:got (?P<s1>(?:the|that) [a-z]+(?: [a-z]+)?) (?:sorted|cleared|wiped(?: down)?|tidied|cleaned|set|laid|done|ready)(?: out)?|(?:sorted|cleared|wiped(?: down)?|tidied|cleaned|set|laid) (?P<s2>(?:the|that) [a-z]+(?: [a-z]+)?))(?: already| now)?\\s*,?\\s*(?:and )?so,?\\s+(?P<req>\\S.*)$",
+                    34,
+                ),
+            ),
+            (
+                "_TAKES_TO41S",
+                (
+                    "pattern",
+                    "(?P<who>\\b[a-z]+(?: [a-z]+)?)(?:'s taking| is taking| can take| could take| will take|'ll take| takes| to take| may take| might take| take) (?P<what>[^,;:.!?]+?) (?P<to>(?:(?:home|off|back|away|round|over|along) )?to (?:the|his|her|their|a) (?P<where>[a-z][a-z' -]*?))(?=\\s*(?:[.,;:!?]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites41s:_group_remark41s": (
+        "0eddfd06d14a95d1",
+        (
+            (),
+            (
+                " with",
+                "after",
+                "need",
+                "now",
+                "seeing as",
+                "seeing that",
+                "use",
+                "using",
+                "want",
+                "who",
+            ),
+            True,
+        ),
+        (
+            (
+                "_NOW_THAT41S",
+                (
+                    "pattern",
+                    "(?P<sep>,?\\s+)(?:now that|now|seeing as|seeing that) (?P<said>(?:the|our|my|we)\\b[^,;:.!?]*?)\\s*(?P<end>[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_THEIR_USE41S",
+                (
+                    "pattern",
+                    "(?P<sep>\\s*[,;]\\s*|\\s+(?:-|—|–)\\s+|(?<=\\bplease)\\s+|(?<=\\bpls)\\s+|(?<=\\bthanks)\\s+)(?P<who>(?:the|our|my) [a-z]+(?: [a-z]+){0,2}?)(?:'s|'re|'ll| is| are| has| have| will| would)? ?(?:(?:be )?(?:done|finished|through) with|(?:be )?(?:want|need|use|wanting|needing|using|after)|want|need) (?:it|them|those|these)(?: (?:now|later|next|soon|after|afterwards|in a bit|tonight))?\\s*[.!]?\\s*$",
+                    34,
+                ),
+            ),
+            (
+                "_WHO_IS41S",
+                (
+                    "pattern",
+                    "(?P<sep>,\\s*)who(?P<rest>(?:'s| is| was| has| had)\\s[^,;:.!?]+?)\\s*(?P<end>[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites41s:_middle_remark41s": (
+        "f0125c909814623f",
+        ((), (" from", "and"), True),
+        (
+            (
+                "_FROM_DOING41S",
+                ("pattern", "\\b(?P<from>(?:back|home|in) from) (?P<doing>[a-z]+ing)\\b", 34),
+            ),
+            (
+                "_MIDDLE41S",
+                (
+                    "pattern",
+                    ",\\s*(?P<said>(?:(?:he|she)(?:'s| is| has| was| had)|(?:his|her) [a-z]+)\\b[^,;:.!?]*?),\\s*(?P<next>and\\s+\\S)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites41s:_occasion41s": (
         "e5edc16a08c3b7b6",
         ((), ("after ", "ahead of ", "before ", "during ", "following ", "since "), False),
@@ -6210,6 +9850,28 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites41s:_placed_for41s": ("87c9942f57346803", ((), ("for ",), False), ()),
     "hltl.grounding._rewrites41s:_purpose41s": ("318eb8f9b5ed03c2", ((), ("for ",), False), ()),
+    "hltl.grounding._rewrites41s:_trade41s": (
+        "4065a34e5b8b3886",
+        ((), (" and ", "the "), True),
+        (
+            (
+                "_TRADE_AFTER41S",
+                (
+                    "pattern",
+                    "(?P<to>\\b(?:for|to) )(?P<who>[a-z]+(?: [a-z]+){0,2}?) (?P<trade>the (?:[a-z]+ ){0,2}(?!(?:after|later|never|ever|over|under|rather|together|either|neither|other|another|whether|sooner|for|nor|or|per|thereafter|hereafter|ago)\\b)[a-z]+(?:er|or|ist|ian|man|men|woman|women|lady|ladies|smith|wright|wife|maker|hand|champion|champ|captain|chef|cook|fan|buff|nurse|lad|lass|guy|boss|rep|warden|keeper)s?)(?=\\s*(?:[.,;:!?]|$)|\\s+(?:and|then|please|pls|thanks|so)\\b)",
+                    34,
+                ),
+            ),
+            (
+                "_TRADE_AND41S",
+                (
+                    "pattern",
+                    "(?P<who>\\b(?:he|she)|^[a-z]+(?: [a-z]+){0,2}?|(?<=[,;:.!?] )[a-z]+(?: [a-z]+){0,2}?)(?:'s| is) (?:a|an|the) (?P<trade>(?:[a-z]+ ){0,2}(?!(?:after|later|never|ever|over|under|rather|together|either|neither|other|another|whether|sooner|for|nor|or|per|thereafter|hereafter|ago)\\b)[a-z]+(?:er|or|ist|ian|man|men|woman|women|lady|ladies|smith|wright|wife|maker|hand|champion|champ|captain|chef|cook|fan|buff|nurse|lad|lass|guy|boss|rep|warden|keeper)s?) and (?P<rest>[a-z][a-z']*)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites42:_cleft_want42": (
         "a6710e7f2fe20da5",
         ((), ("'tis ", "it is ", "it's ", "what "), False),
@@ -6440,6 +10102,21 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("respectively",), False),
         (),
     ),
+    "hltl.grounding._rewrites42r:_role_group42r": (
+        "5035ffcd4e0ef537",
+        ((), ("a", "all ", "both", "the "), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            (
+                "_ROLE_GROUP42R",
+                (
+                    "value",
+                    "'(?<!\\\\bof )\\\\b(?:the (?P<n>two|three|four)|both(?: of the)?|all (?P<n2>two|three|four)(?: of the)?) (?P<r>[a-z]+s)\\\\b'",
+                ),
+            ),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._rewrites42r:_single42r": (
         "573cf322507c635b",
         ((), ("single", "the one"), False),
@@ -6585,6 +10262,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" so ",), False),
         (),
     ),
+    "hltl.grounding._rewrites42s:_once_there42s": (
+        "b10e4cf07c20ddb9",
+        ((), (" head ", "as soon as ", "once ", "when "), False),
+        (),
+    ),
     "hltl.grounding._rewrites42s:_opening_occasion42s": (
         "ed07afb8430b2859",
         ((), ("after", "following", "since"), True),
@@ -6701,6 +10383,7 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("both", "of them", "pair", "requests", "set of", "things"), False),
         (),
     ),
+    "hltl.grounding._rewrites43r:_if_there_is43r": ("a1c5a774419a124f", ((), ("if ",), False), ()),
     "hltl.grounding._rewrites43r:_mid_sized43r": (
         "0bff4ea96885d8a6",
         ((), ("sized",), False),
@@ -6725,6 +10408,48 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("n't", "no ", "not"), False),
         (),
     ),
+    "hltl.grounding._rewrites43r:_not_idiom43r": (
+        "88a57fbf4ae0107e",
+        (
+            (),
+            (
+                "abide",
+                "bothered",
+                "care",
+                "done",
+                "down",
+                "drink",
+                "eat",
+                "enough",
+                "face",
+                "fancy",
+                "fed up",
+                "fill",
+                "finished",
+                "fussed",
+                "gone",
+                "like",
+                "near",
+                "no need",
+                "no to",
+                "no use",
+                "nose",
+                "sick",
+                "stand",
+                "stomach",
+                "thank",
+                "through",
+                "tired",
+                "touch",
+                "turn",
+                "use",
+                "will not be",
+                "won't be",
+            ),
+            False,
+        ),
+        (),
+    ),
     "hltl.grounding._rewrites43r:_nothing_more43r": (
         "4e6b6da4c29c8501",
         ((), ("no more", "not a", "nothing"), False),
@@ -6744,6 +10469,35 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites43r:_said_wrong43r": (
         "a9101b1256885d46",
         ((), ("did i", "i said", "not "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites43r:_slip_cue43r": (
+        "c246ba01977ade50",
+        (
+            (),
+            (
+                "back up",
+                "change of plan",
+                "forget",
+                "mis",
+                "mixed",
+                "muddled",
+                "my bad",
+                "my error",
+                "my mistake",
+                "not it",
+                "not right",
+                "rewind",
+                "scrap",
+                "scratch",
+                "silly me",
+                "start",
+                "strike",
+                "take that",
+                "wrong",
+            ),
+            False,
+        ),
         (),
     ),
     "hltl.grounding._rewrites43r:_to_hand43r": (
@@ -6950,6 +10704,38 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites43s:_run_on_wants43s": (
+        "919f0289af43948c",
+        (
+            (),
+            (
+                "'d like",
+                "after",
+                "asked for",
+                "could do with",
+                "could use",
+                "fancies",
+                "gets",
+                "getting",
+                "having",
+                "needs",
+                "wants",
+                "would like",
+                "would love",
+            ),
+            True,
+        ),
+        (
+            (
+                "_WANTER43S",
+                (
+                    "pattern",
+                    "(?<=[a-z]) (?P<who>(?:Person [a-z]|(?:mrs|mr|ms|miss|dr) [a-z]+|[a-z]+))(?:'s (?:after|having|getting)| (?:wants|needs|would like|would love|'d like|fancies|is after|is having|gets|could use|could do with|has asked for|asked for))\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites43s:_so_reason43s": ("536e17784ebf8bff", ((), (" so ",), False), ()),
     "hltl.grounding._rewrites43s:_spot_for43s": (
         "e366a96da710684c",
@@ -6981,6 +10767,11 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites44:_all_state44": ("5ba913c12e293473", ((), (" all ",), False), ()),
     "hltl.grounding._rewrites44:_body_state44": ("38b9aa9ec76eca8b", (("'s ",), (), False), ()),
+    "hltl.grounding._rewrites44:_cleft_tail44": (
+        "57c8363934b3c895",
+        ((), (" thing", " what "), False),
+        (),
+    ),
     "hltl.grounding._rewrites44:_cleft_time44": ("0fd31785a250a3c4", ((), (" is ",), False), ()),
     "hltl.grounding._rewrites44:_described44": (
         "fc1fc79be3b9a96a",
@@ -7120,6 +10911,25 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites44r:_not_hers44r": ("597bd0b8b2db793c", ((), (" not ",), False), ()),
+    "hltl.grounding._rewrites44r:_not_want_remark44r": (
+        "f60a371fe5314ab3",
+        ((), (" no ", " want ", "n't ", "not "), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            (
+                "_NOT_WANT_REMARK44R",
+                (
+                    "value",
+                    '"^(?P<head>(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:doesn\'t|does not) want (?P<x>(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|because|as|on|in|so|and|or|but|is|are|was|were|be)\\\\b)[a-z]+)?))(?P<rest>\\\\s*[,;].+?)(?P<end>\\\\s*[.!]?)$"',
+                ),
+            ),
+            (
+                "_not_wanted39r",
+                ("guarded", "hltl.grounding._rewrites39r:_not_wanted39r", "93a64d0c1b9c7e2c", ()),
+            ),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
+    ),
     "hltl.grounding._rewrites44r:_one_thing_but44r": (
         "5654e262080d52b6",
         ((), ("one ",), True),
@@ -7452,6 +11262,7 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites45r:_its_p_doing45r": ("d52d2db6a744cc56", ((), ("it",), False), ()),
     "hltl.grounding._rewrites45r:_leave_it45r": ("348b7d99485a1c06", ((), ("leave",), False), ()),
     "hltl.grounding._rewrites45r:_mind_which45r": ("23545f6b7cf8e4fc", ((), ("which",), False), ()),
+    "hltl.grounding._rewrites45r:_no_not45r": ("3b15b283a95e3843", ((), ("no",), False), ()),
     "hltl.grounding._rewrites45r:_one_of_list45r": (
         "93601663784732d0",
         ((), ("one of",), False),
@@ -7802,6 +11613,7 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("whatever",), False),
         (),
     ),
+    "hltl.grounding._rewrites46s:_person_to46s": ("5fbb3dc8d7fb3669", ((" to ",), (), False), ()),
     "hltl.grounding._rewrites47:_all_how47": ("a07ba46a5a0581ed", ((" all ",), (), False), ()),
     "hltl.grounding._rewrites47:_as_trade47": ("883e31796af5ba4d", ((" as ",), (), False), ()),
     "hltl.grounding._rewrites47:_for_doing47": ("2bc98d5d8575a106", (("ing ",), (), False), ()),
@@ -7864,6 +11676,16 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("whichever",), False),
         (),
     ),
+    "hltl.grounding._rewrites47s:_hand_worker47s": ("5dc3b82af252cf36", ((), ("hand",), False), ()),
+    "hltl.grounding._rewrites47s:_nobody_else47s": (
+        "5531d3f809d732d4",
+        ((), (" else",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites47s:_only_after47s": ("842bd3abb5d60922", ((), (" only",), False), ()),
+    "hltl.grounding._rewrites47s:_remark_the47s": ("327c8020835dc776", ((), (" the ",), False), ()),
+    "hltl.grounding._rewrites47s:_waits47s": ("c2329633ef02e856", ((), ("wait",), False), ()),
+    "hltl.grounding._rewrites47s:_whose_answer47s": ("7c0ee316996e512a", (("?",), (), False), ()),
     "hltl.grounding._rewrites48:_apposed48": ("998224eede4a9965", ((), (", a",), False), ()),
     "hltl.grounding._rewrites48:_done_with48": ("fc665aaabffe9b79", ((" with ",), (), False), ()),
     "hltl.grounding._rewrites48:_for_theirs48": ("a2f68135061dae79", ((" for ",), (), False), ()),
@@ -7932,6 +11754,38 @@ GUARDS: dict[str, Entry | str] = {
         "665626f7357353ab",
         ((), ("'ll do", "will do"), False),
         (),
+    ),
+    "hltl.grounding._rewrites48s:_can_stay48s": ("9583c4099dc06d21", ((), ("stay",), False), ()),
+    "hltl.grounding._rewrites48s:_dislike48s": (
+        "7c6059a4fe017662",
+        (
+            (),
+            (
+                "abide",
+                "allergic",
+                "bear",
+                "detest",
+                "dislike",
+                "hate",
+                "keen",
+                "loathe",
+                "stand",
+                "stomach",
+            ),
+            False,
+        ),
+        (),
+    ),
+    "hltl.grounding._rewrites48s:_neither48s": ("078ee5deef65a642", ((), ("neither",), False), ()),
+    "hltl.grounding._rewrites48s:_not_for_me48s": (
+        "0a58f1f2319e4ead",
+        ((" for ",), (), False),
+        (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
+    ),
+    "hltl.grounding.normalise:_people_then_pronoun": (
+        "b9a19a7f46080ecd",
+        ((), (",",), True),
+        (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding.normalise:_while_there36s": (
         "ce30883fd4e256c0",

@@ -59,11 +59,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("(,\\s*(?:and )?then the [a-z]+) (?:the )?same way\\b", 2, True),
-    (
-        "(,\\s*(?:no wait|no|wait|sorry|actually|oh no|hang on))\\s*,\\s*((?:he|she|they)(?:'s|'ve| has| have| is| are)(?: already| just)? [a-z' ]+?)\\s*,\\s*(make (?:it|that)\\b)",
-        2,
-        True,
-    ),
     ("(,\\s*(?:no,\\s*)?to [A-Z][\\w ]*?),\\s*the (?:[a-z]+ ){0,2}[a-z]+\\s*([.!]?)$", 2, True),
     (
         "(,\\s*(?:no|sorry),\\s*[^,]+?),\\s*the [a-z]+ one(?:'s| is) (?:chipped|cracked|dirty|broken|empty|wrong|used|wet|full|too [a-z]+)\\s*([.!]?)$",
@@ -198,6 +193,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("(?:^|(?<=[.!?] ))(?:be (?:a|an|my) (?:[a-z']+ ){1,3}and) (?=[a-z]+ )", 2, True),
+    (
+        "(?:^|(?<=[.!?] ))(?P<obj>[^.!?]+)\\? (?P<who>[^.!?]+?)(?:'s|\\u2019s)(?=\\s*(?:[.!]|$))",
+        2,
+        True,
+    ),
     ("(?:^|(?<=[.!?]))\\s*(?:sorry|so sorry|apologies)\\s*[.!]+\\s*", 2, True),
     ("(?:^|(?<=[.!?])\\s*)only if it's no (?:bother|trouble)\\s*[.!]?", 2, True),
     (
@@ -362,7 +362,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    ("(?<=[.!]\\s)(the [a-z]+(?: [a-z]+)?) likewise(?=\\s*[.!]?$)", 2, True),
     (
         "(?<=[.;!?])\\s*once (?:(?:they|he|she)(?:'ve|'s| have| has)(?: got| been given| had)? (?:them|it|those|that)|that's (?:done|sorted))\\s*,\\s*",
         2,
@@ -477,11 +476,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "(?P<lead>(?:^|(?<=[,;.])\\s*|\\bso |\\band |\\bplease ))(?:pack|send|see) (?P<p>him|her|them|[A-Z][\\w]*(?: [A-Z][\\w]*)?) off with (?P<x>(?:the|both|all) [a-z ,]+?)(?=\\s*[.!]?$)",
-        2,
-        True,
-    ),
-    (
         "(?P<lead>(?:^|(?<=[.!?,]))\\s*)(?:(?:so|and|but|oh)\\s+)?(?:please\\s+)?(?:excuse|forgive|pardon|ignore) (?:the|my|all the|this) (?P<what>[a-z]+(?: [a-z]+)?)(?: (?:on|in|all over|over) (?P<where>everything|the floor|the place|my [a-z]+|me))?\\s*(?=[.!?]|,|$)",
         2,
         True,
@@ -508,11 +502,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "(?P<lead>(?:^|(?<=[.;!?,])\\s*)(?:please,?\\s+)?(?:you\\s+)?)(?P<who>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<what>(?:the|a|an|that|this|those|these|both|both the|my|his|her|their) [a-z][a-z -]*?) (?P<verb>give|hand|pass|bring)(?=\\s*(?:please\\s*)?(?:[,.;!?]|$))",
-        2,
-        True,
-    ),
-    (
-        "(?P<lead>(?:^|(?<=[.;!?,])\\s*|\\b(?:you|to|please) ))run (?P<what>it|them|(?:the|that|this|those|these) [a-z][a-z ]*?)(?P<dir>(?: (?:up|down|over|across|round|along))?) to (?P<where>(?:the )?[a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.;!?]|$|\\s(?:for|please|now)\\b))",
         2,
         True,
     ),
@@ -573,11 +562,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "(?P<lead>^|[.!;]\\s+|,\\s*(?:(?:oh|and|oh and),?\\s+)*)(?P<p>[a-z][\\w ]*?) (?:says|said|reckons|thinks|tells me)(?: that)? (?P<pro>he|she|they)(?P<verb>(?:'d| would) (?:love|like)| wants| needs| fancies)\\b",
-        2,
-        True,
-    ),
-    (
-        "(?P<lead>^|[.!]\\s+|,\\s*)the thing (?P<p>[a-z][\\w ]*?) (?P<v>wants|needs|has been after|'s been after|is after|would like|has asked for|asked for)\\b",
         2,
         True,
     ),
@@ -1161,11 +1145,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (",\\s*(?:it's|it is|that's|that is) the (?:last|only) one(?: left)?\\s*([.!]?)\\s*$", 2, True),
     (
-        ",\\s*(?:leaving|but leave|but leaving) (?:out|aside) (?P<what>the [a-z ]+?)(?P<end>\\s*[.!]?)$",
-        2,
-        True,
-    ),
-    (
         ",\\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\\s*([a-z]+))?\\s*([.!]?)$",
         2,
         True,
@@ -1251,7 +1230,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (",\\s*every (?:single |last )?one\\b", 2, True),
-    (",\\s*hereinafter (?:called |referred to as )?['\\\"‘“](?P<name>[a-z ]+)['\\\"’”],", 2, True),
     (
         ",\\s*let me (?:think|see|check|look)(?: (?:at )?(?:my|the) (?:list|notes|sheet|order))?\\s*,\\s*(?=(?:no|sorry|actually)\\b)",
         2,
@@ -1287,6 +1265,8 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (",|\\band\\b", 2, True),
     ("[,;:.!?]", 0, True),
+    ("[,;:.!?]$", 0, True),
+    ("[,;:.!?]\\s*\\S", 0, True),
     ("[,;:.!?—–]\\s|\\s-\\s", 0, True),
     ("[,;:.!?—–]| (?:and|but|so|while|after|before|since|for|because|as) ", 0, True),
     ("[,;:]", 0, True),
@@ -1680,6 +1660,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "\\b(?P<det>the|a|an|our|their|that|this|his|her|your|my) (?P<w>farm|deck|stage|ranch|field|hired|dock|stable|mill|cattle|kitchen|shop|factory|chore)[ -]hand(?P<s>s?)\\b",
+        2,
+        True,
+    ),
+    (
         "\\b(?P<h>(?:only|just) (?:the )?one [a-z]+) (?:going spare|going|spare|about|around|available|to go round|to go around|on offer)\\b",
         2,
         True,
@@ -1711,12 +1696,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b(?P<p>Person\\ A|Person\\ B) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ B|Person\\ A) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
     (
-        "\\b(?P<p>Person\\ A|Person\\ B|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ B|Person\\ A|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
@@ -2073,6 +2058,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\beverything,?\\s*(?:minus|bar|apart from)\\s+(?=the\\b)", 2, True),
     ("\\bexcept (?!the\\b|for\\b|a\\b|an\\b|that\\b)([a-z]+)\\b", 2, True),
     ("\\bfor (?:ages|a while|a bit|hours|(?:[a-z]+ )?minutes)$", 0, True),
+    ("\\bfor (?:me|us)\\b", 2, True),
     ("\\bfor you\\b|\\byou (?:can|could|may) have\\b", 2, True),
     ("\\bfor\\b", 0, True),
     (
@@ -2159,6 +2145,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\breturn\\b", 2, True),
     ("\\bshall (have|get|receive)\\b", 2, True),
     ("\\bshall be (given|handed|passed|brought|placed|put|taken)\\b", 2, True),
+    ("\\bshelf(?= (?:the )?bottle\\b)", 2, True),
     ("\\bshould go to\\b", 2, True),
     ("\\bsorry(?: (?:ah|lah|leh))?,?\\s+(?=disturb(?:ing)? you\\b)", 2, True),
     ("\\bsort (the [a-z ]+?|it|them) out for\\b", 2, True),
@@ -2201,8 +2188,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\bthe pair of ([a-z]+s)(?=\\s*,\\s*the\\b)", 2, True),
     ("\\bthe pair of ([a-z]+s)\\b", 2, True),
     ("\\bthe wee ([a-z]+)\\b", 2, True),
-    ("\\bthem all(?= (?:in|on|into|onto|to|over|across|back|up)\\b)", 2, True),
-    ("\\bthem both(?= (?:in|on|into|onto|to|over|across|back|up)\\b)", 2, True),
     ("\\bthem\\b", 2, True),
     ("\\bthen\\b", 2, True),
     ("\\bthings?\\b", 2, True),
@@ -2348,7 +2333,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    ("\\s*,?\\s*rather than (?P<q>(?:the )?[A-Za-z][\\w ]*?)(?=\\s*(?:[.!;]|$))", 2, True),
     (
         "\\s*,?\\s+before (?:i|we) (?:start|begin|get going|get started|crack on|head off|go|leave)(?: on| with)?(?: (?:this|the|my|our|that) [a-z]+)?(?=\\s*[.!]?$)",
         2,
@@ -2608,11 +2592,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(.+?)(?:,\\s*|\\s+[-—–]+\\s*|\\s*\\(\\s*)((?:i mean |i meant |that's |that is |meaning )?(?:the )?[\\w ]+?)(?: i mean| i meant)?\\s*\\)?\\s*([.!]?)$",
-        2,
-        True,
-    ),
-    (
-        "^(.+?),?\\s*(and|then) do the same for ([a-z][\\w ]*?),? but with (the [a-z ]+?)\\s*([.!]?)$",
         2,
         True,
     ),
@@ -3563,7 +3542,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("^play on!\\s*", 2, True),
-    ("^sold to ([A-Za-z][\\w ]*?),\\s*(?:one|a|an|the) ([a-z ]+?)(\\s*[.!]?)$", 2, True),
     (
         "^the ([a-z ]+?)'s for the (two|three|four) ([a-z]+s)(?:,\\s*[a-z]+,? and [a-z]+)?(\\s*[.!]?)$",
         2,

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import ast
+import contextlib
+import functools
 import hashlib
 import inspect
 import re
@@ -15,8 +17,9 @@ from typing import Any
 
 from hltl.grounding import gate
 
-# an atom of a guard: ("in", word, 1 if asked of the lower-cased text else 0), or ("re", pattern,
-# flags): the step does something only where one of its atoms is present in the text
+# an atom of a guard: ("in", word, 1 if asked of the lower-cased text else 0), ("re", pattern,
+# flags), or ("re-low", pattern, flags) for a search of the lower-cased text (session 49): the
+# step does something only where one of its atoms is present in the text
 Atom = tuple[str, str, int]
 # a module name the guard was read with, and what it held: ("value", repr) for a string or an
 # int, ("pattern", pattern, flags) for a compiled pattern, ("function", name, fingerprint),
@@ -91,6 +94,18 @@ _ITERATIONS = ("finditer", "findall")  # an empty iteration where the pattern fi
 _BUILTIN_WRAPS = ("reversed", "list", "tuple")  # the same items, or none where there are none
 
 
+# how deep helpers are read through (a step calling a helper calling a helper, …)
+_HELPER_DEPTH = 3
+
+
+def _plain(value: Any) -> Any:
+    """A function cached by functools (``_rx``) as the function it wraps (session 49: the
+    ``_rx(P).search(text)`` form was never read, ``_rx`` being cached)."""
+    if isinstance(value, functools._lru_cache_wrapper):
+        return value.__wrapped__
+    return value
+
+
 class _Unread(Exception):
     """The step's first statements are not of the kinds a guard is read from."""
 
@@ -98,19 +113,28 @@ class _Unread(Exception):
 class _Reader:
     """Reads one step's guard from its source."""
 
-    def __init__(self, fn: types.FunctionType) -> None:
+    def __init__(self, fn: types.FunctionType, depth: int = 0) -> None:
         self.fn = fn
         self.glob = fn.__globals__
         self.deps: dict[str, tuple[Any, ...]] = {}
         self.text = ""
+        # session 49: names equal to the text wherever none of the atoms read so far is present
+        # ('out = text', 'out = _sub(P, R, out)', 'out = helper(out, lexicon)'), the function's
+        # own names (never read as the module's), the loop's pattern name, how deep a helper is
+        self.same: set[str] = set()
+        code = fn.__code__
+        self.locals = frozenset((*code.co_varnames, *code.co_cellvars))
+        self.loop_name = ""
+        self.depth = depth
+        self.at: ast.stmt | None = None
         self.lowers: set[str] = set()  # names bound to text.lower()
         self.matches: dict[str, frozenset[Atom]] = {}  # names bound to a search of the text
 
     def _global(self, name: str) -> object:
         """A name of the step's module (kept, with what it holds, to be checked at run time)."""
-        if name not in self.glob:
-            raise _Unread(name)
-        value = self.glob[name]
+        if name not in self.glob or (name in self.locals and name != self.loop_name):
+            raise _Unread(name)  # a name of the function's own is not the module's
+        value = _plain(self.glob[name])
         if isinstance(value, str | int) and not isinstance(value, bool):
             self.deps[name] = ("value", repr(value))
         elif isinstance(value, re.Pattern):
@@ -127,7 +151,7 @@ class _Reader:
         """Whether ``node`` names the helper ``want`` (module, name)."""
         if not isinstance(node, ast.Name) or node.id not in self.glob:
             return False
-        value = self.glob[node.id]
+        value = _plain(self.glob[node.id])
         if not isinstance(value, types.FunctionType) or (value.__module__, value.__name__) != want:
             return False
         self._global(node.id)
@@ -184,7 +208,7 @@ class _Reader:
 
     def _is_text(self, node: ast.expr, *, stripped: bool = False) -> bool:
         """Whether ``node`` is the step's text (``stripped``: or ``text.strip()``)."""
-        if isinstance(node, ast.Name) and node.id == self.text:
+        if isinstance(node, ast.Name) and node.id in self.same:
             return True
         return (
             stripped
@@ -216,7 +240,13 @@ class _Reader:
     def _words(self, node: ast.expr) -> tuple[str, ...]:
         """The strings of a tuple, list or set written out."""
         if isinstance(node, ast.Tuple | ast.List | ast.Set):
-            return tuple(self._str(e) for e in node.elts)
+            out: list[str] = []
+            for e in node.elts:  # session 49: '*("a", "b"), *("c",)' too
+                if isinstance(e, ast.Starred):
+                    out += self._words(e.value)
+                else:
+                    out.append(self._str(e))
+            return tuple(out)
         raise _Unread("words")
 
     def _search(self, node: ast.expr, kinds: tuple[str, ...] = _SEARCHES) -> frozenset[Atom]:
@@ -229,12 +259,14 @@ class _Reader:
         if func.attr not in kinds:
             raise _Unread("not a search")
         if self._re_module(func.value):  # re.search(P, text[, flags])
-            if len(args) < 2 or not self._is_text(args[1], stripped=True) or set(kw) - {"flags"}:
+            if len(args) < 2 or set(kw) - {"flags"}:
                 raise _Unread("search args")
+            kind = self._searched(args[1])
             flags = args[2] if len(args) > 2 else kw.get("flags")
-            return frozenset({("re", self._str(args[0]), self._flags(flags))})
-        if len(args) != 1 or kw or not self._is_text(args[0], stripped=True):
+            return frozenset({(kind, self._str(args[0]), self._flags(flags))})
+        if len(args) != 1 or kw:
             raise _Unread("search args")
+        kind = self._searched(args[0])
         target = func.value
         if (
             isinstance(target, ast.Call)
@@ -242,17 +274,62 @@ class _Reader:
             and not target.keywords
             and self._helper(target.func, _RX)
         ):  # _rx(P).search(text): case-blind
-            return frozenset({("re", self._str(target.args[0]), int(re.IGNORECASE))})
+            return frozenset({(kind, self._str(target.args[0]), int(re.IGNORECASE))})
         if isinstance(target, ast.Name):  # a module's compiled pattern
             value = self._global(target.id)
             if isinstance(value, re.Pattern):
-                return frozenset({("re", value.pattern, int(value.flags))})
+                return frozenset({(kind, value.pattern, int(value.flags))})
         raise _Unread("search target")
+
+    def _searches(self, node: ast.expr) -> frozenset[Atom]:
+        """A search, or searches joined by 'or' (session 49: 'A.match(text) or B.match(text)'
+        is None where neither finds anything)."""
+        if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.Or):
+            return frozenset().union(*(self._search(v) for v in node.values))
+        return self._search(node)
+
+    def _searched(self, node: ast.expr) -> str:
+        """The atom kind of a search of ``node``: "re" of the text (or it stripped), "re-low" of
+        it lower-cased (session 49: its words are asked of the lower-cased text)."""
+        if self._is_text(node, stripped=True):
+            return "re"
+        if isinstance(node, ast.Name) and node.id in self.lowers:
+            return "re-low"
+        raise _Unread("search args")
 
     def present(self, node: ast.expr) -> frozenset[Atom]:
         """Atoms one of which is present in the text wherever ``node`` is true."""
         if isinstance(node, ast.Name) and node.id in self.matches:
             return self.matches[node.id]
+        if isinstance(node, ast.NamedExpr):  # (m := search) in a test: what the search needs
+            return self.present(node.value)
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr in ("startswith", "endswith")
+            and len(node.args) == 1
+            and not node.keywords
+            and isinstance(node.args[0], ast.Constant)
+        ):  # session 49: text.startswith(W) only where W is in the text
+            return frozenset({("in", self._str(node.args[0]), self._hay(node.func.value))})
+        helper = self._compared_helper(node, ast.NotEq)
+        if helper is not None:
+            return helper  # 'helper(text, …) != text': a helper that leaves it as it is
+        if self._both_same(node, ast.NotEq):
+            return frozenset()  # 'out != text': never true while both are the text
+        if (
+            isinstance(node, ast.Compare)
+            and len(node.ops) == 1
+            and isinstance(node.ops[0], ast.IsNot)
+            and isinstance(node.comparators[0], ast.Constant)
+            and node.comparators[0].value is None
+        ):  # a search's match is not None only where it found something
+            left = node.left
+            if isinstance(left, ast.Name) and left.id in self.matches:
+                return self.matches[left.id]
+            if isinstance(left, ast.NamedExpr):
+                return self.present(left.value)
+            return self._search(left)
         if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.Or):
             return frozenset().union(*(self.present(v) for v in node.values))
         if isinstance(node, ast.BoolOp):  # and: true only where its first side is (any side)
@@ -300,6 +377,11 @@ class _Reader:
         """Atoms such that ``node`` is true wherever none of them is present in the text."""
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
             return self.present(node.operand)
+        if self._both_same(node, ast.Eq):
+            return frozenset()  # 'out == text': true while both are the text
+        helper = self._compared_helper(node, ast.Eq)
+        if helper is not None:
+            return helper
         if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.And):
             return frozenset().union(*(self.absent(v) for v in node.values))
         if isinstance(node, ast.BoolOp):  # or: true wherever any one side is
@@ -315,6 +397,30 @@ class _Reader:
                     return self.matches[left.id]
                 return self._search(left)
         raise _Unread("test")
+
+    def _both_same(self, node: ast.expr, op: type[ast.cmpop]) -> bool:
+        """Whether ``node`` compares two names that are the text with ``op`` (session 49)."""
+        return (
+            isinstance(node, ast.Compare)
+            and len(node.ops) == 1
+            and isinstance(node.ops[0], op)
+            and self._is_text(node.left)
+            and self._is_text(node.comparators[0])
+        )
+
+    def _compared_helper(self, node: ast.expr, op: type[ast.cmpop]) -> frozenset[Atom] | None:
+        """The atoms of ``helper(text, …) <op> text`` (session 49), None where it is not so."""
+        if (
+            not isinstance(node, ast.Compare)
+            or len(node.ops) != 1
+            or not isinstance(node.ops[0], op)
+            or not self._is_text(node.comparators[0])
+        ):
+            return None
+        try:
+            return self._call(node.left)
+        except _Unread:
+            return None
 
     @staticmethod
     def _best(
@@ -357,6 +463,19 @@ class _Reader:
             and not set(kw) - {"flags", "count"}
         ):
             return ("re", self._str(args[0]), self._flags(kw.get("flags")))
+        if (
+            isinstance(func, ast.Attribute)
+            and func.attr == "sub"
+            and isinstance(func.value, ast.Name)
+            and func.value.id not in self.locals
+            and len(args) == 2
+            and self._is_text(args[1])
+            and not set(kw) - {"count"}
+            and self._pure(args[0])
+        ):  # session 49: a module's compiled pattern's .sub(R, text)
+            value = self._global(func.value.id)
+            if isinstance(value, re.Pattern):
+                return ("re", value.pattern, int(value.flags))
         raise _Unread("not a sub")
 
     def _iteration(self, node: ast.expr) -> frozenset[Atom]:
@@ -417,7 +536,7 @@ class _Reader:
         if not names or not all(isinstance(n, ast.Name) for n in names):
             raise _Unread("loop target")
         pattern = names[0].id
-        if len(names) > 2 or pattern in (self.text, *self.lowers, *self.matches):
+        if len(names) > 2 or pattern in (*self.same, *self.lowers, *self.matches):
             raise _Unread("loop target")
         if (
             not isinstance(body, ast.Assign)
@@ -438,14 +557,110 @@ class _Reader:
         marker = "\x00loop pattern\x00"
         saved = self.glob
         self.glob = {**saved, pattern: marker}
+        self.loop_name = pattern
         try:
             kind, said, flags = self._sub(body.value)
         finally:
             self.glob = saved
+            self.loop_name = ""
         self.deps.pop(pattern, None)
         if kind != "re" or said != marker:
             raise _Unread("loop body")
         return frozenset(("re", p, flags) for p in patterns)
+
+    def _inert(self, stmt: ast.stmt) -> bool:
+        """Whether ``stmt`` only binds names of the step's own that no atom is read of (a
+        nested function without decorators or defaults, an import, ``del`` of a name)."""
+        bound: list[str] = []
+        if isinstance(stmt, ast.FunctionDef):
+            args = stmt.args
+            if stmt.decorator_list or args.defaults or any(d is not None for d in args.kw_defaults):
+                return False
+            bound = [stmt.name]
+        elif isinstance(stmt, ast.ImportFrom) and stmt.module and not stmt.level:
+            if not stmt.module.startswith("hltl.") or any(a.name == "*" for a in stmt.names):
+                return False  # hltl's modules are loaded already: importing runs nothing
+            bound = [a.asname or a.name for a in stmt.names]
+        elif isinstance(stmt, ast.Delete) and all(isinstance(t, ast.Name) for t in stmt.targets):
+            bound = [t.id for t in stmt.targets if isinstance(t, ast.Name)]
+        else:
+            return False
+        return not any(n in self.same or n in self.lowers or n in self.matches for n in bound)
+
+    def _fresh(self, node: ast.expr) -> bool:
+        """Whether ``node`` is a constant or a new empty container ('set()', '{}', '[]')."""
+        if isinstance(node, ast.Constant):
+            return True
+        if isinstance(node, ast.List | ast.Tuple | ast.Set) and not node.elts:
+            return True
+        if isinstance(node, ast.Dict) and not node.keys:
+            return True
+        return (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id in ("set", "dict", "list")
+            and node.func.id not in self.glob
+            and node.func.id not in self.locals
+            and not node.args
+            and not node.keywords
+        )
+
+    def _same(self, node: ast.expr) -> frozenset[Atom] | None:
+        """Atoms such that ``node`` equals the text wherever none of them is present (the empty
+        set for the text itself), or None where it is not read so."""
+        if self._is_text(node):
+            return frozenset()
+        try:
+            return frozenset({self._sub(node)})
+        except _Unread:
+            pass
+        try:
+            return self._call(node)
+        except _Unread:
+            return None
+
+    def _pure(self, node: ast.expr) -> bool:
+        """Whether evaluating ``node`` as an argument can do nothing (a name, a constant, a
+        name's attribute, a lambda)."""
+        while isinstance(node, ast.Attribute):
+            node = node.value
+        return isinstance(node, ast.Name | ast.Constant | ast.Lambda)
+
+    def _call(self, node: ast.expr) -> frozenset[Atom]:
+        """Session 49: the atoms of ``helper(text, …)``, a plain function of a module whose own
+        guard is read from its source (it returns its first argument as it is without them)."""
+        if (
+            not isinstance(node, ast.Call)
+            or not isinstance(node.func, ast.Name)
+            or not node.args
+            or not self._is_text(node.args[0])
+            or any(isinstance(a, ast.Starred) for a in node.args)
+            or any(k.arg is None for k in node.keywords)
+            or not all(self._pure(a) for a in (*node.args[1:], *(k.value for k in node.keywords)))
+            or self.depth >= _HELPER_DEPTH
+        ):
+            raise _Unread("not a helper")
+        helper = self._global(node.func.id)
+        if (
+            not isinstance(helper, types.FunctionType)
+            or helper.__closure__
+            or "<" in helper.__qualname__
+            or helper is self.fn
+        ):
+            raise _Unread("not a helper")
+        reader = _Reader(helper, self.depth + 1)
+        try:
+            atoms = reader.read()
+        except (OSError, TypeError, SyntaxError) as e:
+            raise _Unread("helper source") from e
+        # its guard holds while its code and the module names it was read with are the same
+        self.deps[node.func.id] = (
+            "guarded",
+            key(helper),
+            fingerprint(helper),
+            tuple(sorted(reader.deps.items())),
+        )
+        return atoms
 
     def read(self) -> frozenset[Atom]:
         """The guard's atoms, read from the step's first statements."""
@@ -455,39 +670,67 @@ class _Reader:
         if not isinstance(fdef, ast.FunctionDef) or fdef.decorator_list or not fdef.args.args:
             raise _Unread("not a plain function")
         self.text = fdef.args.args[0].arg
+        self.same = {self.text}
         body = list(fdef.body)
         if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
             body = body[1:]  # the docstring
         atoms: set[Atom] = set()
+        if not self._block(body, atoms):
+            raise _Unread("no guard")  # it ends without a return: None
+        if not atoms:
+            raise _Unread("no atoms")  # never a guard that turns every text away
+        return frozenset(atoms)
+
+    def _block(self, body: list[ast.stmt], atoms: set[Atom]) -> bool:
+        """Read ``body``'s statements into ``atoms`` up to one returning the text: True where
+        one does, False where the block ends first; _Unread at a statement it cannot read."""
         for stmt in body:
-            if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1:
-                target = stmt.targets[0]
-                if not isinstance(target, ast.Name):
-                    break
-                if target.id == self.text:  # text = _sub(P, R, text): unchanged without P's words
-                    atoms.add(self._sub(stmt.value))
+            self.at = stmt  # where the reading stopped, if it does (for a report)
+            if self._inert(stmt):
+                continue  # session 49: binds a name of its own and does nothing else
+            if isinstance(stmt, ast.Assign | ast.AnnAssign):
+                target = stmt.targets[0] if isinstance(stmt, ast.Assign) else stmt.target
+                if (
+                    (isinstance(stmt, ast.Assign) and len(stmt.targets) != 1)
+                    or not isinstance(target, ast.Name)
+                    or stmt.value is None
+                ):
+                    raise _Unread("assignment")
+                said = self._same(stmt.value)
+                if said is not None:
+                    # 'out = _sub(P, R, out)', 'out = text', 'out = helper(out, lexicon)':
+                    # the text still, wherever none of the atoms is present
+                    if target.id in self.lowers or target.id in self.matches:
+                        raise _Unread("assignment")
+                    atoms |= said
+                    self.same.add(target.id)
                     continue
-                if target.id in self.lowers or target.id in self.matches:
-                    break
+                if target.id in self.same:
+                    raise _Unread("assignment")
+                # session 49: 'm = A.search(out)' … 'm = B.search(out)': bound again, what it
+                # holds now is read
+                self.lowers.discard(target.id)
+                self.matches.pop(target.id, None)
                 try:
                     self._hay(stmt.value)
                 except _Unread:
-                    self.matches[target.id] = self._search(stmt.value)
+                    try:
+                        self.matches[target.id] = self._searches(stmt.value)
+                    except _Unread:
+                        if not self._fresh(stmt.value):
+                            raise
+                        continue  # 'about = set()': a new empty value of the step's own
                 else:
-                    if not self._is_text(stmt.value):
-                        self.lowers.add(target.id)  # low = text.lower()
-                        continue
-                    break
+                    self.lowers.add(target.id)  # low = text.lower()
                 continue
-            if (
-                isinstance(stmt, ast.If)
-                and not stmt.orelse
-                and len(stmt.body) == 1
-                and isinstance(stmt.body[0], ast.Return)
-                and stmt.body[0].value is not None
-                and self._is_text(stmt.body[0].value)
-            ):
-                return frozenset(atoms | self.absent(stmt.test))
+            if isinstance(stmt, ast.If):
+                if self._if(stmt, atoms):
+                    return True
+                continue
+            if isinstance(stmt, ast.While) and not stmt.orelse and self._safe(stmt.test):
+                # session 49: a loop run only where its test finds one of its atoms
+                atoms |= self.present(stmt.test)
+                continue
             if isinstance(stmt, ast.For) and not stmt.orelse:
                 # a loop that runs only on a match (its body may do anything), or one over a
                 # module's patterns each substituted in the text: nothing without their words
@@ -495,10 +738,117 @@ class _Reader:
                 continue
             if isinstance(stmt, ast.Return) and stmt.value is not None:
                 if self._is_text(stmt.value) and atoms:
-                    return frozenset(atoms)
-                return frozenset(atoms | {self._sub(stmt.value)})
-            break
-        raise _Unread("no guard")
+                    return True
+                said = self._same(stmt.value)
+                if said is None or self._is_text(stmt.value):
+                    raise _Unread("not a sub")
+                atoms |= said
+                return True
+            raise _Unread("statement")
+        return False
+
+    def _if(self, stmt: ast.If, atoms: set[Atom]) -> bool:
+        """Read an ``if`` into ``atoms``: True where it returns the text wherever none of them
+        is present; False where the statements after it are read on (_Unread: not read)."""
+        if (
+            not stmt.orelse
+            and len(stmt.body) == 1
+            and isinstance(stmt.body[0], ast.Return)
+            and stmt.body[0].value is not None
+            and self._is_text(stmt.body[0].value)
+        ):
+            with contextlib.suppress(_Unread):
+                atoms |= self.absent(stmt.test)
+                return True
+        if stmt.orelse:
+            raise _Unread("if")
+        if not self._safe(stmt.test):
+            # 'if m is not None and <anything>:': its first sides are asked safely, and one of
+            # them is false without its atoms, so the rest is not asked and the block not run
+            atoms |= self._skips(stmt.test)
+            return False
+        with contextlib.suppress(_Unread):
+            # session 49: a block run only where its test is true, and the test true only where
+            # one of its atoms is present: without them the block does not run
+            atoms |= self.present(stmt.test)
+            return False
+        # session 49: a block that leaves the text as it is without its atoms, run or not (the
+        # names it binds are not read after it)
+        same, lowers, matches = set(self.same), set(self.lowers), dict(self.matches)
+        inner: set[Atom] = set()
+        self._block(stmt.body, inner)  # returns the text, or ends with it as it was
+        self.same &= same
+        self.lowers, self.matches = lowers, matches
+        atoms |= inner
+        return False
+
+    def _skips(self, node: ast.expr) -> frozenset[Atom]:
+        """The atoms of an 'and' false without them: a side read by ``present`` after sides
+        that are all safe (the sides after it are not evaluated)."""
+        if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.And):
+            for side in node.values:
+                if not self._safe(side):
+                    break
+                with contextlib.suppress(_Unread):
+                    return self.present(side)
+        raise _Unread("if test")
+
+    def _safe(self, node: ast.expr) -> bool:
+        """Whether evaluating the test ``node`` raises nothing and changes nothing: names,
+        constants, comparisons, 'not', 'and', 'or', searches of the text, 'in' tests, len()."""
+        if isinstance(node, ast.Name | ast.Constant):
+            return True
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
+            return self._safe(node.operand)
+        if isinstance(node, ast.BoolOp):
+            return all(self._safe(v) for v in node.values)
+        if isinstance(node, ast.Compare):
+            return all(
+                isinstance(op, ast.In | ast.NotIn | ast.Is | ast.IsNot | ast.Eq | ast.NotEq)
+                for op in node.ops
+            ) and all(self._safe(v) for v in (node.left, *node.comparators))
+        if isinstance(node, ast.NamedExpr):
+            return self._safe(node.value)
+        if isinstance(node, ast.Tuple) and all(isinstance(e, ast.Constant) for e in node.elts):
+            return True
+        if isinstance(node, ast.Call):
+            func = node.func
+            if (
+                isinstance(func, ast.Attribute)
+                and isinstance(func.value, ast.Name)
+                and (func.value.id in self.same or func.value.id in self.lowers)
+                and not node.keywords
+                and (
+                    (
+                        func.attr in ("lower", "strip", "rstrip", "lstrip", "isascii")
+                        and not node.args
+                    )
+                    or (
+                        func.attr in ("startswith", "endswith")
+                        and len(node.args) == 1
+                        and isinstance(node.args[0], ast.Constant)
+                        and isinstance(node.args[0].value, str)
+                    )
+                )
+            ):
+                return True  # a string method of the text that raises nothing
+            if (
+                isinstance(func, ast.Name)
+                and func.id == "len"
+                and "len" not in self.glob
+                and "len" not in self.locals
+                and len(node.args) == 1
+                and not node.keywords
+                and isinstance(node.args[0], ast.Name)
+                and node.args[0].id in self.same | self.lowers
+            ):
+                return True
+            for read in (self.present, self._call):
+                with contextlib.suppress(_Unread):
+                    read(node)  # a search; a helper that returns the text without its atoms
+                    return True
+            return False
+        return False
 
 
 def read_guard(fn: Callable[..., Any]) -> Entry | None:
@@ -527,7 +877,10 @@ def read_guard(fn: Callable[..., Any]) -> Entry | None:
         if found is None:
             return None  # a pattern that may match without any word: the step always runs
         words, fold = found
-        (folded if fold else plain).update(words)
+        if kind == "re-low":  # a match in the lower-cased text holds a word lower-cased
+            folded.update(w.lower() for w in words)
+        else:
+            (folded if fold else plain).update(words)
         patterned = True
     if "" in plain or "" in folded:
         return None  # '' is in every text
@@ -573,10 +926,19 @@ def _holds(fn: Callable[..., Any], deps: tuple[Dep, ...]) -> bool:
             if not isinstance(value, re.Pattern) or (value.pattern, int(value.flags)) != was[1:]:
                 return False
         elif kind == "function":
+            value = _plain(value)
             if key(value) != was[1] or fingerprint(value) != was[2]:
                 return False
         elif kind == "module":
             if getattr(value, "__name__", None) != was[1]:
+                return False
+        elif kind == "guarded":  # a helper read through (session 49): its own names too
+            if (
+                not isinstance(value, types.FunctionType)
+                or key(value) != was[1]
+                or fingerprint(value) != was[2]
+                or not _holds(value, was[3])
+            ):
                 return False
         elif kind == "patterns":
             if not isinstance(value, tuple) or not value:
