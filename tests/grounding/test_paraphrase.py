@@ -361,15 +361,8 @@ KNOWN_MISSES = frozenset(
         "Noah can have the scissors for his snowflake cut-outs, but the glue's off limits, he "
         "made a mess last time.",
         "Lily's had enough of the red block; give her the teddy, not another block.",
-        "Bottle to Person A, sorry, I meant Person B, I've got the constable on the other line.",
-        "The chips for Person B, oh no hang on, the bottle for Person B.",
-        "Cup to Person A, no, actually, she'd rather the apple, she's just had a brew at the "
-        "needle maker's.",
-        "The bottle stays put, oh, hold on, Person A's asking for it after all, so give it her.",
         "Chips to Person B, oh wait, he's not peckish, so Person A gets them, and the bottle "
         "goes to Person B.",
-        "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the "
-        "salads.",
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
