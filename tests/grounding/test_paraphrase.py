@@ -478,8 +478,6 @@ KNOWN_UNCLEAR = frozenset(
         "which colour.",
         "Alice and Carol came in from the lantern parade; she asked for the cup, so give it to "
         "her.",
-        "Person A asked for one of the two, I just can't remember which one she said.",
-        "Zoe was reading one of the two books before break, and she wants that one back.",
         "Give Person A the chips, no, hang on, the other one, the one she had at the chair "
         "bodger's.",
         # blind47 (tuned on in session 49)

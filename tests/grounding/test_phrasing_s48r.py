@@ -200,6 +200,22 @@ UNCLEAR: list[Unclear] = [
     ("Salt on the counter, no, it's on the rack.", KITCHEN, ("salt@counter", "salt@rack")),
     ("Bob wants the apple, no, it's Carol's.", CELL, ("apple>C", "apple>B")),
     ("Noah wants the globe, sorry, it's Zoe's.", CLASSROOM, ("globe>C", "globe>B")),
+    # one_of_two48r: "one of the two, I can't remember which" / "…, and she wants that one back"
+    (
+        "Noah asked for one of the two books, I can't remember which one.",
+        CLASSROOM,
+        ("book_red", "book_green"),
+    ),
+    (
+        "Lily was chewing one of the two blocks earlier, and she wants that one back.",
+        NURSERY,
+        ("block_red", "block_green"),
+    ),
+    (
+        "Omar was using one of the two cups, and he'd like that one again.",
+        LAB,
+        ("cup_green", "cup_white"),
+    ),
 ]
 # each refusal names its readings; without REFUSE48R none does
 test_refusals_name_readings, test_refusals_are_these = unclear_tests(

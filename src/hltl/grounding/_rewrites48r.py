@@ -16,7 +16,7 @@ from hltl.grounding._rewrites46r import (
     _each_pronoun46r,
     _person46r,
 )
-from hltl.grounding._rewrites47r import _claimed47r
+from hltl.grounding._rewrites47r import _DOUBT47R, _claimed47r
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.phrasing import _chained48r
 from hltl.grounding.tree import Node, Task, has_choice, tasks
@@ -38,6 +38,42 @@ def second_fix48r(text: str, lexicon: Lexicon) -> None:
     except GroundingError:
         return
     _chained48r(items)
+
+
+# -- one of the two, which not said (blind46) ---------------------------------------------------
+
+# "Person A asked for one of the two, I just can't remember which one she said.", "Zoe was reading
+# one of the two books before break, and she wants that one back."
+_ONE_OF_TWO48R = re.compiled(
+    rf"\bone of the (?:two|pair)(?: (?P<k>[a-z]+s))?\b[^,;.!?]*?\s*[,;]\s*(?:and |but )?"
+    rf"(?:(?P<said>(?:i |i just |i really )?[^,;.!?]*?\b(?:{_DOUBT47R})\b[^,;.!?]*?)|"
+    r"(?P<that>(?:she|he|they)(?:'d like| wants| needs| would like)(?: to have)? that one"
+    r"(?: back| again)?))(?=\s*[.!]?$)",
+    _F,
+)
+
+
+def one_of_two48r(text: str, lexicon: Lexicon) -> None:
+    """Session 48 (12r): "P asked for one of the two, I just can't remember which one" ("P was
+    reading one of the two books …, and she wants that one back"): the two are the scene's two
+    things (of that kind); which one is not said: refused naming both."""
+    low = text.lower()
+    if "one of the two" not in low and "one of the pair" not in low:
+        return
+    m = _ONE_OF_TWO48R.search(text)
+    if m is None:
+        return
+    if m["k"]:
+        ids = _ids(f"the {m['k']}", lexicon, "object")
+    else:
+        ids = {o.id for o in lexicon.scene.objects}
+    if len(ids) != 2:
+        return
+    said = (m["said"] or m["that"]).strip()
+    raise GroundingError(
+        f"{said!r}: which one is meant is not said; it could be {' or '.join(sorted(ids))}: name "
+        "the one"
+    )
 
 
 # -- someone else is to do it ---------------------------------------------------------------------
@@ -538,6 +574,7 @@ _STEPS48R: tuple[Callable[[str, Lexicon], str], ...] = (
 # refusals asked of the text before it is read (offline._parse, after the session-47 ones)
 REFUSE48R: tuple[Callable[[str, Lexicon], None], ...] = (
     second_fix48r,
+    one_of_two48r,
     given_by48r,
     where_it_is48r,
 )
