@@ -538,8 +538,7 @@ def _asking_after_all48r(text: str, lexicon: Lexicon) -> str:
 # "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the salads."
 _SCATTERED48R = re.compiled(
     r"(?P<cue>,\s*(?:no|sorry|no sorry|oops|whoops)\s*,?\s*)(?:my head(?:'s| is) all over the "
-    r"place|i'm all over the place|i'm all at sea|silly me|what am i like|my brain's a sieve|"
-    r"i'm in a muddle)\s*,\s*",
+    r"place|i'm all at sea|what am i like|my brain's a sieve|i'm in a muddle)\s*,\s*",
     _F,
 )
 
@@ -547,9 +546,10 @@ _SCATTERED48R = re.compiled(
 def _scattered48r(text: str, lexicon: Lexicon) -> str:
     """Session 48 (12r): an apology for one's muddle between the cue and the correction ("no
     sorry, my head's all over the place, to Lena") is taken off; a closing remark of the person
-    corrected to is then left to the older rules."""
+    corrected to is then left to the older rules. ("I'm all over the place" and "silly me" are
+    session 40's `_blame40r`'s: two rules must not read one sentence.)"""
     low = text.lower()
-    if "place" not in low and "sea" not in low and "silly" not in low and "sieve" not in low:
+    if "place" not in low and "sea" not in low and "like" not in low and "sieve" not in low:
         return text
     return _read_or44r(_SCATTERED48R.sub(r"\g<cue>", text, count=1), text, lexicon)
 

@@ -34,7 +34,7 @@ _BACK49R = re.compiled(
 _RETHINK49R = (
     r"(?:thinking about it|come to think of it|now i think about it|on second thoughts?|"
     r"i'm muddling them(?: up)?|i'm mixing them up|i've got them mixed up|i've mixed them up|"
-    r"i've muddled them(?: up)?|i'm getting them muddled(?: up)?|i got that wrong)"
+    r"i've muddled them(?: up)?|i'm getting them muddled(?: up)?)"
 )
 
 # "The cup is for Person A, scratch that, it's Person B who's playing twister and needs it.",
