@@ -126,8 +126,6 @@ KNOWN_MISSES = frozenset(
         "Wipes to Grandad. Bib to Ava. She'll get it on Lily.",
         # blind22 (tuned on in session 24): refusals left (docs/grounding.md, "Session 24")
         "That bottle by the door, up on the shelf with it, there's a good chap.",
-        "The crisps go on the shelf the bottle goes to Bob and then that's me done for the day "
-        "I'm off to put my feet up.",
         "Any of the pens will do for Sam, as long as it writes on chalk-stripe.",
         "Give Bob a mug, but not the red one, that's the controller's and she's funny about it.",
         "knife on the worktop please, the guests want it by their bread",
@@ -265,9 +263,7 @@ KNOWN_MISSES = frozenset(
         "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
         "The wipes don't belong on the play mat; pop them on the high chair.",
         "Never mind the hammer where it is; it's the drill that wants to go on the workbench.",
-        "crisps up on the shelf ta the pipe fitter keeps nicking them",
         "notebook to priya thanks she has minutes to take",
-        "tin of screws on the workbench kofi wants to count them",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
         "All four things to Person B: bottle, chips, cup and apple.",
@@ -280,15 +276,9 @@ KNOWN_MISSES = frozenset(
         "B, so sort them out.",
         "That big spanner belongs in the foreman's hands, Kofi's, he's got the wheeler's axle to "
         "tighten.",
-        "Bottle to Alice crisps to Bob the costermonger's shouting about his barrow again",
         "Person B's bottle is the first job. When he's got it, the apple for Person A, the "
         "pigman's niece.",
-        "The chips. Person A wants them. Nobody else has asked.",
-        "Chips? Person A's. Bottle? Person B's. The farm hand sends his regards and says ta.",
-        "Sponge into the sink first. After, the bowl for Omar. Emma's fine with waiting, she's a "
-        "visitor.",
         "The black pen goes in the box it's Sam's filing day and the stapler to Priya",
-        "Small box onto the belt medium box onto the pallet the cowman's lorry is outside",
         "With the sword swallower coming to supper, Person A is owed the apple and the chips both.",
         "Share things out fair as the toll keeper would: bottle goes Person A's way and chips go "
         "Person B's way.",
@@ -316,14 +306,10 @@ KNOWN_MISSES = frozenset(
         "tongs and no knife.",
         "Ava's building a castle that has to be green, so leave the red block out of it and "
         "fetch her the green.",
-        "Jess is off power tools until the timekeeper signs the card; hammer only for now, to "
-        "Jess.",
         "Person B ordered the apple but changed his tune at the pétanque; chips for him instead.",
         "Mr Lee's done with temperatures for today; the thermometer ought to be with Mrs Khan, "
         "my slip.",
-        "the cup to person a and the apple to person b for the pétanque lot",
         "the visitor looks half starved after the minuet so banana to her",
-        "chef marcos got the damson jam cake to slice give him the knife",
         "Sam's got a notebokk to fill with the rector's notices, so pass it to Sam.",
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
@@ -340,22 +326,15 @@ KNOWN_MISSES = frozenset(
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
         "one'll do.",
         "Noah's forgotten his ruler; lend him ours, would you.",
-        "The cup for Person A. The chips for Person B. The bottle and the apple can stay put.",
         "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
         "Person A's doing her wordsearch she's parched bottle to her.",
         "Ruth's doing her rounds the thermometer's for her.",
         "Salt shaker to Mr Novak he's asked twice now and the blue plate is for Marco.",
         "Bib on the highchair. Lily's lunch is next.",
         "That one bag of chips is for Person B to share round at the rebec rehearsal.",
-        "Not the red mug, the blue one, to Alice, she's off to her bodhrán lesson and likes that "
-        "one.",
         "Person B gets the chips; leave the bottle, he drank his fill at the snowman competition.",
-        "Everything but the apple to Person A, she can't stand apples and she's off to french "
-        "skipping.",
         "Person B has gone off chips since the limbo contest; it's the cup he's after.",
         "After the washerwoman's race, Person A wants nothing but the chips.",
-        "The bottle's not for me, it's for Person A.",
-        "Omar needs neither cup, just the bowl.",
         "Tom needs all the kit apart from the boxes and the gloves.",
         "Not the white plate, Lena wants the one on the rack.",
         "Noah can have the scissors for his snowflake cut-outs, but the glue's off limits, he "

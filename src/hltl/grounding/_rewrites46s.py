@@ -6,8 +6,10 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _names
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding._normalise1 import _F, _names, _reading
+from hltl.grounding._rewrites42s import _NEGATED42S
+from hltl.grounding._rewrites45s import _CORRECTS45S, _NOT_BEFORE45S, _same45s
+from hltl.grounding.lexicon import VERBS, Lexicon
 from hltl.grounding.tree import Group, Node, tasks
 
 # -- session 46 (12s): order words in a text with no marks (12c's `texted` fuzz) ------------------
@@ -232,8 +234,87 @@ def sub_between46s(text: str, node: Node, lexicon: Lexicon) -> None:
             )
 
 
+# -- session 46 (12s): run-ons, a text with no marks (blind44's lower case) -----------------------
+#
+# "crisps up on the shelf ta the pipe fitter keeps nicking them": a courtesy word inside a text
+# with no marks, then a remark naming nothing of the scene: the comma after the courtesy put in
+# (the older remark rules then take the remark off), when what comes before reads alone, the
+# remark negates and corrects nothing, and the whole then reads as the request alone does. A
+# pronoun's clause after it ("tape for tom please hes at bay four") is left to sessions 38 and
+# 39's rules (12).
+_COURTESY_MID46S = re.compile(
+    r"(?<=[a-z]) (?P<c>thx|thanks|ta|cheers|pls|plz|please|ty)"
+    r" (?!(?:he|she|it|they|hes|shes|its|theyre|he's|she's|it's|they're|i|im|i'm|you|we|were|"
+    r"we're|weve|we've)\b)"
+    r"(?=[a-z])",
+    _F,
+)
+
+
+def _courtesy_mid46s(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12s): the comma above put in (see there)."""
+    if re.search(r"[,;:.!?]", text):
+        return text
+    for m in _COURTESY_MID46S.finditer(text):
+        before, after = text[: m.start()], text[m.end() :]
+        if _names(after, lexicon) or _NEGATED42S.search(after) or _CORRECTS45S.search(after):
+            continue
+        alone = _reading(before, lexicon)
+        if alone is None:
+            continue
+        out = f"{before} {m['c']}, {after}"
+        if _same45s(_reading(out, lexicon), alone):
+            return out
+    return text
+
+
+# "tin of screws on the workbench kofi wants to count them": a request, then with no mark what a
+# person of the scene wants or is going to do with it (a verb that is no task of the cell): the
+# comma put in, when what comes before reads alone, the clause names no one and nothing else and
+# negates and corrects nothing, and the whole then reads as the request alone does.
+_PERSON_TO46S = re.compile(
+    r"^(?:'s|s)? (?:wants|needs|has|has got|is going|'s going|is gonna|'s gonna|would like|"
+    r"wanted|is hoping|'s hoping|plans) to (?P<verb>[a-z]+)\b(?P<rest>[^,;:.!?]*)$",
+    _F,
+)
+
+
+def _person_to46s(text: str, lexicon: Lexicon) -> str:
+    """Session 46 (12s): the comma above put in (see there)."""
+    if " to " not in text or re.search(r"[,;:.!?]", text):
+        return text
+    low = text.lower()
+    for it in _names(text, lexicon):
+        if not all(r.kind == "human" for r in it.refs):
+            continue
+        at = low.find(" " + it.text.lower() + " ")
+        if at < 0:
+            at = low.find(" " + it.text.lower() + "'")
+        if at <= 0:
+            continue
+        before, after = text[:at], text[at + 1 + len(it.text) :]
+        m = _PERSON_TO46S.match(after)
+        if m is None or m["verb"].lower() in VERBS:
+            continue
+        if _names(m["rest"], lexicon) or _NEGATED42S.search(after) or _CORRECTS45S.search(after):
+            continue
+        words = before.split()
+        if not words or words[-1].lower() in _NOT_BEFORE45S or words[-1].lower() in VERBS:
+            continue
+        alone = _reading(before, lexicon)
+        if alone is None:
+            continue
+        out = f"{before}, {text[at + 1 :]}"
+        if _same45s(_reading(out, lexicon), alone):
+            return out
+    return text
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-45 ones)
-_STEPS46S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS46S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _courtesy_mid46s,
+    _person_to46s,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-45 ones)
 _STEPS46S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-45 ones)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import functools
 import itertools
 import re
+import unicodedata
 from collections.abc import Callable
 from dataclasses import dataclass
 from importlib import resources
@@ -106,6 +107,14 @@ def tokenize(text: str) -> list[Token]:
 def foreign_words(text: str) -> list[str]:
     """Words in letters other than English ones: the tokenizer would drop them silently."""
     return [w for w in re.findall(r"[^\W\d_]+", text) if not w.isascii()]
+
+
+def unaccented(text: str) -> str:
+    """``text`` without its letters' accents ('bodhrán' → 'bodhran'; a letter with no unaccented
+    form stays as it is)."""
+    if text.isascii():
+        return text
+    return "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
 
 
 # -- keywords ------------------------------------------------------------------------------------
@@ -1389,6 +1398,7 @@ class Lexicon:
         self._exact: dict[str, list[Ref]] = {}  # one-letter ids: matched with their case only
         # phrase -> (ref, spelling, strong): strong for ids, names and aliases, weak for categories
         self._phrases: dict[tuple[str, ...], list[tuple[Ref, str, bool]]] = {}
+        self._name_words: frozenset[str] | None = None
         for o in scene.objects:
             for name in dict.fromkeys((o.id, *o.aliases)):
                 self._add(Ref("object", o.id), name, plurals=True)
@@ -1436,7 +1446,9 @@ class Lexicon:
         if len(name) == 1 and name.isalpha():
             self._exact.setdefault(name, []).append(ref)
             return
-        words = _words(name)
+        # a name with an accent ('Zoë') is read as written or without it: the tokenizer reads
+        # English letters only, and had read it as 'Zo' (session 48, 12s)
+        words = _words(unaccented(name))
         if not words:
             return
         self._put(words, ref, name, strong)
@@ -1524,6 +1536,12 @@ class Lexicon:
 
     def remember(self, text: str, items: tuple[Item, ...]) -> None:
         self._lexed[text] = items
+
+    def name_words(self) -> frozenset[str]:
+        """Every word of the phrases that name something of the scene (kept: read-only)."""
+        if self._name_words is None:
+            self._name_words = frozenset(w for key in self._phrases for w in key)
+        return self._name_words
 
     def lookup(self, phrase: str) -> tuple[Ref, ...] | None:
         """The entities a whole phrase names ("blue mug"), else None."""
