@@ -290,7 +290,7 @@ UNCLEAR: list[Unclear] = [
         ("cannot name", "Person B", "Person C"),
     ),
     (
-        "Globe to Noah, no, to whoever else wanted it this morning, I can't remember who.",
+        "Globe to Noah, no, to whoever else wanted it this morning, I can't think who.",
         CLASSROOM,
         ("cannot name", "Person A", "Person C"),
     ),
