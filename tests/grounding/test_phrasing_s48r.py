@@ -354,7 +354,11 @@ test_corrections = STEPS.test(
     ("The apple for Bob, oh no hang on, the cup for Bob.", "cup>B", CELL),
     ("The apple for Bob, no, the cup for Alice.", None, CELL),
     # _rather48r: "…, no, actually, she'd rather the apple(, she's just had a brew at …)"
-    ("Cup to Alice, no, actually, she'd rather the apple.", "apple>A", CELL),
+    (
+        "Cup to Alice, no, actually, she'd rather the apple, she's just had a coffee.",
+        "apple>A",
+        CELL,
+    ),
     ("Cup to Alice, no, he'd rather the apple.", None, CELL),
     # _asking_after_all48r: "…, hold on, P's asking for it after all, so give it him"
     (

@@ -128,11 +128,11 @@ test_choices = CASES.test(
         DEPOT,
     ),
     (
-        "Lena can have the knife or the tongs, she really doesn't care either way.",
+        "Lena can have the knife or the tongs, she really couldn't care less which.",
         "knife>B | tongs>B",
         KITCHEN,
     ),
-    ("Give Tom the tape or the gloves, she doesn't mind which.", None, DEPOT),
+    ("Give Tom the tape or the gloves, she couldn't care which.", None, DEPOT),
     ("Alice says she'll take the apple or the cup, she couldn't say which.", None, CELL),
     # _of_the_two49r: "P can take whichever of the two (Ks) he prefers"
     ("Alice can have whichever of the two she likes.", "bottle>A | chips>A", TWO),
@@ -219,7 +219,7 @@ test_counts = CASES.test(
     ("With just the one bottle and Person A the only one here, pass it to her.", None, L24),
     # _one_to_get49r: "There's a single X, and P's the one to get it" / "P only asked for a
     # single X, so that's what she gets"
-    ("There's only one globe, and Zoe's the one to get it.", "globe>C", CLASSROOM),
+    ("There's just a single globe, and Zoe's the one to get it.", "globe>C", CLASSROOM),
     ("There's a single hammer here, so Jess is the one to have it.", "hammer>B", WORKSHOP),
     ("Tom only asked for a single scanner, so that's what he gets.", "scanner>B", DEPOT),
     ("Zoe only asked for the one globe, so that's what she gets.", "globe>C", CLASSROOM),

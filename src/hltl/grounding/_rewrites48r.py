@@ -500,9 +500,8 @@ def _rather48r(text: str, lexicon: Lexicon) -> str:
     if not _agrees44r(first.target, m["pro"], lexicon):
         return text
     out = f"{text[: m.start()]}{m['cue']}{text[m.end() :]}"
-    done = _read_or44r(out, text, lexicon)
-    if done != text:
-        return done
+    # the plain "…, no, she'd rather the apple" is session 40's (s40r); this rule reads it only
+    # with a closing remark after the thing
     rest = re.match(
         r"^(?P<head>.*?,\s*the [a-z]+(?: [a-z]+)?)\s*,\s*(?P<tail>[^,]+?)(?P<end>\s*[.!]?)$",
         out,

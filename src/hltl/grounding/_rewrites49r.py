@@ -249,7 +249,7 @@ def _whatever_of49r(text: str, lexicon: Lexicon) -> str:
 # "Person A says she'll take the bottle or the chips, she honestly couldn't care which."
 _CARE_WHICH49R = re.compiled(
     r"\s*,\s*(?:and |but )?(?P<pro>she|he)(?: honestly| really| genuinely| truly)? "
-    r"(?:couldn't|could not|doesn't|does not|wouldn't|would not) (?:care|mind)(?: less)? "
+    r"(?:couldn't|could not|wouldn't|would not) care(?: less)? "
     r"(?:which|either way|which "
     r"one)(?: (?:she|he) gets)?(?P<end>\s*[.!]?)$",
     _F,
@@ -258,9 +258,9 @@ _CARE_WHICH49R = re.compiled(
 
 def _care_which49r(text: str, lexicon: Lexicon) -> str:
     """Session 49 (12r): a choice for one person closed by "she honestly couldn't care which"
-    ("he doesn't mind which one he gets") is the choice (the pronoun that person); a closing
+    ("he couldn't care less which") is the choice (the pronoun that person); a closing
     doubt ("I can't remember which") stays the older rules' refusal."""
-    if "care" not in text.lower() and "mind" not in text.lower():
+    if "care" not in text.lower():  # "doesn't mind / care which" are session 35's and 45's
         return text
     m = _CARE_WHICH49R.search(text.strip())
     if m is None:
@@ -521,7 +521,8 @@ def _with_one49r(text: str, lexicon: Lexicon) -> str:
 
 # "There's a single bottle on hand, and Bob's the one to get it."
 _ONE_TO_GET49R = re.compiled(
-    rf"^there(?:'s| is) {_ONE_X49R}{_AROUND49R}\s*,?\s*(?:and|so) (?P<p>{_P46R})(?:'s| is) the "
+    r"^there(?:'s| is) (?:(?:just |only )?a single|one single|the single) (?P<x>[a-z]+(?: [a-z]+)?)"
+    rf"{_AROUND49R}\s*,?\s*(?:and|so) (?P<p>{_P46R})(?:'s| is) the "
     r"(?:one|person) (?:to get|to have|to take|who gets|getting|who should get|who should have) "
     r"it(?P<end>\s*[.!]?)$",
     _F,
