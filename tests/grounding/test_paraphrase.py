@@ -337,15 +337,8 @@ KNOWN_MISSES = frozenset(
         "Noah can have the scissors for his snowflake cut-outs, but the glue's off limits, he "
         "made a mess last time.",
         "Lily's had enough of the red block; give her the teddy, not another block.",
-        "Bottle to Person A, sorry, I meant Person B, I've got the constable on the other line.",
-        "The chips for Person B, oh no hang on, the bottle for Person B.",
-        "Cup to Person A, no, actually, she'd rather the apple, she's just had a brew at the "
-        "needle maker's.",
-        "The bottle stays put, oh, hold on, Person A's asking for it after all, so give it her.",
         "Chips to Person B, oh wait, he's not peckish, so Person A gets them, and the bottle "
         "goes to Person B.",
-        "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the "
-        "salads.",
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
@@ -354,31 +347,6 @@ KNOWN_MISSES = frozenset(
         "Alice is back from the pitch and putt she wants the bottle give it her",
         "The bottle is Person B's he asked earlier the chips are Person A's.",
         "Grandad's feeding Lily on the sofa. The bib. He needs it, hand it to him.",
-        "Bob isn't fussy about mugs, red or blue, just give him one.",
-        "Alice is taking both the bottle and the crisps to her snakes and ladders night, so give "
-        "them both to her.",
-        "Whatever Person A likes out of the apple and the cup.",
-        "Something for both of them, please: Person A's to get the cup and the apple is for "
-        "Person B.",
-        "Person A says she'll take the bottle or the chips, she honestly couldn't care which.",
-        "Person B can take whichever of the two he prefers.",
-        "With just the one bottle in the room and Person A the only one here, hand it over to her.",
-        "The bottle, to Person A, since it's the only thing there is.",
-        "Each of the girls gets a block, the red for Lily and the green for Ava.",
-        "There's a single bottle on hand, and Bob's the one to get it.",
-        "Shelf for the pair of them, the bottle and the crisps, before leapfrog starts.",
-        "Person A gets both of the things there are, the whole pair.",
-        "Seeing as there's just the one bottle, let Person B have it.",
-        "Person A only asked for a single bottle, so that's what she gets.",
-        "Marco's flipping the fish and needs the pair of tongs.",
-        "For the sign language lesson Mrs Ortiz wants a pair of books out, so set the two books "
-        "down on the desk.",
-        "Up on the shelf with the crisps, oh, actually, no, Bob's just said he'd like them.",
-        "The cup is for Person A, scratch that, it's Person B who's playing twister and needs it.",
-        "Person B for the bottle, hmm, no, thinking about it, it was Person A who asked.",
-        "Take Mr Lee the blue blanket, hold on, not that, the grey one.",
-        "Marco asked for the salt shaker, didn't he, no, sorry, I'm muddling them, it was Lena.",
-        "Kofi needs the hammer, sorry, it's Jess who needs it, Kofi's on the brickie's job.",
         "if you're free alice is after the cup and bob fancies a handful of crisps",
         "cheers mate and could person b get the bottle over there",
         "after darning circle person a was asking for chips and person b for the bottle",
@@ -415,14 +383,11 @@ KNOWN_UNCLEAR = frozenset(
         "which colour.",
         "Alice and Carol came in from the lantern parade; she asked for the cup, so give it to "
         "her.",
-        "Person A asked for one of the two, I just can't remember which one she said.",
-        "Zoe was reading one of the two books before break, and she wants that one back.",
         "Give Person A the chips, no, hang on, the other one, the one she had at the chair "
         "bodger's.",
         # blind47 (tuned on in session 49)
         "Lena wanted one of the plates for the houseman's tray, white or blue, and I never wrote "
         "down which.",
-        "Teddy to Lily, no, to whoever else asked for it at teatime, I can't think who.",
         "noah wanted a book earlier the red or the green one dunno which",
         "Sam asked for the nootebook or the stapler this morning, I can't remember which.",
         "Which patient was it that wanted the blue blanket, do you remember? Take it to them.",
