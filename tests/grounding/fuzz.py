@@ -170,7 +170,20 @@ person corrected, then a placing instead: that placing; a second object added an
 two corrected ("…, and the cup, no, Carol, well, the crisps actually."): refused, both as
 readings. After an entry's one placing of a one-of-a-kind object naming no person: the surface
 corrected, then a handover instead, put back, or the object corrected. Each may be refused
-instead.
+instead. A twenty-third family (session 49), forgets: a choice closed by a remark that the speaker
+has forgotten or never knew which, without 'which' (blind47's wrong reading "Kofi wanted one of the
+spanners for the stonecarver's job, the small or the large, it's gone clean out of my head." was
+read as the robot's choice): after an entry with a choice in it not said to be free ("…, I wasn't
+listening."), and an entry's one handover of a one-of-a-kind object said as the person's want of
+it or another ("Bob wanted the apple or the cup, I've clean forgotten.") or as it for the person or
+another ("Alice or Bob wanted the apple, memory's shot."): refused (the choice is the person's, and
+the speaker lost it), the two objects as readings. A twenty-fourth family (session 49), lots: 'the
+whole lot' in apposition (blind47's "Load the belt with the three boxes, the whole lot, …" read
+every object of the depot): after a kind's plural naming every one of the kind, for the entry's
+person ("Give Bob the mugs, the whole lot.", "Give Bob the lot, the mugs.", "… the mugs - the
+whole lot.") or on a surface: every one of the kind; after the entry's one-of-a-kind object and
+another ("Give Bob the apple and the cup, the whole lot."): those again or everything else,
+refused, both as readings.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1580,6 +1593,72 @@ CHAIN_FORMS = (
     "surface back",
     "surface, object",
 )
+# forgets (session 49; blind47's wrong reading "Kofi wanted one of the spanners for the
+# stonecarver's job, the small or the large, it's gone clean out of my head." read as the robot's
+# choice; the lead's rule knows a list of such remarks, and 12c's probes found others read so):
+# a remark closing a choice that says the speaker has forgotten or never knew which was asked for
+# (no 'which' in it: the older families say "…, I forget which"); the choice is the person's, lost
+# by the speaker, not one left to the robot: refused
+FORGET_CLOSERS = (
+    ", it's gone clean out of my head.",
+    ", I've clean forgotten.",
+    ", my mind's gone blank.",
+    ", it's slipped my mind.",
+    ", it went right out of my head.",
+    ", I didn't catch it.",
+    ", I wasn't listening.",
+    ", I never wrote it down.",
+    ", it's gone clean out of my head, sorry.",
+    ", memory's shot.",
+    ", can't remember now.",
+    ", dunno.",
+)
+# ... said of the entry's one handover of a one-of-a-kind object ({o}) to a person named ({p}):
+# that object or another ({x}), closed by a remark ({c}): refused, both as readings
+FORGET_OBJECTS = (
+    "{P} wanted the {o} or the {x}{c}",
+    "{P} asked for the {o} or the {x}{c}",
+    "It was the {o} or the {x} {p} was after{c}",
+    "{P} needs the {o}, or was it the {x}{c}",
+)
+# ... that person or another ({q}): refused
+FORGET_PEOPLE = (
+    "The {o} is for {p} or {q}{c}",
+    "{P} or {q} wanted the {o}{c}",
+)
+# (not after a choice said to be free, "either plate, she's not bothered": a remark of forgetting
+# after it says nothing a careful person could read)
+_FREE_CHOICE = frozenset(
+    ("either", "any", "whichever", "whatever", "choice", "bothered", "fussy", "mind", "matter")
+)
+FORGET_FORMS = ("closed", "objects", "people")
+# lots (session 49; blind47's wrong reading "Load the belt with the three boxes, the whole lot,
+# the brickie's van is nearly here." read every object of the depot onto the belt): 'the whole
+# lot' in apposition after a kind's plural that names every one of the kind ({cs}) says the kind
+# again (the lead's decision: the kind), for a person ({p}) or on a surface ({s})
+LOT_KIND = (
+    "Give {p} the {cs}, the whole lot.",
+    "Give {p} the {cs}, the lot.",
+    "The {cs} for {p}, the whole lot of them.",
+    "Give {p} the {cs} - the whole lot.",
+    "Give {p} the lot, the {cs}.",
+    "Hand {p} the {cs}, the whole lot, cheers.",
+)
+LOT_PLACED = (
+    "Put the {cs} on the {s}, the whole lot.",
+    "The {cs}, the lot, on the {s} please.",
+    "Put the {cs} on the {s} - the whole lot.",
+    "Load the {s} with the {cs}, the whole lot, we're nearly done.",
+)
+# ... after other named things that are not everything in the scene (the entry's one-of-a-kind
+# object {o} and another, {x}, for the entry's person): those again or everything else: refused,
+# both named as readings
+LOT_NAMED = (
+    "Give {p} the {o} and the {x}, the whole lot.",
+    "Give {p} the {o}, the {x}, the lot.",
+    "The {o} and the {x} for {p}, the whole lot.",
+)
+LOT_FORMS = ("kind", "placed", "named")
 SAID_FORMS = (
     "reason before",
     "condition",
@@ -1620,6 +1699,8 @@ Family = Literal[
     "antecedents",
     "thoughts",
     "chains",
+    "forgets",
+    "lots",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -3712,6 +3793,83 @@ def chains(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterato
         yield from variant(said, Task("place", want.obj, sid), "placed")
 
 
+def forgets(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The forgetting variants of one grounded entry that is no question (FORGET_FORMS; none of
+    another): with a choice in its reading, a remark after it that the speaker has forgotten or
+    never knew which (`closed`, FORGET_CLOSERS: refused); of one handover of a one-of-a-kind
+    object naming its one person by a name and nothing else of the scene, that object or another
+    said as the person's want and closed by such a remark (`objects`, FORGET_OBJECTS: refused,
+    both as readings), or that person or another (`people`, FORGET_PEOPLE: refused)."""
+    text = entry.text.strip()
+    want = entry.want
+    if text.endswith("?") or want is None:
+        return
+    closers = [c for c in FORGET_CLOSERS if _names_nothing(c, scene)]
+    if not closers:
+        return
+    closer = rng.choice(closers)
+    if has_choice(want) and not _words(text) & _FREE_CHOICE:
+        yield Variant(
+            part, entry.scene, _then(text, closer), None, "refuse", "forgets", (), "closed"
+        )
+    said_as = _one_person_said(text, want, scene)
+    if said_as is None or not isinstance(want, Task) or want.obj not in _unique_objects(scene):
+        return
+    p = _proper_name(scene, want.target or "") or said_as[0]
+    keys = {"p": p, "P": p[:1].upper() + p[1:], "o": _name(scene, want.obj), "c": closer}
+    others = [x for x in _unique_objects(scene) if x != want.obj]
+    fitting = [f for f in FORGET_OBJECTS if _fits(f, scene)]
+    if others and fitting:
+        xid = rng.choice(others)
+        said = rng.choice(fitting).format(x=_name(scene, xid), **keys)
+        readings = (want.obj, xid)
+        yield Variant(part, entry.scene, said, None, "refuse", "forgets", readings, "objects")
+    people = [q for h in scene.humans if h.id != want.target and (q := _proper_name(scene, h.id))]
+    fitting = [f for f in FORGET_PEOPLE if _fits(f, scene)]
+    if people and fitting:
+        said = rng.choice(fitting).format(q=rng.choice(people), **keys)
+        yield Variant(part, entry.scene, said, None, "refuse", "forgets", (), "people")
+
+
+def lots(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The 'whole lot' variants of one grounded entry of one handover naming its one person by a
+    name and nothing else of the scene but its object (LOT_FORMS; none of another): in a scene
+    with a kind it has several objects of, that kind's plural for the person with 'the whole lot'
+    in apposition (`kind`, LOT_KIND: every one of the kind to them) or on a surface of the scene
+    (`placed`, LOT_PLACED: every one on it); and, for the entry's one-of-a-kind object, it and
+    another one named for the person with 'the whole lot' after them (`named`, LOT_NAMED: those
+    again or everything else: refused, both objects as readings)."""
+    text = entry.text.strip()
+    want = entry.want
+    said_as = _one_person_said(text, want, scene)
+    if text.endswith("?") or said_as is None or not isinstance(want, Task):
+        return
+    p = _proper_name(scene, want.target or "") or said_as[0]
+    plurals = _plurals(scene)
+    if plurals:
+        cs, (_, ids) = rng.choice(sorted(plurals.items()))
+        every = Group("and", tuple(Task("deliver", i, want.target) for i in ids))
+        fitting = [f for f in LOT_KIND if _fits(f, scene)]
+        if fitting:
+            said = rng.choice(fitting).format(p=p, cs=cs)
+            yield Variant(part, entry.scene, said, every, "same", "lots", (), "kind")
+        surfaces = [(x.id, n) for x in scene.surfaces if (n := _surface_name(scene, x.id))]
+        fitting = [f for f in LOT_PLACED if _fits(f, scene)]
+        if surfaces and fitting:
+            sid, s = rng.choice(surfaces)
+            placed = Group("and", tuple(Task("place", i, sid) for i in ids))
+            said = rng.choice(fitting).format(s=s, cs=cs)
+            yield Variant(part, entry.scene, said, placed, "same", "lots", (), "placed")
+    others = [x for x in _unique_objects(scene) if x != want.obj]
+    fitting = [f for f in LOT_NAMED if _fits(f, scene)]
+    # (where the two are everything in the scene, the two readings are one)
+    if want.obj in _unique_objects(scene) and len(scene.objects) > 2 and others and fitting:
+        xid = rng.choice(others)
+        said = rng.choice(fitting).format(p=p, o=_name(scene, want.obj), x=_name(scene, xid))
+        readings = (want.obj, xid)
+        yield Variant(part, entry.scene, said, None, "refuse", "lots", readings, "named")
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -3799,6 +3957,8 @@ def generated(
     rng_antecedents = random.Random(f"antecedents:{seed}")
     rng_thoughts = random.Random(f"thoughts:{seed}")
     rng_chains = random.Random(f"chains:{seed}")
+    rng_forgets = random.Random(f"forgets:{seed}")
+    rng_lots = random.Random(f"lots:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -3872,6 +4032,12 @@ def generated(
                     yield v, scene
             if "chains" in families:
                 for v in chains(part, entry, scene, rng_chains):
+                    yield v, scene
+            if "forgets" in families:
+                for v in forgets(part, entry, scene, rng_forgets):
+                    yield v, scene
+            if "lots" in families:
+                for v in lots(part, entry, scene, rng_lots):
                     yield v, scene
 
 

@@ -59,7 +59,10 @@ family of session 47 (an entry's one handover said as a thought and taken back a
 another object or person: that handover; added to or put after another: both; a hedge after the
 entry, alone or with where its object is: the entry), the chains family of session 48 (a second
 correction after a first: the last of each; put back: the entry; a second object added and one of
-the two corrected: refused), and the wrappers and take-backs of a seed unchanged by them."""
+the two corrected: refused), the forgets family of session 49 (a choice closed by a remark that the
+speaker has forgotten which, without 'which': refused), the lots family of session 49 ('the whole
+lot' after a kind's plural: the kind; after two named things that are not everything: refused),
+and the wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -246,6 +249,8 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "antecedents",
         "thoughts",
         "chains",
+        "forgets",
+        "lots",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -267,7 +272,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     )
     assert (
         "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents', "
-        "'thoughts', 'chains')" in err
+        "'thoughts', 'chains', 'forgets', 'lots')" in err
     )
 
 
@@ -677,6 +682,172 @@ def test_over_the_corpus_each_chain_form_is_made() -> None:
         assert (v.want is None) is (v.form == "which")
         for t in tasks(v.want) if v.want is not None else ():
             assert t.obj in fuzz._unique_objects(scene)
+            assert t.obj in fuzz._objects_named(v.text, scene), v.text
+    assert min(kinds.values()) >= 5, kinds
+
+
+# -- forgets and lots (session 49) ----------------------------------------------------------------
+
+
+def _forgets(entry: Entry, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.forgets("t", entry, CELL, random.Random(seed)))
+
+
+def _lots(entry: Entry, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.lots("t", entry, CELL, random.Random(seed)))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        ("Give Bob the apple.", "apple>B", ("objects", "people")),
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", ("closed",)),
+        ("Alice wants the red mug or the blue one.", "mug_red>A | mug_blue>A", ("closed",)),
+        # a question, a choice said to be free, a kind the scene has two of, a pronoun, two
+        # handovers, a placing, a refused entry: none
+        ("Could you give Bob the apple or the cup?", "apple>B | cup>B", ()),
+        ("Give Bob either mug, he's not fussy.", "mug_red>B | mug_blue>B", ()),
+        ("Give Bob the red mug.", "mug_red>B", ()),
+        ("Bob wants the apple, give it to him.", "apple>B", ()),
+        ("Give Bob the apple and Alice the cup.", "apple>B & cup>A", ()),
+        ("Put the apple on the shelf.", "apple@shelf", ()),
+        ("Give her the apple.", None, ()),
+    ],
+)
+def test_forgets_are_made_for_a_choice_or_one_handover_of_a_one_of_a_kind_object(
+    text: str, want: str | None, forms: tuple[str, ...]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        made = _forgets(entry, seed)
+        assert tuple(v.form for v in made) == forms
+        for v in made:
+            assert v.family == "forgets" and v.want is None and v.must == "refuse"
+            assert v.text.endswith(fuzz.FORGET_CLOSERS), v.text
+            if v.form == "closed":
+                assert v.text.startswith(text.rstrip("."))
+
+
+def test_each_forgetting_names_the_two_it_could_be() -> None:
+    entry = _entry("cell", "Give Bob the apple.", "apple>B")
+    ids = {"cup": "cup", "water bottle": "bottle", "crisps": "chips"}
+    said: set[str] = set()
+    for seed in range(60):
+        for v in _forgets(entry, seed):
+            found = [
+                (f, c, x)
+                for f in (*fuzz.FORGET_OBJECTS, *fuzz.FORGET_PEOPLE)
+                for c in fuzz.FORGET_CLOSERS
+                for x in (*ids, "Alice", "Carol")
+                if v.text == f.format(p="Bob", P="Bob", o="apple", x=x, q=x, c=c)
+            ]
+            assert len(found) == 1, v.text
+            form, closer, x = found[0]
+            said |= {form, closer}
+            if v.form == "objects":
+                assert form in fuzz.FORGET_OBJECTS and v.readings == ("apple", ids[x])
+            else:
+                assert form in fuzz.FORGET_PEOPLE and x in ("Alice", "Carol") and not v.readings
+    assert said == {*fuzz.FORGET_OBJECTS, *fuzz.FORGET_PEOPLE, *fuzz.FORGET_CLOSERS}
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        ("Give Bob the apple.", "apple>B", fuzz.LOT_FORMS),
+        ("Alice wants the crisps.", "chips>A", fuzz.LOT_FORMS),
+        # a kind the scene has two of: no 'named' (the entry's object is not one of a kind)
+        ("Give Bob the red mug.", "mug_red>B", ("kind", "placed")),
+        ("Could you give Bob the apple?", "apple>B", ()),
+        ("Give Bob the apple and Alice the cup.", "apple>B & cup>A", ()),
+        ("Put the apple on the shelf.", "apple@shelf", ()),
+        ("Give her the apple.", None, ()),
+    ],
+)
+def test_lots_are_made_for_one_handover_naming_its_person(
+    text: str, want: str | None, forms: tuple[str, ...]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        made = _lots(entry, seed)
+        assert tuple(v.form for v in made) == forms
+        for v in made:
+            assert v.family == "lots" and (v.want is None) is (v.form == "named")
+            assert "lot" in v.text
+
+
+def test_each_lot_reads_as_the_kind_or_is_refused_naming_both() -> None:
+    entry = _entry("cell", "Give Bob the apple.", "apple>B")
+    ids = {"cup": "cup", "water bottle": "bottle", "crisps": "chips"}
+    surfaces = {"shelf": "shelf", "counter": "table"}
+    said: set[str] = set()
+    for seed in range(60):
+        for v in _lots(entry, seed):
+            if v.form == "kind":
+                found = [f for f in fuzz.LOT_KIND if v.text == f.format(p="Bob", cs="mugs")]
+                assert v.want == Group(
+                    "and", (Task("deliver", "mug_red", "B"), Task("deliver", "mug_blue", "B"))
+                )
+            elif v.form == "placed":
+                found = [
+                    f
+                    for f in fuzz.LOT_PLACED
+                    for s in surfaces
+                    if v.text == f.format(s=s, cs="mugs")
+                    and v.want
+                    == Group(
+                        "and",
+                        (
+                            Task("place", "mug_red", surfaces[s]),
+                            Task("place", "mug_blue", surfaces[s]),
+                        ),
+                    )
+                ]
+            else:
+                found = [
+                    f
+                    for f in fuzz.LOT_NAMED
+                    for x in ids
+                    if v.text == f.format(p="Bob", o="apple", x=x)
+                    and v.readings == ("apple", ids[x])
+                ]
+            assert len(found) == 1, v.text
+            said.add(found[0])
+    assert said == {*fuzz.LOT_KIND, *fuzz.LOT_PLACED, *fuzz.LOT_NAMED}
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict", "family"),
+    [
+        ("Give Bob the mugs, the whole lot.", "mug_red>B & mug_blue>B", "exact", "lots"),
+        # the lot said as everything in the scene is wrong
+        ("Give Bob the whole lot.", "mug_red>B & mug_blue>B", "wrong", "lots"),
+        ("Give Bob the apple and the cup, the whole lot.", None, "refused", "lots"),
+        (
+            "Give Bob the apple or the cup, it's gone clean out of my head.",
+            None,
+            "refused",
+            "forgets",
+        ),
+        # a choice left to the robot where the speaker forgot is wrong
+        ("Give Bob the apple or the cup.", None, "wrong", "forgets"),
+    ],
+)
+def test_forgets_and_lots_are_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str, family: fuzz.Family
+) -> None:
+    assert _judged(text, want, family, "") == verdict
+
+
+def test_over_the_corpus_each_forget_and_lot_form_is_made() -> None:
+    """Every second entry of three parts: each variant names what it reads as."""
+    kinds = {f"forgets {f}": 0 for f in fuzz.FORGET_FORMS} | {
+        f"lots {f}": 0 for f in fuzz.LOT_FORMS
+    }
+    for v, scene in fuzz.generated(PARTS, seed=49, every=2, families=("forgets", "lots")):
+        kinds[f"{v.family} {v.form}"] += 1
+        assert (v.want is None) is (v.must == "refuse")
+        for t in tasks(v.want) if v.want is not None else ():
             assert t.obj in fuzz._objects_named(v.text, scene), v.text
     assert min(kinds.values()) >= 5, kinds
 

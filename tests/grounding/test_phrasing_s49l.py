@@ -6,8 +6,20 @@ import pytest
 
 from hltl.errors import GroundingError
 from hltl.grounding.offline import parse_instruction
-from hltl.world.scene import Scene
-from tests.grounding.helpers import CELL, DEPOT, KITCHEN, OFFICE, WARD, WORKSHOP, assert_reads
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import (
+    CELL,
+    DEPOT,
+    KITCHEN,
+    LAB,
+    OFFICE,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+)
+
+SQUARE = load_scene(ROOT / "examples/scenes/4-4-square.yaml")
 
 # -- a choice, then "it's gone clean out of my head": the speaker has forgotten which was asked
 # for (blind47's wrong reading left the choice to the robot)
@@ -47,6 +59,39 @@ from tests.grounding.helpers import CELL, DEPOT, KITCHEN, OFFICE, WARD, WORKSHOP
             WORKSHOP,
             ("drill", "hammer"),
         ),
+        # the remark in other words, not last, or without stops (12c's probes)
+        (
+            "Kofi wanted one of the spanners, the small or the large, I've clean forgotten.",
+            WORKSHOP,
+            ("spanner_small", "spanner_large"),
+        ),
+        (
+            "Jess wanted the drill or the hammer, my mind's gone blank.",
+            WORKSHOP,
+            ("drill", "hammer"),
+        ),
+        (
+            "Jess wanted the torch or the hammer, I'd have to ask her.",
+            WORKSHOP,
+            ("torch", "hammer"),
+        ),
+        (
+            "Kofi asked for a spanner, it's gone out of my head which size.",
+            WORKSHOP,
+            ("spanner_small", "spanner_large"),
+        ),
+        (
+            "Lena wanted a plate, white or blue, it's completely gone, she's out the back.",
+            KITCHEN,
+            ("plate_white", "plate_blue"),
+        ),
+        ("Mr Novak asked for the salt or the lemon, memory's shot.", KITCHEN, ("salt", "lemon")),
+        (
+            "mr novak asked for the salt or the lemon its gone clean out of my head",
+            KITCHEN,
+            ("salt", "lemon"),
+        ),
+        ("Dana wanted the spoon or the bowl, I didn't catch it, sorry.", LAB, ("spoon", "bowl")),
     ],
 )
 def test_a_choice_the_speaker_has_forgotten_is_refused_naming_it(
@@ -70,6 +115,12 @@ def test_a_choice_the_speaker_has_forgotten_is_refused_naming_it(
             WORKSHOP,
         ),
         ("Marco wants the salt or the lemon.", "salt>A | lemon>A", KITCHEN),
+        # 'gone' of something else is no doubt about the choice
+        (
+            "Give Jess either spanner, it's gone cold in here.",
+            "spanner_small>B | spanner_large>B",
+            WORKSHOP,
+        ),
     ],
 )
 def test_a_choice_with_no_doubt_still_reads(text: str, want: str, scene: Scene) -> None:
@@ -105,6 +156,25 @@ def test_a_choice_with_no_doubt_still_reads(text: str, want: str, scene: Scene) 
         ),
         ("Sam gets the pens, the whole lot.", "pen_black>B & pen_blue>B & pen_red>B", OFFICE),
         ("Alice gets the mugs, the whole lot of them.", "mug_red>A & mug_blue>A", CELL),
+        (
+            "Put the boxes on the belt - the whole lot.",
+            "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+        (
+            "Put the boxes on the belt, everything.",
+            "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+            DEPOT,
+        ),
+        # said the other way round
+        ("Give Tom the lot, the boxes.", "box_small>B & box_medium>B & box_large>B", DEPOT),
+        ("Ruth gets everything, both blankets.", "blanket_blue>A & blanket_grey>A", WARD),
+        # a count and a list after it say what the lot is (session 43's rule)
+        (
+            "Person B gets the whole lot, all four of them: bottle, chips, cup and apple.",
+            "bottle>B & chips>B & cup>B & apple>B",
+            SQUARE,
+        ),
         # 'the whole lot' alone is still everything
         (
             "Give Bob the whole lot.",
@@ -131,7 +201,9 @@ def test_the_whole_lot_after_a_kind_is_that_kind(text: str, want: str, scene: Sc
             OFFICE,
             ("notebook, stapler", "pen_red"),
         ),
-        ("Load the belt with the tape, the whole lot.", DEPOT, ("after tape", "gloves")),
+        ("Load the belt with the tape, the whole lot.", DEPOT, ("with tape", "gloves")),
+        ("Give Tom the gloves, the tape, everything.", DEPOT, ("gloves, tape", "scanner")),
+        ("Give Tom everything, the tape and the gloves.", DEPOT, ("gloves, tape", "box_small")),
     ],
 )
 def test_the_whole_lot_after_other_things_is_refused_naming_both(

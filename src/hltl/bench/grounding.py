@@ -148,7 +148,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineer and committed alone, never opened by the engineers who change the grounder before its
 # one measurement at the end of session 47; tuned on in session 48), blind47 (written in session 48
 # by another engineer and committed alone, never opened by the engineers who change the grounder
-# before its one measurement at the end of session 48; tuned on in session 49).
+# before its one measurement at the end of session 48; tuned on in session 49), blind48 (written in
+# session 49 by another engineer and committed alone, never opened by the engineers who change the
+# grounder before its one measurement at the end of session 49; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -213,6 +215,7 @@ PARTS = (
     "blind45",
     "blind46",
     "blind47",
+    "blind48",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

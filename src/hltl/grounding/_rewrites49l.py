@@ -21,50 +21,76 @@ from hltl.grounding.tree import Group, Node, tasks
 # the kind, read so (`kind_lot49l`, run on the text before its first read, as session 45's
 # `other_person45l`); after other things that are not everything in the scene it is refused,
 # naming both readings.
-_LOT49L = r"(?:the whole lot|the lot)(?: of them)?"
-_AFTER_THINGS49L = re.compiled(rf",\s*(?P<lot>{_LOT49L})(?=\s*(?:[,.;!?]|$))", _F)
+# The same with the two said the other way round ("Give Tom the lot, the boxes."), with a dash
+# for the comma, and with 'everything' for 'the whole lot' (12c's probes of the family).
+_LOT49L = r"(?:the whole lot|the lot|everything)(?: of them)?"
+_AFTER_THINGS49L = re.compiled(
+    rf"(?:,|\s+[-–—])\s*(?P<lot>{_LOT49L})(?=\s*(?:[,.;!?]|$|\s[-–—]))", _F
+)
+_BEFORE_THINGS49L = re.compiled(
+    rf"\b(?P<lot>{_LOT49L})(?:,|\s+[-–—])\s*(?P<np>(?:the|all the|all|both|both the|those|these) "
+    r"[^,.;:!?\-–—]+?)(?=\s*(?:[,.;:!?]|$|\s[-–—]))",
+    _F,
+)
+
+
+def _kind_of(named: set[str], said: str, lexicon: Lexicon) -> bool:
+    """Whether ``named`` is every object of one kind (two or more), said by the kind's plural in
+    ``said`` ("the three boxes")."""
+    kinds = {o.category for o in lexicon.scene.objects if o.id in named}
+    if len(named) < 2 or len(kinds) != 1:
+        return False
+    (kind,) = kinds
+    every = {o.id for o in lexicon.scene.objects if o.category == kind}
+    return named == every and re.search(rf"\b{re.escape(kind)}(?:s|es)\b", said, _F) is not None
 
 
 def _lot_said(text: str, m: re.Match[str], lexicon: Lexicon) -> tuple[set[str], bool]:
     """The objects the sentence names before ``m`` (', the whole lot'), and whether they are
-    every object of one kind, said by the kind's plural ("the three boxes")."""
+    every object of one kind, said by the kind's plural."""
     before = re.split(r"[.!?;]\s", text[: m.start()])[-1]
     named = _ids(before, lexicon, "object")
-    kinds = {o.category for o in lexicon.scene.objects if o.id in named}
-    if len(named) < 2 or len(kinds) != 1:
-        return named, False
-    (kind,) = kinds
-    every = {o.id for o in lexicon.scene.objects if o.category == kind}
-    plural = re.search(rf"\b{re.escape(kind)}(?:s|es)\b", before, _F) is not None
-    return named, named == every and plural
+    return named, _kind_of(named, before, lexicon)
 
 
 def kind_lot49l(text: str, lexicon: Lexicon) -> str:
-    """Session 49 (lead): "the three boxes, the whole lot" (a kind's plural naming every object of
-    that kind, then 'the whole lot' or 'the lot' in apposition) is those objects, not everything
-    in the scene: the apposition is taken off before the text is read."""
-    if "lot" not in text.lower():
+    """Session 49 (lead): "the three boxes, the whole lot" / "the lot, the boxes" (a kind's plural
+    naming every object of that kind, and 'the whole lot', 'the lot' or 'everything' in
+    apposition) is those objects, not everything in the scene: the apposition is taken off
+    before the text is read."""
+    low = text.lower()
+    if "lot" not in low and "everything" not in low:
         return text
     for m in reversed(list(_AFTER_THINGS49L.finditer(text))):
         if _lot_said(text, m, lexicon)[1]:
             text = text[: m.start()] + text[m.end() :]
+    for m in reversed(list(_BEFORE_THINGS49L.finditer(text))):
+        if _kind_of(_ids(m["np"], lexicon, "object"), m["np"], lexicon):
+            text = text[: m.start()] + m["np"] + text[m.end() :]
     return text
 
 
 def _lot_after_things49l(text: str, lexicon: Lexicon) -> None:
-    """Session 49 (lead): ', the whole lot' right after a request that names some of the scene's
-    objects ("Give Tom the gloves and the tape, the whole lot.") says those again or adds
-    everything else: refused naming both (when what was named is everything, the two readings
-    are one; a kind's plural before it is read by `kind_lot49l`)."""
-    if "lot" not in text.lower():
+    """Session 49 (lead): ', the whole lot' (or 'everything') right after a request that names
+    some of the scene's objects ("Give Tom the gloves and the tape, the whole lot.") says those
+    again or adds everything else, and so does 'the lot, the gloves and the tape': refused naming
+    both (when what was named is everything, the two readings are one; a kind's plural is read
+    by `kind_lot49l`)."""
+    low = text.lower()
+    if "lot" not in low and "everything" not in low:
         return
-    for m in _AFTER_THINGS49L.finditer(text):
-        named, kind = _lot_said(text, m, lexicon)
-        every = {o.id for o in lexicon.scene.objects}
+    every = {o.id for o in lexicon.scene.objects}
+    found = [(m["lot"], *_lot_said(text, m, lexicon)) for m in _AFTER_THINGS49L.finditer(text)]
+    found += [
+        (m["lot"], named, _kind_of(named, m["np"], lexicon))
+        for m in _BEFORE_THINGS49L.finditer(text)
+        for named in [_ids(m["np"], lexicon, "object")]
+    ]
+    for lot, named, kind in found:
         if kind or not named or named == every:
             continue
         raise GroundingError(
-            f"{m['lot']!r} after {', '.join(sorted(named))} could say those again or add "
+            f"{lot!r} with {', '.join(sorted(named))} could say those again or add "
             f"everything else ({', '.join(sorted(every - named))}): say which"
         )
 
@@ -76,26 +102,58 @@ def _lot_after_things49l(text: str, lexicon: Lexicon) -> None:
 # gone out of my head' was taken off as a reason (`_reasons21`), and the choice left was the
 # robot's. The person wanted one of them; which, the speaker has forgotten (session 39 refuses
 # the same doubt said with 'which'). Any reading that leaves a choice is refused, naming it.
+# The remark in the words people use for it (12c's probes: "I've clean forgotten", "my mind's
+# gone blank", "it's completely gone", "I didn't catch it", "I'd have to ask him", "memory's
+# shot"), closing the text or not ("…, it's gone clean out of my head, sorry."), with or without
+# stops ("… the salt or the lemon its gone clean out of my head").
+_CLOSE49L = r"(?=\s*(?:[,.;!?]|$|\bwhich\b|\bsorry\b|\bnow\b|\bexactly\b|\boffhand\b))"
 _FORGOT49L = re.compiled(
-    r"[,;:.!?\-–—]\s*(?:(?:but|and|though|sorry|honestly)[,\s]\s*)*"
-    r"(?:it(?:'s| has| is)? (?:gone (?:clean |right |completely )?out of my head|"
-    r"slipped my mind|escaped me|gone from me)|"
-    r"I (?:can't|cannot|can not|don't|do not|couldn't|could not) (?:for the life of me )?"
-    r"(?:remember|recall|say)|I(?:'ve| have)? forgotten|I forget|I forgot|"
-    r"(?:I'm |I am )?not sure|no idea|dunno)"
-    r"(?: now| exactly| offhand| which(?: one)?)?\s*[.!]?\s*$",
+    r"\b(?:"
+    r"it(?:'s|s| has| is)? (?:(?:clean|right|completely|totally|just) )?(?:gone|went) "
+    r"(?:(?:clean|right|completely|totally) )?(?:out (?:of )?my (?:head|mind)|from me|from my head)"
+    rf"|it(?:'s|s| has| is) (?:(?:clean|completely|totally|just) )?gone{_CLOSE49L}"
+    r"|it(?:'s|s| has)? (?:slipped my mind|escaped me)"
+    r"|my mind(?:'s| has| is)? (?:gone )?(?:a )?blank"
+    r"|I'm blanking|I am blanking|I've blanked|I blanked"
+    rf"|I(?:'ve| have)? (?:clean |completely |totally )?forgotten{_CLOSE49L}"
+    rf"|I forg[eo]t{_CLOSE49L}"
+    r"|I (?:can't|cannot|can not|don't|do not|couldn't|could not) (?:for the life of me )?"
+    rf"(?:remember|recall|say){_CLOSE49L}"
+    r"|I (?:didn't|did not) catch (?:it|which)|I wasn't listening|I was not listening"
+    r"|I (?:didn't|did not|never) (?:write|wrote) it down|I'd have to ask (?:him|her|them)"
+    r"|(?:my )?memory(?:'s| is) (?:shot|gone)"
+    rf"|(?:I'm |I am )?not sure{_CLOSE49L}|no idea{_CLOSE49L}|dunno"
+    r")",
     _F,
+)
+_FORGOT_WORDS49L = (
+    "gone",
+    "went",
+    "mind",
+    "blank",
+    "forg",
+    "remember",
+    "recall",
+    "say",
+    "catch",
+    "listening",
+    "write",
+    "wrote",
+    "ask",
+    "memory",
+    "sure",
+    "idea",
+    "dunno",
+    "escaped",
 )
 
 
 def _forgot_choice49l(text: str, node: Node, lexicon: Lexicon) -> None:
-    """Session 49 (lead): a reading with a choice in it, of a text that closes with the speaker
-    saying they have forgotten ("…, the small or the large, it's gone clean out of my head"), is
-    a choice the person made and the speaker lost, not one left to the robot: refused, naming the
-    options."""
+    """Session 49 (lead): a reading with a choice in it, of a text in which the speaker says they
+    have forgotten ("…, the small or the large, it's gone clean out of my head"), is a choice the
+    person made and the speaker lost, not one left to the robot: refused, naming the options."""
     low = text.lower()
-    words = ("mind", "head", "forg", "remember", "recall", "sure", "idea", "dunno", "escaped")
-    if not any(w in low for w in words) or _FORGOT49L.search(text) is None:
+    if not any(w in low for w in _FORGOT_WORDS49L) or _FORGOT49L.search(text) is None:
         return
     groups = [node]
     while groups:
