@@ -1623,7 +1623,7 @@ FORGET_OBJECTS = (
 )
 # ... that person or another ({q}): refused
 FORGET_PEOPLE = (
-    "The {o} is for {p} or {q}{c}",
+    "It was {p} or {q} who wanted the {o}{c}",
     "{P} or {q} wanted the {o}{c}",
 )
 # (not after a choice said to be free, "either plate, she's not bothered": a remark of forgetting

@@ -314,13 +314,10 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Ever so sorry to interrupt, but Person A is parched, so the bottle to her, please and "
-        "thank you.",
         "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
         "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
-        "Hand it over to Person A, the bottle, I mean.",
         "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
         "Emma's the visitor; she'd like a banana, can you bring her one?",
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
@@ -340,101 +337,23 @@ KNOWN_MISSES = frozenset(
         "Noah can have the scissors for his snowflake cut-outs, but the glue's off limits, he "
         "made a mess last time.",
         "Lily's had enough of the red block; give her the teddy, not another block.",
-        "Bottle to Person A, sorry, I meant Person B, I've got the constable on the other line.",
-        "The chips for Person B, oh no hang on, the bottle for Person B.",
-        "Cup to Person A, no, actually, she'd rather the apple, she's just had a brew at the "
-        "needle maker's.",
-        "The bottle stays put, oh, hold on, Person A's asking for it after all, so give it her.",
         "Chips to Person B, oh wait, he's not peckish, so Person A gets them, and the bottle "
         "goes to Person B.",
-        "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the "
-        "salads.",
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
-        "Er, sorry to be a bother, but Person B could really use the chips after his shift as a "
-        "kilnman.",
-        "If it's no trouble at all, I'd be ever so grateful if Person A got the bottle.",
         "Ko rab'a, that's thanks in Gilbertese, and now the chips across to Person B please.",
-        "Hiya, would it be at all possible to get the bottle over to Person A while she's having "
-        "five minutes off from the devil sticks?",
-        "Priya asks, very politely, whether the stapler could find its way into the box.",
-        "Sorry, sorry, just one thing: Lena needs the tongs, if you'd be so kind.",
-        "With many thanks from the teacher, the globe over to Zoe, please and thank you.",
         "Bob's desperate for a bottle of water after his cajón session.",
-        "Alice is after the crisps, she's had nothing since the cluedo tournament.",
-        "Person A's got her eye on the apple, while Person B is after the cup, having lost at "
-        "kerplunk.",
-        "After three rounds of twister Person B is in real need of the bottle.",
-        "An hour on the bongos has left Person A gasping for the bottle.",
-        "Since she came in from the wormery, Person A has had her heart set on the bottle.",
-        "Person A is craving the chips after leapfrog with the kids, and the bottle is what "
-        "Person B would like.",
-        "Emma skipped lunch for the stonecarver's talk and would appreciate the banana.",
-        "Mrs Khan is keen to have the magazine to pass the time.",
-        "Mia requires the packing tape for the last of the parcels.",
-        "Lily's grizzling for her teddy bear again, poor mite.",
-        "Midway through pass the parcel, Person B put in a request for the bottle; Person A's "
-        "request was the chips.",
-        "That bottle over there, Person A's been asking after it since fly tying finished.",
-        "Person B hasn't eaten since breakfast; the chips are his.",
         "Alice is back from the pitch and putt she wants the bottle give it her",
-        "Person A, the apple. Person B, the cup, he's got the boxercise class after. And the "
-        "bottle to Person A on top.",
         "The bottle is Person B's he asked earlier the chips are Person A's.",
         "Grandad's feeding Lily on the sofa. The bib. He needs it, hand it to him.",
-        "Bob isn't fussy about mugs, red or blue, just give him one.",
-        "Alice is taking both the bottle and the crisps to her snakes and ladders night, so give "
-        "them both to her.",
-        "Whatever Person A likes out of the apple and the cup.",
-        "Something for both of them, please: Person A's to get the cup and the apple is for "
-        "Person B.",
-        "Person A says she'll take the bottle or the chips, she honestly couldn't care which.",
-        "Person B can take whichever of the two he prefers.",
-        "With just the one bottle in the room and Person A the only one here, hand it over to her.",
-        "The bottle, to Person A, since it's the only thing there is.",
-        "Each of the girls gets a block, the red for Lily and the green for Ava.",
-        "There's a single bottle on hand, and Bob's the one to get it.",
-        "Shelf for the pair of them, the bottle and the crisps, before leapfrog starts.",
-        "Person A gets both of the things there are, the whole pair.",
-        "Seeing as there's just the one bottle, let Person B have it.",
-        "Person A only asked for a single bottle, so that's what she gets.",
-        "Marco's flipping the fish and needs the pair of tongs.",
-        "For the sign language lesson Mrs Ortiz wants a pair of books out, so set the two books "
-        "down on the desk.",
-        "Alice says she's had enough crisps for one day, but whatever else is going she'll take.",
-        "Person B's brought his own cup, so give him every other thing.",
-        "Person B is the one who asked for the bottle, so don't go giving it to Person A.",
-        "No point the bottle sitting about, Person A should have it.",
-        "Give Person A the bottle, and don't keep her waiting.",
-        "Let Person A at the chips; the bottle, though, she's not allowed near.",
-        "Put the white cup in the sink, but the green cup mustn't be touched, it's got a sample "
-        "in.",
-        "Sam needs a pen that isn't red or blue.",
-        "It's the sippy cup Lily's reaching for, not the bib.",
-        "Up on the shelf with the crisps, oh, actually, no, Bob's just said he'd like them.",
-        "The cup is for Person A, scratch that, it's Person B who's playing twister and needs it.",
-        "Person B for the bottle, hmm, no, thinking about it, it was Person A who asked.",
-        "Take Mr Lee the blue blanket, hold on, not that, the grey one.",
-        "Marco asked for the salt shaker, didn't he, no, sorry, I'm muddling them, it was Lena.",
-        "Kofi needs the hammer, sorry, it's Jess who needs it, Kofi's on the brickie's job.",
         "if you're free alice is after the cup and bob fancies a handful of crisps",
-        "go on hand the chips over to person a she's starving",
         "cheers mate and could person b get the bottle over there",
-        "person a's been eyeing the bottle so pop it over to her when there's a minute",
         "after darning circle person a was asking for chips and person b for the bottle",
-        "sam's taking minutes so the notepad goes to sam",
         "water jug onto the cart please ruth's going round with it",
         "Person A asked nicely for the cfhips, pass them over.",
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
-        "Bob's been hinting about the crisps all morning, any chance he could have them?",
-        "Person B's thirsty, would you mind sorting him out with the bottle?",
-        "Could the bottle go over to Person A, seeing she's asked twice?",
-        "Person B's hungry, any objection to giving him the chips?",
-        "Would you set the bowl down on the tray, it's in Dana's way?",
-        "Is it all right for Lily to have her sippy cup now she's up from her nap?",
-        "Jess is putting up brackets, could you fetch Jess the power drill for that?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -464,14 +383,11 @@ KNOWN_UNCLEAR = frozenset(
         "which colour.",
         "Alice and Carol came in from the lantern parade; she asked for the cup, so give it to "
         "her.",
-        "Person A asked for one of the two, I just can't remember which one she said.",
-        "Zoe was reading one of the two books before break, and she wants that one back.",
         "Give Person A the chips, no, hang on, the other one, the one she had at the chair "
         "bodger's.",
         # blind47 (tuned on in session 49)
         "Lena wanted one of the plates for the houseman's tray, white or blue, and I never wrote "
         "down which.",
-        "Teddy to Lily, no, to whoever else asked for it at teatime, I can't think who.",
         "noah wanted a book earlier the red or the green one dunno which",
         "Sam asked for the nootebook or the stapler this morning, I can't remember which.",
         "Which patient was it that wanted the blue blanket, do you remember? Take it to them.",

@@ -200,6 +200,22 @@ UNCLEAR: list[Unclear] = [
     ("Salt on the counter, no, it's on the rack.", KITCHEN, ("salt@counter", "salt@rack")),
     ("Bob wants the apple, no, it's Carol's.", CELL, ("apple>C", "apple>B")),
     ("Noah wants the globe, sorry, it's Zoe's.", CLASSROOM, ("globe>C", "globe>B")),
+    # one_of_two48r: "one of the two, I can't remember which" / "…, and she wants that one back"
+    (
+        "Noah asked for one of the two books, I can't remember which one.",
+        CLASSROOM,
+        ("book_red", "book_green"),
+    ),
+    (
+        "Lily was chewing one of the two blocks earlier, and she wants that one back.",
+        NURSERY,
+        ("block_red", "block_green"),
+    ),
+    (
+        "Omar was using one of the two cups, and he'd like that one again.",
+        LAB,
+        ("cup_green", "cup_white"),
+    ),
 ]
 # each refusal names its readings; without REFUSE48R none does
 test_refusals_name_readings, test_refusals_are_these = unclear_tests(
@@ -328,3 +344,30 @@ test_which_of_two = STEPS.test(
 
 def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
     STEPS.refused_without(_rewrites48r._STEPS48R, monkeypatch)
+
+
+test_corrections = STEPS.test(
+    # _on_the_line48r: a closing "I've got the constable on the other line"
+    ("Cup to Alice, sorry, I meant Bob, I've got the plumber on the other line.", "cup>B", CELL),
+    ("Cup to Alice, sorry, I meant Bob, I've got Carol on the line.", None, CELL),
+    # _said_again_for48r: "X for P, oh no hang on, the Y for P"
+    ("The apple for Bob, oh no hang on, the cup for Bob.", "cup>B", CELL),
+    ("The apple for Bob, no, the cup for Alice.", None, CELL),
+    # _rather48r: "…, no, actually, she'd rather the apple(, she's just had a brew at …)"
+    (
+        "Cup to Alice, no, actually, she'd rather the apple, she's just had a coffee.",
+        "apple>A",
+        CELL,
+    ),
+    ("Cup to Alice, no, he'd rather the apple.", None, CELL),
+    # _asking_after_all48r: "…, hold on, P's asking for it after all, so give it him"
+    (
+        "The cup stays put, oh, hold on, Bob's asking for it after all, so give it him.",
+        "cup>B",
+        CELL,
+    ),
+    ("The cup stays put, oh, hold on, Bob's asking for it after all, so give it her.", None, CELL),
+    # _scattered48r: "no sorry, my head's all over the place, to Lena"
+    ("Salt to Marco, no sorry, my head's all over the place, to Lena.", "salt>B", KITCHEN),
+    ("Jug to Mr Lee, sorry, silly me, the magazine too.", None, WARD),
+)

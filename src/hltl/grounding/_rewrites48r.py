@@ -9,7 +9,14 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites42s import _remark_only42s
 from hltl.grounding._rewrites44r import _agrees44r, _read_or44r
-from hltl.grounding._rewrites46r import _P46R, _each_pronoun46r, _person46r
+from hltl.grounding._rewrites46r import (
+    _P46R,
+    _closing46r,
+    _dropped46r,
+    _each_pronoun46r,
+    _person46r,
+)
+from hltl.grounding._rewrites47r import _DOUBT47R, _claimed47r
 from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.phrasing import _chained48r
 from hltl.grounding.tree import Node, Task, has_choice, tasks
@@ -31,6 +38,42 @@ def second_fix48r(text: str, lexicon: Lexicon) -> None:
     except GroundingError:
         return
     _chained48r(items)
+
+
+# -- one of the two, which not said (blind46) ---------------------------------------------------
+
+# "Person A asked for one of the two, I just can't remember which one she said.", "Zoe was reading
+# one of the two books before break, and she wants that one back."
+_ONE_OF_TWO48R = re.compiled(
+    rf"\bone of the (?:two|pair)(?: (?P<k>[a-z]+s))?\b[^,;.!?]*?\s*[,;]\s*(?:and |but )?"
+    rf"(?:(?P<said>(?:i |i just |i really )?[^,;.!?]*?\b(?:{_DOUBT47R})\b[^,;.!?]*?)|"
+    r"(?P<that>(?:she|he|they)(?:'d like| wants| needs| would like)(?: to have)? that one"
+    r"(?: back| again)?))(?=\s*[.!]?$)",
+    _F,
+)
+
+
+def one_of_two48r(text: str, lexicon: Lexicon) -> None:
+    """Session 48 (12r): "P asked for one of the two, I just can't remember which one" ("P was
+    reading one of the two books …, and she wants that one back"): the two are the scene's two
+    things (of that kind); which one is not said: refused naming both."""
+    low = text.lower()
+    if "one of the two" not in low and "one of the pair" not in low:
+        return
+    m = _ONE_OF_TWO48R.search(text)
+    if m is None:
+        return
+    if m["k"]:
+        ids = _ids(f"the {m['k']}", lexicon, "object")
+    else:
+        ids = {o.id for o in lexicon.scene.objects}
+    if len(ids) != 2:
+        return
+    said = (m["said"] or m["that"]).strip()
+    raise GroundingError(
+        f"{said!r}: which one is meant is not said; it could be {' or '.join(sorted(ids))}: name "
+        "the one"
+    )
 
 
 # -- someone else is to do it ---------------------------------------------------------------------
@@ -384,6 +427,132 @@ def _left_in48r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# -- blind46: corrections -------------------------------------------------------------------------
+
+_CUE48R = (
+    r"(?:(?:oh|ah|er|um|no|sorry|actually|wait|hang on|hold on|oh no|no sorry|no wait)\s*,?\s*)+"
+)
+
+# "Bottle to Person A, sorry, I meant Person B, I've got the constable on the other line."
+_ON_THE_LINE48R = re.compiled(
+    r"\s*,\s*(?:(?:sorry|sorry about that)\s*,\s*)?I(?:'ve| have)(?: got)? (?P<who>(?:the|a|an|my) "
+    r"[a-z]+(?: [a-z]+)?) (?:on the (?:other )?(?:line|phone)|on hold|in my ear|at the door)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _on_the_line48r(text: str, lexicon: Lexicon) -> str:
+    """Session 48 (12r): a closing "I've got the constable on the other line" (why the speaker
+    slipped; naming nothing of the scene) is taken off."""
+    if "i've" not in text.lower() and "i have" not in text.lower():
+        return text
+    said = _closing46r(_ON_THE_LINE48R, text)
+    if said is None or not _remark_only42s(said[1]["who"], lexicon):
+        return text
+    return _dropped46r(*said, text, lexicon)
+
+
+# "The chips for Person B, oh no hang on, the bottle for Person B."
+_SAID_AGAIN_FOR48R = re.compiled(
+    rf"^(?P<head>[^,;]+? (?:for|to) (?P<p>{_P46R}))\s*,\s*(?P<cue>{_CUE48R})"
+    rf"(?P<y>the [a-z]+(?: [a-z]+)?) (?:for|to) (?P<q>{_P46R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _said_again_for48r(text: str, lexicon: Lexicon) -> str:
+    """Session 48 (12r): "X for P, oh no hang on, the Y for P" (the same person said again) is
+    "X for P, oh no hang on, the Y"."""
+    low = text.lower()
+    if low.count(" for ") + low.count(" to ") < 2:
+        return text
+    m = _SAID_AGAIN_FOR48R.match(text.strip())
+    if m is None:
+        return text
+    p = _person46r(m["p"], lexicon)
+    if p is None or _person46r(m["q"], lexicon) != p or len(_ids(m["y"], lexicon, "object")) != 1:
+        return text
+    out = f"{m['head']}, {m['cue'].strip().rstrip(',')}, {m['y']}{m['end'] or '.'}"
+    return _read_or44r(out, text, lexicon)
+
+
+# "Cup to Person A, no, actually, she'd rather the apple, she's just had a brew at …"
+_RATHER48R = re.compiled(
+    rf"(?P<cue>,\s*{_CUE48R})(?P<pro>she|he)(?:'d| would) (?:rather|prefer|sooner)(?: have)? "
+    r"(?=(?:the|a|an) [a-z]+)",
+    _F,
+)
+
+
+def _rather48r(text: str, lexicon: Lexicon) -> str:
+    """Session 48 (12r): after a request for one person, a cue, then "she'd rather the apple" is
+    the cue and "the apple" (the pronoun that person); a closing remark naming nothing of the
+    scene, its pronoun that person, is taken off ("she's just had a brew at …")."""
+    if "rather" not in text.lower() and "prefer" not in text.lower():
+        return text
+    m = _RATHER48R.search(text)
+    if m is None:
+        return text
+    first = _reading(f"{text[: m.start()]}.", lexicon)
+    if not isinstance(first, Task) or first.kind != "deliver":
+        return text
+    if not _agrees44r(first.target, m["pro"], lexicon):
+        return text
+    out = f"{text[: m.start()]}{m['cue']}{text[m.end() :]}"
+    # the plain "…, no, she'd rather the apple" is session 40's (s40r); this rule reads it only
+    # with a closing remark after the thing
+    rest = re.match(
+        r"^(?P<head>.*?,\s*the [a-z]+(?: [a-z]+)?)\s*,\s*(?P<tail>[^,]+?)(?P<end>\s*[.!]?)$",
+        out,
+        _F,
+    )
+    if rest is None or not _remark_only42s(rest["tail"], lexicon):
+        return text
+    if any(
+        not _agrees44r(first.target, x["pro"], lexicon) for x in _PRONOUN48R.finditer(rest["tail"])
+    ):
+        return text
+    return _read_or44r(f"{rest['head']}{rest['end'] or '.'}", text, lexicon)
+
+
+# "The bottle stays put, oh, hold on, Person A's asking for it after all, so give it her."
+_ASKING_AFTER_ALL48R = re.compiled(
+    r"(?:'s| is) (?:asking|calling|shouting) for (?P<it>it|them) after all\b", _F
+)
+
+
+def _asking_after_all48r(text: str, lexicon: Lexicon) -> str:
+    """Session 48 (12r): "…, hold on, P's asking for it after all, so give it her" is session
+    47's "P's just asked for it, so …" (`_claimed47r` reads it)."""
+    if "after all" not in text.lower():
+        return text
+    out = _ASKING_AFTER_ALL48R.sub(r"'s just asked for \g<it>", text, count=1)
+    if out == text:
+        return text
+    done = _claimed47r(out, lexicon)
+    return text if done == out else done
+
+
+# "Tongs to Marco, no sorry, my head's all over the place, to Lena, she's plating the salads."
+_SCATTERED48R = re.compiled(
+    r"(?P<cue>,\s*(?:no|sorry|no sorry|oops|whoops)\s*,?\s*)(?:my head(?:'s| is) all over the "
+    r"place|i'm all at sea|what am i like|my brain's a sieve|i'm in a muddle)\s*,\s*",
+    _F,
+)
+
+
+def _scattered48r(text: str, lexicon: Lexicon) -> str:
+    """Session 48 (12r): an apology for one's muddle between the cue and the correction ("no
+    sorry, my head's all over the place, to Lena") is taken off; a closing remark of the person
+    corrected to is then left to the older rules. ("I'm all over the place" and "silly me" are
+    session 40's `_blame40r`'s: two rules must not read one sentence.)"""
+    low = text.lower()
+    if "place" not in low and "sea" not in low and "like" not in low and "sieve" not in low:
+        return text
+    return _read_or44r(_SCATTERED48R.sub(r"\g<cue>", text, count=1), text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-47 ones)
 _STEPS48R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-47 ones)
@@ -395,10 +564,16 @@ _STEPS48R: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_want48r,
     _one_of_which48r,
     _left_in48r,
+    _on_the_line48r,
+    _said_again_for48r,
+    _rather48r,
+    _asking_after_all48r,
+    _scattered48r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-47 ones)
 REFUSE48R: tuple[Callable[[str, Lexicon], None], ...] = (
     second_fix48r,
+    one_of_two48r,
     given_by48r,
     where_it_is48r,
 )

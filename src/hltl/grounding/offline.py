@@ -1625,6 +1625,13 @@ def _ruled_out_dropped31s(text: str, plain: str, lexicon: Lexicon) -> bool:
     return False
 
 
+def _next_word(words: list[str], n: int, items: list[Item], k: int) -> str:
+    """The word after ``words[n]`` of item ``k`` (in it, or the next item's text), lower-cased."""
+    if n + 1 < len(words):
+        return words[n + 1].lower()
+    return items[k + 1].text.lower() if k + 1 < len(items) else ""
+
+
 def _stranger_dropped34s(text: str, plain: str, lexicon: Lexicon) -> GroundingError | None:
     """Session 34 (12s): a refusal when, in a scene of one person, ``plain`` (a rewrite of
     ``text``) took off the name of someone the scene does not hold (a word the grammar does not
@@ -1644,15 +1651,18 @@ def _stranger_dropped34s(text: str, plain: str, lexicon: Lexicon) -> GroundingEr
         if it.kind != "unknown":
             continue
         opening = k == 0 or (items[k - 1].kind == "punct" and items[k - 1].lemma in ".;!?:")
-        for n, word in enumerate(it.text.split()):
+        words = it.text.split()
+        for n, word in enumerate(words):
             low = word.lower().strip(".,'").removesuffix("'s")
             # written as a name: capitalised inside its sentence, or a first name or title
-            # opening it ('there's a love', 'since dawn' are no one)
+            # opening it ('there's a love', 'since dawn' are no one; session 49: nor is 'Ever'
+            # of an opening 'Ever so sorry …', a listed first name)
             if (
                 low in kept
                 or not word[:1].isupper()
                 or word == "I"
                 or (opening and n == 0 and low not in first_names() and low not in TITLES)
+                or (opening and n == 0 and low == "ever" and _next_word(words, n, items, k) == "so")
             ):
                 continue
             people = [person_name(h.id, lexicon) for h in lexicon.scene.humans]
@@ -1823,6 +1833,7 @@ def _cut_off(text: str) -> GroundingError | None:
         cue is not None
         and not _rewrites42r.pronoun_named42r(text)
         and not _rewrites43r.meant_one43r(text)
+        and not _rewrites49.thing_named49(text)
     ):
         # "…, sorry, correction," / "…, no wait.": the correction the cue announces is not said
         return GroundingError(

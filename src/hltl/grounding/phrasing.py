@@ -6484,9 +6484,44 @@ def _opening_dropped48b(items: list[Item]) -> bool:
     return "," in found and any(x.kind == "unknown" for x in items)
 
 
+# Session 49 (12b): the last ungated passes, each gated on what it needs before it can change the
+# items or refuse, read off its code (as the gates of sessions 44-48).
+def _names_twice49b(items: list[Item]) -> bool:
+    """_two_names29: an object or surface named twice in a row (one name each) after an article,
+    the two names of one thing ('the bedside locker')."""
+    return any(
+        b.kind == "ent"
+        and c.kind == "ent"
+        and len(b.refs) == len(c.refs) == 1
+        and b.refs[0] == c.refs[0]
+        and b.refs[0].kind in ("surface", "object")
+        and _is(a, "det")
+        for a, b, c in zip(items, items[1:], items[2:], strict=False)
+    )
+
+
+_REMARK_STARTS49B = frozenset({"it", "reason", "as"})
+
+
+def _may_remark49b(items: list[Item]) -> bool:
+    """_remarks: a reason ('because', 'as she …', 'so that', 'so <person> can': _reason_length)
+    or a remark's opening (people or 'it', then 'is'/'has'/a verb of saying or feeling:
+    _opens_remark) somewhere in the items; without either the pass drops nothing and refuses
+    nothing. Both are asked only at a name, 'it', a reason's word, 'as' or 'so'."""
+    for k, x in enumerate(items):
+        if x.kind == "ent":
+            if _opens_remark(items, k):
+                return True
+            continue
+        said = x.lemma in _REMARK_STARTS49B or (x.kind == "word" and x.text.lower() == "so")
+        if said and (_opens_remark(items, k) or _reason_length(items, k)):
+            return True
+    return False
+
+
 _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_definite_ones35l), texts=("one",)),
-    _plain(_two_names29),
+    _when(_plain(_two_names29), _names_twice49b),
     _said(_plain(_for_me_alone), texts=("for me", "for us")),
     _said(_plain(_any_described), ("q:some",)),
     _said(_plain(_described_then_corrected), _MEASURES),
@@ -6501,7 +6536,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_last_opening), ("last",)),
     _said(_plain(_wanted_done), texts=_PARTICIPLES),
     _said(_wanted_on, ("on",)),
-    _purpose,
+    _said(_purpose, _USES),
     _only_with(_humans, _plain(_bare_notes)),  # a note needs two people
     _said(_plain(_floating_all), texts=("all", "both")),
     _said(_plain(_listed_subjects), ("verb:go", "verb:belong")),
@@ -6517,7 +6552,7 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_wished_for), _WISHED),
     _when(_preambles, _opening_dropped48b),
     _said(_plain(_hedges), ("hedge",)),
-    _plain(_infinitives),
+    _said(_plain(_infinitives), ("to",)),
     _said(_plain(_is_after), ("after",)),
     _said(_plain(_asked_for), ("ask_for",)),
     _said(_said_want_on47p, ("on",)),
@@ -6540,22 +6575,22 @@ _PASSES: tuple[Callable[[list[Item], Lexicon], list[Item]], ...] = (
     _said(_plain(_never_mind), ("cancel",)),
     _said(_plain(_i_mean_after), texts=("i mean", "i meant")),
     _said(_plain(_swaps), ("swap",)),
-    _corrections_named,
+    _said(_corrections_named, ("correct", "instead"), ("so", "no")),
     _said(_plain(_nobody), ("nobody", "no-one"), ("anything", "nothing", "not", "no")),
     _said(_plain(_instead_of), ("instead_of",)),
     _said(_exclusions, ("except", "not"), ("but",)),
     _said(_plain(_respectively), ("respectively",)),
     _said(_plain(_so_after_remark), texts=("so",)),
     _only_with(_saying46b, _plain(_said_after)),
-    _speaker,
-    _persons,
+    _said(_speaker, texts=_SPEAKER),
+    _said(_persons, ("pronoun",)),
     _said(_plain(_has_taken), texts=("taken", "took")),
     _said(_plain(_not_wanted), ("not",)),
     _said(_plain(_not_after), ("not",)),
     _said(_plain(_each_nearest), ("nearest", "farthest")),
-    _places,
+    _said(_places, ("on", "near", "nearest", "farthest")),
     _said(_plain(_there), ("there",)),
-    _remarks,
+    _when(_remarks, _may_remark49b),
     _said(_plain(_ordinals), texts=tuple(_RANKS)),
     _said(_plain(_last), ("last",)),
     _said(_plain(_datives), (":", "-")),
