@@ -355,16 +355,6 @@ KNOWN_MISSES = frozenset(
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
         # blind48 (tuned on in session 50): refusals left at its one measurement (docs/grounding.md)
-        "Sorry to trouble you, only Bob's parched after the gorge walking, so the bottle to him, "
-        "if you please.",
-        "Daalu, as my mum says back in Lagos, and the apple's for Person B, if you'd be so good.",
-        "Kinanaskomitin, as folk say out in Saskatchewan; the chips to Person B would be "
-        "wonderful.",
-        "Whenever you're free, and no rush at all, Person A would like the chips, ever so kindly.",
-        "Gràtzias, as they'd put it in Cagliari: chips to Person B, ta.",
-        "If it pleases you, the spoon can go in the sink, the embryologist is done with it.",
-        "With respect, the boss says the torch goes to Jess, who's off spelunking at the "
-        "weekend, thank you kindly.",
         "Bob fancies the red mug, his old one cracked at the pinhole camera club.",
         "Bob is famished, nothing since breakfast, he could murder the crisps.",
         "Person A needs the cup to take her cough syrup.",
@@ -442,12 +432,6 @@ KNOWN_MISSES = frozenset(
         "Hand the bottle to perszon A on her way to the straw plaiting, would you.",
         "Work glives for Tom, it's cold on the belt.",
         "Hamker for Kofi, the foreman's putting up the billposter's board.",
-        "Would you be able to pop the red mug down on the counter so it's out of the way of the "
-        "sand sculpting photos?",
-        "Is there any chance of the apple finding its way to Person A, she's off on a "
-        "lichenologist's field trip?",
-        "Might Person B get his hands on the bottle, he's on stage with the conjuror in a bit?",
-        "Could the chips go to Person A, as a thank you for the belly dancing display?",
         "Is it okay with you to give Person A the bottle now her snowshoeing's over?",
         "How about the chips for Person B, as the tipster reckons he's earned them?",
         "Would you stand the sippy cup on the high chair, Grandad's making Lily's tea?",
