@@ -355,17 +355,6 @@ KNOWN_MISSES = frozenset(
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
         # blind48 (tuned on in session 50): refusals left at its one measurement (docs/grounding.md)
-        "Bob fancies the red mug, his old one cracked at the pinhole camera club.",
-        "Bob is famished, nothing since breakfast, he could murder the crisps.",
-        "Person A needs the cup to take her cough syrup.",
-        "Person B is craving the apple after two hours of belly dancing.",
-        "Person A wants the bottle, and the chips are what Person B's hankering for.",
-        "After a long day as a bookie, Person A could do with the chips.",
-        "Person A would be glad of the bottle, it's her first week as a vet nurse.",
-        "Between you and me, the thing Person A's most in need of after the rag rugging is the "
-        "bottle.",
-        "Person B would appreciate the bottle, being the only one without a drink.",
-        "Lily's thirsty and reaching for her sippy cup.",
         "The bottle? Oh, that's Person B's to have, he put his hand up for it first.",
         "Cup to Person A first, she's the palm reader at the fete. Then the apple. That one's "
         "Person B's.",
@@ -432,9 +421,6 @@ KNOWN_MISSES = frozenset(
         "Hand the bottle to perszon A on her way to the straw plaiting, would you.",
         "Work glives for Tom, it's cold on the belt.",
         "Hamker for Kofi, the foreman's putting up the billposter's board.",
-        "Is it okay with you to give Person A the bottle now her snowshoeing's over?",
-        "How about the chips for Person B, as the tipster reckons he's earned them?",
-        "Would you stand the sippy cup on the high chair, Grandad's making Lily's tea?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -466,7 +452,6 @@ KNOWN_UNCLEAR = frozenset(
         "bodger's.",
         # blind47 (tuned on in session 49)
         "noah wanted a book earlier the red or the green one dunno which",
-        "Which patient was it that wanted the blue blanket, do you remember? Take it to them.",
         # blind48 (tuned on in session 50)
         "Priya asked ever so nicely for a pen, the black or the red, and I've gone and forgotten "
         "which, sorry.",
@@ -474,7 +459,6 @@ KNOWN_UNCLEAR = frozenset(
         "from me now.",
         "Person B asked for one of the bottle and the chips, and I've lost track of which.",
         "tom wanted a box, small or medium, can't remember which",
-        "Was it Mr Lee or Mrs Khan who asked for the magazine? I've forgotten.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
