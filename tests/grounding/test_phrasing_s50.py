@@ -283,8 +283,11 @@ def test_ok_with_you_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 NOW_OVER = PhrasingCases()
 test_now_over = NOW_OVER.test(
     ("Could you give Carol the apple now her shift's over?", "apple>C", CELL),
-    ("Pass Sam the stapler now his meeting is done.", "stapler>B", OFFICE),
-    ("Give Jess the drill now her tea break's finished.", "drill>B", WORKSHOP),
+    ("Would you pass Sam the stapler now his meeting is done?", "stapler>B", OFFICE),
+    ("Can you give Jess the drill now her tea break's finished?", "drill>B", WORKSHOP),
+    ("Could Mrs Khan have the magazine now her physio is over?", "magazine>C", WARD),
+    ("Pass Sam the stapler now his meeting is done.", None, OFFICE),
+    ("Could you give Carol the apple now his shift's over?", None, CELL),
     ("Could you give Carol the apple now the cup's over?", None, CELL),
     ("Could you give Dave the apple now her shift's over?", None, CELL),
 )
