@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites46r
+from hltl.grounding import _rewrites46r, _rewrites50l
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -192,7 +192,10 @@ def test_refusals_name_readings(text: str, scene: Scene, readings: tuple[str, ..
 
 def test_refusals_are_these(monkeypatch: pytest.MonkeyPatch) -> None:
     """Without these refusals, none of those refusals names all its readings."""
-    assert_refusals_are(_rewrites46r.REFUSE46R, UNCLEAR, monkeypatch)
+    # session 50 (lead): `forgot_which50l` names the readings of a forgotten choice too
+    assert_refusals_are(
+        (*_rewrites46r.REFUSE46R, _rewrites50l.forgot_which50l), UNCLEAR, monkeypatch
+    )
 
 
 # -- a second batch --------------------------------------------------------------------------------

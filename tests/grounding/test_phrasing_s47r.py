@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites47r
+from hltl.grounding import _rewrites47r, _rewrites50l
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -204,8 +204,9 @@ UNCLEAR: list[Unclear] = [
 
 
 # each refusal names its readings; without REFUSE47R none does
+# (session 50, lead: `forgot_which50l` names the readings of a forgotten choice too)
 test_refusals_name_readings, test_refusals_are_these = unclear_tests(
-    UNCLEAR, _rewrites47r.REFUSE47R
+    UNCLEAR, (*_rewrites47r.REFUSE47R, _rewrites50l.forgot_which50l)
 )
 
 test_doubt_near = CASES.test(

@@ -150,7 +150,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by another engineer and committed alone, never opened by the engineers who change the grounder
 # before its one measurement at the end of session 48; tuned on in session 49), blind48 (written in
 # session 49 by another engineer and committed alone, never opened by the engineers who change the
-# grounder before its one measurement at the end of session 49; tests do not assert it).
+# grounder before its one measurement at the end of session 49; tuned on in session 50).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -153,8 +153,15 @@ def _forgot_choice49l(text: str, node: Node, lexicon: Lexicon) -> None:
     have forgotten ("…, the small or the large, it's gone clean out of my head"), is a choice the
     person made and the speaker lost, not one left to the robot: refused, naming the options."""
     low = text.lower()
-    if not any(w in low for w in _FORGOT_WORDS49L) or _FORGOT49L.search(text) is None:
-        return
+    if any(w in low for w in _FORGOT_WORDS49L) and _FORGOT49L.search(text) is not None:
+        choice_forgotten49l(node, lexicon)
+
+
+def choice_forgotten49l(
+    node: Node, lexicon: Lexicon, why: str = "the speaker has forgotten which was asked for"
+) -> None:
+    """A reading with a choice in it, of a text in which the speaker says they have forgotten:
+    refused (``why``), naming the options (none: nothing to say)."""
     groups = [node]
     while groups:
         g = groups.pop()
@@ -162,11 +169,7 @@ def _forgot_choice49l(text: str, node: Node, lexicon: Lexicon) -> None:
             continue
         if g.op == "or":
             offered = sorted({_said41r(t, lexicon) for t in tasks(g)})
-            raise GroundingError(
-                "the speaker has forgotten which was asked for: "
-                + " or ".join(offered)
-                + ": say which"
-            )
+            raise GroundingError(f"{why}: {' or '.join(offered)}: say which")
         groups.extend(g.children)
 
 

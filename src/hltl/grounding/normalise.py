@@ -558,6 +558,9 @@ from hltl.grounding._rewrites48s import _STEPS48S, _STEPS48S_FIRST
 from hltl.grounding._rewrites49 import _STEPS49, _STEPS49_FIRST
 from hltl.grounding._rewrites49r import _STEPS49R, _STEPS49R_FIRST
 from hltl.grounding._rewrites49s import _STEPS49S, _STEPS49S_FIRST
+from hltl.grounding._rewrites50 import _STEPS50, _STEPS50_FIRST
+from hltl.grounding._rewrites50r import _STEPS50R, _STEPS50R_FIRST
+from hltl.grounding._rewrites50s import _STEPS50S, _STEPS50S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -889,6 +892,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS50S_FIRST,
+    *_STEPS50R_FIRST,
+    *_STEPS50_FIRST,
     *_STEPS49S_FIRST,
     *_STEPS49R_FIRST,
     *_STEPS49_FIRST,
@@ -936,6 +942,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS50R,
     *_STEPS49R,
     *_STEPS48R,
     *_STEPS47R,
@@ -979,6 +986,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS50S,
     *_STEPS49S,
     *_STEPS48S,
     *_STEPS47S,
@@ -1069,6 +1077,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS50,
     *_STEPS49,
     *_STEPS48,
     *_STEPS47,

@@ -49,6 +49,10 @@ from hltl.grounding import (
     _rewrites49l,
     _rewrites49r,
     _rewrites49s,
+    _rewrites50,
+    _rewrites50l,
+    _rewrites50r,
+    _rewrites50s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -144,6 +148,10 @@ _REFUSALS = (
     *_rewrites49.REFUSE49,
     *_rewrites49r.REFUSE49R,
     *_rewrites49s.REFUSE49S,
+    *_rewrites50l.REFUSE50L,
+    *_rewrites50.REFUSE50,
+    *_rewrites50r.REFUSE50R,
+    *_rewrites50s.REFUSE50S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -179,6 +187,10 @@ _CHECKS = (
     *_rewrites49.CHECK49,
     *_rewrites49r.CHECK49R,
     *_rewrites49s.CHECK49S,
+    *_rewrites50l.CHECK50L,
+    *_rewrites50.CHECK50,
+    *_rewrites50r.CHECK50R,
+    *_rewrites50s.CHECK50S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -1920,6 +1932,7 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
     if not words:
         return
     named: dict[str, set[str | None]] = {}
+    kin: dict[str, set[str | None]] = {}
     said: dict[str, str] = {}
     bare = _things_blanked36l(text, lexicon)
     for human in lexicon.scene.humans:
@@ -1931,11 +1944,16 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
             # a first name said alone (a title, a role, a label say no sex here)
             sex = name_sexes().get(name.lower()) if " " not in name else None
             named.setdefault(human.id, set()).add(sex)
+            # session 50 (lead): a word of kin ('Grandad') or a title ('Mr Lee') says it too,
+            # for a he / she who wants, or a him / her who is given ("Grandad said she wants
+            # the teddy": teddy>B; not "Could Grandad have the wipes? She's made a mess.")
+            kin.setdefault(human.id, set()).add(sex or _rewrites50l.named_sex50l(name))
             said.setdefault(human.id, found.group(0))
     given = {t.target for t in tasks(node) if t.kind == "deliver"}
-    for word in words:
+    passes = [(w, named) for w in words] + [(w, kin) for w in _rewrites50l.wanting50l(text)]
+    for word, sexed in passes:
         sex = PRONOUN_SEX[word.lower()]
-        if not named or any(sexes != {"m" if sex == "f" else "f"} for sexes in named.values()):
+        if not sexed or any(sexes != {"m" if sex == "f" else "f"} for sexes in sexed.values()):
             continue
         if not given & set(named):
             continue  # "Give Ruth the jug, no, give it to him": read as someone else already
@@ -1950,6 +1968,8 @@ def _named_other_sex34s(text: str, node: Node, lexicon: Lexicon) -> None:
         kind = "a woman's name" if sex == "m" else "a man's name"
         if len(named) > 1:
             kind = "women's names" if sex == "m" else "men's names"
+        if sexed is kin and any(None in sexes for sexes in named.values()):
+            kind = f"{'a woman' if sex == 'm' else 'a man'} by title or word of kin"
         could = " or ".join(person_name(p, lexicon) for p in others)
         raise GroundingError(
             f"{word!r} is not resolved: it cannot mean {' or '.join(said.values())} ({kind}); "
