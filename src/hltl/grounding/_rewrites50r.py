@@ -240,7 +240,7 @@ def _both_the_and50r(text: str, lexicon: Lexicon) -> str:
 
 # "Whichever bottle you can lay a hand on, Person A's to get it, …"
 _LAY_HANDS50R = re.compiled(
-    r"^(?:whichever|whatever|any) (?P<k>[a-z]+) you can (?:lay (?:a hand|your hands?|hands) on|"
+    r"^(?:whichever|whatever) (?P<k>[a-z]+) you can (?:lay (?:a hand|your hands?|hands) on|"
     r"find|get hold of|get your hands? on|put (?:a hand|your hands?) on|reach|grab|"
     r"lay hold of)\s*,\s*(?P<rest>.+)$",
     _F,
@@ -249,7 +249,8 @@ _LAY_HANDS50R = re.compiled(
 
 def _lay_hands50r(text: str, lexicon: Lexicon) -> str:
     """Session 50 (12r): "Whichever bottle you can lay a hand on, P's to get it" is the request
-    with 'it' the bottle when the scene has one (a choice of them when it has more)."""
+    with 'it' the bottle when the scene has one (a choice of them when it has more); "Any bottle
+    you can lay hands on, give it to P" is session 34's."""
     if " you can " not in text.lower():
         return text
     m = _LAY_HANDS50R.match(text.strip())
