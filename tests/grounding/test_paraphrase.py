@@ -389,12 +389,6 @@ KNOWN_MISSES = frozenset(
         "Sponge in the sink to soak. The bowl goes on the tray after that. The embryologist "
         "likes things neat.",
         "The water jug for Mrs Khan. And put the thermometer on the locker. Both now.",
-        "There's only the one bottle at the twitching hide, and Person A's to have it.",
-        "There's just the one packet of crisps, and Alice has called dibs on it.",
-        "The lone bottle in the room goes to Person A, she's the cardiographer on shift.",
-        "The three boxes, onto the belt with the lot of them, the magistrate's order goes out "
-        "today.",
-        "The pair of spanners wants locking away in the locker before the speleologist's visit.",
         "Give Carol the blue mug, not the red, she says the red one's got a funny taste.",
         "Bob says not the crisps, he's stuffed after the rag rugging social, the bottle's what "
         "he wants.",
@@ -411,15 +405,7 @@ KNOWN_MISSES = frozenset(
         "Lily's thrown the red block on the floor twice, so not that one, the green block for her.",
         "The drill's no use to Jess now the holes are done, but the hammer is, so the hammer to "
         "Jess.",
-        "The bottle to Alice, no, hold on, she said crisps at the bill sticker's meeting, so the "
-        "crisps.",
-        "Bottle to Person A, no, hang on, it's Person B who's back from the gorge walking "
-        "thirsty, so to him.",
-        "Chips to Person A, no, my mistake, she asked for the bottle on her way to the fife band.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
-        "Gloves to Mia, no, the packing tape instead, the billposter already lent Mia a pair.",
-        "Bib to Ava, no, silly me, Ava's a big girl now, so to Lily, she's having her mash.",
-        "Torch on the bench, no, in the locker, where it lives between spelunking trips.",
         "can person a have the bottle now her make-up artist shift is done",
         "Could the fchips head over to Person A, she's the bill sticker on our street.",
         "Pferson A wants the bottle for the highlining trip tomorrow.",

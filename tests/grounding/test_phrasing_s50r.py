@@ -29,8 +29,8 @@ def _scene(name: str):
     return load_scene(ROOT / f"examples/scenes/{name}.yaml")
 
 
-TWO, DUO, ONE, T12, F42, L44 = (
-    _scene(n) for n in ("two_arms", "2-2", "1-1", "1-2", "4-2", "4-4-line")
+TWO, DUO, ONE, T12, F42, L44, FIG1 = (
+    _scene(n) for n in ("two_arms", "2-2", "1-1", "1-2", "4-2", "4-4-line", "fig1")
 )
 
 # -- blind48: choices, who is meant, both ------------------------------------------------------
@@ -177,6 +177,109 @@ test_batch1 = CASES.test(
     ),
     ("Both cups go to Emma, the doctor's brought her sister along.", None, LAB),
     ("Any pen at all for Sam, the manager isn't choosy.", None, OFFICE),
+)
+
+
+# -- blind48: counts and corrections ---------------------------------------------------------------
+
+test_batch2 = CASES.test(
+    # _one_there50r: "There's only the one X at <a place not in the scene>, and P's to have
+    # it" / "…, and P has called dibs on it" (near: the scene has two; the place is a surface
+    # of the scene)
+    ("There's only the one apple at the allotment, and Carol's to have it.", "apple>C", CELL),
+    ("There's just the one bag of crisps, and Bob's to have it.", "chips>B", FIG1),
+    ("There's only the one lemon, and Lena has called dibs on it.", "lemon>B", KITCHEN),
+    ("There's just the one jug at the nurses' station, and Mr Lee has bagged it.", "jug>B", WARD),
+    ("There's only the one mug at the allotment, and Carol's to have it.", None, CELL),
+    ("There's only the one lemon on the rack, and Lena's to have it.", None, KITCHEN),
+    # _lone_in50r: "the lone bottle in the room" (near: the scene has two)
+    ("The lone apple in the room goes to Bob, he's on nights.", "apple>B", CELL),
+    ("Give Dana the sole banana on hand.", "banana>A", LAB),
+    ("The one and only lemon in here is for Mr Novak.", "lemon>C", KITCHEN),
+    ("The lone cup in the room goes to Dana.", None, LAB),
+    # _lot_of_them50r: "The three boxes, onto the belt with the lot of them(, …)" (near: no
+    # such surface)
+    (
+        "The three boxes, onto the pallet with the lot of them.",
+        "box_small@pallet & box_medium@pallet & box_large@pallet",
+        DEPOT,
+    ),
+    (
+        "Both plates, on the rack with the pair of them, the guests are early.",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    (
+        "The two books, onto the shelf with the lot of them, Mrs Ortiz's lesson starts soon.",
+        "book_red@shelf & book_green@shelf",
+        CLASSROOM,
+    ),
+    ("The three boxes, onto the van with the lot of them.", None, DEPOT),
+    # _pair_wants50r: "The pair of spanners wants locking away in the locker" (near: no pair
+    # in the scene)
+    (
+        "The pair of books needs tidying away on the shelf before the lesson.",
+        "book_red@shelf & book_green@shelf",
+        CLASSROOM,
+    ),
+    ("The drill wants locking away in the locker.", "drill@locker", WORKSHOP),
+    ("The pair of bananas wants putting away on the tray.", None, LAB),
+    # _said_why50r: "…, no, hold on, she said crisps at the meeting(, so the crisps)" (near:
+    # the pronoun is not the person; the 'so' names another thing)
+    ("The cup to Bob, no, hang on, he said apple at the allotment, so the apple.", "apple>B", CELL),
+    (
+        "The lemon to Marco, no, my mistake, he asked for the salt on his way to the pass.",
+        "salt>A",
+        KITCHEN,
+    ),
+    (
+        "The jug to Mrs Khan, no, wait, she said the grey blanket during the ward round.",
+        "blanket_grey>C",
+        WARD,
+    ),
+    ("The bottle to Alice, no, hold on, he said crisps at the bill sticker's meeting.", None, TWO),
+    (
+        "The bottle to Alice, no, hold on, she said crisps at the bill sticker's meeting, so the "
+        "bottle.",
+        None,
+        TWO,
+    ),
+    # _so_to50r: "…, no, silly me, P's a big girl now, so to Q(, she's …)", "…, it's Q who's
+    # back from …, so to him" (near: the pronoun is not Q; the remark names a thing of the
+    # scene)
+    (
+        "Chips to Person B, no, hang on, it's Person A who's back from the fells starving, so to "
+        "her.",
+        "chips>A",
+        DUO,
+    ),
+    (
+        "Teddy to Lily, no, silly me, Lily's fast asleep, so to Ava, she's wide awake.",
+        "teddy>C",
+        NURSERY,
+    ),
+    ("Teddy to Lily, no, silly me, Lily's fast asleep, so to Ava, he's wide awake.", None, NURSERY),
+    ("Cup to Alice, no, sorry, Alice has the apple, so to Carol.", None, CELL),
+    # _instead_why50r: "X to P, no, the Y instead, <why>" (near: the why names someone or
+    # something else)
+    ("Gloves to Mia, no, the tape instead, she already has a pair.", "tape>A", DEPOT),
+    ("Hammer for Jess, no, the screws instead, Jess has her own hammer.", None, WORKSHOP),
+    (
+        "Hammer for Jess, no, the screws instead, the apprentice is fixing a shelf.",
+        "screws>B",
+        WORKSHOP,
+    ),
+    ("Gloves to Mia, no, the tape instead, Tom has the gloves.", None, DEPOT),
+    # _where_it_lives50r: "…, no, in the locker, where it lives (…)" (near: the remark names a
+    # thing of the scene)
+    (
+        "Torch on the bench, no, in the locker, where it lives between spelunking trips.",
+        "torch@locker",
+        WORKSHOP,
+    ),
+    ("The salt on the counter, no, on the rack, where it always lives.", "salt@rack", KITCHEN),
+    ("The globe on the desk, no, on the shelf, where it's kept.", "globe@shelf", CLASSROOM),
+    ("Torch on the bench, no, in the locker, where it lives next to the drill.", None, WORKSHOP),
 )
 
 

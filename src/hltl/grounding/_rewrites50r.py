@@ -6,11 +6,19 @@ from collections.abc import Callable
 
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
-from hltl.grounding._rewrites42s import _remark_only42s
+from hltl.grounding._rewrites42s import _NEED_STATE42S, _remark_only42s
 from hltl.grounding._rewrites44r import _agrees44r, _read_or44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites48r import _choice_for48r
-from hltl.grounding._rewrites49r import _THING49R, _it_is49r, _one49r, _targets49r, _the_one49r
+from hltl.grounding._rewrites49r import (
+    _BACK49R,
+    _CUE49R,
+    _THING49R,
+    _it_is49r,
+    _one49r,
+    _targets49r,
+    _the_one49r,
+)
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node, has_choice, tasks
 
@@ -366,6 +374,293 @@ def _one_of_and50r(text: str, lexicon: Lexicon) -> str:
     return _read_or44r(out, text, lexicon)
 
 
+# -- blind48: counts said of the scene ------------------------------------------------------------
+
+# "There's only the one bottle at the twitching hide, and Person A's to have it.", "There's just
+# the one packet of crisps, and Alice has called dibs on it."
+_ONE_THERE50R = re.compiled(
+    r"^there(?:'s| is) (?:just |only )?(?:the one|a single|one single|the single) "
+    r"(?P<x>[a-z]+(?: of [a-z]+| [a-z]+)?)(?P<at> (?:at|in|on|up at|down at|over at|out at) "
+    r"the [a-z' -]+?)?\s*,?\s*(?:and|so) "
+    rf"(?P<p>{_P46R})(?P<v>(?:'s| is| has) (?:to have|to get|the one to have|the one to get)|"
+    r"(?:'s| has) (?:called|got|put in|bagged|claimed|bagsied)(?: dibs on| first dibs on)?) it"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_there50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): "There's only the one bottle at the twitching hide, and P's to have it"
+    ("…the one packet of crisps, and P has called dibs on it") is "Give P the bottle" when the
+    scene has exactly one (a place naming nothing of the scene; the plain "There's only the one
+    bottle, and P's to have it" is session 40's)."""
+    if not text.lower().startswith("there"):
+        return text
+    m = _ONE_THERE50R.match(text.strip())
+    if m is None:
+        return text
+    plain = m["at"] is None and " of " not in m["x"] and "dibs" not in m["v"].lower()
+    if plain and re.search(r"(?:called|got|put in|bagged|claimed|bagsied)", m["v"], _F) is None:
+        return text
+    if m["at"] is not None and not _remark_only42s(m["at"], lexicon):
+        return text
+    pid = _person46r(m["p"], lexicon)
+    thing = _the_one49r(m["x"], lexicon)
+    if pid is None or thing is None:
+        return text
+    out = f"Give {m['p']} {thing}{m['end'] or '.'}"
+    return out if _targets49r(_reading(out, lexicon)) == {pid} else text
+
+
+# "The lone bottle in the room goes to Person A, …"
+_LONE_IN50R = re.compiled(
+    r"\bthe (?:lone|sole|one and only|single) (?P<x>[a-z]+) (?:in the room|in here|on hand|"
+    r"to hand|going|around|about|we have|we've got)\b",
+    _F,
+)
+
+
+def _lone_in50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): "the lone bottle in the room" ("the sole cup going") is "the bottle"
+    when the scene has exactly one."""
+    low = text.lower()
+    if "lone" not in low and "sole" not in low and "single" not in low and "only" not in low:
+        return text
+    m = _LONE_IN50R.search(text)
+    if m is None:
+        return text
+    thing = _the_one49r(m["x"], lexicon)
+    if thing is None:
+        return text
+    return _read_or44r(f"{text[: m.start()]}{thing}{text[m.end() :]}", text, lexicon)
+
+
+# "The three boxes, onto the belt with the lot of them, …"
+_LOT_OF_THEM50R = re.compiled(
+    r"^(?P<what>the (?:two|three|four|five|six) [a-z]+|both [a-z]+|all the [a-z]+|all [a-z]+)"
+    r"\s*,\s*(?P<prep>onto|on to|on|into|in) (?P<s>the [a-z]+(?: [a-z]+)?) with (?:the lot|all|"
+    r"the whole lot|both|the pair) of (?:them|'em)(?P<rest>.*)$",
+    _F,
+)
+
+
+def _lot_of_them50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): "The three boxes, onto the belt with the lot of them(, …)" is "The
+    three boxes onto the belt(, …)": 'the lot of them' says the things named before again."""
+    if "of them" not in text.lower() and "of 'em" not in text.lower():
+        return text
+    m = _LOT_OF_THEM50R.match(text.strip())
+    if m is None:
+        return text
+    if len(_ids(m["s"], lexicon, "surface")) != 1 or _ids(m["s"], lexicon) != _ids(
+        m["s"], lexicon, "surface"
+    ):
+        return text
+    out = f"{m['what']} {m['prep']} {m['s']}{m['rest']}"
+    node = _reading(out, lexicon)
+    objs = _ids(m["what"], lexicon, "object")
+    if node is None or not objs or {t.obj for t in tasks(node)} != objs:
+        return text
+    return out
+
+
+# "The pair of spanners wants locking away in the locker before …"
+_PAIR_WANTS50R = re.compiled(
+    r"^(?P<what>the pair of [a-z]+|the two [a-z]+|both (?:the )?[a-z]+|the [a-z]+(?: [a-z]+)?) "
+    r"(?:wants|want|needs|need) (?:locking away|locking up|putting away|putting|tidying away|"
+    r"stowing|stowing away|storing|storing away|packing away|popping) (?P<prep>in|into|on|onto|"
+    r"inside) (?P<s>the [a-z]+)(?P<rest>.*)$",
+    _F,
+)
+
+
+def _pair_wants50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): "The pair of spanners wants locking away in the locker(, …)" is "Put
+    the two spanners in the locker(, …)" ('the pair of Ks' when the scene has exactly two; "the
+    X needs putting away on the shelf" likewise)."""
+    if " want" not in text.lower() and " need" not in text.lower():
+        return text
+    m = _PAIR_WANTS50R.match(text.strip())
+    if m is None:
+        return text
+    what = m["what"]
+    pair = re.match(r"the pair of (?P<k>[a-z]+)$", what, _F)
+    if pair is not None:
+        if len(_ids(f"the {_one49r(pair['k'])}", lexicon, "object")) != 2:
+            return text
+        what = f"the two {pair['k']}"
+    objs = _ids(what, lexicon, "object")
+    if not objs or _ids(what, lexicon) != objs:
+        return text
+    out = f"Put {what} {m['prep']} {m['s']}{m['rest']}"
+    node = _reading(out, lexicon)
+    if (
+        node is None
+        or {t.obj for t in tasks(node)} != objs
+        or any(t.kind != "place" for t in tasks(node))
+    ):
+        return text
+    return out
+
+
+# -- blind48: corrections -------------------------------------------------------------------------
+
+
+def _about50r(words: str, people: set[str], lexicon: Lexicon) -> bool:
+    """Whether ``words`` (a remark) name nothing of the scene but ``people`` (by a name, or a
+    pronoun that may be one of them), and want, negate, count and choose nothing."""
+    said = words
+    if not _ids(words, lexicon) <= people:
+        return False
+    for h in lexicon.scene.humans:
+        if h.id in people:
+            for name in sorted((h.name, *h.aliases), key=len, reverse=True):
+                said = re.sub(rf"\b{re.escape(name)}\b(?:'s)?", "", said, flags=_F)
+    pros = re.findall(r"\b(?:she|he|her|him|his|hers)\b", said, _F)
+    if any(not any(_agrees44r(p, x, lexicon) for p in people) for x in pros):
+        return False
+    said = re.sub(r"\b(?:she|he|her|him|his|hers)\b", "", said, flags=_F)
+    return not said.strip() or _remark_only42s(said, lexicon)
+
+
+# "The bottle to Alice, no, hold on, she said crisps at the bill sticker's meeting, so the
+# crisps.", "Chips to Person A, no, my mistake, she asked for the bottle on her way to the fife
+# band."
+_SAID_WHY50R = re.compiled(
+    r"(?P<lead>,\s*(?P<pro>she|he) (?:said|asked for|asked me for|wanted|was after) )"
+    r"(?P<y>(?:the )?[a-z]+(?: [a-z]+)?)(?P<why> (?:at|on|during|before|after|in|for|from) "
+    r"[^,;.!?]+?)?(?:\s*,\s*so (?P<again>(?:the )?[a-z]+(?: [a-z]+)?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _said_why50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): a correction said as what the person said or asked for, with when or
+    where ("…, no, hold on, she said crisps at the bill sticker's meeting(, so the crisps)",
+    "…, no, my mistake, she asked for the bottle on her way to the fife band"): the when or
+    where (naming nothing of the scene but that person) and the 'so' that says the thing again
+    taken off, a bare thing said with 'the' ("she said the crisps", as session 40 reads it)."""
+    if " said " not in text.lower() and " asked " not in text.lower() and "wanted" not in text:
+        return text
+    m = _SAID_WHY50R.search(text)
+    if m is None or not _BACK49R.search(text[: m.start()]) or text.count(",") < 2:
+        return text
+    if m["why"] is None and m["again"] is None and m["y"].lower().startswith("the "):
+        return text
+    y = _ids(_the50r(m["y"]), lexicon, "object")
+    if len(y) != 1 or _ids(_the50r(m["y"]), lexicon) != y:
+        return text
+    if m["again"] is not None and _ids(_the50r(m["again"]), lexicon) != y:
+        return text
+    first = _reading(f"{text[: m.start()].split(',')[0]}.", lexicon)
+    was = _targets49r(first)
+    if was is None or len(was) != 1 or not _agrees44r(next(iter(was)), m["pro"], lexicon):
+        return text
+    if m["why"] is not None and not _about50r(m["why"], was, lexicon):
+        return text
+    out = f"{text[: m.start()]}{m['lead']}{_the50r(m['y'])}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if _targets49r(node) != was or node is None or {t.obj for t in tasks(node)} != y:
+        return text
+    return out
+
+
+# "Bottle to Person A, no, hang on, it's Person B who's back from the gorge walking thirsty, so to
+# him.", "Bib to Ava, no, silly me, Ava's a big girl now, so to Lily, she's having her mash."
+_SO_TO50R = re.compiled(
+    rf"^(?P<head>[^,;]+?)\s*,\s*(?P<cue>{_CUE49R}(?:(?:silly me|my mistake|my bad)\s*,\s*)?)"
+    r"(?P<mid>[^,;]+?)\s*,\s*so (?:to |for )?(?P<q>her|him|[a-z][a-z ]*?)"
+    r"(?:\s*,\s*(?P<why>[^,;.!?]+?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+_CLEFT_MID50R = re.compiled(rf"^it(?:'s| is| was) (?P<q>{_P46R}) who(?:'s| is| was| has) ", _F)
+
+
+def _so_to50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): a request to one person, a cue, why the first person does not get it
+    (or "it's Q who's back from …"), then "so to Q(, she's having her mash)" is "<request>, no,
+    Q": each remark naming nothing of the scene but those two, the pronouns fitting."""
+    if ", so " not in text.lower():
+        return text
+    m = _SO_TO50R.match(text.strip())
+    if m is None or not _BACK49R.search(m["cue"]):
+        return text
+    first = _reading(f"{m['head']}.", lexicon)
+    was = _targets49r(first)
+    if first is None or was is None or len(was) != 1:
+        return text
+    cleft = _CLEFT_MID50R.match(m["mid"])
+    said = cleft["q"] if cleft is not None else m["q"]
+    q = _person46r(said, lexicon)
+    if q is None or q in was:
+        return text
+    if m["q"].lower() in ("her", "him") and (cleft is None or not _agrees44r(q, m["q"], lexicon)):
+        return text
+    if cleft is None and _person46r(m["q"], lexicon) != q:
+        return text
+    # "it's Q who's back from the gorge walking thirsty": Q's need is what the correction says
+    mid = _NEED_STATE42S.sub("", m["mid"][cleft.end() :]) if cleft is not None else m["mid"]
+    if not _about50r(mid, {*was, q}, lexicon):
+        return text
+    if m["why"] is not None and not _about50r(m["why"], {q}, lexicon):
+        return text
+    out = f"{m['head']}, no, {said}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if _targets49r(node) != {q} or node is None:
+        return text
+    if {t.obj for t in tasks(node)} != {t.obj for t in tasks(first)}:
+        return text
+    return out
+
+
+# "Gloves to Mia, no, the packing tape instead, the billposter already lent Mia a pair."
+_INSTEAD_WHY50R = re.compiled(
+    rf"^(?P<head>[^,;]+?\s*,\s*(?:{_CUE49R})(?P<y>the [a-z]+(?: [a-z]+)?) instead)\s*,\s*"
+    r"(?P<why>[^,;.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _instead_why50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): "X to P, no, the Y instead, <why>" with why naming nothing of the scene
+    but P: the why taken off (the correction reads as before)."""
+    if "instead" not in text.lower():
+        return text
+    m = _INSTEAD_WHY50R.match(text.strip())
+    if m is None or not _BACK49R.search(m["head"]):
+        return text
+    out = f"{m['head']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    got = _targets49r(node)
+    if got is None or len(got) != 1 or not _about50r(m["why"], got, lexicon):
+        return text
+    return out
+
+
+# "Torch on the bench, no, in the locker, where it lives between spelunking trips."
+_WHERE_IT_LIVES50R = re.compiled(
+    r"\s*,\s*where (?:it|they)(?: lives?| belongs?| goes| go| usually (?:lives?|goes|go)| "
+    r"always (?:lives?|goes|go)|(?:'s| is| are) (?:kept|stored|usually kept))(?P<why> [^,;.!?]+?)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _where_it_lives50r(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12r): a placing closed by "where it lives (between spelunking trips)" (where
+    it belongs, is kept): the clause says the place again and is taken off."""
+    if "where " not in text.lower():
+        return text
+    m = _WHERE_IT_LIVES50R.search(text.strip())
+    if m is None or (m["why"] is not None and not _remark_only42s(m["why"], lexicon)):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-49 ones)
 _STEPS50R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-49 ones)
@@ -379,6 +674,14 @@ _STEPS50R: tuple[Callable[[str, Lexicon], str], ...] = (
     _lay_hands50r,
     _role_says50r,
     _one_of_and50r,
+    _one_there50r,
+    _lone_in50r,
+    _lot_of_them50r,
+    _pair_wants50r,
+    _said_why50r,
+    _so_to50r,
+    _instead_why50r,
+    _where_it_lives50r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-49 ones)
 REFUSE50R: tuple[Callable[[str, Lexicon], None], ...] = ()
