@@ -368,26 +368,6 @@ KNOWN_MISSES = frozenset(
         "Sponge in the sink to soak. The bowl goes on the tray after that. The embryologist "
         "likes things neat.",
         "The water jug for Mrs Khan. And put the thermometer on the locker. Both now.",
-        "Carol's off to the twitching hide with a flask, so either mug will do for her, red or "
-        "blue, she won't be fussy.",
-        "Person B says both the apple and the cup, he's off to the gem cutting.",
-        "For the make-up artist, that's Person A, one of the cup or the apple, she can pick.",
-        "Any of the four will do for Person A, whatever's handiest.",
-        "Person B's not bothered which, bottle or chips, just one of them.",
-        "There's only the one bottle at the twitching hide, and Person A's to have it.",
-        "Whichever bottle you can lay a hand on, Person A's to get it, she's the perfusionist on "
-        "call.",
-        "Any pen at all for Sam, the intern isn't choosy.",
-        "Tom's loading the van for the coffin maker, so both the small and the medium box go to "
-        "Tom.",
-        "Lily'll play with whichever block, red or green.",
-        "Kofi isn't fussed which spanner, the big or the small.",
-        "There's just the one packet of crisps, and Alice has called dibs on it.",
-        "The lone bottle in the room goes to Person A, she's the cardiographer on shift.",
-        "Both cups go to Emma, the visitor's brought a friend along.",
-        "The three boxes, onto the belt with the lot of them, the magistrate's order goes out "
-        "today.",
-        "The pair of spanners wants locking away in the locker before the speleologist's visit.",
         "Give Carol the blue mug, not the red, she says the red one's got a funny taste.",
         "Bob says not the crisps, he's stuffed after the rag rugging social, the bottle's what "
         "he wants.",
@@ -404,23 +384,12 @@ KNOWN_MISSES = frozenset(
         "Lily's thrown the red block on the floor twice, so not that one, the green block for her.",
         "The drill's no use to Jess now the holes are done, but the hammer is, so the hammer to "
         "Jess.",
-        "The bottle to Alice, no, hold on, she said crisps at the bill sticker's meeting, so the "
-        "crisps.",
-        "Bottle to Person A, no, hang on, it's Person B who's back from the gorge walking "
-        "thirsty, so to him.",
-        "Chips to Person A, no, my mistake, she asked for the bottle on her way to the fife band.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
-        "Gloves to Mia, no, the packing tape instead, the billposter already lent Mia a pair.",
-        "The lemon to Lena, sorry, I mean Mr Novak, the guest wants it squeezed over his fish.",
-        "Bib to Ava, no, silly me, Ava's a big girl now, so to Lily, she's having her mash.",
-        "Torch on the bench, no, in the locker, where it lives between spelunking trips.",
         "can person a have the bottle now her make-up artist shift is done",
-        "power drill for jess, cheers, the apprentice is hanging the vexillologist's flag pole",
         "Could the fchips head over to Person A, she's the bill sticker on our street.",
         "Pferson A wants the bottle for the highlining trip tomorrow.",
         "Hand the bottle to perszon A on her way to the straw plaiting, would you.",
         "Work glives for Tom, it's cold on the belt.",
-        "Hamker for Kofi, the foreman's putting up the billposter's board.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -457,7 +426,6 @@ KNOWN_UNCLEAR = frozenset(
         "which, sorry.",
         "Person B was after something when he came by, the chips maybe, or the cup, it's gone "
         "from me now.",
-        "Person B asked for one of the bottle and the chips, and I've lost track of which.",
         "tom wanted a box, small or medium, can't remember which",
     }
 )
