@@ -409,20 +409,12 @@ KNOWN_MISSES = frozenset(
         "The three boxes, onto the belt with the lot of them, the magistrate's order goes out "
         "today.",
         "The pair of spanners wants locking away in the locker before the speleologist's visit.",
-        "Give Carol the blue mug, not the red, she says the red one's got a funny taste.",
         "Bob says not the crisps, he's stuffed after the rag rugging social, the bottle's what "
         "he wants.",
-        "It isn't the bottle Alice has her heart set on after the hooky mat session, it's the "
-        "crisps.",
-        "Person A wants no chips, no bottle, just the apple.",
         "Person A's already got a drink of her own, so it's Person B, not her, the bottle goes to.",
         "Don't you be hanging onto the bottle all afternoon, Person A's the one it goes to.",
         "No point the bottle sitting there gathering dust when Person A needs it for the willow "
         "weaving.",
-        "Marco didn't ask for the tongs, it's the knife he's after, for the make-up artist's "
-        "birthday cake.",
-        "It's not the ruler Noah's after for the straw plaiting, it's the scissors.",
-        "Lily's thrown the red block on the floor twice, so not that one, the green block for her.",
         "The drill's no use to Jess now the holes are done, but the hammer is, so the hammer to "
         "Jess.",
         "The bottle to Alice, no, hold on, she said crisps at the bill sticker's meeting, so the "
@@ -435,9 +427,7 @@ KNOWN_MISSES = frozenset(
         "The lemon to Lena, sorry, I mean Mr Novak, the guest wants it squeezed over his fish.",
         "Bib to Ava, no, silly me, Ava's a big girl now, so to Lily, she's having her mash.",
         "Torch on the bench, no, in the locker, where it lives between spelunking trips.",
-        "can person a have the bottle now her make-up artist shift is done",
         "power drill for jess, cheers, the apprentice is hanging the vexillologist's flag pole",
-        "Could the fchips head over to Person A, she's the bill sticker on our street.",
         "Pferson A wants the bottle for the highlining trip tomorrow.",
         "Hand the bottle to perszon A on her way to the straw plaiting, would you.",
         "Work glives for Tom, it's cold on the belt.",
