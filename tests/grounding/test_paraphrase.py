@@ -428,9 +428,6 @@ KNOWN_MISSES = frozenset(
         "Bib to Ava, no, silly me, Ava's a big girl now, so to Lily, she's having her mash.",
         "Torch on the bench, no, in the locker, where it lives between spelunking trips.",
         "power drill for jess, cheers, the apprentice is hanging the vexillologist's flag pole",
-        "Pferson A wants the bottle for the highlining trip tomorrow.",
-        "Hand the bottle to perszon A on her way to the straw plaiting, would you.",
-        "Work glives for Tom, it's cold on the belt.",
         "Hamker for Kofi, the foreman's putting up the billposter's board.",
         "Would you be able to pop the red mug down on the counter so it's out of the way of the "
         "sand sculpting photos?",

@@ -12,6 +12,7 @@ from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
     KITCHEN,
     LAB,
     NURSERY,
@@ -24,6 +25,7 @@ from tests.grounding.helpers import (
 
 FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")  # Person A (Alice), Person B (Bob)
 DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")  # Person A, Person B
+ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")  # Person A alone
 F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")  # Person A, Person B
 L24 = load_scene(ROOT / "examples/scenes/2-4-line.yaml")  # Person A, Person B
 T12 = load_scene(ROOT / "examples/scenes/1-2.yaml")  # Person A alone
@@ -203,3 +205,59 @@ test_so_not_that50s_near = SO_NOT_THAT.test(
 
 def test_so_not_that50s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     SO_NOT_THAT.refused_without((r50s._so_not_that50s,), monkeypatch)
+
+
+# -- 'for the <occasion> tomorrow' closing a want -------------------------------------------------
+
+PURPOSE_WHEN = PhrasingCases()
+test_purpose_when50s = PURPOSE_WHEN.test(
+    ("Pferson A wants the bottle for the highlining trip tomorrow.", "bottle>A", ONE),
+    ("Person A wants the bottle for the big trip tomorrow.", "bottle>A", ONE),
+    ("Marco wants the tongs for the staff barbecue tonight.", "tongs>A", KITCHEN),
+    ("Mrs Khan wants the magazine for the long train home tomorrow.", "magazine>C", WARD),
+)
+test_purpose_when50s_near = PURPOSE_WHEN.test(
+    ("Person A wants the bottle for the bottle trip tomorrow.", None, ONE),
+    ("Give Person A the bottle for the hiking trip tomorrow.", None, ONE),
+)
+
+
+def test_purpose_when50s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PURPOSE_WHEN.refused_without((r50s._purpose_when50s,), monkeypatch)
+
+
+# -- 'to P on her way to X' ---------------------------------------------------------------------
+
+ON_WAY = PhrasingCases()
+test_on_way50s = ON_WAY.test(
+    ("Hand the bottle to perszon A on her way to the straw plaiting, would you.", "bottle>A", T12),
+    ("Hand the bottle to Person A on her way out, would you.", "bottle>A", T12),
+    ("Pills for Mr Lee on his way to the day room, please.", "pills>B", WARD),
+    ("Salt for Mr Novak on his way back.", "salt>C", KITCHEN),
+)
+test_on_way50s_near = ON_WAY.test(
+    ("Hand the bottle to Person A on his way out.", None, T12),
+    ("Give the knife to Lena on his way out.", None, KITCHEN),
+    ("Give the knife to Lena on her way to table six.", None, KITCHEN),
+)
+
+
+def test_on_way50s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ON_WAY.refused_without((r50s._on_way50s,), monkeypatch)
+
+
+# -- a closing weather remark with a surface as its place --------------------------------------
+
+COLD_ON = PhrasingCases()
+test_cold_on50s = COLD_ON.test(
+    ("Work glives for Tom, it's cold on the belt.", "gloves>B", DEPOT),
+    ("Gloves for Tom, it's freezing by the pallet.", "gloves>B", DEPOT),
+    ("Lemon for Marco, it's roasting by the counter.", "lemon>A", KITCHEN),
+)
+test_cold_on50s_near = COLD_ON.test(
+    ("Put the gloves on the pallet, it's cold on the belt.", None, DEPOT),
+)
+
+
+def test_cold_on50s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    COLD_ON.refused_without((r50s._cold_on50s,), monkeypatch)

@@ -6,7 +6,9 @@ from collections.abc import Callable
 
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
+from hltl.grounding._normalise2 import _inert28
 from hltl.grounding._normalise3 import _not_cleft30r
+from hltl.grounding._rewrites41s import _ORDER41S, _WANT_SAID41S
 from hltl.grounding._rewrites42r import _negated_then42r
 from hltl.grounding._rewrites42s import _NEGATED42S, _remark_only42s
 from hltl.grounding._rewrites43s import _NOW_OVER43S, _now_over43s
@@ -233,6 +235,83 @@ def _so_not_that50s(text: str, lexicon: Lexicon) -> str:
     return _read_without44r(out, text, said[0], lexicon) if out != text else text
 
 
+# "Pferson A wants the bottle for the highlining trip tomorrow.": what the thing is for, an
+# occasion of two or three words, then when the occasion is ('tomorrow', 'tonight', 'later'):
+# session 28's `_purpose28` takes 'for the trip tomorrow' off (two words), not three. Taken off
+# the same way after a want, when its words name nothing of the scene and hold none of
+# _KEEP_WORDS (`_inert28`).
+_PURPOSE_WHEN50S = re.compile(
+    r",?\s+for (?:the|a|an|his|her|their|my|our) (?P<what>[a-z]+(?:[ -][a-z]+){1,2}) (?:tomorrow|"
+    r"tonight|later|this (?:afternoon|evening|weekend)|at the weekend|next week)(?=\s*[.!]?\s*$)",
+    _F,
+)
+
+
+def _purpose_when50s(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12s): 'for the <occasion> tomorrow' closing a want taken off (above)."""
+    if "for " not in text.lower():
+        return text
+    m = _PURPOSE_WHEN50S.search(text)
+    if m is None or not _inert28(m["what"], lexicon):
+        return text
+    out = f"{text[: m.start()]}{text[m.end() :]}"
+    if not _WANT_SAID41S.search(out) or _ORDER41S.search(out):
+        return text
+    return _read_or44r(out, text, lexicon)
+
+
+# "Hand the bottle to perszon A on her way to the straw plaiting, would you.": 'on her way (to
+# <occasion>, out, past)' right after the person a thing goes to says when they pass, not
+# another place: taken off, when the pronoun may be that person (`_agrees44s`) and the words
+# name nothing of the scene.
+_ON_WAY50S = re.compile(
+    r"\b(?P<to>to|for) (?P<p>[a-z]+(?: [a-z]+)?) (?P<way>on (?P<pron>his|her|their) way(?: (?:to|"
+    r"over to|down to|up to|off to) (?:the |a |an |his |her |their )?(?P<what>[a-z]+(?:[ -][a-z]+)"
+    r"{0,2})| out| in| past| through| home| back)?)(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _on_way50s(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12s): 'to P on her way to X' said 'to P' (above)."""
+    if " way" not in text.lower():
+        return text
+    m = _ON_WAY50S.search(text)
+    if m is None or not _only_person(m["p"], lexicon) or m["pron"].lower() == "their":
+        return text
+    if not _agrees44s(m["p"], m["pron"], lexicon) or _ids(m["way"], lexicon):
+        return text
+    if m["what"] and not _inert28(m["what"], lexicon):
+        return text
+    out = f"{text[: m.start('way')].rstrip()}{text[m.end('way') :]}"
+    return _read_or44r(out, text, lexicon)
+
+
+# "Work glives for Tom, it's cold on the belt.": a closing remark on the weather where the person
+# works ('it's cold on the belt', 'it's freezing by the locker'): the place names a surface of
+# the scene, so the remark was read as a placing. Said without the place ("…, it's cold." reads as
+# before), when it closes a request to a person that names no surface.
+_COLD_ON50S = re.compile(
+    r"(?P<cold>[,;.]\s*(?:and |cos |because )?it(?:'s| is| gets)(?: (?:so|really|very|bitter|"
+    r"perishing|freezing))? (?:cold|freezing|chilly|nippy|parky|bitter|perishing|hot|boiling|"
+    r"baking|roasting|warm|damp|draughty|drafty))(?P<place> (?:on|by|at|near|in|over) the "
+    r"[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?\s*)$",
+    _F,
+)
+
+
+def _cold_on50s(text: str, lexicon: Lexicon) -> str:
+    """Session 50 (12s): the place of a closing weather remark taken off (above)."""
+    m = _COLD_ON50S.search(text)
+    if m is None or not _ids(m["place"], lexicon, "surface"):
+        return text
+    before = text[: m.start()]
+    if _ids(before, lexicon, "surface") or not _ids(before, lexicon, "human"):
+        return text
+    out = f"{before}{m['cold']}{m['end']}"
+    return _read_or44r(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-49 ones)
 _STEPS50S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-49 ones)
@@ -243,6 +322,9 @@ _STEPS50S: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_again50s,
     _no_no_just50s,
     _so_not_that50s,
+    _purpose_when50s,
+    _on_way50s,
+    _cold_on50s,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-49 ones)
 REFUSE50S: tuple[Callable[[str, Lexicon], None], ...] = ()
