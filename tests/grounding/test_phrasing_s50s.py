@@ -29,6 +29,7 @@ ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")  # Person A alone
 F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")  # Person A, Person B
 L24 = load_scene(ROOT / "examples/scenes/2-4-line.yaml")  # Person A, Person B
 T12 = load_scene(ROOT / "examples/scenes/1-2.yaml")  # Person A alone
+T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")  # Person A alone
 
 # -- the negated cleft, its want said another way ------------------------------------------------
 
@@ -261,3 +262,30 @@ test_cold_on50s_near = COLD_ON.test(
 
 def test_cold_on50s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     COLD_ON.refused_without((r50s._cold_on50s,), monkeypatch)
+
+
+# -- 12c's fuzz (blind47): a remark after a fronted negation made the thing a handover -------------
+# On issue-lead 3667287b each read `chips>A & bottle>A`: session 49's `_fronted_not49s` took the
+# negated clause only where a stop or the end closed it; a comma closes it as well.
+
+FRONTED_NOT = PhrasingCases()
+test_fronted_not_comma50s = FRONTED_NOT.test(
+    (
+        "Let Person A at the chips; the bottle, though, she's not allowed near, it's for the "
+        "bake sale",
+        "chips>A",
+        T21,
+    ),
+    (
+        "Let Person A at the chips; the bottle, though, she's not allowed near, the boiler's "
+        "playing up",
+        "chips>A",
+        T21,
+    ),
+    (
+        "Let Person A at the chips; the bottle, though, she's not allowed near, for the ramblers.",
+        "chips>A",
+        T21,
+    ),
+    ("Give Person A the chips; the bottle, she won't drink, it's flat.", "chips>A", T21),
+)
