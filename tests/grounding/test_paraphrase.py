@@ -368,28 +368,15 @@ KNOWN_MISSES = frozenset(
         "Sponge in the sink to soak. The bowl goes on the tray after that. The embryologist "
         "likes things neat.",
         "The water jug for Mrs Khan. And put the thermometer on the locker. Both now.",
-        "Give Carol the blue mug, not the red, she says the red one's got a funny taste.",
         "Bob says not the crisps, he's stuffed after the rag rugging social, the bottle's what "
         "he wants.",
-        "It isn't the bottle Alice has her heart set on after the hooky mat session, it's the "
-        "crisps.",
-        "Person A wants no chips, no bottle, just the apple.",
         "Person A's already got a drink of her own, so it's Person B, not her, the bottle goes to.",
         "Don't you be hanging onto the bottle all afternoon, Person A's the one it goes to.",
         "No point the bottle sitting there gathering dust when Person A needs it for the willow "
         "weaving.",
-        "Marco didn't ask for the tongs, it's the knife he's after, for the make-up artist's "
-        "birthday cake.",
-        "It's not the ruler Noah's after for the straw plaiting, it's the scissors.",
-        "Lily's thrown the red block on the floor twice, so not that one, the green block for her.",
         "The drill's no use to Jess now the holes are done, but the hammer is, so the hammer to "
         "Jess.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
-        "can person a have the bottle now her make-up artist shift is done",
-        "Could the fchips head over to Person A, she's the bill sticker on our street.",
-        "Pferson A wants the bottle for the highlining trip tomorrow.",
-        "Hand the bottle to perszon A on her way to the straw plaiting, would you.",
-        "Work glives for Tom, it's cold on the belt.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
