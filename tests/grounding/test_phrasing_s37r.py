@@ -388,6 +388,9 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 44 (12r): its rules of the same families read some of these too
             *normalise._STEPS44R_FIRST,
             *normalise._STEPS44R,
+            # session 50 (12r; lead at the merge): its 'any … at all' rule reads one of these too
+            *normalise._STEPS50R_FIRST,
+            *normalise._STEPS50R,
         ),
         monkeypatch,
     )
