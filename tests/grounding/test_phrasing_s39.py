@@ -10,7 +10,15 @@ import re
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _normalise1, _normalise2, _normalise4, _rewrites39, normalise
+from hltl.grounding import (
+    _normalise1,
+    _normalise2,
+    _normalise4,
+    _rewrites39,
+    _rewrites50l,
+    normalise,
+    offline,
+)
 from hltl.grounding.offline import parse_instruction
 from tests.grounding.helpers import (
     CELL,
@@ -301,6 +309,12 @@ def test_readings_named_before(monkeypatch: pytest.MonkeyPatch) -> None:
     # without the checks the refusals named no reading
     monkeypatch.setattr(_rewrites39, "doubt_which39", lambda _t, _l: None)
     monkeypatch.setattr(_rewrites39, "usual39", lambda _t, _l: None)
+    # session 50 (lead): `forgot_which50l` names a forgotten choice's readings too
+    monkeypatch.setattr(
+        offline,
+        "_REFUSALS",
+        tuple(r for r in offline._REFUSALS if r is not _rewrites50l.forgot_which50l),
+    )
     with pytest.raises(GroundingError) as refused:
         parse_instruction(
             "Zoe wants the ruler or the glue stick, I can't remember which.", CLASSROOM

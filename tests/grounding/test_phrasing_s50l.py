@@ -138,6 +138,63 @@ def test_choice_without_forgetting_still_reads(text: str, scene: Scene, spec: st
     assert_reads(text, spec, scene)
 
 
+# -- any remark of the speaker's about knowing, memory, hearing or attention beside a choice (12c's
+# probes: thirty wordings no list had)
+
+
+@pytest.mark.parametrize(
+    "remark",
+    [
+        "I'm drawing a blank.",
+        "I had a mental blank.",
+        "my memory's failed me.",
+        "it's on the tip of my tongue.",
+        "I'm a bit foggy on which.",
+        "I wasn't paying attention.",
+        "your guess is as good as mine.",
+        "my brain's fried.",
+        "I'm not a hundred percent.",
+        "I should've written it down.",
+        "it'll come back to me.",
+        "it didn't stick.",
+        "I never asked.",
+    ],
+)
+def test_choice_beside_a_doubt_refused(remark: str) -> None:
+    text = f"Kofi wanted one of the spanners, the small or the large, {remark}"
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, WORKSHOP)
+    said = str(refused.value)
+    assert "spanner_small" in said and "spanner_large" in said
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Mrs Khan asked for the jug or the magazine, I'd have to check.",
+        "Mrs Khan asked for the jug or the magazine, I only caught half of it.",
+        "Mrs Khan asked for the jug or the magazine, I wasn't really listening.",
+        "The jug goes on the trolley or the bedside, I've forgotten where.",
+    ],
+)
+def test_choice_beside_a_doubt_refused_ward(text: str) -> None:
+    with pytest.raises(GroundingError, match="jug"):
+        parse_instruction(text, WARD)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Give Kofi the small spanner or the large one, I don't mind which.",
+        "Give Kofi the small spanner or the large one, either will do.",
+        "Kofi can have the small spanner or the large one, he's not fussy.",
+        "Give Kofi the small spanner or the large one, I'm in a hurry.",
+    ],
+)
+def test_free_choice_beside_a_remark_still_reads(text: str) -> None:
+    assert_reads(text, "spanner_small>A | spanner_large>A", WORKSHOP)
+
+
 # -- 'she' said of Grandad: a word of kin (or a title) says the sex as a first name does (12r:
 # "Grandad said she wants the teddy." read teddy>B)
 
@@ -148,6 +205,11 @@ def test_choice_without_forgetting_still_reads(text: str, scene: Scene, spec: st
         "Grandad said she wants the teddy.",
         "The teddy on the mat, sorry, Grandad's just said she wants it.",
         "Grandad's asked for the bib, give it to her.",
+        # 12c's probes: other wants, and having it
+        "Grandad says she's been asking for the teddy.",
+        "Grandad says she's got her eye on the teddy.",
+        "Grandad says she's desperate for the teddy.",
+        "Grandad wants the bib, she's going to have it.",
     ],
 )
 def test_pronoun_of_the_other_sex_than_kin_refused(text: str) -> None:

@@ -157,9 +157,11 @@ def _forgot_choice49l(text: str, node: Node, lexicon: Lexicon) -> None:
         choice_forgotten49l(node, lexicon)
 
 
-def choice_forgotten49l(node: Node, lexicon: Lexicon) -> None:
+def choice_forgotten49l(
+    node: Node, lexicon: Lexicon, why: str = "the speaker has forgotten which was asked for"
+) -> None:
     """A reading with a choice in it, of a text in which the speaker says they have forgotten:
-    refused, naming the options (none: nothing to say)."""
+    refused (``why``), naming the options (none: nothing to say)."""
     groups = [node]
     while groups:
         g = groups.pop()
@@ -167,11 +169,7 @@ def choice_forgotten49l(node: Node, lexicon: Lexicon) -> None:
             continue
         if g.op == "or":
             offered = sorted({_said41r(t, lexicon) for t in tasks(g)})
-            raise GroundingError(
-                "the speaker has forgotten which was asked for: "
-                + " or ".join(offered)
-                + ": say which"
-            )
+            raise GroundingError(f"{why}: {' or '.join(offered)}: say which")
         groups.extend(g.children)
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _reading
+from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites49l import choice_forgotten49l
 from hltl.grounding.lexicon import TITLE_SEX, Lexicon, _kin_sex35s
 from hltl.grounding.tree import Node
@@ -125,9 +125,76 @@ def forgets50l(text: str) -> re.Match[str] | None:
 def _forgot_choice50l(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 50 (lead): session 49's check with the remark recognised by its meaning
     (`forgets50l`): a reading with a choice, of a text in which the speaker says they have
-    forgotten, is refused naming the options."""
+    forgotten, is refused naming the options; and so is one beside any remark of the speaker's
+    about what they know or heard (`unknowing50l`: "I'm hazy on which", "I wasn't paying
+    attention", "it's on the tip of my tongue")."""
     if forgets50l(text) is not None:
         choice_forgotten49l(node, lexicon)
+    said = unknowing50l(text, lexicon)
+    if said is not None:
+        choice_forgotten49l(
+            node, lexicon, f"{said!r} could say the speaker does not know which was asked for"
+        )
+
+
+# 12c's probes (session 50) found thirty more ways to say it ("I'm drawing a blank", "I'm a bit
+# foggy on which", "my brain's fried", "your guess is as good as mine", "I'd have to check", "it
+# didn't stick"): no list of wordings closes. So beside a choice, any clause of the speaker's that
+# names nothing of the scene and speaks of knowing, memory, hearing or attention (a word of that
+# class) is taken as a doubt about which was asked for, unless it leaves the choice free ("I don't
+# mind which", "either will do", "you choose").
+_CLAUSES50L = re.compiled(r"[,;:.!?()]+|\s[-–—]\s|\s(?:and|but|though|so)\s", _F)
+_SPEAKER50L = re.compiled(
+    r"^(?:(?:oh|ah|um|er|erm|hmm|sorry|honestly|to be honest|mind you|well|and|but|so|though|"
+    r"if i'm honest|truth be told)\s+)*"
+    r"(?:i\b|i'm|i've|i'd|i'll|me\b|my\b|mine\b|it's on|it'll|it didn't|it hasn't|it won't|"
+    r"it's gone|it slipped|it escapes|it's slipped|who knows|your guess|which one|which it was|"
+    r"can't|couldn't|cannot|don't|didn't|dunno|not\b|no idea|no clue|brain|memory|mind's|head's|"
+    r"haven't|never)",
+    _F,
+)
+_KNOWING50L = re.compiled(
+    r"\b(?:forg[eo]t\w*|remember\w*|recall\w*|recollect\w*|know|knew|knows|known|sure|certain|"
+    r"idea|clue|blank\w*|memory|mind|head|brain|tongue|hazy|foggy|fuzzy|vague|muddled|confused|"
+    r"mixed|listening|listen|attention|heard|hear|misheard|caught|catch|note|notes|noted|wrote|"
+    r"written|write|check|guess|stick|stuck|escapes?|slipped|come back|ago|hundred|percent|"
+    r"per cent|lost|went in|go in|asleep|half|think|tell|ask|asked)\b",
+    _F,
+)
+_FREE50L = re.compiled(
+    r"\b(?:(?:don't|do not|wouldn't|won't|doesn't|does not|never) (?:mind|care)|"
+    r"not (?:fussy|fussed|bothered)|either|whichever|any (?:one|of them|will)|"
+    r"you (?:choose|pick|decide)|your (?:choice|call|pick)|up to you|"
+    r"(?:doesn't|does not|won't|wouldn't) matter|no matter|i'm easy|"
+    r"(?:both|either) (?:are|is|will be) fine)\b",
+    _F,
+)
+
+
+def unknowing50l(text: str, lexicon: Lexicon) -> str | None:
+    """Session 50 (lead): the first clause of ``text`` in which the speaker speaks of what they
+    know, remember, heard or noted ("I'm hazy on which", "my brain's fried", "I'd have to check"),
+    naming nothing of the scene, in a text that does not leave the choice free; else None."""
+    if _FREE50L.search(text) is not None:
+        return None
+    for clause in _CLAUSES50L.split(text):
+        said = clause.strip()
+        if not said or _SPEAKER50L.match(said) is None:
+            continue
+        words = {w.lower() for w in _KNOWING50L.findall(said)}
+        # "I'm sure", "I know", "I think" said without a negation are confidence, not doubt
+        if words <= _SURE50L and _NEGATED50L.search(said) is None:
+            continue
+        if words and not _ids(said, lexicon):
+            return said
+    return None
+
+
+_SURE50L = frozenset({"sure", "certain", "know", "known", "think", "tell"})
+_NEGATED50L = re.compiled(
+    r"(?:\b(?:not|no|never|nor)|n't)\s+(?:[a-z]+\s+){0,5}(?:sure|certain|know|known|think|tell)\b",
+    _F,
+)
 
 
 # the clause a remark stands in: from the break before it to the end of its sentence
@@ -168,9 +235,18 @@ def named_sex50l(name: str) -> str | None:
 
 # a he / she who wants something, a him / her who is given it
 _WANTING50L = re.compiled(
-    r"\b(?P<w>she|he)(?:'d| would| will|'ll|'s| has| is| was)?(?: just| really| now)? (?:like|love|"
-    r"wants?|needs?|wanted|needed|asked for|after|fancies|fancied|could use|could do with|"
-    r"wants? it|is after|was after)\b"
+    # the pronoun, its auxiliaries and adverbs ("she's been", "he keeps", "she's going to")
+    r"\b(?P<w>she|he)(?:(?:'s|'d|'ll| is| was| has| had| will| would| can| could| keeps| kept| "
+    r"been| just| really| now| still| going to| gonna| got| so| ever so| really| dead| proper)"
+    r"(?=[\s,]))*\s+"
+    # a want, a need, a state that asks for something, or having it
+    r"(?:like|love|wants?|needs?|wanted|needed|asked for|asks for|asking for|after|fancies|"
+    r"fancied|fancying|could use|could do with|craving|craves|desperate for|dying for|crying for|"
+    r"gagging for|begging for|pining for|longing for|hankering for|on about|going on about|eyeing|"
+    r"eyed|got (?:her|his) eye on|has (?:her|his) eye on|(?:her|his) eye on|have it|have them|"
+    r"get it|get them|take it|take them|thirsty|hungry|peckish|starving|starved|parched|"
+    r"famished|cold|freezing|chilly)\b"
+    # given: "give it to her", "for him"
     r"|\b(?:give|hand|pass|bring|take|send)\s+(?:(?:it|them|this|that|these|those|the [a-z]+|"
     r"both)\s+)?(?:(?:over|across|back|along)\s+)?(?:to\s+)?(?P<o>her|him)\b"
     r"|\bfor (?P<f>her|him)\b",
