@@ -183,7 +183,14 @@ every object of the depot): after a kind's plural naming every one of the kind, 
 person ("Give Bob the mugs, the whole lot.", "Give Bob the lot, the mugs.", "… the mugs - the
 whole lot.") or on a surface: every one of the kind; after the entry's one-of-a-kind object and
 another ("Give Bob the apple and the cup, the whole lot."): those again or everything else,
-refused, both as readings.
+refused, both as readings. Session 50 widens forgets to the five meanings of the lead's
+`forgets50l` and the wordings it missed ("…, I'm drawing a blank.", "…, I'd have to check.") and
+adds a form `free`: a remark after a choice that is no forgetting ("…, I don't mind which."): the
+choice stands. A twenty-fifth family (session 50), kin: a he / she who wants, or a him / her who is
+given, said of a person the scene names by a word of kin or a title of the other sex ("Grandad
+says she's been asking for the teddy.", "Mr Lee's asked for the jug, let her have it."): refused;
+of that person's own sex, where no one else of the scene is of it ("Grandad says he wants the
+teddy."): the object to that person.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1612,6 +1619,33 @@ FORGET_CLOSERS = (
     ", memory's shot.",
     ", can't remember now.",
     ", dunno.",
+    # session 50: the five meanings of the lead's `forgets50l` (forgetting, going blank, losing
+    # track, memory denied, doubt) and the wordings 12c's probes found it missing
+    ", I've gone blank on which.",
+    ", I've lost track.",
+    ", can't recall which.",
+    ", haven't a clue.",
+    ", I'm drawing a blank.",
+    ", my memory's failed me.",
+    ", it's on the tip of my tongue.",
+    ", I'm a bit hazy on which.",
+    ", I wasn't paying attention.",
+    ", I couldn't tell you.",
+    ", your guess is as good as mine.",
+    ", I've lost it.",
+    ", I'm not quite sure.",
+    ", I'd have to check.",
+    ", it didn't stick.",
+    ", I only half heard.",
+)
+# ... and a remark after a choice that is no forgetting (the speaker does not mind, or is sure
+# either will do): the choice stands (`free`: the entry; session 50's rule must not take these)
+FORGET_FREE = (
+    ", I don't mind which.",
+    ", either's fine, I'm sure.",
+    ", I'm not fussy which.",
+    ", I'm sure either will do.",
+    ", whichever, I really don't mind.",
 )
 # ... said of the entry's one handover of a one-of-a-kind object ({o}) to a person named ({p}):
 # that object or another ({x}), closed by a remark ({c}): refused, both as readings
@@ -1631,7 +1665,31 @@ FORGET_PEOPLE = (
 _FREE_CHOICE = frozenset(
     ("either", "any", "whichever", "whatever", "choice", "bothered", "fussy", "mind", "matter")
 )
-FORGET_FORMS = ("closed", "objects", "people")
+FORGET_FORMS = ("closed", "objects", "people", "free")
+# kin (session 50; 12r's "Grandad said she wants the teddy." read teddy>B, session 34's check of
+# a pronoun against the people named knowing first names only): a he / she who wants, or a him /
+# her who is given, said of a person the scene names by a word of kin or a title of the other sex
+# ({K}) cannot be that person (the lead's session-50 decision): refused; the entry's one-of-a-kind
+# object ({o}), the pronoun as subject ({s}) or object ({h})
+KIN_NAMED = frozenset(("Grandad", "Mr Lee", "Mr Novak", "Mrs Ortiz", "Mrs Khan"))
+KIN_WANTS = (
+    "{K} says {s} wants the {o}.",
+    "{K} said {s}'d like the {o}.",
+    "{K} reckons {s}'s after the {o}.",
+    "{K} says {s}'s been asking for the {o}.",
+    "{K} says {s}'s desperate for the {o}.",
+    "{K} mentioned {s} could do with the {o}.",
+)
+KIN_GIVEN = (
+    "{K} asked for the {o}, give it to {h}.",
+    "{K}'s asked for the {o}, let {h} have it.",
+    "{K}'s asked for the {o}, it's for {h}.",
+    "{K} wants the {o}, {s} can have it.",
+    "{K}'s asked for the {o}, hand it over to {h}.",
+)
+# ... the pronoun of that person's own sex, where no one else of the scene is of it: that person
+# (`same`, KIN_WANTS: read as before)
+KIN_FORMS = ("wants", "given", "same")
 # lots (session 49; blind47's wrong reading "Load the belt with the three boxes, the whole lot,
 # the brickie's van is nearly here." read every object of the depot onto the belt): 'the whole
 # lot' in apposition after a kind's plural that names every one of the kind ({cs}) says the kind
@@ -1701,6 +1759,7 @@ Family = Literal[
     "chains",
     "forgets",
     "lots",
+    "kin",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -3812,6 +3871,9 @@ def forgets(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
         yield Variant(
             part, entry.scene, _then(text, closer), None, "refuse", "forgets", (), "closed"
         )
+    if has_choice(want):
+        free = _then(text, rng.choice(FORGET_FREE))
+        yield Variant(part, entry.scene, free, want, "same", "forgets", (), "free")
     said_as = _one_person_said(text, want, scene)
     if said_as is None or not isinstance(want, Task) or want.obj not in _unique_objects(scene):
         return
@@ -3829,6 +3891,45 @@ def forgets(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     if people and fitting:
         said = rng.choice(fitting).format(q=rng.choice(people), **keys)
         yield Variant(part, entry.scene, said, None, "refuse", "forgets", (), "people")
+
+
+def kin(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The kin variants of one grounded entry that is no question, of one task of a one-of-a-kind
+    object, in a scene with a person named by a word of kin or a title (KIN_NAMED; KIN_FORMS; none
+    of another): that person said to say a pronoun of the other sex wants the object (`wants`,
+    KIN_WANTS) or asked for it and it is to go to such a pronoun (`given`, KIN_GIVEN): refused;
+    a pronoun of their own sex wants it, where no one else of the scene is of that sex (`same`,
+    KIN_WANTS): the object to that person."""
+    text = entry.text.strip()
+    want = entry.want
+    if text.endswith("?") or not isinstance(want, Task) or want.obj not in _unique_objects(scene):
+        return
+    said = {h.id: n for h in scene.humans if (n := _proper_name(scene, h.id)) in KIN_NAMED}
+    if not said:
+        return
+    hid = rng.choice(sorted(said))
+    k = said[hid]
+    he = k in NAMED_HE
+    keys = {"K": k, "o": _name(scene, want.obj)}
+    other = {"s": "she", "h": "her"} if he else {"s": "he", "h": "him"}
+    fitting = [f for f in KIN_WANTS if _fits(f, scene)]
+    if fitting:
+        said_as = rng.choice(fitting).format(**keys, **other)
+        yield Variant(part, entry.scene, said_as, None, "refuse", "kin", (), "wants")
+    fitting_given = [f for f in KIN_GIVEN if _fits(f, scene)]
+    if fitting_given:
+        said_as = rng.choice(fitting_given).format(**keys, **other)
+        yield Variant(part, entry.scene, said_as, None, "refuse", "kin", (), "given")
+    alone = all(
+        _proper_name(scene, h.id) in (NAMED_SHE if he else NAMED_HE)
+        for h in scene.humans
+        if h.id != hid
+    )
+    if fitting and alone:
+        same = {"s": "he", "h": "him"} if he else {"s": "she", "h": "her"}
+        said_as = rng.choice(fitting).format(**keys, **same)
+        got = Task("deliver", want.obj, hid)
+        yield Variant(part, entry.scene, said_as, got, "same", "kin", (), "same")
 
 
 def lots(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
@@ -3959,6 +4060,7 @@ def generated(
     rng_chains = random.Random(f"chains:{seed}")
     rng_forgets = random.Random(f"forgets:{seed}")
     rng_lots = random.Random(f"lots:{seed}")
+    rng_kin = random.Random(f"kin:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -4038,6 +4140,9 @@ def generated(
                     yield v, scene
             if "lots" in families:
                 for v in lots(part, entry, scene, rng_lots):
+                    yield v, scene
+            if "kin" in families:
+                for v in kin(part, entry, scene, rng_kin):
                     yield v, scene
 
 

@@ -62,7 +62,10 @@ correction after a first: the last of each; put back: the entry; a second object
 the two corrected: refused), the forgets family of session 49 (a choice closed by a remark that the
 speaker has forgotten which, without 'which': refused), the lots family of session 49 ('the whole
 lot' after a kind's plural: the kind; after two named things that are not everything: refused),
-and the wrappers and take-backs of a seed unchanged by them."""
+forgets widened in session 50 (a free choice with a remark that is no forgetting: the choice), the
+kin family of session 50 (a he / she who wants or a him / her who is given, said of a person named
+by a word of kin or a title of the other sex: refused; of their own sex: that person), and the
+wrappers and take-backs of a seed unchanged by them."""
 
 from __future__ import annotations
 
@@ -251,6 +254,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "chains",
         "forgets",
         "lots",
+        "kin",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -272,7 +276,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     )
     assert (
         "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents', "
-        "'thoughts', 'chains', 'forgets', 'lots')" in err
+        "'thoughts', 'chains', 'forgets', 'lots', 'kin')" in err
     )
 
 
@@ -701,12 +705,13 @@ def _lots(entry: Entry, seed: int) -> list[fuzz.Variant]:
     ("text", "want", "forms"),
     [
         ("Give Bob the apple.", "apple>B", ("objects", "people")),
-        ("Give Bob the apple or the cup.", "apple>B | cup>B", ("closed",)),
-        ("Alice wants the red mug or the blue one.", "mug_red>A | mug_blue>A", ("closed",)),
-        # a question, a choice said to be free, a kind the scene has two of, a pronoun, two
-        # handovers, a placing, a refused entry: none
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", ("closed", "free")),
+        ("Alice wants the red mug or the blue one.", "mug_red>A | mug_blue>A", ("closed", "free")),
+        # a choice said to be free: only `free`
+        ("Give Bob either mug, he's not fussy.", "mug_red>B | mug_blue>B", ("free",)),
+        # a question, a kind the scene has two of, a pronoun, two handovers, a placing, a refused
+        # entry: none
         ("Could you give Bob the apple or the cup?", "apple>B | cup>B", ()),
-        ("Give Bob either mug, he's not fussy.", "mug_red>B | mug_blue>B", ()),
         ("Give Bob the red mug.", "mug_red>B", ()),
         ("Bob wants the apple, give it to him.", "apple>B", ()),
         ("Give Bob the apple and Alice the cup.", "apple>B & cup>A", ()),
@@ -722,9 +727,14 @@ def test_forgets_are_made_for_a_choice_or_one_handover_of_a_one_of_a_kind_object
         made = _forgets(entry, seed)
         assert tuple(v.form for v in made) == forms
         for v in made:
-            assert v.family == "forgets" and v.want is None and v.must == "refuse"
-            assert v.text.endswith(fuzz.FORGET_CLOSERS), v.text
-            if v.form == "closed":
+            assert v.family == "forgets"
+            if v.form == "free":
+                assert v.want == entry.want and v.must == "same"
+                assert v.text.endswith(fuzz.FORGET_FREE), v.text
+            else:
+                assert v.want is None and v.must == "refuse"
+                assert v.text.endswith(fuzz.FORGET_CLOSERS), v.text
+            if v.form in ("closed", "free"):
                 assert v.text.startswith(text.rstrip("."))
 
 
@@ -732,7 +742,7 @@ def test_each_forgetting_names_the_two_it_could_be() -> None:
     entry = _entry("cell", "Give Bob the apple.", "apple>B")
     ids = {"cup": "cup", "water bottle": "bottle", "crisps": "chips"}
     said: set[str] = set()
-    for seed in range(60):
+    for seed in range(400):
         for v in _forgets(entry, seed):
             found = [
                 (f, c, x)
@@ -839,12 +849,106 @@ def test_forgets_and_lots_are_judged_by_what_the_grounder_reads(
     assert _judged(text, want, family, "") == verdict
 
 
-def test_over_the_corpus_each_forget_and_lot_form_is_made() -> None:
+def test_each_free_choice_reads_as_the_entry() -> None:
+    entry = _entry("cell", "Give Bob the apple or the cup.", "apple>B | cup>B")
+    said: set[str] = set()
+    for seed in range(60):
+        for v in _forgets(entry, seed):
+            if v.form == "free":
+                closer = v.text.removeprefix("Give Bob the apple or the cup")
+                assert closer in fuzz.FORGET_FREE and v.want == entry.want
+                said.add(closer)
+    assert said == set(fuzz.FORGET_FREE)
+
+
+# -- kin (session 50) -----------------------------------------------------------------------------
+
+
+def _kin(
+    scene_name: str, scene: Scene, text: str, want: str | None, seed: int
+) -> list[fuzz.Variant]:
+    entry = _entry(scene_name, text, want)
+    return list(fuzz.kin("t", entry, scene, random.Random(seed)))
+
+
+@pytest.mark.parametrize(
+    ("scene_name", "text", "want", "forms"),
+    [
+        # Grandad: no one else of the nursery is a man: `same` too
+        ("nursery", "Give Lily the teddy.", "teddy>A", fuzz.KIN_FORMS),
+        ("nursery", "Put the bib on the mat.", "bib@mat", fuzz.KIN_FORMS),
+        # Mr Novak: Marco is a man too: no `same`
+        ("kitchen", "Give Marco the lemon.", "lemon>A", ("wants", "given")),
+        # a kind the scene has two of, a question, a choice, a refused entry: none
+        ("nursery", "Give Lily the red block.", "block_red>A", ()),
+        ("nursery", "Could you give Lily the teddy?", "teddy>A", ()),
+        ("nursery", "Give Lily the teddy or the bib.", "teddy>A | bib>A", ()),
+        ("nursery", "Give her the teddy.", None, ()),
+    ],
+)
+def test_kin_is_made_for_one_task_of_a_one_of_a_kind_object(
+    scene_name: str, text: str, want: str | None, forms: tuple[str, ...]
+) -> None:
+    scene = {"nursery": NURSERY, "kitchen": KITCHEN}[scene_name]
+    for seed in range(20):
+        made = _kin(scene_name, scene, text, want, seed)
+        assert tuple(v.form for v in made) == forms
+        for v in made:
+            assert v.family == "kin" and (v.want is None) is (v.form != "same")
+
+
+def test_each_kin_names_the_person_and_a_pronoun_of_the_other_sex() -> None:
+    said: set[str] = set()
+    cases = (
+        (NURSERY, _entry("nursery", "Put the bib on the mat.", "bib@mat"), "bib", "bib"),
+        (WARD, _entry("ward", "Give Ruth the jug.", "jug>A"), "water jug", "jug"),
+    )
+    for scene, entry, o, oid in cases:
+        for seed in range(80):
+            for v in fuzz.kin("t", entry, scene, random.Random(seed)):
+                found = [
+                    (f, k, s)
+                    for f in (*fuzz.KIN_WANTS, *fuzz.KIN_GIVEN)
+                    for k in fuzz.KIN_NAMED
+                    for s, h in (("he", "him"), ("she", "her"))
+                    if v.text == f.format(K=k, o=o, s=s, h=h)
+                ]
+                assert len(found) == 1, v.text
+                form, k, s = found[0]
+                said.add(form)
+                (hid,) = fuzz._named(k, scene, "human")
+                assert ((s == "he") == (k in fuzz.NAMED_HE)) == (v.form == "same"), v.text
+                if v.form == "same":
+                    assert v.want == Task("deliver", oid, hid)
+    assert said == {*fuzz.KIN_WANTS, *fuzz.KIN_GIVEN}
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "verdict"),
+    [
+        ("Grandad said she wants the teddy.", None, "refused"),
+        ("Grandad said he wants the teddy.", "teddy>B", "exact"),
+        # a variant that must be refused, read as a handover to Grandad, is wrong
+        ("Give Grandad the teddy.", None, "wrong"),
+    ],
+)
+def test_kin_is_judged_by_what_the_grounder_reads(
+    text: str, want: str | None, verdict: str
+) -> None:
+    to = parse_expectation(want) if want is not None else None
+    must: fuzz.Must = "same" if to is not None else "refuse"
+    v = fuzz.Variant("t", "nursery", text, to, must, "kin")
+    assert fuzz.verdict(v, NURSERY) == verdict
+
+
+def test_over_the_corpus_each_forget_lot_and_kin_form_is_made() -> None:
     """Every second entry of three parts: each variant names what it reads as."""
-    kinds = {f"forgets {f}": 0 for f in fuzz.FORGET_FORMS} | {
-        f"lots {f}": 0 for f in fuzz.LOT_FORMS
-    }
-    for v, scene in fuzz.generated(PARTS, seed=49, every=2, families=("forgets", "lots")):
+    kinds = (
+        {f"forgets {f}": 0 for f in fuzz.FORGET_FORMS}
+        | {f"lots {f}": 0 for f in fuzz.LOT_FORMS}
+        | {f"kin {f}": 0 for f in fuzz.KIN_FORMS}
+    )
+    for v, scene in fuzz.generated(PARTS, seed=49, every=2, families=("forgets", "lots", "kin")):
         kinds[f"{v.family} {v.form}"] += 1
         assert (v.want is None) is (v.must == "refuse")
         for t in tasks(v.want) if v.want is not None else ():

@@ -376,7 +376,7 @@ def test_the_index_leaves_out_only_steps_whose_words_are_absent() -> None:
         low = " ".join(text.split()).lower()
         if not low.isascii():
             continue
-        picked = set(_normalise1._may_act(index, low, 0))
+        picked = set(_normalise1._may_act(index, " ".join(text.split()), low, 0))
         for k, rule in enumerate(rules):
             if k not in picked:
                 assert rule is not None

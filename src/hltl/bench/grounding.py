@@ -150,7 +150,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by another engineer and committed alone, never opened by the engineers who change the grounder
 # before its one measurement at the end of session 48; tuned on in session 49), blind48 (written in
 # session 49 by another engineer and committed alone, never opened by the engineers who change the
-# grounder before its one measurement at the end of session 49; tuned on in session 50).
+# grounder before its one measurement at the end of session 49; tuned on in session 50), blind49
+# (written in session 50 by another engineer and committed alone, never opened by the engineers who
+# change the grounder before its one measurement at the end of session 50; tests do not assert it).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -216,6 +218,7 @@ PARTS = (
     "blind46",
     "blind47",
     "blind48",
+    "blind49",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

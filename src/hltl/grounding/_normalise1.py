@@ -101,54 +101,65 @@ def _run(
 # Session 49 (12p): the guards indexed by their words' first three letters (lower-cased; a
 # shorter word whole). A guarded step can act on an ASCII text only where one of its words is
 # in it, so only where that word's first letters are among the text's (lower-cased) pieces of
-# one to three letters; the text's pieces pick out the steps that may act, and each of those is
-# asked its guard as before (the others are not asked at all). Only for a long tuple of steps
-# (_STEPS19's ~1,240: the loop over every guard was most of a pass's own time) and an ASCII
-# text (lower() of other letters may depend on the letters beside them).
+# one to three letters; the text's pieces pick out the steps that may act. Only for a long tuple
+# of steps (_STEPS19's ~1,300: the loop over every guard was most of a pass's own time) and an
+# ASCII text (lower() of other letters may depend on the letters beside them).
+# Session 50 (12p): the index holds the words, each once with every step it guards: a piece of
+# the text asks each of its words once (a word shared by many steps, 'the ', ' for ', 'needs',
+# was asked once for each), and the steps picked are exactly those whose guard holds (a word of
+# theirs in the text: the folded ones in its lower case, the others in it as it is), so the
+# pass asks no guard again.
 _INDEXED_FROM = 300
-# the steps that may act, by piece, and those without a guard (always asked)
-_Index = tuple[dict[str, tuple[int, ...]], tuple[int, ...]]
-_INDEXES: dict[
-    int, tuple[tuple[Guard | None, ...], dict[str, tuple[int, ...]], tuple[int, ...]]
-] = {}
+# by piece: each word beginning with it, whether it is asked of the lower-cased text, and the
+# steps it guards; and the steps without a guard (always picked)
+_Index = tuple[dict[str, tuple[tuple[str, bool, tuple[int, ...]], ...]], tuple[int, ...]]
+_INDEXES: dict[int, tuple[tuple[Guard | None, ...], _Index]] = {}
 
 
 def _index_of(rules: tuple[Guard | None, ...]) -> _Index | None:
-    """The steps' guards by their words' first letters, and the steps without a guard (None for
-    a short tuple)."""
+    """The steps' guard words by their first letters, with the steps each guards, and the steps
+    without a guard (None for a short tuple)."""
     if len(rules) < _INDEXED_FROM:
         return None
     kept = _INDEXES.get(id(rules))
     if kept is None or kept[0] is not rules:
-        index: dict[str, set[int]] = {}
+        words: dict[tuple[str, bool], set[int]] = {}
         always: list[int] = []
         for k, rule in enumerate(rules):
-            if rule is None:
-                always.append(k)
+            if rule is None or "" in rule[0] or "" in rule[1]:
+                always.append(k)  # ('' is in every text: stepguard never writes one)
                 continue
-            for word in (*rule[0], *rule[1]):
-                index.setdefault(word.lower()[:3], set()).add(k)
+            for word in rule[0]:
+                words.setdefault((word, False), set()).add(k)
+            for word in rule[1]:
+                words.setdefault((word, True), set()).add(k)
+        by_piece: dict[str, list[tuple[str, bool, tuple[int, ...]]]] = {}
+        for (word, folded), ks in sorted(words.items()):
+            by_piece.setdefault(word.lower()[:3], []).append((word, folded, tuple(sorted(ks))))
         if len(_INDEXES) > 64:
             _INDEXES.clear()
         kept = _INDEXES[id(rules)] = (
             rules,
-            {piece: tuple(sorted(ks)) for piece, ks in index.items()},
-            tuple(always),
+            ({piece: tuple(ws) for piece, ws in by_piece.items()}, tuple(always)),
         )
-    return kept[1], kept[2]
+    return kept[1]
 
 
-def _may_act(index: _Index, low: str, start: int) -> list[int]:
-    """The steps from ``start`` on that may act on a text whose lower case is ``low``: those
-    without a guard, and those with a word whose first letters are a piece of ``low``, in order."""
+def _may_act(index: _Index, out: str, low: str, start: int) -> list[int]:
+    """The steps from ``start`` on that may act on the ASCII text ``out`` (``low``: its lower
+    case), in order: those without a guard, and those whose guard holds (a word of theirs in
+    it). A word in the text begins with one of its pieces of one to three letters (lower-cased:
+    ``out`` is ASCII), so each word that may be in it is asked once."""
     by_piece, always = index
     found = set(always)
     n = len(low)
     for size in (1, 2, 3):
         for piece in {low[i : i + size] for i in range(n - size + 1)}:
-            ks = by_piece.get(piece)
-            if ks is not None:
-                found.update(ks)
+            said = by_piece.get(piece)
+            if said is not None:
+                for word, folded, ks in said:
+                    if word in (low if folded else out):
+                        found.update(ks)
     return sorted(k for k in found if k >= start)
 
 
@@ -159,25 +170,13 @@ def _run_indexed(
     out: str,
     lexicon: Lexicon,
 ) -> str:
-    """``out`` (ASCII) through the steps that may act on it (_may_act), each step's guard asked
-    before it is called; the steps after one that changes the text picked again."""
-    low = out.lower()
-    todo = _may_act(index, low, 0)
+    """``out`` (ASCII) through the steps that may act on it (_may_act: each one picked is
+    called); the steps after one that changes the text picked again."""
+    todo = _may_act(index, out, out.lower(), 0)
     n = 0
     while n < len(todo):
         k = todo[n]
         n += 1
-        rule = rules[k]
-        if rule is not None:
-            for word in rule[1]:
-                if word in low:
-                    break
-            else:
-                for word in rule[0]:
-                    if word in out:
-                        break
-                else:
-                    continue
         new = steps[k](out, lexicon)
         if new is not out:
             changed = new != out  # (a new string equal to it picks the same steps)
@@ -185,8 +184,7 @@ def _run_indexed(
             if changed:
                 if not out.isascii():
                     return _run(steps, rules, out, lexicon, k + 1)
-                low = out.lower()
-                todo, n = _may_act(index, low, k + 1), 0
+                todo, n = _may_act(index, out, out.lower(), k + 1), 0
     return out
 
 

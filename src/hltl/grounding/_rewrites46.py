@@ -297,10 +297,13 @@ _NOT_REQUEST46 = re.compile(r"\b(?:hang on|hold on|wait|actually|got one|has one
 
 def _remark_it46(text: str, lexicon: Lexicon) -> str:
     """Session 46: the request after the remark above, its pronouns said."""
-    if _older_reads46(text, lexicon, _owner_then37s, _pronouns38, _lone_going44r):
-        return text
+    # session 50 (12p): the text's own tests first (each returns the text, as the older
+    # rules' reading does, so the order changes nothing): the older rules are run only for a
+    # text this rule could read
     m = _REMARK_IT46.match(text)
     if m is None or _NOT_REMARK46.search(m["r"]) or _NOT_REQUEST46.search(m["q"]):
+        return text
+    if _older_reads46(text, lexicon, _owner_then37s, _pronouns38, _lone_going44r):
         return text
     named = _names(m["r"], lexicon)
     things = [it for it in named if all(r.kind == "object" for r in it.refs)]
@@ -520,9 +523,9 @@ _NOT_FOR_CLEFT46 = re.compile(
 
 def _not_for_cleft46(text: str, lexicon: Lexicon) -> str:
     """Session 46: the correction above said as the want of the one named last."""
-    if _older_reads46(text, lexicon, _who_asked38r):
-        return text
     if "not for" not in text.lower() and "n't for" not in text.lower():
+        return text  # (session 50, 12p: before the older rule's reading, as in _remark_it46)
+    if _older_reads46(text, lexicon, _who_asked38r):
         return text
     m = _NOT_FOR_CLEFT46.match(text)
     if m is None or not _objects_only(m["x"], lexicon):
@@ -586,9 +589,9 @@ _SO_REASON46 = re.compile(r"^(?P<r>[A-Z][^,;.!?]*?),? so (?P<q>\S.*)$")
 
 def _so_reason46(text: str, lexicon: Lexicon) -> str:
     """Session 46: the reason above taken off."""
-    if _older_reads46(text, lexicon, _remark_first39s):
-        return text
     if " so " not in text:
+        return text  # (session 50, 12p: before the older rule's reading, as in _remark_it46)
+    if _older_reads46(text, lexicon, _remark_first39s):
         return text
     m = _SO_REASON46.match(text)
     if m is None or _names(m["r"], lexicon) or _NOT_REMARK46.search(m["r"]):
@@ -614,10 +617,10 @@ _PLACED_SO46 = re.compile(
 
 def _placed_so46(text: str, lexicon: Lexicon) -> str:
     """Session 46: the closer above taken off a placement."""
-    if _older_reads46(text, lexicon, _questions38):
-        return text
     m = _PLACED_SO46.search(text)
     if m is None or m.start() == 0:
+        return text  # (session 50, 12p: before the older rule's reading, as in _remark_it46)
+    if _older_reads46(text, lexicon, _questions38):
         return text
     tail = text[m.start() : m.start("end")]
     if _ids(tail, lexicon, "object") or _ids(tail, lexicon, "surface"):
@@ -648,9 +651,9 @@ _BARE_DOING46 = re.compile(
 
 def _bare_doing46(text: str, lexicon: Lexicon) -> str:
     """Session 46: the pick and the doing above."""
-    if _older_reads46(text, lexicon, _occasion41s, _the_one45r):
-        return text
     if "'d " not in text and " after " not in text.lower() and " since " not in text.lower():
+        return text  # (session 50, 12p: before the older rules' reading, as in _remark_it46)
+    if _older_reads46(text, lexicon, _occasion41s, _the_one45r):
         return text
     out = _ID_SAY46.sub(" I reckon", text)
     m = _BARE_DOING46.search(out)

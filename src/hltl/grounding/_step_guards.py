@@ -11367,6 +11367,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites46:_bare_doing46": (
+        "c772da29d0ea234e",
+        (("'d ",), (" after ", " since "), False),
+        (),
+    ),
     "hltl.grounding._rewrites46:_craft46": (
         "50bd3b9abcbdfaa0",
         (
@@ -11445,6 +11450,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites46:_not_for_cleft46": (
+        "ff31413e250e7380",
+        ((), ("n't for", "not for"), False),
+        (),
+    ),
     "hltl.grounding._rewrites46:_other_too46": (
         "841bfd09a7ec2fbc",
         ((), ("a bit ", "a touch ", "rather ", "too "), False),
@@ -11480,6 +11490,21 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites46:_placed_so46": (
+        "6de9d9956c934b10",
+        ((), (" where ", "can't", "doesn't", "knows", "ready for ", "stops", "won't"), True),
+        (
+            (
+                "_PLACED_SO46",
+                (
+                    "pattern",
+                    "(?P<sep>,?\\s+)(?:so (?:that )?(?P<so>(?-i:[A-Z])[\\w]*(?: (?-i:[A-Z])[\\w]*)?|he|she|they) (?:stops|doesn't|won't|can't|knows)\\b|ready for (?P<owner>(?-i:[A-Z])[\\w]*(?: (?-i:[A-Z])[\\w]*)?)'s [a-z]|(?:next to|near|by|beside) where (?P<near>(?-i:[A-Z])[\\w]*(?: (?-i:[A-Z])[\\w]*)?) )(?P<words>[^,;.!?]*)(?P<end>\\s*[.?!]*)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites46:_so_reason46": ("480ef931c055edaf", ((" so ",), (), False), ()),
     "hltl.grounding._rewrites46:_thanks_ahead46": (
         "d5bcbd5664bc252d",
         ((), ("a lot", "a million", "again", "in advance", "muchly", "so much", "very much"), True),

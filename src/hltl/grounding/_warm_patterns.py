@@ -1281,6 +1281,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("[.!?;]\\s+\\S", 0, True),
     ("[.!?]", 0, True),
     ("[.!?]\\s", 0, True),
+    ("[.;!?](?:\\s|$)", 0, True),
     ("[.;!?]\\s+", 0, True),
     ("[.;!?]\\s+\\S", 0, True),
     ("[.;:!?,]\\s|\\s(?:and|so|then|but)\\s", 0, True),
@@ -1696,12 +1697,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b(?P<p>Person\\ A|Person\\ B) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ B|Person\\ A) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
     (
-        "\\b(?P<p>Person\\ A|Person\\ B|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ B|Person\\ A|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),

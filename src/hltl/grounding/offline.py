@@ -912,7 +912,45 @@ def _said_wrong31s(text: str) -> None:
 
 # the words saying a step is complete after its subject ('done', 'over'; 'finished' and the like
 # are unknown words, refused by the grammar already)
+# Session 50 (12b): what a text's items say, once a lexed text: the lower-cased text and the lemma
+# of each item (`_said50b`). A refusal below that can refuse only at an item of some word asks
+# this set first and returns when the word is not there (each gate exact: the words are those
+# its own loop compares an item's text or lemma with; docs/grounding.md, "Session 50 (engineer
+# 12b)"); the items are lexed once a text as before (`lex` keeps them), the set with them.
+_SAID50B: dict[str, tuple[tuple[Item, ...], frozenset[str]]] = {}
+_SAID50B_KEPT = 4096
+
+
+def _said50b(text: str, lexicon: Lexicon) -> frozenset[str]:
+    """The lower-cased texts and the lemmas of ``text``'s items (raises where `lex` does)."""
+    known = lexicon.lexed(text)
+    if known is None:
+        lex(text, lexicon)
+        known = lexicon.lexed(text)
+    kept = _SAID50B.get(text)
+    if kept is not None and kept[0] is known:
+        return kept[1]
+    items = known if known is not None else tuple(lex(text, lexicon))
+    said = frozenset({it.text.lower() for it in items} | {it.lemma for it in items})
+    if len(_SAID50B) > _SAID50B_KEPT:
+        _SAID50B.clear()
+    if known is not None:
+        _SAID50B[text] = (known, said)
+    return said
+
+
+def _lacks50b(text: str, lexicon: Lexicon, *needed: frozenset[str]) -> bool:
+    """Whether ``text``'s items lack every word of some set in ``needed``, or it cannot be
+    lexed (each refusal gated by it returns then, as its own `lex` would make it)."""
+    try:
+        said = _said50b(text, lexicon)
+    except GroundingError:
+        return True
+    return any(said.isdisjoint(words) for words in needed)
+
+
 _DONE31S = frozenset({"done", "over", "finished", "complete", "completed"})
+_AFTER31S = frozenset({"after", "once"})
 
 
 def _unasked_done31s(text: str, lexicon: Lexicon) -> None:
@@ -921,6 +959,8 @@ def _unasked_done31s(text: str, lexicon: Lexicon) -> None:
     (the complement words taken as fillers) had made one up ("Bob gets the chips, then Alice gets
     the apple after the cup is done" read cup>A first): refused. ("Give Bob the cup, and once the
     cup is done, give Alice the apple" names the step it waits for: read as before.)"""
+    if _lacks50b(text, lexicon, _AFTER31S, _DONE31S):
+        return  # session 50 (12b): no 'after' / 'once' item, or no done word: nothing to refuse
     try:
         items = lex(text, lexicon)
     except GroundingError:
@@ -1018,6 +1058,8 @@ def _has_beside_want31s(text: str, lexicon: Lexicon) -> None:
 # holds now ('has', 'has got', "'s got")
 _PAST32S = frozenset({"had", "got"})
 _NOW32S = frozenset({"has", "has got", "'s got"})
+# every verb `_held32s` takes (its "has had" starts with 'has'): session 50's gate (12b)
+_HELD50B = _PAST32S | _NOW32S
 
 
 def _state_only32s(text: str, lexicon: Lexicon) -> None:
@@ -1030,6 +1072,8 @@ def _state_only32s(text: str, lexicon: Lexicon) -> None:
     in a part of a longer instruction a rewrite reads again, the present allots and is read as
     before; a 'had' after 'if' wishes, and one with more after it ('had the chips earlier and
     wants them again') is not this sentence."""
+    if _lacks50b(text, lexicon, _HELD50B):
+        return  # session 50 (12b): no item 'has' / 'had' / 'got' …: no sentence of holding
     try:
         items = [it for it in lex(text, lexicon) if not _is(it, "filler")]
     except GroundingError:
@@ -1329,6 +1373,9 @@ def _who33s(items: list[Item], k: int, lexicon: Lexicon) -> set[str]:
     }
 
 
+_OWNED50B = frozenset({"'s"})
+
+
 def _owner_only33s(text: str, lexicon: Lexicon) -> None:
     """Session 33 (12s): 'The drill is Jess's.' as the whole instruction says whose the drill
     is (nothing to do) or, as "The drill is Jess's, the torch goes in the locker" does, allots
@@ -1338,6 +1385,8 @@ def _owner_only33s(text: str, lexicon: Lexicon) -> None:
     person's is a handover to the owner (three blind writers read it so): "The drill is Jess's."
     reads drill>B. Only several things ("The spanners are Jess's!": both, or the one Jess owns?)
     or several owners stay refused here."""
+    if _lacks50b(text, lexicon, _OWNED50B):
+        return  # session 50 (12b): no item "'s": no owner said
     if _ASKED32S.search(text):
         return
     try:
@@ -1366,12 +1415,18 @@ def _owner_only33s(text: str, lexicon: Lexicon) -> None:
         )
 
 
+_REPAIR50B = frozenset({"correct", "no"})
+_OTHER50B = frozenset({"other"})
+
+
 def _other_after_repair33s(text: str, lexicon: Lexicon) -> None:
     """Session 33 (12s): 'Give Alice a mug, no, give Bob the other one': 'the other' after a
     correction that takes back 'a mug' (any one of two) points at no mug, since none was picked
     (the grammar had read either mug to Bob): refused naming the mugs. After 'the red mug'
     ('…, no, give Bob the other one': the blue mug) and without a correction ('Give Alice a mug
     and Bob the other one': one each) it is read as before."""
+    if _lacks50b(text, lexicon, _REPAIR50B, _OTHER50B):
+        return  # session 50 (12b): no correction ('correct' / 'no') or no 'other'
     try:
         items = lex(text, lexicon)
     except GroundingError:
@@ -1402,6 +1457,7 @@ def _other_after_repair33s(text: str, lexicon: Lexicon) -> None:
 # the words before a task said with '-ing' (or 'having' and its participle) that make it a time
 # or a reason of the sentence's own clause ('for loading' is a purpose: not here)
 _DOER_WORDS34S = ("after", "before", "since", "once", "upon", "having")
+_DOER50B = frozenset(_DOER_WORDS34S)
 
 
 def _doer_said34s(text: str, lexicon: Lexicon) -> None:
@@ -1411,6 +1467,8 @@ def _doer_said34s(text: str, lexicon: Lexicon) -> None:
     chips>B): refused. Said to the robots ('Give Bob the crisps after giving Carol the apple'),
     with 'getting' (what the person receives) or with a purpose ('for loading the van') it is
     read as before."""
+    if _lacks50b(text, lexicon, _DOER50B):
+        return  # session 50 (12b): no 'after' / 'before' / … item: no '-ing' of the doer
     try:
         items = [it for it in lex(text, lexicon) if not _is(it, "filler")]
     except GroundingError:
