@@ -355,27 +355,6 @@ KNOWN_MISSES = frozenset(
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
         # blind48 (tuned on in session 50): refusals left at its one measurement (docs/grounding.md)
-        "Sorry to trouble you, only Bob's parched after the gorge walking, so the bottle to him, "
-        "if you please.",
-        "Daalu, as my mum says back in Lagos, and the apple's for Person B, if you'd be so good.",
-        "Kinanaskomitin, as folk say out in Saskatchewan; the chips to Person B would be "
-        "wonderful.",
-        "Whenever you're free, and no rush at all, Person A would like the chips, ever so kindly.",
-        "Gràtzias, as they'd put it in Cagliari: chips to Person B, ta.",
-        "If it pleases you, the spoon can go in the sink, the embryologist is done with it.",
-        "With respect, the boss says the torch goes to Jess, who's off spelunking at the "
-        "weekend, thank you kindly.",
-        "Bob fancies the red mug, his old one cracked at the pinhole camera club.",
-        "Bob is famished, nothing since breakfast, he could murder the crisps.",
-        "Person A needs the cup to take her cough syrup.",
-        "Person B is craving the apple after two hours of belly dancing.",
-        "Person A wants the bottle, and the chips are what Person B's hankering for.",
-        "After a long day as a bookie, Person A could do with the chips.",
-        "Person A would be glad of the bottle, it's her first week as a vet nurse.",
-        "Between you and me, the thing Person A's most in need of after the rag rugging is the "
-        "bottle.",
-        "Person B would appreciate the bottle, being the only one without a drink.",
-        "Lily's thirsty and reaching for her sippy cup.",
         "The bottle? Oh, that's Person B's to have, he put his hand up for it first.",
         "Cup to Person A first, she's the palm reader at the fete. Then the apple. That one's "
         "Person B's.",
@@ -389,68 +368,15 @@ KNOWN_MISSES = frozenset(
         "Sponge in the sink to soak. The bowl goes on the tray after that. The embryologist "
         "likes things neat.",
         "The water jug for Mrs Khan. And put the thermometer on the locker. Both now.",
-        "Carol's off to the twitching hide with a flask, so either mug will do for her, red or "
-        "blue, she won't be fussy.",
-        "Person B says both the apple and the cup, he's off to the gem cutting.",
-        "For the make-up artist, that's Person A, one of the cup or the apple, she can pick.",
-        "Any of the four will do for Person A, whatever's handiest.",
-        "Person B's not bothered which, bottle or chips, just one of them.",
-        "There's only the one bottle at the twitching hide, and Person A's to have it.",
-        "Whichever bottle you can lay a hand on, Person A's to get it, she's the perfusionist on "
-        "call.",
-        "Any pen at all for Sam, the intern isn't choosy.",
-        "Tom's loading the van for the coffin maker, so both the small and the medium box go to "
-        "Tom.",
-        "Lily'll play with whichever block, red or green.",
-        "Kofi isn't fussed which spanner, the big or the small.",
-        "There's just the one packet of crisps, and Alice has called dibs on it.",
-        "The lone bottle in the room goes to Person A, she's the cardiographer on shift.",
-        "Both cups go to Emma, the visitor's brought a friend along.",
-        "The three boxes, onto the belt with the lot of them, the magistrate's order goes out "
-        "today.",
-        "The pair of spanners wants locking away in the locker before the speleologist's visit.",
-        "Give Carol the blue mug, not the red, she says the red one's got a funny taste.",
         "Bob says not the crisps, he's stuffed after the rag rugging social, the bottle's what "
         "he wants.",
-        "It isn't the bottle Alice has her heart set on after the hooky mat session, it's the "
-        "crisps.",
-        "Person A wants no chips, no bottle, just the apple.",
         "Person A's already got a drink of her own, so it's Person B, not her, the bottle goes to.",
         "Don't you be hanging onto the bottle all afternoon, Person A's the one it goes to.",
         "No point the bottle sitting there gathering dust when Person A needs it for the willow "
         "weaving.",
-        "Marco didn't ask for the tongs, it's the knife he's after, for the make-up artist's "
-        "birthday cake.",
-        "It's not the ruler Noah's after for the straw plaiting, it's the scissors.",
-        "Lily's thrown the red block on the floor twice, so not that one, the green block for her.",
         "The drill's no use to Jess now the holes are done, but the hammer is, so the hammer to "
         "Jess.",
-        "The bottle to Alice, no, hold on, she said crisps at the bill sticker's meeting, so the "
-        "crisps.",
-        "Bottle to Person A, no, hang on, it's Person B who's back from the gorge walking "
-        "thirsty, so to him.",
-        "Chips to Person A, no, my mistake, she asked for the bottle on her way to the fife band.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
-        "Gloves to Mia, no, the packing tape instead, the billposter already lent Mia a pair.",
-        "The lemon to Lena, sorry, I mean Mr Novak, the guest wants it squeezed over his fish.",
-        "Bib to Ava, no, silly me, Ava's a big girl now, so to Lily, she's having her mash.",
-        "Torch on the bench, no, in the locker, where it lives between spelunking trips.",
-        "can person a have the bottle now her make-up artist shift is done",
-        "power drill for jess, cheers, the apprentice is hanging the vexillologist's flag pole",
-        "Could the fchips head over to Person A, she's the bill sticker on our street.",
-        "Pferson A wants the bottle for the highlining trip tomorrow.",
-        "Hand the bottle to perszon A on her way to the straw plaiting, would you.",
-        "Work glives for Tom, it's cold on the belt.",
-        "Hamker for Kofi, the foreman's putting up the billposter's board.",
-        "Would you be able to pop the red mug down on the counter so it's out of the way of the "
-        "sand sculpting photos?",
-        "Is there any chance of the apple finding its way to Person A, she's off on a "
-        "lichenologist's field trip?",
-        "Might Person B get his hands on the bottle, he's on stage with the conjuror in a bit?",
-        "Could the chips go to Person A, as a thank you for the belly dancing display?",
-        "Is it okay with you to give Person A the bottle now her snowshoeing's over?",
-        "How about the chips for Person B, as the tipster reckons he's earned them?",
-        "Would you stand the sippy cup on the high chair, Grandad's making Lily's tea?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -482,15 +408,12 @@ KNOWN_UNCLEAR = frozenset(
         "bodger's.",
         # blind47 (tuned on in session 49)
         "noah wanted a book earlier the red or the green one dunno which",
-        "Which patient was it that wanted the blue blanket, do you remember? Take it to them.",
         # blind48 (tuned on in session 50)
         "Priya asked ever so nicely for a pen, the black or the red, and I've gone and forgotten "
         "which, sorry.",
         "Person B was after something when he came by, the chips maybe, or the cup, it's gone "
         "from me now.",
-        "Person B asked for one of the bottle and the chips, and I've lost track of which.",
         "tom wanted a box, small or medium, can't remember which",
-        "Was it Mr Lee or Mrs Khan who asked for the magazine? I've forgotten.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -158,6 +158,8 @@ def test_choice_without_forgetting_still_reads(text: str, scene: Scene, spec: st
         "it'll come back to me.",
         "it didn't stick.",
         "I never asked.",
+        "it's all a blur.",
+        "I'm not fussed about remembering which.",
     ],
 )
 def test_choice_beside_a_doubt_refused(remark: str) -> None:
@@ -189,6 +191,11 @@ def test_choice_beside_a_doubt_refused_ward(text: str) -> None:
         "Give Kofi the small spanner or the large one, either will do.",
         "Kofi can have the small spanner or the large one, he's not fussy.",
         "Give Kofi the small spanner or the large one, I'm in a hurry.",
+        # no doubt about the want: the choice is free, or the remark forgets something else
+        "Give Kofi the small spanner or the large one, I don't think he minds.",
+        "Give Kofi the small spanner or the large one, I don't think it matters.",
+        "I forgot to mention, give Kofi the small spanner or the large one.",
+        "Give Kofi the small spanner or the large one, I've forgotten my glasses.",
     ],
 )
 def test_free_choice_beside_a_remark_still_reads(text: str) -> None:
@@ -210,6 +217,8 @@ def test_free_choice_beside_a_remark_still_reads(text: str) -> None:
         "Grandad says she's got her eye on the teddy.",
         "Grandad says she's desperate for the teddy.",
         "Grandad wants the bib, she's going to have it.",
+        # a state said of her by Grandad, who is not named to get it
+        "Grandad says she's thirsty, the beaker please.",
     ],
 )
 def test_pronoun_of_the_other_sex_than_kin_refused(text: str) -> None:
@@ -225,6 +234,9 @@ def test_pronoun_of_the_other_sex_than_kin_refused(text: str) -> None:
         # the pronoun neither wants nor is given: not the person named
         ("Could Grandad have the wipes? She's made a mess again.", NURSERY, "wipes>B"),
         ("Give Grandad the bib, he needs it.", NURSERY, "bib>B"),
+        # Grandad named to get it; her state is why
+        ("Could Grandad have the beaker? She's thirsty.", NURSERY, "beaker>B"),
+        ("Give Grandad the bib, she's hungry.", NURSERY, "bib>B"),
         ("Give Mr Lee the magazine, he's bored.", WARD, "magazine>B"),
     ],
 )

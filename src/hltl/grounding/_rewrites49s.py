@@ -258,7 +258,7 @@ _FRONTED_NOT49S = re.compile(
     r"\s*,\s*(?P<said>(?:and |but |as )?(?P<pro>she|he|they|[A-Z][a-z]+)(?:'s| is| has| was|'re| "
     r"are)? ?(?P<neg>won't|wont|isn't|hasn't|can't|cannot|doesn't|didn't|mustn't|shouldn't|not|"
     r"never|is not|are not|aren't|does not|will not|must not)\b(?P<rest>[^,.;:!?]*?))"
-    r"(?P<end>\s*(?:[.!?;]|$))",
+    r"(?P<end>\s*(?:[.!?;,]|$))",
     _F,
 )
 _GAP49S = frozenset(

@@ -148,25 +148,28 @@ _SPEAKER50L = re.compiled(
     r"^(?:(?:oh|ah|um|er|erm|hmm|sorry|honestly|to be honest|mind you|well|and|but|so|though|"
     r"if i'm honest|truth be told)\s+)*"
     r"(?:i\b|i'm|i've|i'd|i'll|me\b|my\b|mine\b|it's on|it'll|it didn't|it hasn't|it won't|"
+    r"it's all|it was all|it's a|it's just a|"
     r"it's gone|it slipped|it escapes|it's slipped|who knows|your guess|which one|which it was|"
     r"can't|couldn't|cannot|don't|didn't|dunno|not\b|no idea|no clue|brain|memory|mind's|head's|"
     r"haven't|never)",
     _F,
 )
 _KNOWING50L = re.compiled(
-    r"\b(?:forg[eo]t\w*|remember\w*|recall\w*|recollect\w*|know|knew|knows|known|sure|certain|"
+    # (forgetting to do something, or one's own things, is no doubt about which)
+    r"\b(?:forg[eo]t\w*(?!\s+(?:to|my|his|her|our|their|your)\b)|remember\w*|recall\w*|recollect\w*|know|knew|knows|known|sure|certain|"
     r"idea|clue|blank\w*|memory|mind|head|brain|tongue|hazy|foggy|fuzzy|vague|muddled|confused|"
     r"mixed|listening|listen|attention|heard|hear|misheard|caught|catch|note|notes|noted|wrote|"
     r"written|write|check|guess|stick|stuck|escapes?|slipped|come back|ago|hundred|percent|"
-    r"per cent|lost|went in|go in|asleep|half|think|tell|ask|asked)\b",
+    r"per cent|lost|went in|go in|asleep|half|think|tell|ask|asked|blur|blurry)\b",
     _F,
 )
 _FREE50L = re.compiled(
     r"\b(?:(?:don't|do not|wouldn't|won't|doesn't|does not|never) (?:mind|care)|"
-    r"not (?:fussy|fussed|bothered)|either|whichever|any (?:one|of them|will)|"
+    r"not (?:fussy|fussed|bothered)(?! about remember)|either|whichever|any (?:one|of them|will)|"
     r"you (?:choose|pick|decide)|your (?:choice|call|pick)|up to you|"
     r"(?:doesn't|does not|won't|wouldn't) matter|no matter|i'm easy|"
-    r"(?:both|either) (?:are|is|will be) fine)\b",
+    r"(?:both|either) (?:are|is|will be) fine|"
+    r"(?:he|she|they|it|anyone|anybody) (?:minds?|cares?|matters?))\b",
     _F,
 )
 
@@ -244,8 +247,12 @@ _WANTING50L = re.compiled(
     r"fancied|fancying|could use|could do with|craving|craves|desperate for|dying for|crying for|"
     r"gagging for|begging for|pining for|longing for|hankering for|on about|going on about|eyeing|"
     r"eyed|got (?:her|his) eye on|has (?:her|his) eye on|(?:her|his) eye on|have it|have them|"
-    r"get it|get them|take it|take them|thirsty|hungry|peckish|starving|starved|parched|"
-    r"famished|cold|freezing|chilly)\b"
+    r"get it|get them|take it|take them)\b"
+    # a state said of her / him by the person named ("Grandad says she's thirsty"): not "Could
+    # Grandad have the beaker? She's thirsty.", where Grandad is named to get it
+    r"|\b(?:says|said|reckons|tells me|told me|mentioned)\s+(?:that\s+)?(?P<s>she|he)"
+    r"(?:'s| is| was|'s been| has been)\s+(?:(?:so|really|very|ever so|dead|proper|a bit)\s+)?"
+    r"(?:thirsty|hungry|peckish|starving|starved|parched|famished|cold|freezing|chilly)\b"
     # given: "give it to her", "for him"
     r"|\b(?:give|hand|pass|bring|take|send)\s+(?:(?:it|them|this|that|these|those|the [a-z]+|"
     r"both)\s+)?(?:(?:over|across|back|along)\s+)?(?:to\s+)?(?P<o>her|him)\b"
@@ -260,7 +267,7 @@ def wanting50l(text: str) -> list[str]:
     low = text.lower()
     if "he" not in low and "him" not in low:
         return []
-    return [m["w"] or m["o"] or m["f"] for m in _WANTING50L.finditer(text)]
+    return [m["w"] or m["o"] or m["f"] or m["s"] for m in _WANTING50L.finditer(text)]
 
 
 # refusals asked of the text before it is read (offline._parse, after the session-49 ones)
