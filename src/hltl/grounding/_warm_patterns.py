@@ -1650,6 +1650,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("\\b(?P<a>any (?:old )?[a-z]+) at all\\b", 2, True),
     (
         "\\b(?P<all>(?:both|all(?: (?:two|three|four))?) of the (?:things|items|bits))(?: (?:that )?(?:we've got|we have|you've got|you have|there are)(?: here| there)?| here| on offer| about)(?=\\s*[,:])",
         2,
@@ -1697,12 +1698,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "\\b(?P<p>Person\\ B|Person\\ A) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ A|Person\\ B) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
     (
-        "\\b(?P<p>Person\\ B|Person\\ A|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
+        "\\b(?P<p>Person\\ A|Person\\ B|Alice|Bob) (?:can|may|gets to) keep (?P<x>the [a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.!;]|$))",
         2,
         True,
     ),
@@ -3123,6 +3124,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:has|'s got|has got|is owed|'s owed|is after|'s after|wants|is waiting on|'s waiting on|put in) (?P<n>(?:one|two|three|four|five|six|both|a pair of|a couple of|the pair of)) (?:requests|wishes|things|items|bits)(?: (?:on (?:her|his) list|to collect|outstanding|owing|to come))?\\s*[,:;-]\\s*(?:namely |that is |which are |i\\.e\\. |meaning )?(?P<list>[a-z ,']+?)(?:\\s*[;,.]\\s*(?:so )?(?:see|make sure|check)(?: that)? (?P<w>he|she|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) gets (?:both|them|them both|all of them|the lot|all (?:two|three|four) of them|both of them))?(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:isn't|is not|'s not) (?:allowed|permitted|meant to have|supposed to have)(?: to have)? (?P<x>(?:(?:the|that|this|those|these|any) )?[a-z]+(?: (?!(?:after|at|for|to|with|from|since|because|as|on|in|so|and|or|but|is|are|was|were|be)\\b)[a-z]+)?)(?P<why> [^,;]+)?\\s*[,;]\\s*(?:so )?(?P<rest>[^,;.]+?)(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
