@@ -346,7 +346,8 @@ def _to_take50(text: str, lexicon: Lexicon) -> str:
 _SPAN50 = re.compile(
     r"\bafter (?:two|three|four|five|six|several|a few|a couple of|many|countless|endless) "
     r"(?:long |solid )?(?:hours|minutes|rounds|games|days|weeks|laps|sets|sessions|goes) of "
-    r"(?=[a-z])"
+    # (not "three hours of all that": no doing named, and session 37's count refusal stands)
+    r"(?=[a-z])(?!(?:all that|all this|that|this|it all)\b)"
 )
 
 
