@@ -377,6 +377,104 @@ KNOWN_MISSES = frozenset(
         "The drill's no use to Jess now the holes are done, but the hammer is, so the hammer to "
         "Jess.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
+        # blind49 (tuned on in session 51): refusals left at its one measurement (docs/grounding.md)
+        "Jërëjëf, as we say back in Dakar, and could you bring Carol the blue mug when you've a "
+        "spare moment?",
+        "Sorry to be a nuisance, but the crisps would be lovely over with Bob, cheers.",
+        "With my apologies for the muddle earlier, could Person B be given the bottle now?",
+        "Right then, if you'd be a star, the packing tape goes over to Tom, ta.",
+        "Bob's got a proper craving for an apple after his go-karting.",
+        "What Person A needs after three hours of bark rubbing in the woods is the cup, nothing "
+        "fancier.",
+        "Person B is after the bottle, being a collier with a dry throat, and Person A has her "
+        "eye on the apple.",
+        "Person A fancies the chips, being a woodcutter with an appetite.",
+        "Ever since the shrimping trip, the bottle's what Person B has been hoping for.",
+        "After an afternoon on the rock climbing wall, Person A is gasping, so the bottle, please.",
+        "Person B wants the chips; that's all he's after.",
+        "Mia's crying out for the barcode scanner, the site manager wants a count.",
+        "Noah has been needing the ruler since the start of the lesson.",
+        "Bob's been asking about the red mug all morning; pass it to him, would you.",
+        "The chips are hers, Person A's I mean.",
+        "At the narrowboat club Person A asked for the bottle and Person B for the chips, so "
+        "could you see to the pair of them.",
+        "It's Person A's bottle, she wants it.",
+        "Person A again, same as last time, the bottle.",
+        "Person B gets the chips; as for the bottle, that's hers, Person A's, the lass who does "
+        "aerial silks.",
+        "Right so the apple goes to Alice who's been at the clay pigeon shooting and the crisps "
+        "go to Carol and I reckon that's us.",
+        "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
+        "Could you sort both of those.",
+        "Take the cup to Person B who's the prompter tonight and once that's done the apple to "
+        "Person A too",
+        "Person A. Back from the square dance. She needs the bottle. And the cup, she said.",
+        "Chips to Person B first since he's got swing dance in ten minutes, bottle to Person A "
+        "next, okay.",
+        "Person B has been on the dawn chorus walk since five and he's starving so the chips for "
+        "him.",
+        "Person A gets the bottle, Person B gets the chips, and the pair of them can get back to "
+        "their warhammer game.",
+        "Omar's finished with the sponge, so into the sink with it, and after that the bowl goes "
+        "across to him.",
+        "Marco wants the knife he's doing the fish Lena wants the salt.",
+        "Grandad wants the wipes Lily's made a mess with her yoghurt",
+        "Alice or Bob, whichever of the two, can have the crisps; they share everything on the a "
+        "cappella tour.",
+        "So nobody sulks, Person A gets the apple and the stunt double, Person B, gets the cup, "
+        "one thing apiece.",
+        "Any of the four things, Person B isn't choosy.",
+        "Whichever of the chips and the apple, Person A is happy with one.",
+        "Person A can take her pick of the bottle or the chips, she's earned it at the improv "
+        "night.",
+        "Whichever bottle you like, so long as Person A gets it.",
+        "Any bottle going would suit Person A, she's not choosy after her bushcraft weekend.",
+        "Person B's doing a twelve-hour sail maker shift, so both, the bottle and the chips, go "
+        "to him please.",
+        "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist.",
+        "Mr Lee and Mrs Khan can each have a blanket, the blue one for him.",
+        "It doesn't matter which box, just the one of them on the belt for the driver's test run.",
+        "Either of the blocks to Lily, she likes them both.",
+        "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
+        "Person B is taking both things, bottle and chips, to the seed saving stall, so hand him "
+        "the two.",
+        "A lone bottle's all there is; Person A gets it.",
+        "The one bottle in here, for Person A, as she's a marine biologist and always thirsty.",
+        "Person A gets the bottle, the only one on offer.",
+        "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
+        "Both blankets on the locker for now, the ward's too warm for them at the minute.",
+        "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
+        "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
+        "Person A's allergic to apples, so give her the cup instead.",
+        "Person A gets the chips, and not Person B, who's had his at the minigolf.",
+        "Forget the cup, it's only the apple Person B's after.",
+        "Person B, being a nurseryman with simple tastes, wants nothing but the chips.",
+        "Don't hold the bottle back from Person A any longer.",
+        "Not on the tray, the sponge, it'll drip; it goes in the sink.",
+        "Priya'll take a pen, just not the red, she's marking.",
+        "Apart from the medium box, which stays put, the boxes go on the belt.",
+        "Don't bother fetching the globe, Noah's after the ruler and nothing else for his scale "
+        "drawing.",
+        "Bottle to Bob, no wait, I've mixed them up again, Alice's the one.",
+        "Give Person A the apple; actually, she's just said, make that the chips.",
+        "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag.",
+        "The bottle to Person A, yes, I've checked the rota twice, Person A.",
+        "The chips to Person A, I mean, gosh, it's the bottle she's asked for, to Person A.",
+        "Bowl on the tray, no, it's got soup in, so in the sink.",
+        "Stapler in the box, sorry, Priya likes it kept on the desk.",
+        "The red book for Zoe, wait, she's read that, the green one.",
+        "cup to person b who does the bat detecting and apple to person a",
+        "person b fancies the bottle after his epee bout cheers",
+        "gloves to mia her hands are freezing on the dock",
+        "put the scissors on the desk zoes done with her terrarium label",
+        "grandad wants the teddy bear for lilys bedtime story",
+        "Persxon A wants the bottle after her water aerobics.",
+        "Do you think Person A, who's been grafting roses all morning, could have the cup?",
+        "Can you give Person B the chips, as a favour to a weary mahout?",
+        "Can you put the packing tape on the pallet so Tom can grab it on his way out?",
+        "Would you put the globe on the bookshelf? Mrs Ortiz needs the desk clear for the crystal "
+        "radio demo.",
+        "Could Kofi borrow the big spanner for a bit, a mate's bike has a loose nut?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -414,6 +512,9 @@ KNOWN_UNCLEAR = frozenset(
         "Person B was after something when he came by, the chips maybe, or the cup, it's gone "
         "from me now.",
         "tom wanted a box, small or medium, can't remember which",
+        # blind49 (tuned on in session 51)
+        "Ruth and Mrs Khan were both on about the jug; she says it's hers.",
+        "The doctor asked for one of the cups, green or white, but I've lost track of which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -514,8 +615,9 @@ KNOWN_UNCLEAR = frozenset(
 # session 49 by another engineer and committed alone, measured once at the end of session 49 (1
 # wrong, refused since session 50), tuned on in session 50: asserted now, the rest in KNOWN_MISSES
 # and KNOWN_UNCLEAR; "blind49" written in session 50 by another engineer and committed alone,
-# measured once at the end of session 50, not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind49"})
+# measured once at the end of session 50 (0 wrong), tuned on in session 51: asserted now, the rest
+# in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

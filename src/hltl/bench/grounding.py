@@ -152,7 +152,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 49 by another engineer and committed alone, never opened by the engineers who change the
 # grounder before its one measurement at the end of session 49; tuned on in session 50), blind49
 # (written in session 50 by another engineer and committed alone, never opened by the engineers who
-# change the grounder before its one measurement at the end of session 50; tests do not assert it).
+# change the grounder before its one measurement at the end of session 50; tuned on in session 51).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

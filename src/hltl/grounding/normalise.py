@@ -561,6 +561,9 @@ from hltl.grounding._rewrites49s import _STEPS49S, _STEPS49S_FIRST
 from hltl.grounding._rewrites50 import _STEPS50, _STEPS50_FIRST
 from hltl.grounding._rewrites50r import _STEPS50R, _STEPS50R_FIRST
 from hltl.grounding._rewrites50s import _STEPS50S, _STEPS50S_FIRST
+from hltl.grounding._rewrites51 import _STEPS51, _STEPS51_FIRST
+from hltl.grounding._rewrites51r import _STEPS51R, _STEPS51R_FIRST
+from hltl.grounding._rewrites51s import _STEPS51S, _STEPS51S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -892,6 +895,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS51S_FIRST,
+    *_STEPS51R_FIRST,
+    *_STEPS51_FIRST,
     *_STEPS50S_FIRST,
     *_STEPS50R_FIRST,
     *_STEPS50_FIRST,
@@ -942,6 +948,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS51R,
     *_STEPS50R,
     *_STEPS49R,
     *_STEPS48R,
@@ -986,6 +993,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS51S,
     *_STEPS50S,
     *_STEPS49S,
     *_STEPS48S,
@@ -1077,6 +1085,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS51,
     *_STEPS50,
     *_STEPS49,
     *_STEPS48,

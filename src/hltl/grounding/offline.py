@@ -53,6 +53,9 @@ from hltl.grounding import (
     _rewrites50l,
     _rewrites50r,
     _rewrites50s,
+    _rewrites51,
+    _rewrites51r,
+    _rewrites51s,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -152,6 +155,9 @@ _REFUSALS = (
     *_rewrites50.REFUSE50,
     *_rewrites50r.REFUSE50R,
     *_rewrites50s.REFUSE50S,
+    *_rewrites51.REFUSE51,
+    *_rewrites51r.REFUSE51R,
+    *_rewrites51s.REFUSE51S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -191,6 +197,9 @@ _CHECKS = (
     *_rewrites50.CHECK50,
     *_rewrites50r.CHECK50R,
     *_rewrites50s.CHECK50S,
+    *_rewrites51.CHECK51,
+    *_rewrites51r.CHECK51R,
+    *_rewrites51s.CHECK51S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
