@@ -35,6 +35,8 @@ TOLD_DONE = [
     ("The globe has already gone back to Mrs Ortiz.", CLASSROOM),
     ("The teddy landed on the mat, so the bib's for Lily.", NURSERY),
     ("You gave Alice the apple.", CELL),
+    ("It went on the shelf.", CELL),
+    ("They went to Bob.", CELL),
     ("You've given the hammer to Kofi, now the torch to Jess.", WORKSHOP),
     ("You've put the small box on the pallet, so the tape to Tom.", DEPOT),
 ]

@@ -44,6 +44,13 @@ _YOU_GAVE51L = re.compiled(
     r"dropped|left)\b)(?P<rest>[^,.;:!?]*)",
     _F,
 )
+# things said without their names ("Both of them went to Person B, bottle and chips.", 12r's
+# probe; "It went on the shelf.")
+_THINGS51L = re.compiled(
+    r"(?:^|\b(?:and|so|right|oh|well|but)\s+)(?:it|they|both(?: of them)?|all(?: of them)?|the lot|"
+    r"those|these|each(?: of them)?|the (?:two|pair|both) of them)\s*$",
+    _F,
+)
 # 'you' asked ("could you just put the cup on the tray"): a request, whatever the verb's form
 _ASKED51L = re.compiled(
     r"\b(?:could|can|would|will|might|may|do|did|should|shall|if|please|won't|wouldn't|can't|"
@@ -63,7 +70,9 @@ def _told_done51l(text: str, lexicon: Lexicon) -> None:
         subject = m.group("subject")
         if _SUBORDINATE41L.search(subject):
             continue
-        if not _ids(subject, lexicon, "object") or _ids(subject, lexicon, "human"):
+        if _ids(subject, lexicon, "human"):
+            continue
+        if not _ids(subject, lexicon, "object") and _THINGS51L.search(subject) is None:
             continue
         rest = m.group("rest")
         if not (_ids(rest, lexicon, "human") or _ids(rest, lexicon, "surface")):
