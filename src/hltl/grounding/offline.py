@@ -54,6 +54,7 @@ from hltl.grounding import (
     _rewrites50r,
     _rewrites50s,
     _rewrites51,
+    _rewrites51l,
     _rewrites51r,
     _rewrites51s,
 )
@@ -155,6 +156,7 @@ _REFUSALS = (
     *_rewrites50.REFUSE50,
     *_rewrites50r.REFUSE50R,
     *_rewrites50s.REFUSE50S,
+    *_rewrites51l.REFUSE51L,
     *_rewrites51.REFUSE51,
     *_rewrites51r.REFUSE51R,
     *_rewrites51s.REFUSE51S,
@@ -197,6 +199,7 @@ _CHECKS = (
     *_rewrites50.CHECK50,
     *_rewrites50r.CHECK50R,
     *_rewrites50s.CHECK50S,
+    *_rewrites51l.CHECK51L,
     *_rewrites51.CHECK51,
     *_rewrites51r.CHECK51R,
     *_rewrites51s.CHECK51S,
