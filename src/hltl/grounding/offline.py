@@ -57,6 +57,7 @@ from hltl.grounding import (
     _rewrites51l,
     _rewrites51r,
     _rewrites51s,
+    refusalguard,
 )
 from hltl.grounding._normalise1 import _ids, _only
 from hltl.grounding._rewrites38r import described_one38r, list_says38r
@@ -268,7 +269,7 @@ def parse_instruction(
             _after_that40l(text, node, lexicon)
             _too_after_remark40l(text, node, lexicon)
             _or_sentence40l(text, node, lexicon)
-            for check in _CHECKS:
+            for check in refusalguard.asked(_CHECKS, text):
                 check(text, node, lexicon)
         return node
     except GroundingError as refused:
@@ -765,7 +766,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         described_one38r(text, lexicon)
         _rewrites39.doubt_which39(text, lexicon)
         _rewrites39.usual39(text, lexicon)
-        for refuse in _REFUSALS:
+        for refuse in refusalguard.asked(_REFUSALS, text):  # session 51 (12b): by their words
             refuse(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
