@@ -2364,8 +2364,26 @@ def _wants(text: str, lexicon: Lexicon) -> str:
     )
 
 
-@functools.lru_cache(maxsize=64)
+# Session 51 (12p): _scene_adjectives and _scene_words kept by the scene itself (its id, with the
+# scene kept beside: an id is its own only while it lives). lru_cache hashed the scene at every
+# call, and a frozen dataclass's hash is made anew each time from every object, person and
+# surface of it (~10 µs, some seven times an instruction); what is kept for a scene is what
+# was made from it, as before.
+_ADJECTIVES_KEPT: dict[int, tuple[Scene, dict[str, frozenset[str]]]] = {}
+
+
 def _scene_adjectives(scene: Scene) -> dict[str, frozenset[str]]:
+    kept = _ADJECTIVES_KEPT.get(id(scene))
+    if kept is not None and kept[0] is scene:
+        return kept[1]
+    out = _scene_adjectives_now(scene)
+    if len(_ADJECTIVES_KEPT) > 64:
+        _ADJECTIVES_KEPT.clear()
+    _ADJECTIVES_KEPT[id(scene)] = (scene, out)
+    return out
+
+
+def _scene_adjectives_now(scene: Scene) -> dict[str, frozenset[str]]:
     single = {
         w.lower()
         for n in (
@@ -5685,9 +5703,23 @@ def _idiom_stretch(chunk: str, lexicon: Lexicon) -> bool:
     )
 
 
-@functools.lru_cache(maxsize=64)
+_WORDS_KEPT: dict[int, tuple[Scene, frozenset[str]]] = {}
+
+
 def _scene_words(scene: Scene) -> frozenset[str]:
-    """Every word of every name in the scene ('b' of 'Person B', 'mr' of 'Mr Lee')."""
+    """Every word of every name in the scene ('b' of 'Person B', 'mr' of 'Mr Lee'; kept by the
+    scene itself, as _scene_adjectives)."""
+    kept = _WORDS_KEPT.get(id(scene))
+    if kept is not None and kept[0] is scene:
+        return kept[1]
+    out = _scene_words_now(scene)
+    if len(_WORDS_KEPT) > 64:
+        _WORDS_KEPT.clear()
+    _WORDS_KEPT[id(scene)] = (scene, out)
+    return out
+
+
+def _scene_words_now(scene: Scene) -> frozenset[str]:
     names = [o.id for o in scene.objects] + [h.id for h in scene.humans]
     names += [s.id for s in scene.surfaces] + [h.name for h in scene.humans]
     for x in (*scene.objects, *scene.humans, *scene.surfaces):
