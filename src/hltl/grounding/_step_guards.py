@@ -4,7 +4,7 @@
 from hltl.grounding.stepguard import Entry
 
 GUARDS: dict[str, Entry | str] = {
-    'derivation': '1d7ffe6182788e23cc9eb351a7625476',
+    'derivation': '33d71a3257a14c08229c5a2993d046f6',
     'hltl.grounding._normalise1:_after': ('8d32d28388a12398', ((), ('after ',), True), (('_F', ('value', 're.IGNORECASE')), ('re', ('module', 'hltl.grounding.gate')))),
     'hltl.grounding._normalise1:_after_those': ('71e6db83a7cf4867', ((), ('after th',), True), (('_rx', ('function', 'hltl.grounding._normalise1:_rx', 'c45b8b30fae68122')),)),
     'hltl.grounding._normalise1:_all_counted': ('5cc20fda53ea1f4a', ((), (' taking ', 'all '), True), (('_F', ('value', 're.IGNORECASE')), ('_sub', ('function', 'hltl.grounding._normalise1:_sub', 'eb004bf21c503e77')), ('re', ('module', 'hltl.grounding.gate')))),

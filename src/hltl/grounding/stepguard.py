@@ -1017,10 +1017,12 @@ def _words(pattern: str, flags: int) -> tuple[tuple[str, ...], bool] | None:
 
 def derivation() -> str:
     """A digest of how the gate derives a pattern's words (the list keeps the words it derived:
-    where this differs, no guard is used)."""
-    return "".join(
+    where this differs, no guard is used). Session 51: a digest of all five fingerprints (the
+    first 32 letters of them joined had been the first two only)."""
+    said = "".join(
         fingerprint(f) for f in (gate._needed, gate._fewest, gate._best, gate._gate, _words)
-    )[:32]
+    )
+    return hashlib.sha1(said.encode()).hexdigest()[:32]
 
 
 def _holds(fn: Callable[..., Any], deps: tuple[Dep, ...]) -> bool:
