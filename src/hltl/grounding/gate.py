@@ -154,15 +154,16 @@ def _all_needed(items: object, fold: bool) -> list[frozenset[str]]:
 
 def _also(parsed: object, fold: bool, first: tuple[str, ...]) -> tuple[tuple[str, ...], ...]:
     """The sets of words a match needs besides ``first`` (the gate's own), the most selective
-    first, at most four (none that every word of ``first`` holds a word of: asked already)."""
+    first, at most four (none that every word of ``first`` holds a word of: asked already;
+    none with a word of one letter)."""
     out: list[tuple[str, ...]] = []
     for words in sorted(
         {_fewest(w) for w in _all_needed(parsed, fold)},
         key=lambda w: (-min(map(len, w)), len(w), w),
     ):
         implied = all(any(w in f for w in words) for f in first)  # first's words hold one
-        if not implied and len(out) < 4:
-            out.append(words)
+        if not implied and min(map(len, words)) > 1 and len(out) < 4:
+            out.append(words)  # (a single letter or space is in nearly every text)
     return tuple(out)
 
 
