@@ -423,24 +423,12 @@ KNOWN_MISSES = frozenset(
         "cappella tour.",
         "So nobody sulks, Person A gets the apple and the stunt double, Person B, gets the cup, "
         "one thing apiece.",
-        "Any of the four things, Person B isn't choosy.",
-        "Whichever of the chips and the apple, Person A is happy with one.",
-        "Person A can take her pick of the bottle or the chips, she's earned it at the improv "
-        "night.",
-        "Whichever bottle you like, so long as Person A gets it.",
-        "Any bottle going would suit Person A, she's not choosy after her bushcraft weekend.",
-        "Person B's doing a twelve-hour sail maker shift, so both, the bottle and the chips, go "
-        "to him please.",
         "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist.",
         "Mr Lee and Mrs Khan can each have a blanket, the blue one for him.",
         "It doesn't matter which box, just the one of them on the belt for the driver's test run.",
-        "Either of the blocks to Lily, she likes them both.",
         "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
         "Person B is taking both things, bottle and chips, to the seed saving stall, so hand him "
         "the two.",
-        "A lone bottle's all there is; Person A gets it.",
-        "The one bottle in here, for Person A, as she's a marine biologist and always thirsty.",
-        "Person A gets the bottle, the only one on offer.",
         "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
         "Both blankets on the locker for now, the ward's too warm for them at the minute.",
         "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
@@ -514,7 +502,6 @@ KNOWN_UNCLEAR = frozenset(
         "tom wanted a box, small or medium, can't remember which",
         # blind49 (tuned on in session 51)
         "Ruth and Mrs Khan were both on about the jug; she says it's hers.",
-        "The doctor asked for one of the cups, green or white, but I've lost track of which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -4,14 +4,403 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids, _names, _reading
+from hltl.grounding._rewrites44r import _agrees44r, _read_or44r
+from hltl.grounding._rewrites46r import _P46R, _person46r
+from hltl.grounding._rewrites48r import _choice_for48r
+from hltl.grounding._rewrites49r import _it_is49r, _one49r, _targets49r, _the_one49r
+from hltl.grounding._rewrites50r import _choice50r
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, has_choice, tasks
+
+# -- whose a thing is, said of it: the reading must not hand it to someone else ------------------
+
+# "… Then the apple. That one's Person B's.", "…, it's Mr Lee's.", "…, that is the nurse's."
+_OWNER51R = re.compiled(
+    r"(?:^|(?<=[.,;:!?])\s*)(?:(?:and|but|oh|because|cos|as)\s+)?(?:that one|this one|that|this|"
+    rf"it|those|these|they)(?:'s| is|'re| are) (?P<p>(?:the )?{_P46R})'s\s*(?=[.,;:!?]|$)",
+    _F,
+)
+
+
+def _owner_said51r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 51 (12r): "That one's P's" (it's P's, that's the nurse's) says whose the thing named
+    just before it is: a reading that hands that thing to someone else, and not to P, has lost
+    the remark (12c's fuzz: "… Then the apple. That one's Person B's. Also, the chips to Person
+    B." had handed the apple to Person A): refused. Placing it is no contradiction."""
+    if "'s" not in text:
+        return
+    for m in _OWNER51R.finditer(text):
+        pid = _person46r(m["p"], lexicon)
+        if pid is None:
+            continue
+        before = [it for it in _names(text[: m.start()], lexicon) if it.refs[0].kind == "object"]
+        if not before:
+            continue
+        objs = {r.id for r in before[-1].refs}
+        given = [t for t in tasks(node) if t.obj in objs and t.kind == "deliver"]
+        if given and all(t.target != pid for t in given):
+            raise GroundingError(
+                f"{m.group(0).strip(' ,;.')!r} says whose the {before[-1].text} is, but it would "
+                f"go to someone else: say who gets it"
+            )
+
+
+# -- blind49: choices left to one person -------------------------------------------------------
+
+# a closing remark of the one person a choice (or thing) goes to, saying they deserve it or like
+# every option: it asks for nothing more ("she's earned it at the improv night", "she likes them
+# both", "he deserves it after the night shift")
+_CLOSING51R = re.compiled(
+    r"^(?P<pro>she|he)(?:'s| has)(?: (?:more than|really|well and truly))? (?:earned|deserved) "
+    r"(?:it|them|one)\b|"
+    r"^(?P<pro2>she|he) (?:deserves|has earned) (?:it|them|one)\b|"
+    r"^(?P<pro3>she|he) (?:likes|loves|likes the look of|is fond of|'s fond of|enjoys) "
+    r"(?:them both|both of them|both|either|either one|either of them|any of them|all of them|"
+    r"them all)$",
+    _F,
+)
+
+
+def _closing51r(head: str, tail: str, end: str, text: str, lexicon: Lexicon) -> str:
+    """``head`` (a choice handed to one person) with the closing remarks of ``tail`` taken off:
+    those of ``_CLOSING51R`` (what the rest of the remark says naming nothing of the scene, the
+    pronoun that person), then the ones ``_choice50r`` takes off."""
+    node = _reading(f"{head}{end or '.'}", lexicon)
+    people = _targets49r(node)
+    if node is None or people is None or len(people) != 1 or not has_choice(node):
+        return text
+    pid = next(iter(people))
+    rest = []
+    for part in (p.strip() for p in tail.split(",") if p.strip()):
+        m = _CLOSING51R.match(part)
+        if m is None:
+            rest.append(part)
+            continue
+        pro = m["pro"] or m["pro2"] or m["pro3"]
+        after = re.sub(r"\b(?:his|her|their)\b", "", part[m.end() :], flags=_F)
+        if not _agrees44r(pid, pro, lexicon) or (after.strip() and _names(after, lexicon)):
+            return text
+    return _choice50r(head, "".join(f", {p}" for p in rest), end, text, lexicon)
+
+
+def _likes_both51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a choice handed to one person closed by a remark of ``_CLOSING51R``
+    ("Either of the blocks to Lily, she likes them both"; "…, he's earned it after his shift"):
+    the remark taken off (as ``_closing51r`` has it)."""
+    low = text.lower()
+    if " both" not in low and "either" not in low and "earned" not in low and "deserv" not in low:
+        return text
+    body = text.strip()
+    end = re.search(r"\s*[.!]?$", body)
+    stop = end.start() if end is not None else len(body)
+    parts = body[:stop].split(",")
+    for k in range(1, len(parts)):
+        if _CLOSING51R.match(parts[k].strip()) is not None:
+            head = ",".join(parts[:k]).strip()
+            tail = "".join(f",{p}" for p in parts[k:])
+            return _closing51r(head, tail, body[stop:], text, lexicon)
+    return text
+
+
+# "Any of the four things, Person B isn't choosy.", "Whichever of the chips and the apple, Person
+# A is happy with one."
+_FRONT_CHOICE51R = re.compiled(
+    r"^(?P<c>(?:any|either|whichever|any one) of (?:the (?:two|three|four|five|six|seven|eight) "
+    r"(?:things|of them|items)|the [a-z]+s|the [a-z]+(?: [a-z]+)? (?:and|or) the [a-z]+"
+    r"(?: [a-z]+)?)|(?:any|either|whichever|any old) [a-z]+)\s*,\s*"
+    rf"(?P<p>{_P46R})(?P<easy>(?:'s not| is not| isn't| ain't|'s never been| won't be| wouldn't "
+    r"be)(?: too| that| at all| really)? (?:choosy|fussy|fussed|bothered|picky|particular)"
+    r"(?: (?:which|about which))?|(?:'s| is|'ll be| will be|'d be| would be) (?:happy|fine|"
+    r"content|glad|pleased|okay|ok) (?:with|to have|to take) (?:one|either|either one|any|any one|"
+    r"whichever)(?: of them)?|(?: doesn't| does not| won't| will not) (?:mind|care)(?: which)?)"
+    r"(?P<tail>(?:\s*,\s*[^,.;!?]+)*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _front_choice51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a choice said first, then that the person is easy about it ("Any of the
+    four things, P isn't choosy"; "Whichever of the chips and the apple, P is happy with one";
+    "Either mug, Bob doesn't mind") is "Give P <the choice>" ('whichever of the X and the Y' as
+    'the X or the Y'), closing remarks as ``_closing51r`` has them."""
+    low = text.lower()
+    if "any" not in low and "either" not in low and "whichever" not in low:
+        return text
+    m = _FRONT_CHOICE51R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    c = m["c"]
+    pair = re.match(
+        r"^(?:whichever|either|any|any one) of (?P<x>the [a-z]+(?: [a-z]+)?) (?:and|or) "
+        r"(?P<y>the [a-z]+(?: [a-z]+)?)$",
+        c,
+        _F,
+    )
+    if pair is not None:
+        c = f"{pair['x']} or {pair['y']}"
+    elif re.match(r"^(?:whichever|any old) [a-z]+$", c, _F):
+        c = f"any {c.split()[-1]}"
+    c = re.sub(r"^whichever of ", "any of ", c, flags=_F)
+    head = f"Give {m['p']} {c}"
+    return _closing51r(head, m["tail"], m["end"], text, lexicon)
+
+
+# "Person A can take her pick of the bottle or the chips, she's earned it at the improv night."
+_PICK_OF51R = re.compiled(
+    rf"^(?P<p>{_P46R})(?:(?:'ll| will| can| may| could)? (?:have|take|get)| gets| has) "
+    r"(?P<pro>his|her|their) "
+    r"pick of (?P<what>the [a-z]+(?: [a-z]+)? or the [a-z]+(?: [a-z]+)?|the [a-z]+s|"
+    r"the (?:two|three|four|five|six) (?:things|[a-z]+s))"
+    r"(?P<tail>(?:\s*,\s*[^,.;!?]+)*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _pick_of51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "P can take (have, gets) her pick of the X or the Y (the pens, the
+    four things)" is "Give P the X or the Y" ("any of the pens"), the pronoun P's, closing
+    remarks as ``_closing51r`` has them (session 48's `_take_pick48r` reads it said with 'take'
+    and nothing after it that names nothing but is no easy-going word)."""
+    if "pick of" not in text.lower():
+        return text
+    m = _PICK_OF51R.match(text.strip())
+    if m is None:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None or (m["pro"].lower() != "their" and not _agrees44r(pid, m["pro"], lexicon)):
+        return text
+    what = m["what"]
+    if " or " not in what:
+        what = f"any of {what}"
+    return _closing51r(f"Give {m['p']} {what}", m["tail"], m["end"], text, lexicon)
+
+
+# "Whichever bottle you like, so long as Person A gets it."
+_SO_LONG_AS51R = re.compiled(
+    r"^(?:whichever|whatever|any|any old) (?P<k>[a-z]+)(?: at all)? (?:you (?:like|want|fancy|"
+    r"choose|prefer|please|pick|think best)|you're happy with|suits you|is handiest)\s*,\s*"
+    r"(?:so long as|as long as|provided|providing|just so long as)(?: that)? "
+    rf"(?P<p>{_P46R}) (?:gets|has|receives|ends up with) (?:it|one)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _so_long_as51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "Whichever bottle you like, so long as P gets it" (the robot's pick of
+    the kind, for P) is "Give P the bottle" when the scene has one, "Give P a bottle" (a choice)
+    when it has more."""
+    low = text.lower()
+    if "long as" not in low and "provid" not in low:
+        return text
+    m = _SO_LONG_AS51R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    end = m["end"] or "."
+    thing = _the_one49r(m["k"], lexicon)
+    if thing is not None:
+        return _read_or44r(f"Give {m['p']} {thing}{end}", text, lexicon)
+    kind = _ids(f"the {m['k']}", lexicon, "object")
+    if len(kind) < 2 or _ids(f"the {m['k']}", lexicon) != kind:
+        return text
+    out = f"Give {m['p']} a {m['k']}{end}"
+    node = _reading(out, lexicon)
+    if node is None or not has_choice(node) or {t.obj for t in tasks(node)} != kind:
+        return text
+    return out
+
+
+# "Any bottle going would suit Person A, …"
+_WOULD_SUIT51R = re.compiled(
+    r"^(?P<q>any|either|any old|whichever) (?P<k>[a-z]+)(?: (?:going|at all|about|around|you can "
+    r"find|you've got|there is))? (?:would|will|'d|'ll|should) (?:suit|do for|please|satisfy|"
+    rf"content) (?P<p>{_P46R})(?P<tail>(?:\s*,\s*[^,.;!?]+)*?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _would_suit51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "Any bottle going would suit P" ("Either mug would please Bob") is "Give
+    P any bottle" ("a mug"; 'either' of a kind the scene has two of), closing remarks naming
+    nothing taken off (``_choice_for48r``)."""
+    low = text.lower()
+    if "suit" not in low and "please" not in low and "satisf" not in low and "content" not in low:
+        return text
+    m = _WOULD_SUIT51R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    kind = _ids(f"the {m['k']}", lexicon, "object")
+    q = m["q"].lower()
+    if not kind or _ids(f"the {m['k']}", lexicon) != kind or (q == "either" and len(kind) != 2):
+        return text
+    head = f"Give {m['p']} {'a' if q == 'either' else 'any'} {m['k']}"
+    return _choice_for48r(head, m["tail"], m["end"], text, lexicon, choice=len(kind) > 1)
+
+
+# "…, so both, the bottle and the chips, go to him please."
+_BOTH_COMMA51R = re.compiled(
+    r"\bboth\s*,\s*(?P<x>the [a-z]+(?: [a-z]+)?) and (?P<y>the [a-z]+(?: [a-z]+)?)\s*,\s*"
+    r"(?=(?:go|are going|are to go|can go|should go|get|need) )",
+    _F,
+)
+
+
+def _both_comma51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "both, the bottle and the chips, go to P" (the two things said between
+    commas after 'both') is "both the bottle and the chips go to P", each naming one object."""
+    if "both," not in text.lower() and "both ," not in text.lower():
+        return text
+    m = _BOTH_COMMA51R.search(text)
+    if m is None:
+        return text
+    x, y = _ids(m["x"], lexicon, "object"), _ids(m["y"], lexicon, "object")
+    if len(x) != 1 or len(y) != 1 or x == y:
+        return text
+    out = f"{text[: m.start()]}both {m['x']} and {m['y']} {text[m.end() :]}"
+    node = _reading(out, lexicon)
+    if node is None or not (x | y) <= {t.obj for t in tasks(node)}:
+        return text
+    return out
+
+
+# "The doctor asked for one of the cups, green or white, but I've lost track of which."
+_ASKED_ONE_OF51R = re.compiled(
+    r"\b(?P<v>asked for|asked me for|wants|wanted|would like|'d like|is after|'s after|was after|"
+    r"requested|needs|needed) (?:one of the|either of the|one of those) (?P<k>[a-z]+s)\b",
+    _F,
+)
+
+
+def _asked_one_of51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "P asked for one of the cups" (wants, is after) is "P asked for a cup"
+    (a choice of the kind, which the grammar reads; with "…, but I've lost track of which" it is
+    refused naming both, session 50's `forgets50l`), the kind two or more objects of the scene."""
+    if "of th" not in text.lower():
+        return text
+    m = _ASKED_ONE_OF51R.search(text)
+    if m is None:
+        return text
+    k = _one49r(m["k"])
+    kind = _ids(f"the {m['k']}", lexicon, "object")
+    if len(kind) < 2 or _ids(f"the {m['k']}", lexicon) != kind or _ids(f"the {k}", lexicon) != kind:
+        return text
+    out = f"{text[: m.start()]}{m['v']} a {k}{text[m.end() :]}"
+    node = _reading(out, lexicon)
+    if node is not None and (not has_choice(node) or not {t.obj for t in tasks(node)} <= kind):
+        return text
+    return out if node is not None or _forgot51r(out, lexicon) else text
+
+
+def _forgot51r(out: str, lexicon: Lexicon) -> bool:
+    """Whether ``out`` is refused naming the choice the speaker forgot."""
+    from hltl.grounding.offline import parse_instruction
+
+    try:
+        parse_instruction(out, lexicon.scene, lexicon)
+    except GroundingError as e:
+        return "forgotten which" in str(e)
+    return False
+
+
+# -- blind49: counts said of the scene ----------------------------------------------------------
+
+# "A lone bottle's all there is; Person A gets it."
+_ALL_THERE_IS51R = re.compiled(
+    r"^(?:a lone|a single|just the one|only the one|the one|one|just one|only one|a solitary) "
+    r"(?P<k>[a-z]+)(?:'s| is) (?:all (?:there is|we've got|we have|there's left|that's left|"
+    r"that's going|there's going)|the only one (?:there is|we've got|we have|going|left))"
+    r"\s*[;,.:]\s*(?:(?:so|and)\s+)?(?P<rest>.+)$",
+    _F,
+)
+
+
+def _all_there_is51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "A lone bottle's all there is; P gets it" ("One cup is all we've got,
+    so hand it to Bob") is the request with 'it' the bottle, when the scene has exactly one."""
+    if " all " not in text.lower() and " only " not in text.lower():
+        return text
+    m = _ALL_THERE_IS51R.match(text.strip())
+    if m is None:
+        return text
+    thing = _the_one49r(m["k"], lexicon)
+    if thing is None:
+        return text
+    out = _it_is49r(m["rest"], thing, next(iter(_ids(thing, lexicon))), lexicon)
+    return text if out is None else out
+
+
+# "The one bottle in here, for Person A, …"
+_ONE_IN_HERE51R = re.compiled(
+    r"\bthe (?:one|only|single|lone|sole) (?P<x>[a-z]+) (?:in here|in the room|here|on offer|"
+    r"going|on hand|to hand|we've got|we have|there is|left|about|around)\b",
+    _F,
+)
+
+
+def _one_in_here51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "the one bottle in here" ("the only cup on offer", "the single apple
+    we've got") is "the bottle" when the scene has exactly one (session 50's `_lone_in50r`
+    without 'one' / 'only' and these places)."""
+    low = text.lower()
+    if not any(w in low for w in ("one ", "only ", "single ", "lone ", "sole ")):
+        return text
+    m = _ONE_IN_HERE51R.search(text)
+    if m is None:
+        return text
+    thing = _the_one49r(m["x"], lexicon)
+    if thing is None:
+        return text
+    return _read_or44r(f"{text[: m.start()]}{thing}{text[m.end() :]}", text, lexicon)
+
+
+# "Person A gets the bottle, the only one on offer."
+_ONLY_ONE51R = re.compiled(
+    r"\s*,\s*(?:it's |that's |it is |that is )?(?:the only one|the one and only|the last one|"
+    r"the only one of them|the one)(?: (?:on offer|there is|we've got|we have|going|left|in here|"
+    r"in the room|around|about|here))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a request closed by ", the only one on offer" (the only one there is,
+    the one and only) of a thing the scene has exactly one of: the remark taken off."""
+    if " one" not in text.lower():
+        return text
+    m = _ONLY_ONE51R.search(text.strip())
+    if m is None or m.group(0).strip(" ,.!").lower() == "the one":
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or has_choice(node):
+        return text
+    objs = [t.obj for t in tasks(node)]
+    if len(set(objs)) != 1:
+        return text
+    cat = next(o.category for o in lexicon.scene.objects if o.id == objs[0])
+    if sum(o.category == cat for o in lexicon.scene.objects) != 1:
+        return text
+    return out
+
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
-_STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _front_choice51r,
+    _likes_both51r,
+    _pick_of51r,
+    _so_long_as51r,
+    _would_suit51r,
+    _both_comma51r,
+    _asked_one_of51r,
+    _all_there_is51r,
+    _one_in_here51r,
+    _only_one51r,
+)
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
-CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_owner_said51r,)
