@@ -385,6 +385,87 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# -- 12c's fuzz: a choice of people said to have (had) a thing ----------------------------------
+
+# "Alice or Bob had the crisps.", "Alice or Bob, whichever of the two, has the crisps.", "Either
+# Alice or Carol had the red mug."
+_PEOPLE_HAD51R = re.compiled(
+    rf"(?:^|(?<=[.;!?])\s*)(?:either |one of )?(?P<people>{_P46R}(?:\s*,\s*{_P46R})*\s*,?\s*or "
+    rf"{_P46R})(?:\s*,\s*(?:whichever|either|one|whoever)(?: (?:of (?:the|them) (?:two|three|"
+    r"both)|of them|one|it was|it is))?\s*,)?\s+(?P<v>had|got|has|has had|has got|'s got|'s had|"
+    r"have|had got)\s+(?!to\b)(?P<x>[^,.;!?]+?)\s*(?=[.;!?]|$)",
+    _F,
+)
+
+
+def _people_had51r(text: str, lexicon: Lexicon) -> None:
+    """Session 51 (12r): a sentence that is only a choice of people holding (having held) things
+    ("Alice or Bob had the crisps", "…, whichever of the two, has the crisps") says what one of
+    them holds or held: it asks for nothing, as session 32's "Alice had the crisps." (the
+    grammar had read it as the robot's choice of who gets them: 12c's fuzz): refused."""
+    low = text.lower()
+    if " or " not in low or not any(w in low for w in ("had", "has", "got", "have", "'s")):
+        return
+    for m in _PEOPLE_HAD51R.finditer(text):
+        who = [w.strip() for w in re.split(r"\s*,\s*|\s+or\s+", m["people"], flags=_F)]
+        if any(_person46r(w, lexicon) is None for w in who if w):
+            continue
+        named = _names(m["x"], lexicon)
+        if not named or any(r.kind != "object" for it in named for r in it.refs):
+            continue
+        raise GroundingError(
+            f"{m.group(0).strip()!r} says what one of {m['people']} holds or had: it asks for "
+            f"nothing; say who is to get {m['x'].strip()} to have it handed over"
+        )
+
+
+# -- 12c's fuzz: correction chains ---------------------------------------------------------------
+
+# "The globe to Zoe, no, Noah, well, the ruler.": after a correction, a bare thing after 'well'
+_WELL_AGAIN51R = re.compiled(
+    r"\b(?:no|sorry|i mean|i meant|rather|wait|hang on|hold on|scratch that|oops|whoops|my "
+    r"mistake)\b[^.;!?]*,\s*well\s*,?\s*(?P<x>the [a-z]+(?: (?!(?:actually|instead|too|also|"
+    r"then|please)\b)[a-z]+)?)\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _well_again51r(text: str, lexicon: Lexicon) -> None:
+    """Session 51 (12r): after a correction, "…, well, the ruler" with nothing after the thing
+    (no 'actually', 'instead', 'too') could correct the request again or add to it (the grammar
+    had added it: "The globe to Zoe, no, Noah, well, the ruler." read globe>B & ruler>B, 12c's
+    fuzz): refused. With 'actually' it is the correction sessions 48-49 read."""
+    if "well" not in text.lower():
+        return
+    m = _WELL_AGAIN51R.search(text)
+    if m is None:
+        return
+    named = _names(m["x"], lexicon)
+    if not named or any(r.kind != "object" for it in named for r in it.refs):
+        return
+    raise GroundingError(
+        f"'well, {m['x']}' after a correction could correct it again or add to it: say "
+        f"'{m['x']} instead' or '{m['x']} too'"
+    )
+
+
+def _instead_twice51r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 51 (12r): a reading that does two things with one object, of a text that says
+    'instead' (one replaces the other: "Small spanner in the locker, no, the torch, no, the
+    workbench, well, give it to Kofi instead." had read torch@bench & torch>A, 12c's chains
+    fuzz): refused."""
+    if "instead" not in text.lower():
+        return
+    seen: set[str] = set()
+    for t in tasks(node):
+        if t.obj in seen:
+            raise GroundingError(
+                f"'instead' says one task replaces another, but the {t.obj} would be moved "
+                "twice: say the whole request again"
+            )
+        seen.add(t.obj)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
@@ -401,6 +482,6 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _only_one51r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
-REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = (_people_had51r, _well_again51r)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
-CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_owner_said51r,)
+CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_owner_said51r, _instead_twice51r)
