@@ -110,6 +110,14 @@ FUZZ_REFUSED = [
     ("The apple to Alice, no, Bob, well, the crisps.", CELL, _rewrites51r._well_again51r),
     ("The jug for Ruth, sorry, Mr Lee, well, the pills.", WARD, _rewrites51r._well_again51r),
     (
+        "The one bottle in here was for Person A, and she's had it.",
+        ONE,
+        _rewrites51r._done_after51r,
+    ),
+    ("The one apple in here was for Bob, and he's eaten it.", CELL, _rewrites51r._done_after51r),
+    ("Bob needs the apple, but he's had it.", CELL, _rewrites51r._done_after51r),
+    ("The lemon was for Lena, and she's had it already.", KITCHEN, _rewrites51r._done_after51r),
+    (
         "Small spanner in the locker, no, the torch, no, the workbench, well, give it to Kofi "
         "instead.",
         WORKSHOP,
@@ -140,7 +148,8 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
     ("text", "want", "scene"),
     [
         # near: a choice of who gets it; 'has to'; 'well, the X actually' corrects; two tasks
-        # of one object with no 'instead'
+        # of one object with no 'instead'; what another person had; 'one of the Xs' with more
+        # said after it than the speaker forgetting which
         ("Alice or Bob can have the crisps.", "chips>A | chips>B", FIG1),
         ("Alice or Bob has to get the crisps.", "chips>A | chips>B", FIG1),
         ("Hand the apple to Bob, no, to Carol, well, the crisps actually.", "chips>C", CELL),
@@ -150,6 +159,10 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
             WORKSHOP,
         ),
         ("Put the cup on the shelf, then give it to Bob.", "cup@shelf ; cup>B", CELL),
+        ("Bob's had the cup, so give him the apple.", None, CELL),
+        ("Give Bob the apple, Alice has had hers already.", "apple>B", CELL),
+        ("Bob asked for one of the mugs, I gave him the red.", None, CELL),
+        ("The doctor asked for one of the cups, green or white, she's particular.", None, LAB),
     ],
 )
 def test_fuzz_near_read(text: str, want: str, scene) -> None:

@@ -267,30 +267,35 @@ def _both_comma51r(text: str, lexicon: Lexicon) -> str:
 
 # "The doctor asked for one of the cups, green or white, but I've lost track of which."
 _ASKED_ONE_OF51R = re.compiled(
-    r"\b(?P<v>asked for|asked me for|wants|wanted|would like|'d like|is after|'s after|was after|"
-    r"requested|needs|needed) (?:one of the|either of the|one of those) (?P<k>[a-z]+s)\b",
+    rf"^(?P<p>{_P46R}|the [a-z]+) (?P<v>asked for|asked me for|wants|wanted|would like|'d like|"
+    r"is after|'s after|was after|requested|needs|needed) (?:one of the|either of the|one of "
+    r"those) (?P<k>[a-z]+s)(?P<adj>\s*,\s*[a-z]+ or [a-z]+)?(?P<rest>(?:\s*,\s*|\s+)[^.!?]+?)?"
+    r"(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
 def _asked_one_of51r(text: str, lexicon: Lexicon) -> str:
-    """Session 51 (12r): "P asked for one of the cups" (wants, is after) is "P asked for a cup"
-    (a choice of the kind, which the grammar reads; with "…, but I've lost track of which" it is
-    refused naming both, session 50's `forgets50l`), the kind two or more objects of the scene."""
+    """Session 51 (12r): "P asked for one of the cups(, green or white)" (wants, is after) is "P
+    asked for a cup…" (a choice of the kind, which the grammar reads), the kind two or more
+    objects of the scene; with more said after it only when that is the speaker forgetting which
+    ("…, but I've lost track of which": refused naming both, session 50's `forgets50l`)."""
     if "of th" not in text.lower():
         return text
-    m = _ASKED_ONE_OF51R.search(text)
-    if m is None:
+    m = _ASKED_ONE_OF51R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
         return text
     k = _one49r(m["k"])
     kind = _ids(f"the {m['k']}", lexicon, "object")
     if len(kind) < 2 or _ids(f"the {m['k']}", lexicon) != kind or _ids(f"the {k}", lexicon) != kind:
         return text
-    out = f"{text[: m.start()]}{m['v']} a {k}{text[m.end() :]}"
+    out = f"{m['p']} {m['v']} a {k}{m['adj'] or ''}{m['rest'] or ''}{m['end'] or '.'}"
+    if m["rest"]:
+        return out if _forgot51r(out, lexicon) else text
     node = _reading(out, lexicon)
-    if node is not None and (not has_choice(node) or not {t.obj for t in tasks(node)} <= kind):
+    if node is None or not has_choice(node) or not {t.obj for t in tasks(node)} <= kind:
         return text
-    return out if node is not None or _forgot51r(out, lexicon) else text
+    return out
 
 
 def _forgot51r(out: str, lexicon: Lexicon) -> bool:
@@ -383,6 +388,47 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
     if sum(o.category == cat for o in lexicon.scene.objects) != 1:
         return text
     return out
+
+
+# "…, and she's had it.", "…, she's had it already.", "…, and he's eaten it.", "…, I gave him the
+# red.": the thing a reading hands over is already had, or already given
+_DONE51R = re.compiled(
+    r"(?:^|[,;.:!?]|\b(?:and|but|so|though)\b)\s*(?:(?:and|but|so|though|oh)\s+)?"
+    rf"(?P<who>she|he|they|{_P46R})(?:'s| has|'ve| have)(?: already| just| since)? (?:had|eaten|"
+    r"drunk|finished|used|taken|received|got|been given)(?: it| them| one| that| hers| his)?"
+    r"(?: already| now| by now| earlier| just now)?\s*(?=[,;.!?]|$)|"
+    r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took) "
+    r"(?P<to>him|her|them)\b",
+    _F,
+)
+
+
+def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 51 (12r): a reading handing things to a person of a text that says that person
+    has had it already (eaten it, been given it) or that the speaker gave it them ("The one bottle
+    in here was for Person A, and she's had it.", "Bob asked for one of the mugs, I gave him the
+    red.": 12c's fuzz; the want is over): refused."""
+    low = text.lower()
+    if not any(
+        w in low for w in ("had", "eaten", "drunk", "finished", "used", "taken", "got")
+    ) and (not any(w in low for w in ("gave", "given", "handed", "passed", "brought", "took"))):
+        return
+    got = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not got:
+        return
+    for m in _DONE51R.finditer(text):
+        who = m["who"] or m["to"]
+        if who.lower() in ("she", "he", "her", "him"):
+            fits = any(_agrees44r(pid, who, lexicon) for pid in got)
+        elif who.lower() in ("they", "them"):
+            fits = True
+        else:
+            fits = _person46r(who, lexicon) in got
+        if fits:
+            raise GroundingError(
+                f"{m.group(0).strip(' ,;.')!r} says the want is over (had, or given already): "
+                "it asks for nothing; leave it out to have the thing handed over"
+            )
 
 
 # -- 12c's fuzz: a choice of people said to have (had) a thing ----------------------------------
@@ -484,4 +530,8 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = (_people_had51r, _well_again51r)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
-CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_owner_said51r, _instead_twice51r)
+CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
+    _owner_said51r,
+    _instead_twice51r,
+    _done_after51r,
+)
