@@ -31,9 +31,20 @@ def _scene(name: str):
     return load_scene(ROOT / f"examples/scenes/{name}.yaml")
 
 
-DUO, ONE, T12, F42, L44, L24, T21, SQ, FIG1 = (
+DUO, ONE, T12, F42, L44, L24, T21, SQ, FIG1, TWO = (
     _scene(n)
-    for n in ("2-2", "1-1", "1-2", "4-2", "4-4-line", "2-4-line", "2-1", "4-4-square", "fig1")
+    for n in (
+        "2-2",
+        "1-1",
+        "1-2",
+        "4-2",
+        "4-4-line",
+        "2-4-line",
+        "2-1",
+        "4-4-square",
+        "fig1",
+        "two_arms",
+    )
 )
 
 # -- 12c's fuzz: whose a thing is, said after it, is not lost ------------------------------------
@@ -300,6 +311,70 @@ test_batch1 = CASES.test(
     ("Tom gets the scanner, the only one on offer.", "scanner>B", DEPOT),
     ("Noah gets the globe, the one and only.", "globe>B", CLASSROOM),
     ("Bob gets the red mug, the only one on offer.", None, CELL),
+)
+
+
+# -- blind49: corrections -------------------------------------------------------------------------
+
+test_batch2 = CASES.test(
+    # _why_fix51r: "<task>, <cue>, <why it was wrong>, (so) <the fix>" (near: the why names
+    # another person or wants; the pronoun is not the person)
+    ("Bowl on the tray, no, it's got soup in, so in the sink.", "bowl@sink", LAB),
+    ("The red book for Zoe, wait, she's read that, the green one.", "book_green>C", CLASSROOM),
+    ("The knife on the counter, no, it's still dirty, so on the rack.", "knife@rack", KITCHEN),
+    ("Hammer on the bench, no, it's filthy, so in the locker.", "hammer@locker", WORKSHOP),
+    ("Teddy on the mat, no, it's soggy, so in the high chair.", "teddy@highchair", NURSERY),
+    ("The grey blanket for Mr Lee, wait, he's sat on that, the blue one.", "blanket_blue>B", WARD),
+    ("The grey blanket for Mr Lee, wait, she's sat on that, the blue one.", None, WARD),
+    ("Drill on the bench, sorry, Jess wants it, so in the locker.", None, WORKSHOP),
+    # _kept_on51r: "<placing>, <cue>, P likes it kept on the S" (near: no cue; not a person)
+    ("Stapler in the box, sorry, Priya likes it kept on the desk.", "stapler@desk", OFFICE),
+    ("Salt on the rack, no, Marco likes it kept on the counter.", "salt@counter", KITCHEN),
+    ("Torch on the bench, sorry, Kofi prefers it kept in the locker.", "torch@locker", WORKSHOP),
+    ("Globe on the desk, no, Mrs Ortiz likes it left on the shelf.", "globe@shelf", CLASSROOM),
+    ("Salt on the rack, Marco likes it kept on the counter.", None, KITCHEN),
+    ("Salt on the rack, no, the lemon likes it kept on the counter.", None, KITCHEN),
+    # _the_one_is51r: "…, no, P's the one (who wants it)" (near: no cue; the who names another)
+    ("Bottle to Bob, no wait, I've mixed them up again, Alice's the one.", "bottle>A", TWO),
+    ("The spoon for Omar, no, Dana's the one.", "spoon>A", LAB),
+    ("The jug for Ruth, sorry, Mrs Khan is the one who ordered it.", "jug>C", WARD),
+    ("The magazine for Mrs Khan, oops, Mr Lee's the one.", "magazine>B", WARD),
+    ("Lemon to Marco, Lena is the one.", None, KITCHEN),
+    ("The spoon for Omar, no, Dana's the one who broke the bowl.", None, LAB),
+    # _she_said_make51r: "<request>; actually, she's just said, make that the X" (near: the
+    # pronoun is not the person)
+    ("Give Person A the apple; actually, she's just said, make that the chips.", "chips>A", SQ),
+    ("Give Lena the lemon; actually, she's just said, make that the salt.", "salt>B", KITCHEN),
+    (
+        "Hand Mr Lee the jug. Actually, he's changed his mind, make it the magazine.",
+        "magazine>B",
+        WARD,
+    ),
+    (
+        "Give Kofi the hammer; actually, he's just told me, make that the drill.",
+        "drill>A",
+        WORKSHOP,
+    ),
+    ("Give Lena the lemon; actually, he's just said, make that the salt.", None, KITCHEN),
+    # _one_with51r: "…, I mean P, the one with the sabre bag" (near: the remark names a thing
+    # of the scene)
+    (
+        "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag.",
+        "chips>B",
+        DUO,
+    ),
+    ("The apple for Alice, no, Carol, the one with the umbrella.", "apple>C", CELL),
+    ("The stapler for Sam, sorry, I mean Priya, the one in the blue jumper.", "stapler>A", OFFICE),
+    ("The lemon for Marco, no, Lena, the one carrying the menus.", "lemon>B", KITCHEN),
+    ("The lemon for Marco, no, Lena, the one carrying the salt.", None, KITCHEN),
+    # _yes_again51r: "<request>, yes, <speaker's remark>, P." (near: another person after; a
+    # remark naming a thing)
+    ("The bottle to Person A, yes, I've checked the rota twice, Person A.", "bottle>A", ONE),
+    ("The apple to Bob, yes, I've double-checked the list, Bob.", "apple>B", CELL),
+    ("The knife for Marco, yes, I've checked the order twice, Marco.", "knife>A", KITCHEN),
+    ("The jug to Mrs Khan, yes, I've looked at the chart, Mrs Khan.", "jug>C", WARD),
+    ("The apple to Bob, yes, I've double-checked the list, Carol.", None, CELL),
+    ("The apple to Bob, yes, I've double-checked the cup, Bob.", None, CELL),
 )
 
 

@@ -7,11 +7,13 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _reading
+from hltl.grounding._rewrites41s import _WANT_SAID41S
+from hltl.grounding._rewrites42s import _NEGATED42S
 from hltl.grounding._rewrites44r import _agrees44r, _read_or44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites48r import _choice_for48r
 from hltl.grounding._rewrites49r import _it_is49r, _one49r, _targets49r, _the_one49r
-from hltl.grounding._rewrites50r import _choice50r
+from hltl.grounding._rewrites50r import _about50r, _choice50r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node, has_choice, tasks
 
@@ -407,7 +409,8 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 51 (12r): a reading handing things to a person of a text that says that person
     has had it already (eaten it, been given it) or that the speaker gave it them ("The one bottle
     in here was for Person A, and she's had it.", "Bob asked for one of the mugs, I gave him the
-    red.": 12c's fuzz; the want is over): refused."""
+    red.": 12c's fuzz; the want is over): refused. After a correction cue it is said of what
+    the correction takes back, and left."""
     low = text.lower()
     if not any(
         w in low for w in ("had", "eaten", "drunk", "finished", "used", "taken", "got")
@@ -417,6 +420,10 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
     if not got:
         return
     for m in _DONE51R.finditer(text):
+        if _BACK51R.search(text[: m.start()]):
+            # "The red book for Noah, no, he's finished that, the green one": said of the thing
+            # the correction takes back
+            continue
         who = m["who"] or m["to"]
         if who.lower() in ("she", "he", "her", "him"):
             fits = any(_agrees44r(pid, who, lexicon) for pid in got)
@@ -429,6 +436,218 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
                 f"{m.group(0).strip(' ,;.')!r} says the want is over (had, or given already): "
                 "it asks for nothing; leave it out to have the thing handed over"
             )
+
+
+# -- blind49: corrections ------------------------------------------------------------------------
+
+# the words of a cue that take the request back (session 49's, each a whole word: 'no, Noah')
+_CUE51R = (
+    r"(?:(?:oh|ah|er|erm|um|hmm|no|sorry|actually|wait|hang on|hold on|scratch that|strike that|"
+    r"my mistake|my bad|whoops|oops)\b\s*,?\s*)+"
+)
+
+
+def _one_task51r(text: str, lexicon: Lexicon) -> tuple[str, str, str] | None:
+    """The (kind, object, target) of the one task ``text`` reads as, or None."""
+    node = _reading(text, lexicon)
+    got = [] if node is None else list(tasks(node))
+    if node is None or len(got) != 1 or has_choice(node):
+        return None
+    return got[0].kind, got[0].obj, got[0].target
+
+
+# "Bowl on the tray, no, it's got soup in, so in the sink.", "The red book for Zoe, wait, she's
+# read that, the green one."
+_WHY_FIX51R = re.compiled(
+    rf"^(?P<head>[^,;]+?)\s*,\s*(?P<cue>{_CUE51R})(?P<why>[^,;.!?]+?)\s*,\s*(?:so\s+|then\s+)?"
+    r"(?P<fix>(?:in|on|into|onto) the [a-z]+(?: [a-z]+)?|the [a-z]+ one|the [a-z]+"
+    r"(?: (?!(?:actually|instead|too|also|please|then)\b)[a-z]+)?)"
+    r"(?: instead)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _why_fix51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): one task, a correction cue, why the first was wrong (naming nothing of
+    the scene but the task's person; 'it' / 'that' the thing), then what it is to be instead ("…,
+    no, it's got soup in, so in the sink"; "…, wait, she's read that, the green one") is "<task>,
+    no, <fix>", read as the same task with the thing or the place corrected."""
+    if "," not in text or not _BACK51R.search(text):
+        return text
+    m = _WHY_FIX51R.match(text.strip())
+    if m is None:
+        return text
+    first = _one_task51r(m["head"], lexicon)
+    if first is None:
+        return text
+    kind, obj, target = first
+    people = {target} if kind == "deliver" else set()
+    why = re.sub(r"\b(?:it|that|this|its)\b", "", m["why"], flags=_F)
+    if not _about50r(why, people, lexicon) or _WANT_SAID41S.search(m["why"]):
+        return text
+    out = f"{m['head']}, no, {m['fix']}{m['end'] or '.'}"
+    fixed = _one_task51r(out, lexicon)
+    if fixed is None or fixed == first or fixed[0] != kind:
+        return text
+    place = m["fix"].split()[0].lower() in ("in", "on", "into", "onto")
+    if (place and (kind != "place" or fixed[1] != obj)) or (not place and fixed[2] != target):
+        return text
+    return out
+
+
+_BACK51R = re.compiled(
+    r"\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|"
+    r"actually|i mean|i meant)\b",
+    _F,
+)
+
+# "Stapler in the box, sorry, Priya likes it kept on the desk."
+_KEPT_ON51R = re.compiled(
+    rf"^(?P<head>[^,;]+?)\s*,\s*(?P<cue>{_CUE51R})(?P<p>{_P46R}) (?:likes|prefers|wants|would "
+    r"like|'d like|would rather have|'d rather have|would prefer|'d prefer) (?:it|them) (?:kept|"
+    r"left|to be kept|to be left|to stay|to live)?\s*(?P<prep>on|in) (?P<s>the [a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _kept_on51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a placing, a correction cue, then where a person of the scene likes the
+    thing kept ("Stapler in the box, sorry, Priya likes it kept on the desk") is "<placing>, no,
+    on the desk": the same thing placed there."""
+    if " it " not in text.lower() and " them " not in text.lower():
+        return text
+    m = _KEPT_ON51R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None or not _BACK51R.search(m["cue"]):
+        return text
+    first = _one_task51r(m["head"], lexicon)
+    if first is None or first[0] != "place":
+        return text
+    out = f"{m['head']}, no, {m['prep']} {m['s']}{m['end'] or '.'}"
+    fixed = _one_task51r(out, lexicon)
+    if fixed is None or fixed[:2] != first[:2] or fixed == first:
+        return text
+    return out
+
+
+# "Bottle to Bob, no wait, I've mixed them up again, Alice's the one."
+_THE_ONE51R = re.compiled(
+    rf"(?P<cue>,\s*(?:{_CUE51R})?)(?P<p>{_P46R})(?:'s| is) the one(?P<who> (?:who|that) [^,.;!?]+)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _the_one_is51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a correction closed by "P's the one (who wants it)" is "…, no, P": the
+    person the one task goes to instead (the 'who' naming nothing else of the scene)."""
+    if "the one" not in text.lower():
+        return text
+    m = _THE_ONE51R.search(text.strip())
+    if m is None or not _BACK51R.search(text.strip()[: m.end("cue")]):
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None:
+        return text
+    who = m["who"]
+    if who and not _about50r(who, {pid}, lexicon) and not _WANTS_IT51R.fullmatch(who):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['cue']}{m['p']}{m['end'] or '.'}"
+    fixed = _one_task51r(out, lexicon)
+    if fixed is None or fixed[2] != pid:
+        return text
+    return out
+
+
+_WANTS_IT51R = re.compiled(
+    r" (?:who|that) (?:wants|asked for|needs|gets|ordered|'s getting|is getting) (?:it|them|one)",
+    _F,
+)
+
+# "Give Person A the apple; actually, she's just said, make that the chips."
+_SHE_SAID_MAKE51R = re.compiled(
+    r"^(?P<head>[^;.]+?)\s*[;,.]\s*(?:actually|oh|oh actually|wait)\s*,\s*(?P<pro>she|he)"
+    r"(?:'s| has)"
+    r"(?: just| now)? (?:said|told me|asked|changed (?:her|his) mind|been on|shouted over)\s*,\s*"
+    r"(?:so\s+)?(?:make (?:that|it)|change (?:that|it) to) (?P<x>the [a-z]+(?: [a-z]+)?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _she_said_make51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a request for one person, then "actually, she's just said, make that the
+    chips" (she the person, told me, changed her mind) is "<request>, no, make that the chips"."""
+    if "make" not in text.lower() and "change" not in text.lower():
+        return text
+    m = _SHE_SAID_MAKE51R.match(text.strip())
+    if m is None:
+        return text
+    first = _one_task51r(m["head"], lexicon)
+    if first is None or first[0] != "deliver" or not _agrees44r(first[2], m["pro"], lexicon):
+        return text
+    out = f"{m['head']}, no, make that {m['x']}{m['end'] or '.'}"
+    fixed = _one_task51r(out, lexicon)
+    if fixed is None or fixed[2] != first[2] or fixed[1] == first[1]:
+        return text
+    return out
+
+
+# "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag."
+_ONE_WITH51R = re.compiled(
+    rf"^(?P<head>.+?(?P<p>{_P46R}))\s*,\s*the one (?:with|in|wearing|carrying|holding|who|that|"
+    r"from|by)\b(?P<why>[^,.;!?]*)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_with51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a correction to a person closed by "P, the one with the sabre bag" (who
+    P is, naming nothing of the scene) is the correction without it."""
+    if "the one " not in text.lower():
+        return text
+    m = _ONE_WITH51R.match(text.strip())
+    if m is None or not _BACK51R.search(m["head"]):
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None or not _about50r(m["why"], {pid}, lexicon):
+        return text
+    out = f"{m['head']}{m['end'] or '.'}"
+    fixed = _one_task51r(out, lexicon)
+    if fixed is None or fixed[2] != pid:
+        return text
+    return out
+
+
+# "The bottle to Person A, yes, I've checked the rota twice, Person A."
+_YES_AGAIN51R = re.compiled(
+    rf"^(?P<head>.+?(?P<p>{_P46R}))\s*,\s*(?:yes|yep|yeah|aye|that's right|that's correct|"
+    r"correct)\s*,\s*(?P<why>[^,.;!?]+?)\s*,\s*(?P<again>[^,.;!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _yes_again51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a request, then 'yes', a remark of the speaker's naming nothing of the
+    scene, then the same person again ("The bottle to Person A, yes, I've checked the rota twice,
+    Person A."): it says the request again, and is taken off."""
+    low = text.lower()
+    if not any(w in low for w in ("yes", "yep", "yeah", "aye", "right", "correct")):
+        return text
+    m = _YES_AGAIN51R.match(text.strip())
+    if m is None:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None or _person46r(m["again"], lexicon) != pid:
+        return text
+    why = m["why"]
+    if _names(why, lexicon) or _NEGATED42S.search(why) or _WANT_SAID41S.search(why):
+        return text
+    out = f"{m['head']}{m['end'] or '.'}"
+    fixed = _one_task51r(out, lexicon)
+    if fixed is None or fixed[2] != pid:
+        return text
+    return out
 
 
 # -- 12c's fuzz: a choice of people said to have (had) a thing ----------------------------------
@@ -526,6 +745,12 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_there_is51r,
     _one_in_here51r,
     _only_one51r,
+    _why_fix51r,
+    _kept_on51r,
+    _the_one_is51r,
+    _she_said_make51r,
+    _one_with51r,
+    _yes_again51r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = (_people_had51r, _well_again51r)
