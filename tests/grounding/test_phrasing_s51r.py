@@ -117,6 +117,22 @@ FUZZ_REFUSED = [
     ("Alice, Bob or Carol, whichever, had the apple.", CELL, _rewrites51r._people_had51r),
     ("alice or bob got the crisps", FIG1, _rewrites51r._people_had51r),
     ("Mr Lee or Mrs Khan has the jug.", WARD, _rewrites51r._people_had51r),
+    ("Alice or Carol had the red mug, now Bob wants it.", CELL, _rewrites51r._people_had51r),
+    (
+        "Excuse me, sorry for the trouble. Please, the apple, to Person A. Thank you very much, "
+        "really, and the chips, no, Person B, well, the cup actually.",
+        F42,
+        _rewrites51r._and_then_who51r,
+    ),
+    (
+        "Put the teddy on the mat — scratch that, give it to Lily, and the sippy cup, no, Ava, "
+        "well, the bib actually.",
+        NURSERY,
+        _rewrites51r._and_then_who51r,
+    ),
+    ("Either Alice or Bob wants the crisps.", FIG1, _rewrites51r._who_wants51r),
+    ("Alice or Carol needed the red mug.", CELL, _rewrites51r._who_wants51r),
+    ("Mr Lee or Mrs Khan asked for the magazine.", WARD, _rewrites51r._who_wants51r),
     ("The globe to Zoe, no, Noah, well, the ruler.", CLASSROOM, _rewrites51r._well_again51r),
     ("The apple to Alice, no, Bob, well, the crisps.", CELL, _rewrites51r._well_again51r),
     ("The jug for Ruth, sorry, Mr Lee, well, the pills.", WARD, _rewrites51r._well_again51r),
@@ -163,6 +179,8 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         # said after it than the speaker forgetting which
         ("Alice or Bob can have the crisps.", "chips>A | chips>B", FIG1),
         ("Alice or Bob has to get the crisps.", "chips>A | chips>B", FIG1),
+        ("Either Alice or Bob is to have the crisps.", "chips>A | chips>B", FIG1),
+        ("Alice or Carol can have the red mug.", "mug_red>A | mug_red>C", CELL),
         ("Hand the apple to Bob, no, to Carol, well, the crisps actually.", "chips>C", CELL),
         (
             "Put the torch in the locker, no, the workbench, well, give it to Kofi instead.",

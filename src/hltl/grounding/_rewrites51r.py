@@ -658,7 +658,7 @@ _PEOPLE_HAD51R = re.compiled(
     rf"(?:^|(?<=[.;!?])\s*)(?:either |one of )?(?P<people>{_P46R}(?:\s*,\s*{_P46R})*\s*,?\s*or "
     rf"{_P46R})(?:\s*,\s*(?:whichever|either|one|whoever)(?: (?:of (?:the|them) (?:two|three|"
     r"both)|of them|one|it was|it is))?\s*,)?\s+(?P<v>had|got|has|has had|has got|'s got|'s had|"
-    r"have|had got)\s+(?!to\b)(?P<x>[^,.;!?]+?)\s*(?=[.;!?]|$)",
+    r"have|had got)\s+(?!to\b)(?P<x>[^,.;!?]+?)\s*(?=[.;!?,]|$)",
     _F,
 )
 
@@ -731,6 +731,73 @@ def _instead_twice51r(text: str, node: Node, lexicon: Lexicon) -> None:
         seen.add(t.obj)
 
 
+# "… Thank you very much, really, and the chips, no, Person B, well, the cup actually."
+_AND_THEN_WHO51R = re.compiled(
+    rf"\band (?P<x>the [a-z]+(?: [a-z]+)?)\s*,\s*{_CUE51R}(?P<p>{_P46R})\s*,\s*well\s*,?\s*"
+    r"(?P<z>the [a-z]+(?: [a-z]+)?)\s+actually\b",
+    _F,
+)
+
+
+def _and_then_who51r(text: str, lexicon: Lexicon) -> None:
+    """Session 51 (12r): "<request for P>, and the X, no, Q, well, the Z actually": the
+    correction to Q may be of the whole request or of 'the X' alone, and the Z may replace either
+    thing (12c's chains fuzz: with a 'really,' or '— scratch that,' before it, it had read the
+    first thing as Q's too): refused, as session 48 refuses it said plainly."""
+    if "actually" not in text.lower() or "well" not in text.lower():
+        return
+    m = _AND_THEN_WHO51R.search(text)
+    if m is None:
+        return
+    pid = _person46r(m["p"], lexicon)
+    before = _ids(text[: m.start()], lexicon, "human")
+    if pid is None or not before - {pid}:
+        return
+    raise GroundingError(
+        f"{m['p']!r} after '{m['x']}' could correct who gets everything before it or only "
+        f"{m['x']}, and {m['z']!r} could replace either thing: say the whole request again"
+    )
+
+
+# "Either Alice or Bob wants the crisps.", "Alice or Bob needed the crisps."
+_WHO_WANTS51R = re.compiled(
+    rf"(?:^|(?<=[.;!?])\s*)(?:either )?(?P<people>{_P46R}(?:\s*,\s*{_P46R})*\s*,?\s*or {_P46R})"
+    r"(?:\s*,\s*(?:i think|i reckon|i'm not sure which|not sure which)\s*,)?\s+(?P<v>wants|needs|"
+    r"wanted|needed|asked for|is after|was after|would like|'d like|asked me for|is asking for|"
+    r"was asking for)\b",
+    _F,
+)
+
+
+def _who_wants51r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 51 (12r): "Either Alice or Bob wants the crisps" says one of them wants it, but
+    not which (the speaker does not know: not a choice left to the robot, which "Alice or Bob can
+    have the crisps" is): a reading that hands it to one of them is refused naming them (12c's
+    fuzz)."""
+    if " or " not in text.lower() or not has_choice(node):
+        return
+    m = _WHO_WANTS51R.search(text)
+    if m is None:
+        return
+    who = [w for w in re.split(r"\s*,\s*|\s+or\s+", m["people"], flags=_F) if w.strip()]
+    pids = [_person46r(w, lexicon) for w in who]
+    if any(p is None for p in pids) or len(set(pids)) < 2:
+        return
+    got = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not got <= set(pids) or len(got) < 2:
+        return
+    names = " or ".join(
+        f"{h.name}" + (f" ({', '.join(h.aliases)})" if h.aliases else "")
+        for pid in pids
+        for h in lexicon.scene.humans
+        if h.id == pid
+    )
+    raise GroundingError(
+        f"'{m['people']} {m['v']}' does not say which of them: it could mean {names}; name the "
+        "person"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
@@ -753,10 +820,15 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _yes_again51r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
-REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = (_people_had51r, _well_again51r)
+REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = (
+    _people_had51r,
+    _well_again51r,
+    _and_then_who51r,
+)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
 CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
     _owner_said51r,
     _instead_twice51r,
     _done_after51r,
+    _who_wants51r,
 )
