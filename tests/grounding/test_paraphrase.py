@@ -419,18 +419,8 @@ KNOWN_MISSES = frozenset(
         "across to him.",
         "Marco wants the knife he's doing the fish Lena wants the salt.",
         "Grandad wants the wipes Lily's made a mess with her yoghurt",
-        "Alice or Bob, whichever of the two, can have the crisps; they share everything on the a "
-        "cappella tour.",
-        "So nobody sulks, Person A gets the apple and the stunt double, Person B, gets the cup, "
-        "one thing apiece.",
         "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist.",
-        "Mr Lee and Mrs Khan can each have a blanket, the blue one for him.",
-        "It doesn't matter which box, just the one of them on the belt for the driver's test run.",
         "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
-        "Person B is taking both things, bottle and chips, to the seed saving stall, so hand him "
-        "the two.",
-        "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
-        "Both blankets on the locker for now, the ward's too warm for them at the minute.",
         "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
         "Person A's allergic to apples, so give her the cup instead.",

@@ -396,5 +396,176 @@ test_batch2 = CASES.test(
 )
 
 
+# -- blind49: each, counts said with the request, remarks closing a share-out ------------------
+
+test_batch3 = CASES.test(
+    # _each_have51r: "P and Q can each have a K, the X one for him" (near: the pronoun fits both or
+    # neither; three of the kind)
+    (
+        "Mr Lee and Mrs Khan can each have a blanket, the blue one for him.",
+        "blanket_blue>B & blanket_grey>C",
+        WARD,
+    ),
+    (
+        "Lena and Mr Novak can each have a plate, the white one for him.",
+        "plate_white>C & plate_blue>B",
+        KITCHEN,
+    ),
+    (
+        "Noah and Mrs Ortiz can each have a book, the green one for her.",
+        "book_green>A & book_red>B",
+        CLASSROOM,
+    ),
+    ("Dana and Omar get a cup each, the white one for her.", "cup_white>A & cup_green>B", LAB),
+    (
+        "Marco and Lena can each have a plate, the blue one for her.",
+        "plate_blue>B & plate_white>A",
+        KITCHEN,
+    ),
+    (
+        "Noah and Zoe can each have a book, the green one for him.",
+        "book_green>B & book_red>C",
+        CLASSROOM,
+    ),
+    ("Zoe and Mrs Ortiz can each have a book, the green one for him.", None, CLASSROOM),
+    ("Priya and Sam can each have a pen, the red one for him.", None, OFFICE),
+    # _taking_to51r: "P is taking both things, X and Y, to <somewhere>, so hand him the two" (near:
+    # the count; the place is the scene's)
+    (
+        "Person B is taking both things, bottle and chips, to the seed saving stall, so "
+        "hand him the two.",
+        "bottle>B & chips>B",
+        DUO,
+    ),
+    (
+        "Lena's taking the salt and the lemon over to the terrace, so give her both.",
+        "salt>B & lemon>B",
+        KITCHEN,
+    ),
+    (
+        "Jess is carrying the torch and the screws down to the van, so hand her the pair.",
+        "torch>B & screws>B",
+        WORKSHOP,
+    ),
+    (
+        "Tom's taking the tape and the gloves to the loading bay, so give him both of them.",
+        "tape>B & gloves>B",
+        DEPOT,
+    ),
+    (
+        "Tom's taking the tape and the gloves to the loading bay, so give him all three.",
+        None,
+        DEPOT,
+    ),
+    ("Tom's taking the tape and the gloves to the pallet, so give him both.", None, DEPOT),
+    # _too_warm51r: placings closed by "the ward's too warm for them (at the minute)" (near: the
+    # subject is of the scene)
+    (
+        "Both blankets on the locker for now, the ward's too warm for them at the minute.",
+        "blanket_blue@bedside & blanket_grey@bedside",
+        WARD,
+    ),
+    (
+        "Both blocks in the high chair, the nursery's too busy for them right now.",
+        "block_red@highchair & block_green@highchair",
+        NURSERY,
+    ),
+    ("The two plates on the rack, the counter's too cluttered for them.", None, KITCHEN),
+    (
+        "The three pens in the box, the office is too cluttered for them at the moment.",
+        "pen_black@box & pen_blue@box & pen_red@box",
+        OFFICE,
+    ),
+    ("The drill in the locker, the garage is too damp for it.", "drill@locker", WORKSHOP),
+    # _nobody_sulks51r: "So nobody sulks, <shares out>" (near: one person gets everything)
+    (
+        "So nobody sulks, Person A gets the apple and the stunt double, Person B, gets "
+        "the cup, one thing apiece.",
+        "apple>A & cup>B",
+        SQ,
+    ),
+    (
+        "So nobody sulks, the red block to Lily and the green block to Ava.",
+        "block_red>A & block_green>C",
+        NURSERY,
+    ),
+    (
+        "So no one feels left out, Marco gets the white plate and Lena the blue plate.",
+        "plate_white>A & plate_blue>B",
+        KITCHEN,
+    ),
+    (
+        "So neither of them kicks off, the green cup for Dana and the white cup for Omar.",
+        "cup_green>A & cup_white>B",
+        LAB,
+    ),
+    ("So nobody sulks, the red block and the green block to Lily.", None, NURSERY),
+    # _any_one_on51r: "It doesn't matter which box, just the one of them on the belt (for …)" (near:
+    # the purpose names a thing of the scene; one of its kind)
+    (
+        "It doesn't matter which box, just the one of them on the belt for the driver's test run.",
+        "box_small@conveyor | box_medium@conveyor | box_large@conveyor",
+        DEPOT,
+    ),
+    (
+        "It doesn't matter which plate, just one of them on the rack.",
+        "plate_white@rack | plate_blue@rack",
+        KITCHEN,
+    ),
+    (
+        "It doesn't matter which spanner, only one of them in the locker for Kofi's night shift.",
+        "spanner_small@locker | spanner_large@locker",
+        WORKSHOP,
+    ),
+    (
+        "It doesn't matter which cup, just the one of them on the tray.",
+        "cup_green@tray | cup_white@tray",
+        LAB,
+    ),
+    ("It doesn't matter which box, just the one of them on the belt for the tape.", None, DEPOT),
+    ("It doesn't matter which scanner, just the one of them on the belt.", None, DEPOT),
+    # _clearing51r: placings closed by "P's clearing the desk (for the visit)" (near: the things go
+    # on that surface; the purpose names a thing)
+    (
+        "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
+        "pen_black@box & pen_blue@box & pen_red@box",
+        OFFICE,
+    ),
+    (
+        "Both books on the shelf, Mrs Ortiz is tidying the desk.",
+        "book_red@shelf & book_green@shelf",
+        CLASSROOM,
+    ),
+    (
+        "The lemon on the rack, Marco's wiping down the counter for the dinner service.",
+        "lemon@rack",
+        KITCHEN,
+    ),
+    ("The jug on the trolley, Ruth's clearing the locker for the night.", "jug@trolley", WARD),
+    ("Both books on the desk, Mrs Ortiz is tidying the desk.", None, CLASSROOM),
+    ("The lemon on the rack, Marco's wiping down the counter for the salt.", None, KITCHEN),
+    # _they_share51r: a choice of who closed by "they share everything (…)" (near: two things; the
+    # remark names a thing)
+    (
+        "Alice or Bob, whichever of the two, can have the crisps; they share everything "
+        "on the a cappella tour.",
+        "chips>A | chips>B",
+        FIG1,
+    ),
+    ("Marco or Lena can have the lemon, they always share.", "lemon>A | lemon>B", KITCHEN),
+    (
+        "Mr Lee or Mrs Khan, whichever, can have the magazine; they'll swap it anyway.",
+        "magazine>B | magazine>C",
+        WARD,
+    ),
+    (
+        "Noah or Zoe can have the glue, they share everything in art club.",
+        "glue>B | glue>C",
+        CLASSROOM,
+    ),
+    ("Noah or Zoe can have the glue, they share the ruler.", None, CLASSROOM),
+)
+
+
 def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
     CASES.refused_without(_rewrites51r._STEPS51R, monkeypatch)

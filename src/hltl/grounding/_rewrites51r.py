@@ -11,6 +11,7 @@ from hltl.grounding._rewrites41s import _WANT_SAID41S
 from hltl.grounding._rewrites42s import _NEGATED42S
 from hltl.grounding._rewrites44r import _agrees44r, _read_or44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
+from hltl.grounding._rewrites47r import _thing47r
 from hltl.grounding._rewrites48r import _choice_for48r
 from hltl.grounding._rewrites49r import _it_is49r, _one49r, _targets49r, _the_one49r
 from hltl.grounding._rewrites50r import _about50r, _choice50r
@@ -438,6 +439,238 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
             )
 
 
+# "Mr Lee and Mrs Khan can each have a blanket, the blue one for him."
+_EACH_HAVE51R = re.compiled(
+    rf"^(?P<p>{_P46R}) and (?P<q>{_P46R})(?: can| will| should| are to| could|'ll)? (?:each )?"
+    r"(?:have|get|take|receive) (?:a|one) (?P<k>[a-z]+)(?: each| apiece)?\s*,\s*(?P<x>the [a-z]+) "
+    rf"(?:one |[a-z]+ )?(?:for|to|goes to|is for) (?P<pro>him|her|{_P46R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _each_have51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "P and Q can each have a blanket, the blue one for him" (the scene's two
+    blankets, one said for the one person the pronoun fits) is "Give P the blue blanket and Q the
+    grey blanket": each gets one, the other the one left."""
+    if "each" not in text.lower() and "apiece" not in text.lower():
+        return text
+    m = _EACH_HAVE51R.match(text.strip())
+    if m is None:
+        return text
+    p, q = _person46r(m["p"], lexicon), _person46r(m["q"], lexicon)
+    kind = _ids(f"the {m['k']}", lexicon, "object")
+    if p is None or q is None or p == q or len(kind) != 2 or _ids(f"the {m['k']}", lexicon) != kind:
+        return text
+    said = _ids(f"{m['x']} {m['k']}", lexicon, "object")
+    if len(said) != 1 or not said <= kind:
+        return text
+    pro = m["pro"]
+    if pro.lower() in ("him", "her"):
+        fits = [pid for pid in (p, q) if _agrees44r(pid, pro, lexicon)]
+    else:
+        fits = [pid for pid in (p, q) if _person46r(pro, lexicon) == pid]
+    if len(fits) != 1:
+        return text
+    first, other = fits[0], q if fits[0] == p else p
+    mine, rest = next(iter(said)), next(iter(kind - said))
+    a, b = _thing47r(mine, lexicon), _thing47r(rest, lexicon)
+    if a is None or b is None:
+        return text
+    name = {p: m["p"], q: m["q"]}
+    out = f"Give {name[first]} {a} and {name[other]} {b}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or {(t.obj, t.target) for t in tasks(node)} != {(mine, first), (rest, other)}:
+        return text
+    return out
+
+
+# "Person B is taking both things, bottle and chips, to the seed saving stall, so hand him the two."
+_TAKING_TO51R = re.compiled(
+    rf"^(?P<p>{_P46R})(?:'s| is)(?: off)? (?:taking|bringing|carrying|lugging|running) "
+    r"(?P<what>[^;.!?]+?) (?:to|over to|down to|up to|across to|round to) (?P<place>the [a-z' -]+?)"
+    r"\s*,\s*so (?:hand|give|pass|let) (?P<pro>him|her) (?:have )?(?P<n>the two|both|both of them|"
+    r"the pair|the pair of them|them|the lot|all three|the three|all of them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _taking_to51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "P is taking both things, bottle and chips, to the stall, so hand him
+    the two" (where P takes them naming nothing of the scene; 'the two' the count of what is
+    named) is "Hand P the bottle and the chips"."""
+    if " so " not in text.lower():
+        return text
+    m = _TAKING_TO51R.match(text.strip())
+    if m is None:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None or not _agrees44r(pid, m["pro"], lexicon) or _names(m["place"], lexicon):
+        return text
+    named = _names(m["what"], lexicon)
+    if not named or any(r.kind != "object" for it in named for r in it.refs):
+        return text
+    objs = list(dict.fromkeys(r.id for it in named for r in it.refs))
+    n = m["n"].lower()
+    count = 2 if ("two" in n or "both" in n or "pair" in n) else 3 if "three" in n else None
+    if len(objs) < 2 or (count is not None and len(objs) != count):
+        return text
+    things = [_thing47r(o, lexicon) for o in objs]
+    if any(t is None for t in things):
+        return text
+    out = (
+        f"Hand {m['p']} {', '.join(str(t) for t in things[:-1])} and {things[-1]}{m['end'] or '.'}"
+    )
+    node = _reading(out, lexicon)
+    if node is None or {(t.obj, t.target) for t in tasks(node)} != {(o, pid) for o in objs}:
+        return text
+    return out
+
+
+# "Both blankets on the locker for now, the ward's too warm for them at the minute."
+_TOO_WARM51R = re.compiled(
+    r"\s*,\s*(?P<who>the [a-z]+|it|it's getting|it has got|it's got)(?:'s| is| has got| has "
+    r"become)? (?:too|far too|a bit too|much too|rather too|way too) [a-z]+ (?:for|to need|to "
+    r"want) (?:them|it)(?: (?:at the minute|at the moment|right now|today|now|just now|this "
+    r"afternoon|in here))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _too_warm51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): placings closed by why they go there, "the ward's too warm for them (at
+    the minute)" (the subject naming nothing of the scene, 'them' the things placed): the remark
+    taken off."""
+    if "too " not in text.lower():
+        return text
+    m = _TOO_WARM51R.search(text.strip())
+    if m is None or _names(m["who"], lexicon):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# "So nobody sulks, Person A gets the apple and …"
+_NOBODY_SULKS51R = re.compiled(
+    r"^(?:so|so that|just so|to make sure|to be fair and)(?: that)? (?:nobody|no one|no-one|"
+    r"neither of them|none of them)(?:'s|'ll| will| is| gets| feels)? (?:sulks?|fights?|argues?|"
+    r"squabbles?|left out|jealous|feel left out|feels left out|kicks? off|complains?|moans?|"
+    r"upset|gets upset|gets jealous|falls out)\s*,\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _nobody_sulks51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a request opened by "So nobody sulks," (so no one's left out, so
+    neither of them kicks off) — why it is shared out, naming nothing — is the request (what it
+    shares out must go to more than one person)."""
+    low = text.lower()
+    if "nobody" not in low and "no one" not in low and "no-one" not in low and "of them" not in low:
+        return text
+    m = _NOBODY_SULKS51R.match(text.strip())
+    if m is None:
+        return text
+    out = f"{m['rest'][:1].upper()}{m['rest'][1:]}"
+    node = _reading(out, lexicon)
+    if node is None or len({t.target for t in tasks(node)}) < 2:
+        return text
+    return out
+
+
+# "It doesn't matter which box, just the one of them on the belt for the driver's test run."
+_ANY_ONE_ON51R = re.compiled(
+    r"^it (?:doesn't|does not|don't|won't|will not) matter which (?P<k>[a-z]+)\s*,\s*"
+    r"(?:just |only )?(?:the )?one (?:of them|of the [a-z]+) (?P<prep>on|onto|in|into) "
+    r"(?P<s>the [a-z]+)(?P<why> for [^,.;!?]+)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _any_one_on51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "It doesn't matter which box, just the one of them on the belt (for the
+    driver's test run)" is "Put a box on the belt": one of the kind, the robot's choice; the
+    purpose ('for <someone>'s <thing>' naming nothing else of the scene) taken off."""
+    if "matter which" not in text.lower():
+        return text
+    m = _ANY_ONE_ON51R.match(text.strip())
+    if m is None:
+        return text
+    kind = _ids(f"the {m['k']}", lexicon, "object")
+    if len(kind) < 2 or len(_ids(m["s"], lexicon, "surface")) != 1:
+        return text
+    if m["why"]:
+        why = re.sub(rf"^ for (?:{_P46R}|the [a-z]+)'s\b", "", m["why"], flags=_F)
+        if why == m["why"] or _names(why, lexicon) or not why.strip():
+            return text
+    out = f"Put a {m['k']} {m['prep']} {m['s']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or not has_choice(node) or {t.obj for t in tasks(node)} != kind:
+        return text
+    return out
+
+
+# "All three pens into the box, Priya's clearing the desk for the primatologist's visit."
+_CLEARING51R = re.compiled(
+    rf"\s*,\s*(?P<p>{_P46R})(?:'s| is)(?: just)? (?:clearing|tidying|emptying|wiping|cleaning|"
+    r"clearing off|sorting out|sorting|wiping down|clearing up|tidying up) (?P<s>the [a-z]+)"
+    r"(?P<why> for [^,.;!?]+)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _clearing51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): placings closed by "P's clearing the desk (for the visit)" (a surface of
+    the scene the things are not put on; why they are moved): the remark taken off."""
+    low = text.lower()
+    if not any(w in low for w in ("clear", "tidy", "tidying", "empty", "wip", "clean", "sort")):
+        return text
+    m = _CLEARING51R.search(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    sid = _ids(m["s"], lexicon, "surface")
+    if len(sid) != 1 or _ids(m["s"], lexicon) != sid:
+        return text
+    if m["why"]:
+        why = re.sub(r"\b(?:[a-z]+)'s\b", "", m["why"], flags=_F)
+        if _names(why, lexicon) or _names(m["why"], lexicon):
+            return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" or t.target in sid for t in tasks(node)):
+        return text
+    return out
+
+
+# "Alice or Bob, whichever of the two, can have the crisps; they share everything on the tour."
+_THEY_SHARE51R = re.compiled(
+    r"\s*[;,]\s*(?:and\s+)?(?:they|the two of them|the pair of them|those two)(?:'ll| will| always|"
+    r" usually| tend to| just)? (?:share|split|swap|go halves on)(?P<why> [^,.;!?]+)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _they_share51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a choice of who gets a thing closed by "they share everything (on the
+    tour)" (why it does not matter which, naming nothing of the scene): the remark taken off."""
+    low = text.lower()
+    if not any(w in low for w in ("share", "split", "swap", "halves")):
+        return text
+    m = _THEY_SHARE51R.search(text.strip())
+    if m is None or (m["why"] and _names(m["why"], lexicon)):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or not has_choice(node):
+        return text
+    got = list(tasks(node))
+    if len({t.obj for t in got}) != 1 or len({t.target for t in got}) < 2:
+        return text
+    return out
+
+
 # -- blind49: corrections ------------------------------------------------------------------------
 
 # the words of a cue that take the request back (session 49's, each a whole word: 'no, Noah')
@@ -812,6 +1045,13 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_there_is51r,
     _one_in_here51r,
     _only_one51r,
+    _each_have51r,
+    _taking_to51r,
+    _too_warm51r,
+    _nobody_sulks51r,
+    _any_one_on51r,
+    _clearing51r,
+    _they_share51r,
     _why_fix51r,
     _kept_on51r,
     _the_one_is51r,
