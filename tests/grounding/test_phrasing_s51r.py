@@ -189,6 +189,11 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         ),
         ("Put the cup on the shelf, then give it to Bob.", "cup@shelf ; cup>B", CELL),
         ("Bob's had the cup, so give him the apple.", None, CELL),
+        (
+            "Chips to Person A. Then again, she's just eaten, so swap them for the bottle.",
+            "bottle>A",
+            L44,
+        ),
         ("Give Bob the apple, Alice has had hers already.", "apple>B", CELL),
         ("Bob asked for one of the mugs, I gave him the red.", None, CELL),
         ("The doctor asked for one of the cups, green or white, she's particular.", None, LAB),
@@ -564,6 +569,41 @@ test_batch3 = CASES.test(
         CLASSROOM,
     ),
     ("Noah or Zoe can have the glue, they share the ruler.", None, CLASSROOM),
+)
+
+
+# -- blind49: a closing 'not a …' of who the person is; 'it's the X she's asked for' -------------
+
+test_batch4 = CASES.test(
+    # _not_a51r: "…, he's an ichthyologist, not a contortionist" (near: the pronoun is not the
+    # person; the 'not' names a thing; two people)
+    (
+        "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist.",
+        "pen_black>B | pen_blue>B | pen_red>B",
+        OFFICE,
+    ),
+    ("Give Bob the apple, he's a plumber, not a magician.", "apple>B", CELL),
+    ("The knife to Lena, she's a waitress, not a juggler.", "knife>B", KITCHEN),
+    (
+        "Kofi can have either spanner, he's a welder, not a watchmaker.",
+        "spanner_small>A | spanner_large>A",
+        WORKSHOP,
+    ),
+    ("Give Bob the apple, she's a plumber, not a magician.", None, CELL),
+    ("The knife to Lena, she's a waitress, not a lemon.", None, KITCHEN),
+    ("Give Bob the apple and Alice the cup, he's a plumber, not a magician.", None, CELL),
+    # _its_the_asked51r: "…, I mean, gosh, it's the X she's asked for(, to P)" (near: the pronoun is
+    # not the person; another person said after)
+    (
+        "The chips to Person A, I mean, gosh, it's the bottle she's asked for, to Person A.",
+        "bottle>A",
+        T21,
+    ),
+    ("The lemon to Marco, I mean, it's the salt he's asked for.", "salt>A", KITCHEN),
+    ("The jug for Mrs Khan, sorry, golly, it's the magazine she's after.", "magazine>C", WARD),
+    ("The hammer to Jess, I mean, it's the torch she's after, for Jess.", "torch>B", WORKSHOP),
+    ("The lemon to Marco, I mean, it's the salt she's asked for.", None, KITCHEN),
+    ("The hammer to Jess, I mean, it's the torch she's after, for Kofi.", None, WORKSHOP),
 )
 
 

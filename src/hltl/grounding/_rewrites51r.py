@@ -312,6 +312,32 @@ def _forgot51r(out: str, lexicon: Lexicon) -> bool:
     return False
 
 
+# "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist."
+_NOT_A51R = re.compiled(
+    r"(?P<pre>,\s*(?P<pro>she|he)(?:'s| is) (?:a|an|the) [a-z-]+(?: [a-z-]+)?)\s*,?\s*(?:and )?not "
+    r"(?:a|an|the) (?P<y>[a-z-]+(?: [a-z-]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_a51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a request closed by what its one person is, then what they are not
+    ("…, he's an ichthyologist, not a contortionist": a remark on who they are, naming nothing
+    of the scene): the 'not a …' taken off, the rest of the remark left to the rules that read
+    a closing remark."""
+    if "not a" not in text.lower() and "not the" not in text.lower():
+        return text
+    m = _NOT_A51R.search(text.strip())
+    if m is None or _names(m["y"], lexicon):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['pre']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    got = _targets49r(node)
+    if got is None or len(got) != 1 or not _agrees44r(next(iter(got)), m["pro"], lexicon):
+        return text
+    return out if _about50r(m["pre"], got, lexicon) else text
+
+
 # -- blind49: counts said of the scene ----------------------------------------------------------
 
 # "A lone bottle's all there is; Person A gets it."
@@ -398,7 +424,7 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
 _DONE51R = re.compiled(
     r"(?:^|[,;.:!?]|\b(?:and|but|so|though)\b)\s*(?:(?:and|but|so|though|oh)\s+)?"
     rf"(?P<who>she|he|they|{_P46R})(?:'s| has|'ve| have)(?: already| just| since)? (?:had|eaten|"
-    r"drunk|finished|used|taken|received|got|been given)(?: it| them| one| that| hers| his)?"
+    r"drunk|finished|used|taken|received|got|been given) (?:it|them|one|that|hers|his)"
     r"(?: already| now| by now| earlier| just now)?\s*(?=[,;.!?]|$)|"
     r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took) "
     r"(?P<to>him|her|them)\b",
@@ -410,7 +436,8 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 51 (12r): a reading handing things to a person of a text that says that person
     has had it already (eaten it, been given it) or that the speaker gave it them ("The one bottle
     in here was for Person A, and she's had it.", "Bob asked for one of the mugs, I gave him the
-    red.": 12c's fuzz; the want is over): refused. After a correction cue it is said of what
+    red.": 12c's fuzz; the want is over): refused ('it' / 'them' / 'one' said: "she's just eaten"
+    is a meal). After a correction cue it is said of what
     the correction takes back, and left."""
     low = text.lower()
     if not any(
@@ -826,6 +853,39 @@ def _she_said_make51r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# "The chips to Person A, I mean, gosh, it's the bottle she's asked for, to Person A."
+_ITS_THE_ASKED51R = re.compiled(
+    rf"^(?P<head>[^,;]+?)\s*,\s*(?P<cue>(?:{_CUE51R}|i mean\s*,?\s*|i meant\s*,?\s*)+)(?:(?:gosh|"
+    r"golly|goodness|blimey|crikey|heavens|oh dear|dear me|good grief|silly me|duh)\s*,\s*)?"
+    r"it(?:'s| is| was) (?P<x>the [a-z]+(?: [a-z]+)?) (?P<pro>she|he)(?:'s| has| had| is| was)? "
+    r"(?:asked for|wants|wanted|after|needs|ordered|asked me for)"
+    rf"(?:\s*,\s*(?:to|for) (?P<p>{_P46R}))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _its_the_asked51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a request for one person, a cue (with a 'gosh' after it), then "it's
+    the bottle she's asked for(, to P)" (she that person, P said again) is "<request>, no, the
+    bottle": the thing corrected."""
+    low = text.lower()
+    if "it's the" not in low and "it is the" not in low and "it was the" not in low:
+        return text
+    m = _ITS_THE_ASKED51R.match(text.strip())
+    if m is None or not _BACK51R.search(m["cue"]):
+        return text
+    first = _one_task51r(m["head"], lexicon)
+    if first is None or first[0] != "deliver" or not _agrees44r(first[2], m["pro"], lexicon):
+        return text
+    if m["p"] and _person46r(m["p"], lexicon) != first[2]:
+        return text
+    out = f"{m['head']}, no, {m['x']}{m['end'] or '.'}"
+    fixed = _one_task51r(out, lexicon)
+    if fixed is None or fixed[2] != first[2] or fixed[1] == first[1]:
+        return text
+    return out
+
+
 # "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag."
 _ONE_WITH51R = re.compiled(
     rf"^(?P<head>.+?(?P<p>{_P46R}))\s*,\s*the one (?:with|in|wearing|carrying|holding|who|that|"
@@ -1037,6 +1097,7 @@ _STEPS51R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _front_choice51r,
     _likes_both51r,
+    _not_a51r,
     _pick_of51r,
     _so_long_as51r,
     _would_suit51r,
@@ -1056,6 +1117,7 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _kept_on51r,
     _the_one_is51r,
     _she_said_make51r,
+    _its_the_asked51r,
     _one_with51r,
     _yes_again51r,
 )
