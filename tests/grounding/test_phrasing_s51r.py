@@ -130,6 +130,11 @@ FUZZ_REFUSED = [
         NURSERY,
         _rewrites51r._and_then_who51r,
     ),
+    (
+        "Alice take everything except crisps lah, no, Bob, well, put it on the shelf instead.",
+        TWO,
+        _rewrites51r._excluded_back51r,
+    ),
     ("Either Alice or Bob wants the crisps.", FIG1, _rewrites51r._who_wants51r),
     ("Alice or Carol needed the red mug.", CELL, _rewrites51r._who_wants51r),
     ("Mr Lee or Mrs Khan asked for the magazine.", WARD, _rewrites51r._who_wants51r),
@@ -181,6 +186,7 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         ("Alice or Bob has to get the crisps.", "chips>A | chips>B", FIG1),
         ("Either Alice or Bob is to have the crisps.", "chips>A | chips>B", FIG1),
         ("Alice or Carol can have the red mug.", "mug_red>A | mug_red>C", CELL),
+        ("Give Bob everything but the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
         ("Hand the apple to Bob, no, to Carol, well, the crisps actually.", "chips>C", CELL),
         (
             "Put the torch in the locker, no, the workbench, well, give it to Kofi instead.",

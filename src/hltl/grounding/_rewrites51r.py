@@ -1091,6 +1091,45 @@ def _who_wants51r(text: str, node: Node, lexicon: Lexicon) -> None:
     )
 
 
+# "Alice take everything except crisps lah, no, Bob, well, put it on the shelf instead."
+_EXCEPT51R = re.compiled(
+    r"\b(?:except(?: for)?|apart from|other than|excluding|bar|save for|but not|besides)\s+"
+    r"(?P<x>(?:the |that |those |her |his )?[a-z]+(?: [a-z]+)?)",
+    _F,
+)
+
+
+def _excluded_back51r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 51 (12r): a reading that moves a thing the text leaves out ("everything except
+    crisps") when nothing after the exclusion names that thing again (12c's chains fuzz: with a
+    'lah' after it, a correction had lost the 'except' and put the crisps on the shelf too):
+    refused."""
+    low = text.lower()
+    if not any(
+        w in low
+        for w in (
+            "except",
+            "apart",
+            "other than",
+            "excluding",
+            "bar ",
+            "save",
+            "but not",
+            "besides",
+        )
+    ):
+        return
+    moved = {t.obj for t in tasks(node)}
+    for m in _EXCEPT51R.finditer(text):
+        left = {r.id for it in _names(m["x"], lexicon) for r in it.refs if r.kind == "object"}
+        back = left & moved
+        if not back or back & _ids(text[m.end() :], lexicon, "object"):
+            continue
+        raise GroundingError(
+            f"'{m.group(0)}' leaves out what the reading would move: say the whole request again"
+        )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
@@ -1133,4 +1172,5 @@ CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
     _instead_twice51r,
     _done_after51r,
     _who_wants51r,
+    _excluded_back51r,
 )
