@@ -173,9 +173,6 @@ KNOWN_MISSES = frozenset(
         "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
         "bottle for Person A, the chips to Person B.",
-        "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
-        "The chips can go to whichever of the two you like, Person A or Person B, they both "
-        "put in a shift on the cake stall.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
         "All three of the pens into the box, Priya's had enough of the doodling.",
@@ -266,7 +263,6 @@ KNOWN_MISSES = frozenset(
         "notebook to priya thanks she has minutes to take",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
-        "All four things to Person B: bottle, chips, cup and apple.",
         "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
         "and cup alike.",
         "Alice put in for the bottle and she's owed it, so it's hers; Bob can have the crisps "

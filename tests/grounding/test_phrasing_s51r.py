@@ -31,12 +31,13 @@ def _scene(name: str):
     return load_scene(ROOT / f"examples/scenes/{name}.yaml")
 
 
-DUO, ONE, T12, F42, L44, L24, T21, SQ, FIG1, TWO = (
+DUO, ONE, T12, F41, F42, L44, L24, T21, SQ, FIG1, TWO = (
     _scene(n)
     for n in (
         "2-2",
         "1-1",
         "1-2",
+        "4-1",
         "4-2",
         "4-4-line",
         "2-4-line",
@@ -610,6 +611,75 @@ test_batch4 = CASES.test(
     ("The hammer to Jess, I mean, it's the torch she's after, for Jess.", "torch>B", WORKSHOP),
     ("The lemon to Marco, I mean, it's the salt she's asked for.", None, KITCHEN),
     ("The hammer to Jess, I mean, it's the torch she's after, for Kofi.", None, WORKSHOP),
+)
+
+
+# -- blind37 / blind45: both of them, a list after a colon, 'they both …' ----------------------
+
+test_batch5 = CASES.test(
+    # _both_of_them51r: "Both of them go to P, X and Y, <remark>" (near: a word that names no
+    # object)
+    (
+        "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
+        "bottle>B & chips>B",
+        L24,
+    ),
+    (
+        "Both of them go to Kofi, hammer and screws, he's fixing the shed.",
+        "hammer>A & screws>A",
+        WORKSHOP,
+    ),
+    (
+        "Both of them go to Lena, knife and lemon, she's got the fish course to do.",
+        "knife>B & lemon>B",
+        KITCHEN,
+    ),
+    (
+        "Both of them go to Ava, teddy and wipes, she's got a tower to build.",
+        "teddy>C & wipes>C",
+        NURSERY,
+    ),
+    ("Both of them go to Kofi, hammer and nails, he's fixing the shed.", None, WORKSHOP),
+    # _listed51r: "All four things to P: bottle, chips, cup and apple" (near: the list is not what
+    # the head counts)
+    (
+        "All four things to Person B: bottle, chips, cup and apple.",
+        "bottle>B & chips>B & cup>B & apple>B",
+        SQ,
+    ),
+    (
+        "All four things to Person A: the bottle, the chips, the cup and the apple.",
+        "bottle>A & chips>A & cup>A & apple>A",
+        F41,
+    ),
+    ("Both things to Person A: bottle and chips.", "bottle>A & chips>A", DUO),
+    ("Both things to Person B: the bottle and the chips.", "bottle>B & chips>B", T21),
+    ("All four things to Person B: bottle, chips and cup.", None, SQ),
+    # _they_share51r, 'they both …': a choice of who closed by a remark on both (near: they both
+    # want a thing)
+    (
+        "The chips can go to whichever of the two you like, Person A or Person B, they "
+        "both put in a shift on the cake stall.",
+        "chips>A | chips>B",
+        T21,
+    ),
+    (
+        "The lemon can go to whichever of the two you fancy, Marco or Lena, they both "
+        "put in a shift.",
+        "lemon>A | lemon>B",
+        KITCHEN,
+    ),
+    (
+        "Alice or Carol can have the apple, they both put in a shift on the stall.",
+        "apple>A | apple>C",
+        CELL,
+    ),
+    (
+        "Noah or Zoe can have the glue, they both put in a shift at the fair.",
+        "glue>B | glue>C",
+        CLASSROOM,
+    ),
+    ("Noah or Zoe can have the glue, they both want the ruler.", None, CLASSROOM),
 )
 
 

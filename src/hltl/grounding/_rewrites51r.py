@@ -466,6 +466,61 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
             )
 
 
+# "Both of them go to Person B, bottle and chips, he's got the marching band to feed."
+_BOTH_OF_THEM51R = re.compiled(
+    rf"^both of them (?P<v>go|are going|can go|are for|need to go|should go) (?P<to>to|for) "
+    rf"(?P<p>{_P46R})\s*,\s*(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) and (?P<y>(?:the )?[a-z]+"
+    r"(?: [a-z]+)?)(?P<tail>(?:\s*,\s*[^,.;!?]+)*)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _both_of_them51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "Both of them go to P, bottle and chips(, …)" (the two said after the
+    person) is "Both the bottle and the chips go to P(, …)", each naming one object."""
+    if not text.lower().startswith("both of them"):
+        return text
+    m = _BOTH_OF_THEM51R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    x, y = (f"the {w}" if not w.lower().startswith("the ") else w for w in (m["x"], m["y"]))
+    a, b = _ids(x, lexicon, "object"), _ids(y, lexicon, "object")
+    if len(a) != 1 or len(b) != 1 or a == b or _ids(x, lexicon) != a or _ids(y, lexicon) != b:
+        return text
+    out = f"Both {x} and {y} {m['v']} {m['to']} {m['p']}{m['tail']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or {t.obj for t in tasks(node)} != a | b:
+        return text
+    return out
+
+
+# "All four things to Person B: bottle, chips, cup and apple."
+_LISTED51R = re.compiled(
+    r"^(?P<head>(?:all|both|the|all the) (?:two |three |four |five |six )?(?:things|items|of them) "
+    rf"(?:to|for|go to|goes to|over to|are for) (?P<p>{_P46R}))\s*:\s*(?P<list>[^.;!?:]+?)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _listed51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "All four things to P: bottle, chips, cup and apple" (the things said
+    again after a colon, exactly the ones the head counts) is "All four things to P"."""
+    if ":" not in text:
+        return text
+    m = _LISTED51R.match(text.strip())
+    if m is None:
+        return text
+    named = _names(m["list"], lexicon)
+    if not named or any(len(it.refs) != 1 or it.refs[0].kind != "object" for it in named):
+        return text
+    out = f"{m['head']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or {t.obj for t in tasks(node)} != {it.refs[0].id for it in named}:
+        return text
+    return out
+
+
 # "Mr Lee and Mrs Khan can each have a blanket, the blue one for him."
 _EACH_HAVE51R = re.compiled(
     rf"^(?P<p>{_P46R}) and (?P<q>{_P46R})(?: can| will| should| are to| could|'ll)? (?:each )?"
@@ -672,8 +727,9 @@ def _clearing51r(text: str, lexicon: Lexicon) -> str:
 
 # "Alice or Bob, whichever of the two, can have the crisps; they share everything on the tour."
 _THEY_SHARE51R = re.compiled(
-    r"\s*[;,]\s*(?:and\s+)?(?:they|the two of them|the pair of them|those two)(?:'ll| will| always|"
-    r" usually| tend to| just)? (?:share|split|swap|go halves on)(?P<why> [^,.;!?]+)?"
+    r"\s*[;,]\s*(?:and\s+)?(?:(?:they|the two of them|the pair of them|those two)(?:'ll| will|"
+    r" always| usually| tend to| just)? (?:share|split|swap|go halves on)|"
+    r"(?P<both>they(?:'ve)? both|the two of them|both of them)(?= ))(?P<why> [^,.;!?]+)?"
     r"(?P<end>\s*[.!]?)$",
     _F,
 )
@@ -683,11 +739,15 @@ def _they_share51r(text: str, lexicon: Lexicon) -> str:
     """Session 51 (12r): a choice of who gets a thing closed by "they share everything (on the
     tour)" (why it does not matter which, naming nothing of the scene): the remark taken off."""
     low = text.lower()
-    if not any(w in low for w in ("share", "split", "swap", "halves")):
+    if not any(w in low for w in ("share", "split", "swap", "halves", "both")):
         return text
     m = _THEY_SHARE51R.search(text.strip())
     if m is None or (m["why"] and _names(m["why"], lexicon)):
         return text
+    if m["both"] and (
+        not m["why"] or _WANT_SAID41S.search(m["why"]) or _NEGATED42S.search(m["why"])
+    ):
+        return text  # "they both put in a shift": a remark; "they both want it" is no remark
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
     node = _reading(out, lexicon)
     if node is None or not has_choice(node):
@@ -1145,6 +1205,8 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_there_is51r,
     _one_in_here51r,
     _only_one51r,
+    _both_of_them51r,
+    _listed51r,
     _each_have51r,
     _taking_to51r,
     _too_warm51r,
