@@ -188,6 +188,19 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         ("Either Alice or Bob is to have the crisps.", "chips>A | chips>B", FIG1),
         ("Alice or Carol can have the red mug.", "mug_red>A | mug_red>C", CELL),
         ("Give Bob everything but the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
+        # said as done, a closing remark of these rules after it: not taken off (12c's fuzz)
+        (
+            "Both blankets were on the locker, the ward's too warm for them at the minute.",
+            None,
+            WARD,
+        ),
+        ("All three pens went into the box, Priya's clearing the desk.", None, OFFICE),
+        ("So nobody sulks, Person A got the apple and Person B got the cup.", None, SQ),
+        (
+            "The chips for Person A, oops, wrong name, I mean Person B, the one who's had some.",
+            None,
+            DUO,
+        ),
         ("Hand the apple to Bob, no, to Carol, well, the crisps actually.", "chips>C", CELL),
         (
             "Put the torch in the locker, no, the workbench, well, give it to Kofi instead.",

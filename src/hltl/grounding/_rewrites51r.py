@@ -18,6 +18,15 @@ from hltl.grounding._rewrites50r import _about50r, _choice50r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node, has_choice, tasks
 
+# a head said as done, or as what was ("Both blankets were on the locker", "A got the apple"):
+# the rules that take a closing remark off leave it (12c's fuzz: the remark had been its refusal)
+_DONE_HEAD51R = re.compiled(
+    r"\b(?:was|were|went|had|got|been|gave|given|took|taken|received|brought|handed|passed|"
+    r"delivered|sent|ended up)\b",
+    _F,
+)
+
+
 # -- whose a thing is, said of it: the reading must not hand it to someone else ------------------
 
 # "… Then the apple. That one's Person B's.", "…, it's Mr Lee's.", "…, that is the nurse's."
@@ -71,6 +80,8 @@ def _closing51r(head: str, tail: str, end: str, text: str, lexicon: Lexicon) -> 
     """``head`` (a choice handed to one person) with the closing remarks of ``tail`` taken off:
     those of ``_CLOSING51R`` (what the rest of the remark says naming nothing of the scene, the
     pronoun that person), then the ones ``_choice50r`` takes off."""
+    if _DONE_HEAD51R.search(head):
+        return text
     node = _reading(f"{head}{end or '.'}", lexicon)
     people = _targets49r(node)
     if node is None or people is None or len(people) != 1 or not has_choice(node):
@@ -328,7 +339,7 @@ def _not_a51r(text: str, lexicon: Lexicon) -> str:
     if "not a" not in text.lower() and "not the" not in text.lower():
         return text
     m = _NOT_A51R.search(text.strip())
-    if m is None or _names(m["y"], lexicon):
+    if m is None or _names(m["y"], lexicon) or _DONE_HEAD51R.search(text.strip()[: m.start()]):
         return text
     out = f"{text.strip()[: m.start()]}{m['pre']}{m['end'] or '.'}"
     node = _reading(out, lexicon)
@@ -405,6 +416,8 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
         return text
     m = _ONLY_ONE51R.search(text.strip())
     if m is None or m.group(0).strip(" ,.!").lower() == "the one":
+        return text
+    if _DONE_HEAD51R.search(text.strip()[: m.start()]):
         return text
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
     node = _reading(out, lexicon)
@@ -513,6 +526,8 @@ def _listed51r(text: str, lexicon: Lexicon) -> str:
         return text
     named = _names(m["list"], lexicon)
     if not named or any(len(it.refs) != 1 or it.refs[0].kind != "object" for it in named):
+        return text
+    if _DONE_HEAD51R.search(m["head"]):
         return text
     out = f"{m['head']}{m['end'] or '.'}"
     node = _reading(out, lexicon)
@@ -627,6 +642,8 @@ def _too_warm51r(text: str, lexicon: Lexicon) -> str:
     m = _TOO_WARM51R.search(text.strip())
     if m is None or _names(m["who"], lexicon):
         return text
+    if _DONE_HEAD51R.search(text.strip()[: m.start()]):
+        return text
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
     node = _reading(out, lexicon)
     if node is None or any(t.kind != "place" for t in tasks(node)):
@@ -653,6 +670,8 @@ def _nobody_sulks51r(text: str, lexicon: Lexicon) -> str:
         return text
     m = _NOBODY_SULKS51R.match(text.strip())
     if m is None:
+        return text
+    if _DONE_HEAD51R.search(m["rest"]):
         return text
     out = f"{m['rest'][:1].upper()}{m['rest'][1:]}"
     node = _reading(out, lexicon)
@@ -718,6 +737,8 @@ def _clearing51r(text: str, lexicon: Lexicon) -> str:
         why = re.sub(r"\b(?:[a-z]+)'s\b", "", m["why"], flags=_F)
         if _names(why, lexicon) or _names(m["why"], lexicon):
             return text
+    if _DONE_HEAD51R.search(text.strip()[: m.start()]):
+        return text
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
     node = _reading(out, lexicon)
     if node is None or any(t.kind != "place" or t.target in sid for t in tasks(node)):
@@ -748,6 +769,8 @@ def _they_share51r(text: str, lexicon: Lexicon) -> str:
         not m["why"] or _WANT_SAID41S.search(m["why"]) or _NEGATED42S.search(m["why"])
     ):
         return text  # "they both put in a shift": a remark; "they both want it" is no remark
+    if _DONE_HEAD51R.search(text.strip()[: m.start()]):
+        return text
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
     node = _reading(out, lexicon)
     if node is None or not has_choice(node):
@@ -963,7 +986,7 @@ def _one_with51r(text: str, lexicon: Lexicon) -> str:
     if m is None or not _BACK51R.search(m["head"]):
         return text
     pid = _person46r(m["p"], lexicon)
-    if pid is None or not _about50r(m["why"], {pid}, lexicon):
+    if pid is None or not _about50r(m["why"], {pid}, lexicon) or _DONE_HEAD51R.search(m["why"]):
         return text
     out = f"{m['head']}{m['end'] or '.'}"
     fixed = _one_task51r(out, lexicon)
