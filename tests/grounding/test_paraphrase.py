@@ -175,10 +175,8 @@ KNOWN_MISSES = frozenset(
         "bottle for Person A, the chips to Person B.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
-        "All three of the pens into the box, Priya's had enough of the doodling.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
         "pool.",
-        "The bottle's for Person A and for no one else, she's earned it at the fun run.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         "about, so give it her.",
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
@@ -280,7 +278,6 @@ KNOWN_MISSES = frozenset(
         "Person B's way.",
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
-        "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
         "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
         "over it goes.",
         "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "

@@ -696,5 +696,59 @@ test_batch5 = CASES.test(
 )
 
 
+# -- blind37 / blind45: closing 'had enough of', 'earned it'; who left the one thing ------------
+
+test_batch6 = CASES.test(
+    # _had_enough51r: placings closed by "P's had enough of the doodling" (near: the remark names a
+    # thing; a person gets them)
+    (
+        "All three of the pens into the box, Priya's had enough of the doodling.",
+        "pen_black@box & pen_blue@box & pen_red@box",
+        OFFICE,
+    ),
+    (
+        "Both plates on the rack, Marco's had enough of the clutter.",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    ("The scissors in the desk, Zoe's had enough of the snipping.", "scissors@desk", CLASSROOM),
+    ("The drill in the locker, Kofi's had it with all the noise.", "drill@locker", WORKSHOP),
+    ("Both plates on the rack, Marco's had enough of the lemon.", None, KITCHEN),
+    ("Give Lena both plates, Marco's had enough of the clutter.", None, KITCHEN),
+    # _earned51r: a request for one person closed by "she's earned it (at the fun run)" (near: the
+    # pronoun; two people)
+    (
+        "The bottle's for Person A and for no one else, she's earned it at the fun run.",
+        "bottle>A",
+        ONE,
+    ),
+    ("The apple's for Bob and for nobody else, he's earned it at the quiz.", "apple>B", CELL),
+    (
+        "The lemon is for Lena and for no one else, she's earned it at the tasting.",
+        "lemon>B",
+        KITCHEN,
+    ),
+    (
+        "The magazine's for Mrs Khan and for no one else, she's earned it at physio.",
+        "magazine>C",
+        WARD,
+    ),
+    ("The apple's for Bob and for nobody else, she's earned it at the quiz.", None, CELL),
+    ("The apple's for Bob and for nobody else, he's earned it from Carol.", None, CELL),
+    # _left_a51r: "The dairymaid's left a solitary bottle on the side; take it to P" (near: two of
+    # the kind; who left it is of the scene)
+    (
+        "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
+        "bottle>A",
+        T12,
+    ),
+    ("The cleaner's left a banana on the side; take it to Omar.", "banana>B", LAB),
+    ("The porter has left a lemon out; give it to Marco.", "lemon>A", KITCHEN),
+    ("The porter's left a magazine on the side; take it to Mr Lee.", "magazine>B", WARD),
+    ("The porter has left a plate out; give it to Marco.", None, KITCHEN),
+    ("The chef has left a lemon out; give it to Lena.", None, KITCHEN),
+)
+
+
 def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
     CASES.refused_without(_rewrites51r._STEPS51R, monkeypatch)

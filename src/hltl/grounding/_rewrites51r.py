@@ -746,6 +746,87 @@ def _clearing51r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
+# "All three pens into the box, Priya's had enough of the doodling."
+_HAD_ENOUGH51R = re.compiled(
+    rf"\s*,\s*(?P<p>{_P46R})(?:'s| has)(?: just| really)? (?:had enough of|had it with|got fed up "
+    r"with|grown tired of|had her fill of|had his fill of) "
+    r"(?P<why>(?:the|all the|all that) [a-z -]+)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _had_enough51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): placings closed by "P's had enough of the doodling" (why the things go
+    away, naming nothing of the scene): the remark taken off."""
+    low = text.lower()
+    if not any(w in low for w in ("enough", "had it", "fed up", "tired", "fill")):
+        return text
+    m = _HAD_ENOUGH51R.search(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None or _names(m["why"], lexicon):
+        return text
+    if _DONE_HEAD51R.search(text.strip()[: m.start()]):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# "The bottle's for Person A and for no one else, she's earned it at the fun run."
+_EARNED51R = re.compiled(
+    r"\s*,\s*(?P<pro>she|he)(?:'s| has)(?: more than| really| well and truly)? (?:earned|deserved) "
+    r"(?:it|them)(?P<why> [^,.;!?]+)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _earned51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): a request handing things to one person closed by "she's earned it (at
+    the fun run)" (the pronoun that person, the rest naming nothing of the scene): the remark
+    taken off (``_closing51r`` has it after a choice)."""
+    if "earned" not in text.lower() and "deserved" not in text.lower():
+        return text
+    m = _EARNED51R.search(text.strip())
+    if m is None or (m["why"] and _names(m["why"], lexicon)):
+        return text
+    head = text.strip()[: m.start()]
+    if _DONE_HEAD51R.search(head):
+        return text
+    out = f"{head}{m['end'] or '.'}"
+    got = _targets49r(_reading(out, lexicon))
+    if got is None or len(got) != 1 or not _agrees44r(next(iter(got)), m["pro"], lexicon):
+        return text
+    return out
+
+
+# "The dairymaid's left a solitary bottle on the side; take it to Person A, …"
+_LEFT_A51R = re.compiled(
+    r"^(?P<who>(?:the|a|our|my) [a-z]+(?: [a-z]+)?)(?:'s| has) (?:left|put out|set out|"
+    r"dropped off) (?P<x>a (?:solitary |single |lone |sole )?[a-z]+)(?P<where> on the side| out| "
+    r"here| for us| on the table| on the counter)?\s*;\s*(?P<rest>.+)$",
+    _F,
+)
+
+
+def _left_a51r(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12r): "The dairymaid's left a solitary bottle on the side; take it to P" (who
+    left it naming nothing of the scene) is "There's a solitary bottle on the side; take it to
+    P" (what the request is about, the scene's one of its kind)."""
+    if "left" not in text.lower() and " out" not in text.lower():
+        return text
+    m = _LEFT_A51R.match(text.strip())
+    if m is None or _names(m["who"], lexicon):
+        return text
+    where = m["where"] or ""
+    if where and _names(where, lexicon):
+        return text
+    kind = m["x"].split()[-1]
+    if _the_one49r(kind, lexicon) is None:
+        return text
+    return _read_or44r(f"There's {m['x']}{where}; {m['rest']}", text, lexicon)
+
+
 # "Alice or Bob, whichever of the two, can have the crisps; they share everything on the tour."
 _THEY_SHARE51R = re.compiled(
     r"\s*[;,]\s*(?:and\s+)?(?:(?:they|the two of them|the pair of them|those two)(?:'ll| will|"
@@ -1236,6 +1317,9 @@ _STEPS51R: tuple[Callable[[str, Lexicon], str], ...] = (
     _nobody_sulks51r,
     _any_one_on51r,
     _clearing51r,
+    _had_enough51r,
+    _earned51r,
+    _left_a51r,
     _they_share51r,
     _why_fix51r,
     _kept_on51r,
