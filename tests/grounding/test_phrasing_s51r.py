@@ -188,6 +188,7 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         ("Either Alice or Bob is to have the crisps.", "chips>A | chips>B", FIG1),
         ("Alice or Carol can have the red mug.", "mug_red>A | mug_red>C", CELL),
         ("Give Bob everything but the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
+        ("Alice or Bob can have the crisps; they share nothing.", None, FIG1),
         # said as done, a closing remark of these rules after it: not taken off (12c's fuzz)
         (
             "Both blankets were on the locker, the ward's too warm for them at the minute.",

@@ -844,7 +844,7 @@ def _they_share51r(text: str, lexicon: Lexicon) -> str:
     if not any(w in low for w in ("share", "split", "swap", "halves", "both")):
         return text
     m = _THEY_SHARE51R.search(text.strip())
-    if m is None or (m["why"] and _names(m["why"], lexicon)):
+    if m is None or (m["why"] and (_names(m["why"], lexicon) or _NEGATED42S.search(m["why"]))):
         return text
     if m["both"] and (
         not m["why"] or _WANT_SAID41S.search(m["why"]) or _NEGATED42S.search(m["why"])
@@ -974,7 +974,10 @@ def _the_one_is51r(text: str, lexicon: Lexicon) -> str:
     if pid is None:
         return text
     who = m["who"]
-    if who and not _about50r(who, {pid}, lexicon) and not _WANTS_IT51R.fullmatch(who):
+    if who and (
+        _DONE_HEAD51R.search(who)
+        or (not _about50r(who, {pid}, lexicon) and not _WANTS_IT51R.fullmatch(who))
+    ):
         return text
     out = f"{text.strip()[: m.start()]}{m['cue']}{m['p']}{m['end'] or '.'}"
     fixed = _one_task51r(out, lexicon)
