@@ -143,11 +143,11 @@ FUZZ_REFUSED = [
     ("The apple to Alice, no, Bob, well, the crisps.", CELL, _rewrites51r._well_again51r),
     ("The jug for Ruth, sorry, Mr Lee, well, the pills.", WARD, _rewrites51r._well_again51r),
     (
-        "The one bottle in here was for Person A, and she's had it.",
+        "The bottle was for Person A, and she's had it.",
         ONE,
         _rewrites51r._done_after51r,
     ),
-    ("The one apple in here was for Bob, and he's eaten it.", CELL, _rewrites51r._done_after51r),
+    ("The apple was for Bob, and he's eaten it.", CELL, _rewrites51r._done_after51r),
     ("Bob needs the apple, but he's had it.", CELL, _rewrites51r._done_after51r),
     ("The lemon was for Lena, and she's had it already.", KITCHEN, _rewrites51r._done_after51r),
     (
@@ -189,6 +189,14 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         ("Alice or Carol can have the red mug.", "mug_red>A | mug_red>C", CELL),
         ("Give Bob everything but the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
         ("Alice or Bob can have the crisps; they share nothing.", None, FIG1),
+        ("The one bottle in here was for Person A, and she's had it.", None, ONE),
+        ("The one banana in here went to Omar.", None, LAB),
+        (
+            "The chips went to Person A, oops, wrong name, I mean Person B, the one with the "
+            "sabre bag.",
+            None,
+            DUO,
+        ),
         # said as done, a closing remark of these rules after it: not taken off (12c's fuzz)
         (
             "Both blankets were on the locker, the ward's too warm for them at the minute.",

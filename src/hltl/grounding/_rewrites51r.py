@@ -392,7 +392,7 @@ def _one_in_here51r(text: str, lexicon: Lexicon) -> str:
     if not any(w in low for w in ("one ", "only ", "single ", "lone ", "sole ")):
         return text
     m = _ONE_IN_HERE51R.search(text)
-    if m is None:
+    if m is None or _DONE_HEAD51R.search(text):
         return text
     thing = _the_one49r(m["x"], lexicon)
     if thing is None:
@@ -872,7 +872,10 @@ _CUE51R = (
 
 
 def _one_task51r(text: str, lexicon: Lexicon) -> tuple[str, str, str] | None:
-    """The (kind, object, target) of the one task ``text`` reads as, or None."""
+    """The (kind, object, target) of the one task ``text`` reads as, or None (a text said as done,
+    "The chips went to Person A, …", none)."""
+    if _DONE_HEAD51R.search(text):
+        return None
     node = _reading(text, lexicon)
     got = [] if node is None else list(tasks(node))
     if node is None or len(got) != 1 or has_choice(node):
