@@ -188,6 +188,17 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         ("Either Alice or Bob is to have the crisps.", "chips>A | chips>B", FIG1),
         ("Alice or Carol can have the red mug.", "mug_red>A | mug_red>C", CELL),
         ("Give Bob everything but the mugs.", "cup>B & bottle>B & chips>B & apple>B", CELL),
+        # the excluded thing sent elsewhere, as said (blind26 #125, blind34 #134)
+        (
+            "All of it to Person A, apart from the apple, which Person B gets.",
+            "bottle>A & chips>A & cup>A & apple>B",
+            SQ,
+        ),
+        (
+            "Mr Lee gets the jug but not the tablets, those are for Mrs Khan.",
+            "jug>B & pills>C",
+            WARD,
+        ),
         ("Alice or Bob can have the crisps; they share nothing.", None, FIG1),
         ("The one bottle in here was for Person A, and she's had it.", None, ONE),
         ("The one banana in here went to Omar.", None, LAB),

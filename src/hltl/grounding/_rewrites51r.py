@@ -1271,9 +1271,9 @@ _EXCEPT51R = re.compiled(
 
 def _excluded_back51r(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 51 (12r): a reading that moves a thing the text leaves out ("everything except
-    crisps") when nothing after the exclusion names that thing again (12c's chains fuzz: with a
-    'lah' after it, a correction had lost the 'except' and put the crisps on the shelf too):
-    refused."""
+    crisps") where the rest goes, when nothing after the exclusion names that thing again (12c's
+    chains fuzz: with a 'lah' after it, a correction had lost the 'except' and put the crisps on
+    the shelf too): refused."""
     low = text.lower()
     if not any(
         w in low
@@ -1289,10 +1289,13 @@ def _excluded_back51r(text: str, node: Node, lexicon: Lexicon) -> None:
         )
     ):
         return
-    moved = {t.obj for t in tasks(node)}
+    got = list(tasks(node))
     for m in _EXCEPT51R.finditer(text):
         left = {r.id for it in _names(m["x"], lexicon) for r in it.refs if r.kind == "object"}
-        back = left & moved
+        # an excluded thing going where the rest goes ("…, apart from the apple, which Person B
+        # gets" sends it elsewhere, as said)
+        rest = {t.target for t in got if t.obj not in left}
+        back = {t.obj for t in got if t.obj in left and t.target in rest}
         if not back or back & _ids(text[m.end() :], lexicon, "object"):
             continue
         raise GroundingError(
