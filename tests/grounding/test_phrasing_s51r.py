@@ -200,6 +200,8 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
             WARD,
         ),
         ("Alice or Bob can have the crisps; they share nothing.", None, FIG1),
+        ("Alice or Bob can have the crisps, they both hate them.", None, FIG1),
+        ("Alice or Bob can have the crisps, they both had some.", None, FIG1),
         ("The one bottle in here was for Person A, and she's had it.", None, ONE),
         ("The one banana in here went to Omar.", None, LAB),
         (

@@ -8,7 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _reading
 from hltl.grounding._rewrites41s import _WANT_SAID41S
-from hltl.grounding._rewrites42s import _NEGATED42S
+from hltl.grounding._rewrites42s import _NEGATED42S, _remark_only42s
 from hltl.grounding._rewrites44r import _agrees44r, _read_or44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites47r import _thing47r
@@ -847,9 +847,16 @@ def _they_share51r(text: str, lexicon: Lexicon) -> str:
     if m is None or (m["why"] and (_names(m["why"], lexicon) or _NEGATED42S.search(m["why"]))):
         return text
     if m["both"] and (
-        not m["why"] or _WANT_SAID41S.search(m["why"]) or _NEGATED42S.search(m["why"])
+        not m["why"]
+        or not _remark_only42s(m["why"], lexicon)
+        or _DONE_HEAD51R.search(m["why"])
+        or re.search(
+            r"\b(?:some|any|hate|hates|dislike|dislikes|loathe|can't stand)\b", m["why"], _F
+        )
     ):
-        return text  # "they both put in a shift": a remark; "they both want it" is no remark
+        # "they both put in a shift": a remark; "they both want it", "they both hate them",
+        # "they both had some" are none (12c's fuzz)
+        return text
     if _DONE_HEAD51R.search(text.strip()[: m.start()]):
         return text
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
