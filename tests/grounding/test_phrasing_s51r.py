@@ -6,8 +6,11 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites51r, offline
-from hltl.world.scene import load_scene
+from hltl.bench.grounding import parse_expectation
+from hltl.errors import GroundingError
+from hltl.grounding import _rewrites51r
+from hltl.grounding.lexicon import Lexicon
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -21,7 +24,6 @@ from tests.grounding.helpers import (
     WORKSHOP,
     PhrasingCases,
     assert_case,
-    tree,
 )
 
 CASES = PhrasingCases()
@@ -68,11 +70,19 @@ def test_owner_said_is_not_lost(text: str, scene) -> None:
     assert_case(text, None, scene)
 
 
-@pytest.mark.parametrize(("text", "scene"), OWNER)
-def test_owner_check_is_what_refuses(text: str, scene, monkeypatch: pytest.MonkeyPatch) -> None:
-    kept = tuple(c for c in offline._CHECKS if c is not _rewrites51r._owner_said51r)
-    monkeypatch.setattr(offline, "_CHECKS", kept)
-    assert tree(text, scene) is not None
+OWNER_WRONG = [
+    "cup>A ; (apple>A & chips>B)",
+    "cup>A ; (apple>A & chips>B)",
+    "(spoon>B ; banana>B) & sponge>A",
+]
+
+
+@pytest.mark.parametrize(("case", "wrong"), list(zip(OWNER, OWNER_WRONG, strict=True)))
+def test_owner_check_is_what_refuses(case: tuple[str, Scene], wrong: str) -> None:
+    # the reading issue-lead 7a5caf25 gave (the remark lost) is what the check refuses
+    text, scene = case
+    with pytest.raises(GroundingError):
+        _rewrites51r._owner_said51r(text, parse_expectation(wrong), Lexicon.of(scene))
 
 
 @pytest.mark.parametrize(
@@ -170,11 +180,38 @@ def test_fuzz_refused(text: str, scene, rule) -> None:
     assert_case(text, None, scene)
 
 
+# the reading issue-lead 7a5caf25 gave each (the checks are asked of it; the refusals of the text)
+FUZZ_WRONG = {
+    "Alice or Carol had the red mug, now Bob wants it.": None,
+    "Either Alice or Bob wants the crisps.": "chips>A | chips>B",
+    "Alice or Carol needed the red mug.": "mug_red>A | mug_red>C",
+    "Mr Lee or Mrs Khan asked for the magazine.": "magazine>B | magazine>C",
+    "Alice take everything except crisps lah, no, Bob, well, put it on the shelf instead.": (
+        "bottle@shelf & chips@shelf"
+    ),
+    "The bottle was for Person A, and she's had it.": "bottle>A",
+    "The apple was for Bob, and he's eaten it.": "apple>B",
+    "Bob needs the apple, but he's had it.": "apple>B",
+    "The lemon was for Lena, and she's had it already.": "lemon>B",
+    "Small spanner in the locker, no, the torch, no, the workbench, well, give it to Kofi "
+    "instead.": "torch@bench & torch>A",
+    "Put the apple on the shelf, no, I meant the cup, no, the table, well, give it to Bob "
+    "instead.": "cup@table & cup>B",
+}
+
+
 @pytest.mark.parametrize(("text", "scene", "rule"), FUZZ_REFUSED)
-def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r is not rule))
-    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c is not rule))
-    assert tree(text, scene) is not None
+def test_fuzz_rule_is_what_refuses(text: str, scene: Scene, rule: object) -> None:
+    # each rule refuses the text (a refusal) or the reading 7a5caf25 gave it (a check) itself:
+    # other rules of the session may refuse it too
+    lexicon = Lexicon.of(scene)
+    wrong = FUZZ_WRONG.get(text)
+    with pytest.raises(GroundingError):
+        if rule in _rewrites51r.CHECK51R:
+            assert wrong is not None
+            rule(text, parse_expectation(wrong), lexicon)  # type: ignore[operator]
+        else:
+            rule(text, lexicon)  # type: ignore[operator]
 
 
 @pytest.mark.parametrize(
@@ -218,11 +255,6 @@ def test_fuzz_rule_is_what_refuses(text: str, scene, rule, monkeypatch: pytest.M
         ),
         ("All three pens went into the box, Priya's clearing the desk.", None, OFFICE),
         ("So nobody sulks, Person A got the apple and Person B got the cup.", None, SQ),
-        (
-            "The chips for Person A, oops, wrong name, I mean Person B, the one who's had some.",
-            None,
-            DUO,
-        ),
         ("Hand the apple to Bob, no, to Carol, well, the crisps actually.", "chips>C", CELL),
         (
             "Put the torch in the locker, no, the workbench, well, give it to Kofi instead.",

@@ -974,7 +974,7 @@ _THE_ONE51R = re.compiled(
 
 def _the_one_is51r(text: str, lexicon: Lexicon) -> str:
     """Session 51 (12r): a correction closed by "P's the one (who wants it)" is "…, no, P": the
-    person the one task goes to instead (the 'who' naming nothing else of the scene)."""
+    person the one task goes to instead (the 'who' clause, if any, P wanting it)."""
     if "the one" not in text.lower():
         return text
     m = _THE_ONE51R.search(text.strip())
@@ -984,11 +984,8 @@ def _the_one_is51r(text: str, lexicon: Lexicon) -> str:
     if pid is None:
         return text
     who = m["who"]
-    if who and (
-        _DONE_HEAD51R.search(who)
-        or (not _about50r(who, {pid}, lexicon) and not _WANTS_IT51R.fullmatch(who))
-    ):
-        return text
+    if who and not _WANTS_IT51R.fullmatch(who):
+        return text  # "Bob's the one who is allergic" says why not him, not that he gets it
     out = f"{text.strip()[: m.start()]}{m['cue']}{m['p']}{m['end'] or '.'}"
     fixed = _one_task51r(out, lexicon)
     if fixed is None or fixed[2] != pid:
@@ -1178,6 +1175,12 @@ def _well_again51r(text: str, lexicon: Lexicon) -> None:
     named = _names(m["x"], lexicon)
     if not named or any(r.kind != "object" for it in named for r in it.refs):
         return
+    words = m["x"].lower().split()[1:]
+    if len(words) > 1 and not any(
+        " ".join(words) in {o.category.lower(), *(a.lower() for a in o.aliases)}
+        for o in lexicon.scene.objects
+    ):
+        return  # "well, the pills actualy": a word after the thing, not a name of two words
     raise GroundingError(
         f"'well, {m['x']}' after a correction could correct it again or add to it: say "
         f"'{m['x']} instead' or '{m['x']} too'"
