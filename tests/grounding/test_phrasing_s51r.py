@@ -149,6 +149,8 @@ FUZZ_REFUSED = [
     ("Either Alice or Bob wants the crisps.", FIG1, _rewrites51r._who_wants51r),
     ("Alice or Carol needed the red mug.", CELL, _rewrites51r._who_wants51r),
     ("Mr Lee or Mrs Khan asked for the magazine.", WARD, _rewrites51r._who_wants51r),
+    ("Give Person A the chips, sorry, not the apple, the cup.", SQ, _rewrites51r._not_said51r),
+    ("The jug for Ruth, sorry, not the pills, the magazine.", WARD, _rewrites51r._not_said51r),
     ("The globe to Zoe, no, Noah, well, the ruler.", CLASSROOM, _rewrites51r._well_again51r),
     ("The apple to Alice, no, Bob, well, the crisps.", CELL, _rewrites51r._well_again51r),
     ("The jug for Ruth, sorry, Mr Lee, well, the pills.", WARD, _rewrites51r._well_again51r),

@@ -1313,6 +1313,28 @@ def _excluded_back51r(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
+# "Give Person A the chips, sorry, not the apple, the cup."
+_NOT_SAID51R = re.compiled(
+    r"\b(?:sorry|no|oops|whoops|wait|i mean|i meant)\s*,\s*not (?P<x>(?:the )?[a-z]+(?: [a-z]+)?)"
+    r"\s*,",
+    _F,
+)
+
+
+def _not_said51r(text: str, lexicon: Lexicon) -> None:
+    """Session 51 (12r): a correction "sorry, not the apple, the cup" that takes back a thing the
+    request never said takes back nothing said: refused (session 34's refusal had held only by
+    session 19's cue search reading 'no' + 't' of 'not', which the word end of 44131cb9 mends)."""
+    if "not " not in text.lower():
+        return
+    for m in _NOT_SAID51R.finditer(text):
+        said = _ids(m["x"], lexicon, "object")
+        if said and not said & _ids(text[: m.start()], lexicon, "object"):
+            raise GroundingError(
+                f"'not {m['x']}' takes back nothing the request said: say the whole request again"
+            )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
@@ -1353,6 +1375,7 @@ REFUSE51R: tuple[Callable[[str, Lexicon], None], ...] = (
     _people_had51r,
     _well_again51r,
     _and_then_who51r,
+    _not_said51r,
 )
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
 CHECK51R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
