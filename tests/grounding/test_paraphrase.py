@@ -173,15 +173,10 @@ KNOWN_MISSES = frozenset(
         "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
         "bottle for Person A, the chips to Person B.",
-        "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
-        "The chips can go to whichever of the two you like, Person A or Person B, they both "
-        "put in a shift on the cake stall.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
-        "All three of the pens into the box, Priya's had enough of the doodling.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
         "pool.",
-        "The bottle's for Person A and for no one else, she's earned it at the fun run.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         "about, so give it her.",
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
@@ -266,7 +261,6 @@ KNOWN_MISSES = frozenset(
         "notebook to priya thanks she has minutes to take",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
-        "All four things to Person B: bottle, chips, cup and apple.",
         "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
         "and cup alike.",
         "Alice put in for the bottle and she's owed it, so it's hers; Bob can have the crisps "
@@ -284,7 +278,6 @@ KNOWN_MISSES = frozenset(
         "Person B's way.",
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
-        "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
         "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
         "over it goes.",
         "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "
@@ -419,30 +412,7 @@ KNOWN_MISSES = frozenset(
         "across to him.",
         "Marco wants the knife he's doing the fish Lena wants the salt.",
         "Grandad wants the wipes Lily's made a mess with her yoghurt",
-        "Alice or Bob, whichever of the two, can have the crisps; they share everything on the a "
-        "cappella tour.",
-        "So nobody sulks, Person A gets the apple and the stunt double, Person B, gets the cup, "
-        "one thing apiece.",
-        "Any of the four things, Person B isn't choosy.",
-        "Whichever of the chips and the apple, Person A is happy with one.",
-        "Person A can take her pick of the bottle or the chips, she's earned it at the improv "
-        "night.",
-        "Whichever bottle you like, so long as Person A gets it.",
-        "Any bottle going would suit Person A, she's not choosy after her bushcraft weekend.",
-        "Person B's doing a twelve-hour sail maker shift, so both, the bottle and the chips, go "
-        "to him please.",
-        "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist.",
-        "Mr Lee and Mrs Khan can each have a blanket, the blue one for him.",
-        "It doesn't matter which box, just the one of them on the belt for the driver's test run.",
-        "Either of the blocks to Lily, she likes them both.",
         "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
-        "Person B is taking both things, bottle and chips, to the seed saving stall, so hand him "
-        "the two.",
-        "A lone bottle's all there is; Person A gets it.",
-        "The one bottle in here, for Person A, as she's a marine biologist and always thirsty.",
-        "Person A gets the bottle, the only one on offer.",
-        "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
-        "Both blankets on the locker for now, the ward's too warm for them at the minute.",
         "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
         "Person A's allergic to apples, so give her the cup instead.",
@@ -455,14 +425,6 @@ KNOWN_MISSES = frozenset(
         "Apart from the medium box, which stays put, the boxes go on the belt.",
         "Don't bother fetching the globe, Noah's after the ruler and nothing else for his scale "
         "drawing.",
-        "Bottle to Bob, no wait, I've mixed them up again, Alice's the one.",
-        "Give Person A the apple; actually, she's just said, make that the chips.",
-        "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag.",
-        "The bottle to Person A, yes, I've checked the rota twice, Person A.",
-        "The chips to Person A, I mean, gosh, it's the bottle she's asked for, to Person A.",
-        "Bowl on the tray, no, it's got soup in, so in the sink.",
-        "Stapler in the box, sorry, Priya likes it kept on the desk.",
-        "The red book for Zoe, wait, she's read that, the green one.",
         "cup to person b who does the bat detecting and apple to person a",
         "person b fancies the bottle after his epee bout cheers",
         "gloves to mia her hands are freezing on the dock",
@@ -514,7 +476,6 @@ KNOWN_UNCLEAR = frozenset(
         "tom wanted a box, small or medium, can't remember which",
         # blind49 (tuned on in session 51)
         "Ruth and Mrs Khan were both on about the jug; she says it's hers.",
-        "The doctor asked for one of the cups, green or white, but I've lost track of which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
