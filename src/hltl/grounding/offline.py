@@ -832,6 +832,10 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 _said_against33s(text, node, lexicon)
                 _asked_again34s(text, node, scene, lexicon)
                 _placed_together36l(text, node, lexicon)
+                # session 51 (12): "Bob, our bassoonist, had the cup." -> "Bob had the cup.": a
+                # rewrite that takes an aside off may leave a sentence that only says what a
+                # person held, which the text as said hid from _state_only32s (12c's fuzz)
+                _state_only32s(plain, lexicon)
                 if cut is not None:
                     raise cut
                 return node
