@@ -378,30 +378,6 @@ KNOWN_MISSES = frozenset(
         "Jess.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
         # blind49 (tuned on in session 51): refusals left at its one measurement (docs/grounding.md)
-        "Jërëjëf, as we say back in Dakar, and could you bring Carol the blue mug when you've a "
-        "spare moment?",
-        "Sorry to be a nuisance, but the crisps would be lovely over with Bob, cheers.",
-        "With my apologies for the muddle earlier, could Person B be given the bottle now?",
-        "Right then, if you'd be a star, the packing tape goes over to Tom, ta.",
-        "Bob's got a proper craving for an apple after his go-karting.",
-        "What Person A needs after three hours of bark rubbing in the woods is the cup, nothing "
-        "fancier.",
-        "Person B is after the bottle, being a collier with a dry throat, and Person A has her "
-        "eye on the apple.",
-        "Person A fancies the chips, being a woodcutter with an appetite.",
-        "Ever since the shrimping trip, the bottle's what Person B has been hoping for.",
-        "After an afternoon on the rock climbing wall, Person A is gasping, so the bottle, please.",
-        "Person B wants the chips; that's all he's after.",
-        "Mia's crying out for the barcode scanner, the site manager wants a count.",
-        "Noah has been needing the ruler since the start of the lesson.",
-        "Bob's been asking about the red mug all morning; pass it to him, would you.",
-        "The chips are hers, Person A's I mean.",
-        "At the narrowboat club Person A asked for the bottle and Person B for the chips, so "
-        "could you see to the pair of them.",
-        "It's Person A's bottle, she wants it.",
-        "Person A again, same as last time, the bottle.",
-        "Person B gets the chips; as for the bottle, that's hers, Person A's, the lass who does "
-        "aerial silks.",
         "Right so the apple goes to Alice who's been at the clay pigeon shooting and the crisps "
         "go to Carol and I reckon that's us.",
         "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
@@ -469,12 +445,6 @@ KNOWN_MISSES = frozenset(
         "put the scissors on the desk zoes done with her terrarium label",
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
-        "Do you think Person A, who's been grafting roses all morning, could have the cup?",
-        "Can you give Person B the chips, as a favour to a weary mahout?",
-        "Can you put the packing tape on the pallet so Tom can grab it on his way out?",
-        "Would you put the globe on the bookshelf? Mrs Ortiz needs the desk clear for the crystal "
-        "radio demo.",
-        "Could Kofi borrow the big spanner for a bit, a mate's bike has a loose nut?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -513,7 +483,6 @@ KNOWN_UNCLEAR = frozenset(
         "from me now.",
         "tom wanted a box, small or medium, can't remember which",
         # blind49 (tuned on in session 51)
-        "Ruth and Mrs Khan were both on about the jug; she says it's hers.",
         "The doctor asked for one of the cups, green or white, but I've lost track of which.",
     }
 )

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from hltl.grounding import gate as re
 from hltl.errors import GroundingError
+from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import (
     _F,
     _ids,
@@ -263,9 +263,13 @@ _OUTSIDER51 = re.compile(
 
 def _outsider51(text: str, lexicon: Lexicon) -> str:
     """Session 51: a closing ', the site manager wants a count' taken off."""
-    if " wants " not in text and " needs " not in text and " is " not in text:
-        if " asked " not in text:
-            return text
+    if (
+        " wants " not in text
+        and " needs " not in text
+        and " is " not in text
+        and " asked " not in text
+    ):
+        return text
     m = _OUTSIDER51.search(text)
     if m is None or _names(m.group(0), lexicon):
         return text
@@ -517,13 +521,21 @@ _CLEAR51 = re.compile(
 
 def _clear51(text: str, lexicon: Lexicon) -> str:
     """Session 51: a closing 'P needs the desk clear (for …).' taken off a placing."""
-    if " clear" not in text and " free" not in text and " empty" not in text:
-        if " tidy" not in text and " clean" not in text:
-            return text
+    if (
+        " clear" not in text
+        and " free" not in text
+        and " empty" not in text
+        and " tidy" not in text
+        and " clean" not in text
+    ):
+        return text
     m = _CLEAR51.search(text)
-    if m is None or (m["p"][0].isupper() and m["p"] not in ("She", "He", "They", "We")):
-        if m is None or not _only_person(m["p"], lexicon):
-            return text
+    if m is None:
+        return text
+    if m["p"] not in ("She", "he", "He", "she", "They", "they", "We") and not _only_person(
+        m["p"], lexicon
+    ):
+        return text
     surfaces = _ids(f"the {m['s']}", lexicon, "surface")
     if not surfaces:
         return text
@@ -561,7 +573,8 @@ _WAS_ON51 = re.compile(
     r"(?:^|[,;:.!?—–-]\s*|\b(?:and|but|so|because|since|as)\s+)(?P<x>(?:the|a|an|this|that|these|"
     r"those|my|your|his|her|their|our) (?:[a-z]+ ){0,2}?[a-z]+)(?P<be> was| were|'d been| had "
     r"been)(?: (?:still|already|just|all|always|earlier|before|once|last|left))? (?P<on>on|in|at|"
-    r"by|under|inside|near|beside|next to|on top of) (?P<s>the [a-z]+(?: (?!(?:and|but|so|or|then|now|too)\b)[a-z]+)?)\b",
+    r"by|under|inside|near|beside|next to|on top of) (?P<s>the [a-z]+"
+    r"(?: (?!(?:and|but|so|or|then|now|too)\b)[a-z]+)?)\b",
     _F,
 )
 
