@@ -25,6 +25,7 @@ from tests.grounding.helpers import (
     WORKSHOP,
     PhrasingCases,
     assert_names_readings,
+    assert_reads,
     assert_refused,
     tree,
 )
@@ -622,42 +623,53 @@ def test_a_mates_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 
 # -- refusals (12c's fuzz: each of these had been read) ------------------------------------------
 
-# where a thing was (_was_on51), what would or should have been (_would_have51)
-WAS_ON = [
-    ("The apple was on the shelf.", CELL),
-    ("The lemon was on the rack, give Marco the salt.", KITCHEN),
-    ("The jug was on the trolley.", WARD),
-    ("The stapler was in the box and Sam wants the notepad.", OFFICE),
-]
-WOULD_HAVE = [
+# what would or should have been (_would_have51), a verb of handing over in the past opening the
+# text (_done_verb51), a past want and 'now he wants …' (_want_now51), a request and then that its
+# person is away (_gone51)
+PAST = [
     ("Alice would have wanted the apple.", CELL),
     ("Mr Lee should have got the magazine.", WARD),
-    ("Marco would've liked the lemon.", KITCHEN),
+    ("Gave Bob the apple.", CELL),
+    ("Took the jug to Mrs Khan.", WARD),
+    ("just handed marco the lemon", KITCHEN),
+    ("Bob wanted the apple, now he wants the crisps.", CELL),
+    ("Mr Lee wanted the magazine, now he wants the jug.", WARD),
+    ("Sam asked for the stapler earlier, now he's after the notepad.", OFFICE),
+    ("Give Bob the apple, hmm, he's gone.", CELL),
+    ("Give Mr Lee the magazine, oh, he's been discharged.", WARD),
+    ("Lena wants the salt, oh, she's left.", KITCHEN),
 ]
+MINE = {
+    _rewrites51._would_have51,
+    _rewrites51._done_verb51,
+    _rewrites51._want_now51,
+    _rewrites51._gone51,
+}
 
 
-@pytest.mark.parametrize(("text", "scene"), WAS_ON + WOULD_HAVE)
+@pytest.mark.parametrize(("text", "scene"), PAST)
 def test_past_refused(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
 
 
 def test_past_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    mine = {_rewrites51._was_on51, _rewrites51._would_have51}
-    monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in mine))
-    # (each of these was read, as the lead's first commit reads them: the refusals refuse them)
-    assert all(tree(text, scene) is not None for text, scene in WAS_ON[:3] + WOULD_HAVE[:2])
+    monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in MINE))
+    # (each of these was read by the lead's first commit: the refusals are what refuse them)
+    assert [t for t, s in PAST if tree(t, s) is None] == []
 
 
 @pytest.mark.parametrize(
     ("text", "want", "scene"),
     [
-        ("The apple is on the shelf.", "apple@shelf", CELL),
         ("Alice would like the apple.", "apple>A", CELL),
+        ("Give Bob the apple.", "apple>B", CELL),
+        ("You give Bob the apple.", "apple>B", CELL),
+        ("Bob wanted the apple, but now he'd rather have the crisps.", "chips>B", CELL),
+        ("Bob wanted the apple.", "apple>B", CELL),
+        ("Bob is out of water, give him the bottle.", "bottle>B", CELL),
     ],
 )
 def test_past_near_read(text: str, want: str, scene: Scene) -> None:
-    from tests.grounding.helpers import assert_reads
-
     assert_reads(text, want, scene)
 
 

@@ -10,7 +10,6 @@ from hltl.grounding._normalise1 import (
     _F,
     _ids,
     _names,
-    _objects_only,
     _only_person,
     _reading,
     _unknown_word,
@@ -566,33 +565,6 @@ def _a_mates51(text: str, lexicon: Lexicon) -> str:
 
 # -- refusals -------------------------------------------------------------------------------------
 
-# -- where a thing was ("The apple was on the shelf.", "The lemon was on the rack, give Marco the
-# salt."): a past place says nothing is to be done (the present "is on" reads as a placing, and
-# session 40's posture_state40 refuses "sat on"); refused, as that is (12c's fuzz)
-_WAS_ON51 = re.compile(
-    r"(?:^|[,;:.!?—–-]\s*|\b(?:and|but|so|because|since|as)\s+)(?P<x>(?:the|a|an|this|that|these|"
-    r"those|my|your|his|her|their|our) (?:[a-z]+ ){0,2}?[a-z]+)(?P<be> was| were|'d been| had "
-    r"been)(?: (?:still|already|just|all|always|earlier|before|once|last|left))? (?P<on>on|in|at|"
-    r"by|under|inside|near|beside|next to|on top of) (?P<s>the [a-z]+"
-    r"(?: (?!(?:and|but|so|or|then|now|too)\b)[a-z]+)?)\b",
-    _F,
-)
-
-
-def _was_on51(text: str, lexicon: Lexicon) -> None:
-    """Session 51: refuse a clause saying where objects were (above)."""
-    low = text.lower()
-    if " was " not in low and " were " not in low and " been " not in low:
-        return
-    for m in _WAS_ON51.finditer(text):
-        if not _objects_only(m["x"], lexicon) or not _ids(m["s"], lexicon, "surface"):
-            continue
-        raise GroundingError(
-            f"{m.group(0).lstrip(',;:.!?—–- ')!r} says where {m['x']} was: it asks for nothing; "
-            f"say 'put {m['x'].lower()} {m['on'].lower()} …' to have it placed"
-        )
-
-
 # -- what would or should have been ("Alice would have wanted the apple.", "Mr Lee should have got
 # the magazine."): a want or a handover that did not happen, no request; refused (session 44's
 # refusal takes 'should have had')
@@ -614,6 +586,115 @@ def _would_have51(text: str, lexicon: Lexicon) -> None:
     raise GroundingError(
         f"{m['said']!r} says what would have been, not what to do now: it asks for nothing; say "
         "'give <person> <object>' to have it handed over"
+    )
+
+
+# -- a verb of handing over said in the past opening the text ("Gave Bob the apple.", "Took the jug
+# to Mrs Khan.", "you gave bob the apple"): what was done, no request (the lexicon reads the past
+# form as the order's verb); refused (12c's fuzz)
+_DONE_VERB51 = re.compile(
+    r"^(?P<said>(?:(?:just|already|you|u|you've|you have|you just|we|we've)\s+)*(?:gave|given|"
+    r"brought|took|taken|handed|passed|delivered|placed|moved|dropped|fetched|carried|returned|"
+    r"sent|laid))\b",
+    _F,
+)
+# the words such a text opens with (a cheap test before the pattern)
+_DONE_FIRST51 = (
+    "just",
+    "already",
+    "you",
+    "u ",
+    "we",
+    *[
+        "gave",
+        "given",
+        "brought",
+        "took",
+        "taken",
+        "handed",
+        "passed",
+        "delivered",
+        "placed",
+        "moved",
+        "dropped",
+        "fetched",
+        "carried",
+        "returned",
+        "sent",
+        "laid",
+    ],
+)
+
+
+def _done_verb51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a text opening with a verb of handing over in the past (above)."""
+    if not text[:12].lower().startswith(_DONE_FIRST51):
+        return
+    m = _DONE_VERB51.match(text.lstrip())
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what was done: it asks for nothing; say 'give …' or 'put …' to have "
+        "it done"
+    )
+
+
+# -- a want said over by another ("Bob wanted the apple, now he wants the crisps.", "Bob asked for
+# the apple earlier, now he's after the crisps."): the new want may replace the old or add to it;
+# refused (12c's fuzz: both were read; "…, but now he'd rather have the jug" replaces it, read)
+_WANT_NOW51 = re.compile(
+    r"\b(?:wanted|asked for|was after|had asked for|asked after|was wanting|requested|fancied|"
+    r"was hoping for|needed)\b[^.;!?]*?[,;.]\s*(?:but |and |though |only )?(?:now|these days|"
+    r"today|this time)\s*,?\s*(?P<pro>he|she|they)(?:'s| is|'re| are)? (?:wants|needs|'d like|"
+    r"would like|fancies|prefers|after|asking for|asks for|keen on|set on|hoping for|want|need)\b",
+    _F,
+)
+
+
+def _want_now51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a past want followed by 'now he wants …' (above)."""
+    if "now" not in text.lower() and "today" not in text.lower() and "this time" not in text:
+        return
+    m = _WANT_NOW51.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m.group(0)!r} says an earlier want and a new one: the new one may replace it or add "
+        "to it; say 'instead' or 'too'"
+    )
+
+
+# -- a request, then that its person is away ("Give Bob the apple, hmm, he's gone.", "…, oh, he's
+# not here."): it cannot be done now; refused (", but he's gone home." is refused already)
+_GONE51 = re.compile(
+    r"[,;.!?]\s*(?:(?:oh|hmm|ah|wait|actually|oops|ugh|um|er|erm|oh no|drat|damn)\s*[,.!]?\s+)?"
+    r"(?P<said>(?:he|she|they)(?:'s| is|'ve| has| have|'re| are) (?:just |already )?(?:gone|left|"
+    r"not here|not around|not in|away|been discharged|gone home|gone out|popped out|nipped out|"
+    r"off home|clocked off|gone off home|gone for the day|not here any ?more)(?: (?:now|already|"
+    r"for the day|for the night|any ?more|again))?)\s*[.!]*$",
+    _F,
+)
+
+
+def _gone51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a request closed by 'he's gone' (above)."""
+    low = text.lower()
+    if (
+        "gone" not in low
+        and "left" not in low
+        and "not " not in low
+        and "away" not in low
+        and "discharged" not in low
+        and " out" not in low
+        and " off" not in low
+    ):
+        return
+    m = _GONE51.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says the person is not there: the request cannot be done now; say it "
+        "again when they are back"
     )
 
 
@@ -649,6 +730,11 @@ _STEPS51_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
-REFUSE51: tuple[Callable[[str, Lexicon], None], ...] = (_was_on51, _would_have51)
+REFUSE51: tuple[Callable[[str, Lexicon], None], ...] = (
+    _would_have51,
+    _done_verb51,
+    _want_now51,
+    _gone51,
+)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
 CHECK51: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
