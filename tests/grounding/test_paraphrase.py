@@ -168,7 +168,6 @@ KNOWN_MISSES = frozenset(
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
-        "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
@@ -314,7 +313,6 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
         "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
@@ -342,7 +340,6 @@ KNOWN_MISSES = frozenset(
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
-        "Ko rab'a, that's thanks in Gilbertese, and now the chips across to Person B please.",
         "Bob's desperate for a bottle of water after his cajón session.",
         "Alice is back from the pitch and putt she wants the bottle give it her",
         "The bottle is Person B's he asked earlier the chips are Person A's.",

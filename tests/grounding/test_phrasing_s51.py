@@ -18,6 +18,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -67,6 +68,37 @@ test_gloss = GLOSS.test(
 
 def test_gloss_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     GLOSS.refused_without((_rewrites51._gloss51,), monkeypatch)
+
+
+# a foreign word of thanks glossed as such (_thanks_in51)
+THANKS_IN = PhrasingCases()
+test_thanks_in = THANKS_IN.test(
+    (
+        "Ko rab'a, that's thanks in Gilbertese, and now the chips across to Person B please.",
+        "chips>B",
+        DUO,
+    ),
+    (
+        "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
+        "sponge@sink",
+        LAB,
+    ),
+    ("Dankon, that's thanks in Esperanto, and the lemon to Marco, please.", "lemon>A", KITCHEN),
+    ("Merci, that's thanks in French, and could Sam have the stapler?", "stapler>B", OFFICE),
+    ("Tak, that's thanks in Danish, and now the water jug to Mrs Khan please.", "jug>C", WARD),
+    (
+        "Mèrcie, that's Jèrriais for thanks, and would you give Lily the teddy bear?",
+        "teddy>A",
+        NURSERY,
+    ),
+    ("Danke, that's thanks in German.", None, CELL),
+    ("Bob, that's thanks in German, and now the apple to him.", None, CELL),
+    ("Danke, that's thanks in German, and now the apple to Dave.", None, CELL),
+)
+
+
+def test_thanks_in_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    THANKS_IN.refused_without((_rewrites51._thanks_in51,), monkeypatch)
 
 
 # 'when you've a spare moment' (_spare51)
@@ -309,6 +341,31 @@ test_outsider = OUTSIDER.test(
 
 def test_outsider_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     OUTSIDER.refused_without((_rewrites51._outsider51,), monkeypatch)
+
+
+# "she's flagging after the face painting" (_flagging51)
+FLAGGING = PhrasingCases()
+test_flagging = FLAGGING.test(
+    (
+        "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
+        "teddy>A",
+        NURSERY,
+    ),
+    ("Could Marco have the lemon? He's wilting after the lunch rush.", "lemon>A", KITCHEN),
+    (
+        "Mrs Khan's dead on her feet after the physio, so the water jug, please.",
+        "jug>C",
+        WARD,
+    ),
+    ("Could Jess have the drill? She's whacked after the night shift.", "drill>B", WORKSHOP),
+    ("Sam's pooped after the stocktake, so the stapler to him.", "stapler>B", OFFICE),
+    ("Give Bob the apple, he's flagging after the cup.", None, CELL),
+    ("He's flagging after the match.", None, CELL),
+)
+
+
+def test_flagging_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    FLAGGING.refused_without((_rewrites51._flagging51,), monkeypatch)
 
 
 # "P's been asking about …" (_been51)

@@ -53,6 +53,26 @@ def _gloss51(text: str, lexicon: Lexicon) -> str:
     return _cut50(text, 0, m.end(), "", lexicon)
 
 
+# -- a foreign word of thanks glossed as such ("Ko rab'a, that's thanks in Gilbertese, and now the
+# chips across to Person B please.", "Mèrcie, that's Jèrriais for thanks, and would you kindly
+# drop the sponge into the sink?"): the word and its gloss taken off
+_THANKS_IN51 = re.compile(
+    r"^(?P<w>[^\W\d_]+(?:['’ -][^\W\d_]+){0,2}),\s*(?:that's|that is|which is|it's|it is|"
+    r"meaning) (?:(?:thanks|thank you|cheers|ta)(?: (?:in|in the|from)(?: [^\W\d_]+){1,2})|"
+    r"[^\W\d_]+(?: [^\W\d_]+)? for (?:thanks|thank you|cheers|ta))\s*[,;:]\s*(?:and )?"
+)
+
+
+def _thanks_in51(text: str, lexicon: Lexicon) -> str:
+    """Session 51: "Ko rab'a, that's thanks in Gilbertese," taken off."""
+    if "thank" not in text and "cheers" not in text and " ta" not in text:
+        return text
+    m = _THANKS_IN51.match(text)
+    if m is None or _names(m["w"], lexicon):
+        return text
+    return _cut50(text, 0, m.end(), "", lexicon)
+
+
 # -- 'a spare moment' in 'when you've a spare moment' ("… when you've a spare moment?"): said 'a
 # moment' (read: session 20's courtesies)
 _SPARE51 = re.compile(
@@ -288,6 +308,28 @@ def _been51(text: str, lexicon: Lexicon) -> str:
     if m is None or not _only_person(m["p"], lexicon):
         return text
     return _cut50(text, m.start("s"), m.end("s"), " has", lexicon)
+
+
+# -- 'she's flagging after the face painting' ("Ta, pet, and could Lily have her teddy now? She's
+# flagging after the face painting."): a state of tiredness said in other words before 'after',
+# said 'tired' (read: the state and the pastime after it are why)
+_FLAGGING51 = re.compile(
+    r"\b(?:she|he|they|[A-Z]\w*(?: [A-Z]\w*)?)(?:'s| is|'re| are) (?:a bit |rather |really |"
+    r"totally |completely )?(?P<s>flagging|wilting|drooping|whacked|pooped|frazzled|worn to a "
+    r"frazzle|dead on (?:her|his|their) feet|running on empty|fit to drop|dog-tired|bushed|"
+    r"jiggered|wiped out|washed out)(?= after )",
+    _F,
+)
+
+
+def _flagging51(text: str, lexicon: Lexicon) -> str:
+    """Session 51: "she's flagging after …" read as "she's tired after …"."""
+    if " after " not in text:
+        return text
+    m = _FLAGGING51.search(text)
+    if m is None:
+        return text
+    return _cut50(text, m.start("s"), m.end("s"), "tired", lexicon)
 
 
 # -- 'P has been needing the X' ("Noah has been needing the ruler since the start of the
@@ -701,6 +743,7 @@ def _gone51(text: str, lexicon: Lexicon) -> None:
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _gloss51,
+    _thanks_in51,
     _spare51,
     _over_with51,
     _with_apologies51,
@@ -712,6 +755,7 @@ _STEPS51_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _after_state51,
     _all_after51,
     _outsider51,
+    _flagging51,
     _been51,
     _been_needing51,
     _i_mean51,
