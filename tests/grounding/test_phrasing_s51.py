@@ -682,7 +682,7 @@ def test_a_mates_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 
 # what would or should have been (_would_have51), a verb of handing over in the past opening the
 # text (_done_verb51), a past want and 'now he wants …' (_want_now51), a request and then that its
-# person is away (_gone51)
+# person is away (_gone51), a report said not to be meant (_fibbing51), a habit (_habit51)
 PAST = [
     ("Alice would have wanted the apple.", CELL),
     ("Mr Lee should have got the magazine.", WARD),
@@ -695,12 +695,18 @@ PAST = [
     ("Give Bob the apple, hmm, he's gone.", CELL),
     ("Give Mr Lee the magazine, oh, he's been discharged.", WARD),
     ("Lena wants the salt, oh, she's left.", KITCHEN),
+    ("Ava says Grandad wants the bib, she's fibbing.", NURSERY),
+    ("Alice says Bob wants the apple, she's pulling your leg.", CELL),
+    ("Alice usually gets the crisps.", CELL),
+    ("Sam usually gets the red pen.", OFFICE),
 ]
 MINE = {
     _rewrites51._would_have51,
     _rewrites51._done_verb51,
     _rewrites51._want_now51,
     _rewrites51._gone51,
+    _rewrites51._fibbing51,
+    _rewrites51._habit51,
 }
 
 
@@ -724,6 +730,7 @@ def test_past_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
         ("Bob wanted the apple, but now he'd rather have the crisps.", "chips>B", CELL),
         ("Bob wanted the apple.", "apple>B", CELL),
         ("Bob is out of water, give him the bottle.", "bottle>B", CELL),
+        ("Alice usually gets the crisps, so give them to her.", "chips>A", CELL),
     ],
 )
 def test_past_near_read(text: str, want: str, scene: Scene) -> None:

@@ -740,6 +740,61 @@ def _gone51(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# -- a report closed by saying it is not true ("Ava says Grandad wants the bib, she's fibbing.",
+# "Alice says Bob wants the apple, she's pulling your leg."): nothing is asked; refused (", but
+# she's joking." is refused already)
+_FIBBING51 = re.compile(
+    r"[,;.!]\s*(?:(?:and|though|mind|mind you|only)\s+)?(?P<said>(?:she|he|they)(?:'s| is|'re| "
+    r"are|'s only| is only|'re only| are only|'s just| is just) (?:fibbing|lying|pulling your "
+    r"leg|pulling my leg|having you on|having us on|winding you up|winding us up|kidding|joking|"
+    r"teasing|making it up|telling porkies|telling fibs|telling tales|having a laugh|messing "
+    r"about|messing around|not serious))\s*[.!]*$",
+    _F,
+)
+
+
+def _fibbing51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a request or report closed by "she's fibbing" (above)."""
+    if (
+        "ing" not in text
+        and " leg" not in text
+        and " on" not in text
+        and " up" not in text
+        and "porkies" not in text
+        and "fibs" not in text
+        and "tales" not in text
+        and "serious" not in text
+    ):
+        return
+    m = _FIBBING51.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what was said is not meant: it asks for nothing; say the request "
+        "itself"
+    )
+
+
+# -- what a person usually has ("Alice usually gets the crisps.", "Alice normally has the red
+# mug."): a habit, not a request; refused when the text is that sentence alone
+_HABIT51 = re.compile(
+    r"^(?P<said>(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?:usually|normally|generally|typically|always|"
+    r"often|mostly|tends to|likes to) (?:gets?|has|have|takes?|receives?|is given|gets given))"
+    r" [^,;.!?]+[.!]?$"
+)
+
+
+def _habit51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a sentence saying what a person usually gets (above)."""
+    m = _HABIT51.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what usually happens: it asks for nothing; say 'give {m['p']} …' to "
+        "have it handed over"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _gloss51,
@@ -779,6 +834,8 @@ REFUSE51: tuple[Callable[[str, Lexicon], None], ...] = (
     _done_verb51,
     _want_now51,
     _gone51,
+    _fibbing51,
+    _habit51,
 )
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
 CHECK51: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
