@@ -313,14 +313,12 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
         "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
         "Emma's the visitor; she'd like a banana, can you bring her one?",
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
         "one'll do.",
-        "Noah's forgotten his ruler; lend him ours, would you.",
         "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
         "Person A's doing her wordsearch she's parched bottle to her.",
         "Ruth's doing her rounds the thermometer's for her.",
@@ -340,7 +338,6 @@ KNOWN_MISSES = frozenset(
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
-        "Bob's desperate for a bottle of water after his cajón session.",
         "Alice is back from the pitch and putt she wants the bottle give it her",
         "The bottle is Person B's he asked earlier the chips are Person A's.",
         "Grandad's feeding Lily on the sofa. The bib. He needs it, hand it to him.",

@@ -343,6 +343,64 @@ def test_outsider_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     OUTSIDER.refused_without((_rewrites51._outsider51,), monkeypatch)
 
 
+# 'a bottle of water' for the scene's 'water bottle' (_bottle_of51)
+BOTTLE_OF = PhrasingCases()
+test_bottle_of = BOTTLE_OF.test(
+    ("Bob's desperate for a bottle of water after his cajón session.", "bottle>B", CELL),
+    ("Give Carol a bottle of water, please.", "bottle>C", CELL),
+    ("Mrs Khan wants a jug of water.", "jug>C", WARD),
+    ("Give Mr Lee a jug of water, please.", "jug>B", WARD),
+    ("Bob wants a bottle of wine.", None, CELL),
+    ("Bob wants a cup of water.", None, CELL),
+    ("A bottle of water.", None, CELL),
+)
+
+
+def test_bottle_of_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BOTTLE_OF.refused_without((_rewrites51._bottle_of51,), monkeypatch)
+
+
+# a closing 'since the laundress took her paper away' (_since_clause51)
+SINCE_CLAUSE = PhrasingCases()
+test_since_clause = SINCE_CLAUSE.test(
+    (
+        "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
+        "magazine>C",
+        WARD,
+    ),
+    ("Marco has wanted the lemon since the waiter nicked his last one.", "lemon>A", KITCHEN),
+    (
+        "Mr Lee has been longing for the magazine since the porter took his paper away.",
+        "magazine>B",
+        WARD,
+    ),
+    ("Zoe has been needing the glue stick since the boys nicked hers.", "glue>C", CLASSROOM),
+    ("Bob has been after the apple since Carol took the cup.", None, CELL),
+    ("Since the laundress took her paper away.", None, CELL),
+    ("Priya has been after the notepad since the intern borrowed hers.", None, OFFICE),
+)
+
+
+def test_since_clause_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SINCE_CLAUSE.refused_without((_rewrites51._since_clause51,), monkeypatch)
+
+
+# "P's forgotten his X; lend him ours" (_lend_ours51)
+LEND_OURS = PhrasingCases()
+test_lend_ours = LEND_OURS.test(
+    ("Noah's forgotten his ruler; lend him ours, would you.", "ruler>B", CLASSROOM),
+    ("Sam's lost his stapler; lend him ours.", "stapler>B", OFFICE),
+    ("Lena has left her knife at home, so lend her ours, please.", "knife>B", KITCHEN),
+    ("Kofi's forgotten his torch; give him ours.", "torch>A", WORKSHOP),
+    ("Bob's forgotten his cup; lend her ours.", None, CELL),
+    ("Bob's forgotten his pencil; lend him ours.", None, CELL),
+)
+
+
+def test_lend_ours_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    LEND_OURS.refused_without((_rewrites51._lend_ours51,), monkeypatch)
+
+
 # "she's flagging after the face painting" (_flagging51)
 FLAGGING = PhrasingCases()
 test_flagging = FLAGGING.test(

@@ -310,6 +310,70 @@ def _been51(text: str, lexicon: Lexicon) -> str:
     return _cut50(text, m.start("s"), m.end("s"), " has", lexicon)
 
 
+# -- 'a bottle of water' for the scene's 'water bottle' ("Bob's desperate for a bottle of water
+# after his cajón session.", "Mrs Khan wants a jug of water."): said by the scene's name of it,
+# when that is a name of one object of the scene and the words as said are none
+_BOTTLE_OF51 = re.compile(r"\b(?P<d>[Aa]|[Aa]n|[Oo]ne|[Tt]he) (?P<c>[a-z]+) of (?P<w>[a-z]+)\b")
+
+
+def _bottle_of51(text: str, lexicon: Lexicon) -> str:
+    """Session 51: 'a bottle of water' read as 'the water bottle' (above)."""
+    if " of " not in text:
+        return text
+    for m in _BOTTLE_OF51.finditer(text):
+        said = f"the {m['w']} {m['c']}"
+        if len(_ids(said, lexicon, "object")) != 1:
+            continue
+        aliases = {a for o in lexicon.scene.objects for a in o.aliases}
+        if said[4:] not in aliases or m.group(0)[len(m["d"]) + 1 :] in aliases:
+            continue
+        return _cut50(text, m.start(), m.end(), said, lexicon)
+    return text
+
+
+# -- a closing 'since the laundress took her paper away' after a want ("Mrs Khan has been pining
+# for that magazine since the laundress took her paper away."): since when, a clause of its own;
+# taken off when it names nothing of the scene
+_SINCE_CLAUSE51 = re.compile(
+    r"\s+(?:ever )?since (?P<w>(?:the|her|his|their|a|an|my|our) [a-z]+(?: [a-z]+)? (?:took|"
+    r"took away|borrowed|nicked|pinched|broke|lost|moved|hid|tidied|cleared|ran off with|went "
+    r"off with|made off with|had|got|left|came|went|finished|started|said|told)\b[^,;.!?]*)"
+    r"(?=\s*[.!]?$)"
+)
+
+
+def _since_clause51(text: str, lexicon: Lexicon) -> str:
+    """Session 51: a closing 'since the laundress took her paper away' taken off."""
+    if " since " not in text:
+        return text
+    m = _SINCE_CLAUSE51.search(text)
+    if m is None or _names(m["w"], lexicon):
+        return text
+    return _cut50(text, m.start(), m.end(), "", lexicon)
+
+
+# -- 'P's forgotten his X; lend him ours' ("Noah's forgotten his ruler; lend him ours, would
+# you."): 'ours' is the scene's X, the one the person forgot theirs of; said 'the X'
+_LEND_OURS51 = re.compile(
+    r"^(?P<p>[A-Z]\w*(?: [A-Z]\w*)?)(?:'s| has) (?:forgotten|lost|left behind|mislaid|left) "
+    r"(?P<pro>his|her|their) (?P<x>[a-z]+(?: [a-z]+)?)(?: at home)?\s*[;,.]\s*(?:so )?"
+    r"(?P<v>lend|give|pass|hand) (?P<to>him|her|them) (?P<ours>ours|one of ours|ours instead)"
+)
+
+
+def _lend_ours51(text: str, lexicon: Lexicon) -> str:
+    """Session 51: "P's forgotten his X; lend him ours" read as 'lend him the X'."""
+    if "ours" not in text:
+        return text
+    m = _LEND_OURS51.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if len(_ids(f"the {m['x']}", lexicon, "object")) != 1:
+        return text
+    out = f"{text[: m.start('ours')]}the {m['x']}{text[m.end('ours') :]}"
+    return _read_for_said(out, text, f"{m['pro']} {m['to']}", lexicon)
+
+
 # -- 'she's flagging after the face painting' ("Ta, pet, and could Lily have her teddy now? She's
 # flagging after the face painting."): a state of tiredness said in other words before 'after',
 # said 'tired' (read: the state and the pastime after it are why)
@@ -810,6 +874,9 @@ _STEPS51_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _after_state51,
     _all_after51,
     _outsider51,
+    _bottle_of51,
+    _since_clause51,
+    _lend_ours51,
     _flagging51,
     _been51,
     _been_needing51,
