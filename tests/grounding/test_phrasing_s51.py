@@ -456,9 +456,10 @@ test_been_needing = BEEN_NEEDING.test(
     ("Noah has been needing the ruler since the start of the lesson.", "ruler>B", CLASSROOM),
     ("Carol has been needing the crisps all afternoon.", "chips>C", CELL),
     ("Lena has been needing the tongs.", "tongs>B", KITCHEN),
-    ("Kofi had been needing the drill since lunch.", "drill>A", WORKSHOP),
+    ("Jess has been needing the drill since lunch.", "drill>B", WORKSHOP),
     ("Bob has been needing.", None, CELL),
     ("The cup has been needing Carol.", None, CELL),
+    ("Bob had been needing the apple.", None, CELL),
 )
 
 
@@ -740,7 +741,11 @@ def test_a_mates_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 
 # what would or should have been (_would_have51), a verb of handing over in the past opening the
 # text (_done_verb51), a past want and 'now he wants …' (_want_now51), a request and then that its
-# person is away (_gone51), a report said not to be meant (_fibbing51), a habit (_habit51)
+# person is away (_gone51), a report said not to be meant (_fibbing51), a habit (_habit51), a want
+# and then that the person has it (_has_it51), that it is done or the speaker's to do
+# (_done_said51), praise for what is done (_praise51), 'possibly' before an added object
+# (_possibly51), 'Will P get the X?' (_will51), a task said done before another (_checklist51),
+# 'they' after two people (_they51)
 PAST = [
     ("Alice would have wanted the apple.", CELL),
     ("Mr Lee should have got the magazine.", WARD),
@@ -757,6 +762,24 @@ PAST = [
     ("Alice says Bob wants the apple, she's pulling your leg.", CELL),
     ("Alice usually gets the crisps.", CELL),
     ("Sam usually gets the red pen.", OFFICE),
+    ("Bob's been asking about the red mug all morning; he's got it now.", CELL),
+    ("Mrs Khan needs the jug, but she's had it.", WARD),
+    ("Alice asked for the apple and Bob for the crisps, and I've seen to the pair of them.", CELL),
+    ("Alice asked for the apple, it's sorted.", CELL),
+    ("Mr Lee wants the magazine, I've done it.", WARD),
+    ("The lemon for Marco, I'll do it myself.", KITCHEN),
+    ("Great job putting the apple on the shelf.", CELL),
+    ("Well done getting the jug to Mrs Khan.", WARD),
+    ("Give Bob the apple and possibly the crisps.", CELL),
+    ("Give Mr Lee the magazine, possibly the jug too.", WARD),
+    ("Give Alice the apple and Bob the crisps; they also want the bottle.", CELL),
+    ("Give Ruth the jug and Mr Lee the magazine; they want the thermometer too.", WARD),
+    ("Will Bob get the apple?", CELL),
+    ("Will the apple go on the shelf?", CELL),
+    ("Will Mr Lee get the magazine?", WARD),
+    ("The apple to Bob is done, now the crisps to Alice.", CELL),
+    ("Apple to Bob: done. Crisps to Alice: please.", CELL),
+    ("Lemon to Marco - done. Salt to Lena next.", KITCHEN),
 ]
 MINE = {
     _rewrites51._would_have51,
@@ -765,6 +788,13 @@ MINE = {
     _rewrites51._gone51,
     _rewrites51._fibbing51,
     _rewrites51._habit51,
+    _rewrites51._has_it51,
+    _rewrites51._done_said51,
+    _rewrites51._praise51,
+    _rewrites51._possibly51,
+    _rewrites51._will51,
+    _rewrites51._checklist51,
+    _rewrites51._they51,
 }
 
 
@@ -789,6 +819,11 @@ def test_past_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
         ("Bob wanted the apple.", "apple>B", CELL),
         ("Bob is out of water, give him the bottle.", "bottle>B", CELL),
         ("Alice usually gets the crisps, so give them to her.", "chips>A", CELL),
+        ("Could you possibly give Bob the apple?", "apple>B", CELL),
+        ("Will you give Bob the apple?", "apple>B", CELL),
+        ("When you're done, give Bob the apple.", "apple>B", CELL),
+        ("Give Bob the apple, thanks, I'll owe you one.", "apple>B", CELL),
+        ("Put the apple on the shelf, then give it to Bob.", "apple@shelf ; apple>B", CELL),
     ],
 )
 def test_past_near_read(text: str, want: str, scene: Scene) -> None:
@@ -812,3 +847,22 @@ def test_held_behind_aside_refused(text: str, scene: Scene) -> None:
 def test_held_behind_aside_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(offline, "_state_only32s", lambda text, lexicon: None)
     assert all(tree(text, scene) is not None for text, scene in HELD)
+
+
+# one object both placed and handed over at once (_one_object_twice51, a check of the reading)
+TWICE = [
+    ("Put the mugs on the shelf, Bob's got the red one.", CELL),
+    ("Put the apple on the shelf and give Bob the apple.", CELL),
+    ("Put the boxes on the belt; Tom's got the small one.", DEPOT),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), TWICE)
+def test_one_object_twice_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_one_object_twice_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    off = tuple(c for c in offline._CHECKS if c is not _rewrites51._one_object_twice51)
+    monkeypatch.setattr(offline, "_CHECKS", off)
+    assert [t for t, s in TWICE if tree(t, s) is None] == []

@@ -17,7 +17,7 @@ from hltl.grounding._normalise1 import (
 from hltl.grounding._rewrites45 import _read_for, _read_for_said
 from hltl.grounding._rewrites50 import _cut50
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node, tasks
+from hltl.grounding.tree import Group, Node, tasks
 
 # -- session 51 (engineer 12): blind49's refusals of politeness and fillers, wants and needs,
 # pronouns and ellipsis and questions, each read as a family. Every rule rewrites to words the
@@ -398,7 +398,7 @@ def _flagging51(text: str, lexicon: Lexicon) -> str:
 
 # -- 'P has been needing the X' ("Noah has been needing the ruler since the start of the
 # lesson."): said 'P has needed the X' (read)
-_BEEN_NEEDING51 = re.compile(r"\b(?P<h>has|have|had) been needing\b")
+_BEEN_NEEDING51 = re.compile(r"\b(?P<h>has|have) been needing\b")
 
 
 def _been_needing51(text: str, lexicon: Lexicon) -> str:
@@ -859,6 +859,224 @@ def _habit51(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# -- a want, then that the person has it ("Bob's been asking about the red mug all morning; he's
+# got it now.", "Bob needs the apple, but he's had it."): nothing is left to do; refused (", but
+# he's got it." was refused already)
+_HAS_IT51 = re.compile(
+    r"[,;.!?]\s*(?:(?:but|and|though|oh|well)\s*,?\s+)?(?P<said>(?:he|she|they)(?:'s|'ve| has| "
+    r"have) (?:already |just )?(?:got|had|received|been given|gotten) (?:it|them|that|those|"
+    r"that one)(?: (?:now|already|by now|since|though|anyway))?)\s*[.!]*$",
+    _F,
+)
+
+
+def _has_it51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a want closed by "he's got it now" (above)."""
+    if (
+        " got " not in text
+        and " had " not in text
+        and "'s had" not in text
+        and " received " not in text
+        and " given " not in text
+        and " gotten " not in text
+    ):
+        return
+    m = _HAS_IT51.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says the person has it already: nothing is left to do; say the request "
+        "again if it still stands"
+    )
+
+
+# -- a request, then the speaker saying it is done or that they will do it ("Alice asked for the
+# apple, it's sorted.", "Alice wants the apple, I've done it.", "The apple for Bob, I'll do it
+# myself.", "…, and I've seen to the pair of them."): nothing is asked of the robot; refused
+_DONE_SAID51 = re.compile(
+    r"[,;.!?]\s*(?:(?:and|but|so|oh|well|though)\s*,?\s+)?(?P<said>(?:(?:it's|that's|it is|that is|"
+    r"it has|it's all|that's all|it's been|that's been|they're|they've been|it was|all) "
+    r"(?:all |already |been |now )*(?:sorted|handled|taken care of|dealt with|seen to|sorted out)"
+    r"|(?:I've|I have|I|we've|we have|we|I'll|I will|we'll|I'm going to|I can|let me|leave it, "
+    r"I'll) (?:already |just |quickly |now )*(?:done|did|do|sorted|sort|sort out|sorted out|"
+    r"handled|handle|seen to|see to|dealt with|deal with|taken care of|take care of|get|got|fetch|"
+    r"grab|grabbed) (?:it|that|them|this|those|that one|this one|the pair of them|both of them|"
+    r"the lot|both|it all|them both|it out|that out)(?: (?:myself|ourselves|out|already|now|"
+    r"for (?:him|her|them)))?))\s*[.!]*$",
+    _F,
+)
+
+
+def _done_said51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a request closed by the speaker saying it is done or theirs to do."""
+    m = _DONE_SAID51.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says it is done or the speaker's to do: nothing is asked of the robot; "
+        "say the request alone"
+    )
+
+
+# -- praise for what is done ("Great job putting the apple on the shelf.", "Well done getting the
+# jug to Mrs Khan."): thanks for what is done; refused ("Thanks for giving Bob the apple." is)
+_PRAISE51 = re.compile(
+    r"\b(?P<said>(?:(?:great|good|nice|excellent|brilliant|fantastic|lovely|super|top|fine|"
+    r"smashing|cracking|terrific|splendid|awesome) (?:job|work|stuff|effort|going)|well done|"
+    r"nicely done|kudos|bravo|nice one)(?: (?:on|with|for|in))? (?:putting|giving|getting|"
+    r"bringing|handing|taking|passing|moving|delivering|fetching|dropping|placing|sending|"
+    r"carrying|popping|setting|sorting))\b",
+    _F,
+)
+
+
+def _praise51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse praise for a handover or a placing done (above)."""
+    low = text.lower()
+    if "ing" not in low or (
+        " job" not in low
+        and " work" not in low
+        and "done" not in low
+        and "stuff" not in low
+        and "effort" not in low
+        and "going" not in low
+        and "kudos" not in low
+        and "bravo" not in low
+        and "nice one" not in low
+    ):
+        return
+    m = _PRAISE51.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} praises what is done: it asks for nothing; say 'give …' or 'put …' to "
+        "have it done"
+    )
+
+
+# -- 'possibly' before an object added to a request ("Give Bob the apple and possibly the
+# crisps."): leaves open whether to do it, as 'perhaps' does; refused ("Could you possibly …"
+# asks politely and is read)
+_POSSIBLY51 = re.compile(
+    r"(?:\b(?:and|or)|,)\s+(?P<said>(?:possibly|potentially|conceivably)) (?:also )?(?=(?:the|a|"
+    r"an|some|that|those|these|this) )|\b(?:the|a|an) [a-z]+(?: [a-z]+)? (?P<said2>possibly|"
+    r"potentially)(?=\s*(?:too|as well)?\s*[.!]?$)",
+    _F,
+)
+
+
+def _possibly51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse 'possibly' before an added object (above)."""
+    low = text.lower()
+    if "possibly" not in low and "potentially" not in low and "conceivably" not in low:
+        return
+    m = _POSSIBLY51.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said'] or m['said2']!r} leaves open whether to do it: say what to do"
+    )
+
+
+# -- 'Will P get the X?' ("Will Bob get the apple?", "Will the apple go on the shelf?"): a
+# question that only asks what will happen ("Does Bob get …?", "Should Bob get …?" are refused;
+# "Will you give Bob the apple?" asks the robot and is read)
+_WILL51 = re.compile(
+    r"^(?P<said>Will (?!you\b|u\b|ya\b|one of you\b|someone\b|somebody\b|anyone\b|the robot)"
+    r"[^?]{1,60}? (?:get|be getting|have|be having|be given|receive|go|be going|end up))\b[^?]*\?"
+    r"\s*$",
+    _F,
+)
+
+
+def _will51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse 'Will P get the X?' (above)."""
+    if not text[:5].lower().startswith("will "):
+        return
+    m = _WILL51.match(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} asks what will happen: it asks for nothing; say 'give …' or 'put …'"
+    )
+
+
+# -- a task said to be done, before another ("The apple to Bob is done, now the crisps to
+# Alice.", "Apple to Bob: done. Crisps to Alice: please.", "Bob: apple done. …"): a checklist
+# whose done item is no request; refused
+_CHECKLIST51 = re.compile(
+    r"(?P<said>\b(?:to|for|on|onto|in|into|with) (?:the )?[A-Za-z]+(?: [A-Za-z]+)?(?: is|'s|"
+    r" has been|'s been)?\s*[:\-–—]?\s*(?:done|sorted|ticked off|complete|finished|delivered)"
+    r"|^[A-Z]\w*(?: [A-Z]\w*)?: [a-z]+(?: [a-z]+)? (?:done|sorted|ticked off))(?: already)?"
+    r"\s*[,.;:!—–-]\s*(?=\S)",
+    _F,
+)
+
+
+def _checklist51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a task said to be done before another (above)."""
+    low = text.lower()
+    if (
+        "done" not in low
+        and "sorted" not in low
+        and "ticked" not in low
+        and "complete" not in low
+        and "finished" not in low
+        and "delivered" not in low
+    ):
+        return
+    m = _CHECKLIST51.search(text)
+    if m is None:
+        return
+    raise GroundingError(f"{m['said']!r} says a task is done: say only what is still to do")
+
+
+# -- 'they' after two people ("Give Alice the apple and Bob the crisps; they also want the
+# bottle."): both of them, or either; refused (it had been read as the last one; 'he' / 'she' in
+# that place are refused naming who it could be)
+_THEY51 = re.compile(
+    r"(?<=[.;,!?])\s*(?:and |but |oh, |oh )?(?P<said>they) (?:also |too |both |as well |each )?"
+    r"(?:want|need|'d like|would like|asked for|fancy|are after|'re after|wanted|needed)\b",
+    _F,
+)
+
+
+def _they51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse a 'they' said after two or more people were named (above)."""
+    if "they" not in text.lower():
+        return
+    m = _THEY51.search(text)
+    if m is None or len(_ids(text[: m.start()], lexicon, "human")) < 2:
+        return
+    if _ids(text[m.end() :], lexicon, "human"):
+        return
+    raise GroundingError(
+        f"{m['said']!r} after {text[: m.start()].strip()!r} could mean both people or one of "
+        "them: name the person"
+    )
+
+
+# -- one object both placed and handed over at once ("Put the mugs on the shelf, Bob's got the red
+# one." read mug_red@shelf & mug_red>B): a reading that does two things with one object at the
+# same time contradicts itself; refused (12c's fuzz)
+def _one_object_twice51(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 51: refuse a reading whose 'and' does two things with one object."""
+    stack = [node]
+    while stack:
+        n = stack.pop()
+        if isinstance(n, Group):
+            if n.op == "and":
+                seen: dict[str, int] = {}
+                for k, child in enumerate(n.children):
+                    for t in tasks(child):
+                        if seen.setdefault(t.obj, k) != k:
+                            raise GroundingError(
+                                f"the reading does two things with the {t.obj} at once: say "
+                                "which, or in which order"
+                            )
+            stack.extend(n.children)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _gloss51,
@@ -903,6 +1121,13 @@ REFUSE51: tuple[Callable[[str, Lexicon], None], ...] = (
     _gone51,
     _fibbing51,
     _habit51,
+    _has_it51,
+    _done_said51,
+    _praise51,
+    _possibly51,
+    _will51,
+    _checklist51,
+    _they51,
 )
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
-CHECK51: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK51: tuple[Callable[[str, Node, Lexicon], None], ...] = (_one_object_twice51,)
