@@ -244,7 +244,6 @@ KNOWN_MISSES = frozenset(
         "Blue mug first, for Alice, as she's off bodging stools. After that the apple goes to Bob.",
         "Bottle goes to Person A the apple to Person B no rush the pipe fitter's only just started",
         "Lena first, she wants the white plate; the tongs can go on the worktop after.",
-        "Noah's short a glue stick. Zoe's short a ruler. Sort them both out, cheers.",
         "Kofi wants the tin of screws Jess wants the small spanner both now please the "
         "helmsman's boat won't fix itself",
         "Person A's on her way to water divining, so hand her the bottle or the chips, "

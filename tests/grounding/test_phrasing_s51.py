@@ -401,6 +401,26 @@ def test_lend_ours_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     LEND_OURS.refused_without((_rewrites51._lend_ours51,), monkeypatch)
 
 
+# "P's short a glue stick" (_short_a51)
+SHORT_A = PhrasingCases()
+test_short_a = SHORT_A.test(
+    (
+        "Noah's short a glue stick. Zoe's short a ruler. Sort them both out, cheers.",
+        "glue>B & ruler>C",
+        CLASSROOM,
+    ),
+    ("Bob's short an apple for his lunch box.", "apple>B", CELL),
+    ("Lena's short a knife and Marco's short a lemon.", "knife>B & lemon>A", KITCHEN),
+    ("Mrs Khan's a bit short of a magazine.", "magazine>C", WARD),
+    ("Bob's short a pizza.", None, CELL),
+    ("Dave's short an apple.", None, CELL),
+)
+
+
+def test_short_a_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SHORT_A.refused_without((_rewrites51._short_a51,), monkeypatch)
+
+
 # "she's flagging after the face painting" (_flagging51)
 FLAGGING = PhrasingCases()
 test_flagging = FLAGGING.test(

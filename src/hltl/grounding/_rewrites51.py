@@ -396,6 +396,29 @@ def _flagging51(text: str, lexicon: Lexicon) -> str:
     return _cut50(text, m.start("s"), m.end("s"), "tired", lexicon)
 
 
+# -- "P's short a glue stick" ("Noah's short a glue stick. Zoe's short a ruler. Sort them both
+# out, cheers."): what the person lacks, said 'P needs a glue stick' (read)
+_SHORT_A51 = re.compile(
+    r"\b(?P<p>[A-Z]\w*(?: [A-Z]\w*)?)(?:'s| is) (?:a bit |rather |still |one )?short (?:of )?"
+    r"(?=(?:a|an|the|one) [a-z])"
+)
+
+
+def _short_a51(text: str, lexicon: Lexicon) -> str:
+    """Session 51: "P's short a glue stick" read as 'P needs a glue stick' (each such clause)."""
+    if " short " not in text:
+        return text
+    out, pos = text, 0
+    while (m := _SHORT_A51.search(out, pos)) is not None:
+        pos = m.end()
+        if _only_person(m["p"], lexicon):
+            out = f"{out[: m.start()]}{m['p']} needs {out[m.end() :]}"
+            pos = m.start() + len(m["p"]) + 7
+    if out == text:
+        return text
+    return _read_for(out, text, None, lexicon)
+
+
 # -- 'P has been needing the X' ("Noah has been needing the ruler since the start of the
 # lesson."): said 'P has needed the X' (read)
 _BEEN_NEEDING51 = re.compile(r"\b(?P<h>has|have) been needing\b")
@@ -1093,6 +1116,7 @@ _STEPS51_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_after51,
     _outsider51,
     _bottle_of51,
+    _short_a51,
     _since_clause51,
     _lend_ours51,
     _flagging51,
