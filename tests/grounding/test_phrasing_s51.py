@@ -772,6 +772,8 @@ PAST = [
     ("Gave Bob the apple.", CELL),
     ("Took the jug to Mrs Khan.", WARD),
     ("just handed marco the lemon", KITCHEN),
+    ("Thanks, you brought Carol the blue mug.", CELL),
+    ("Jërëjëf, as we say back in Dakar, and you brought Carol the blue mug.", CELL),
     ("Bob wanted the apple, now he wants the crisps.", CELL),
     ("Mr Lee wanted the magazine, now he wants the jug.", WARD),
     ("Sam asked for the stapler earlier, now he's after the notepad.", OFFICE),

@@ -755,11 +755,24 @@ _DONE_FIRST51 = (
 )
 
 
+# 'you' + the past verb after a clause's start ("Thanks, you brought Carol the blue mug.",
+# "Jërëjëf, as we say back in Dakar, and you brought Carol the blue mug."): what the robot did
+_YOU_DID51 = re.compile(
+    r"[,;.!?:]\s*(?:(?:and|so|but|oh|well|now)\s+)?(?P<said>(?:you|u|you've|you have|we|we've)"
+    r"\s+(?:just\s+|already\s+)?(?:gave|brought|took|handed|passed|delivered|placed|moved|"
+    r"dropped|fetched|carried|returned|sent))\b",
+    _F,
+)
+
+
 def _done_verb51(text: str, lexicon: Lexicon) -> None:
-    """Session 51: refuse a text opening with a verb of handing over in the past (above)."""
-    if not text[:12].lower().startswith(_DONE_FIRST51):
-        return
-    m = _DONE_VERB51.match(text.lstrip())
+    """Session 51: refuse a verb of handing over in the past opening the text or, after 'you',
+    a clause (above)."""
+    m = None
+    if text[:12].lower().startswith(_DONE_FIRST51):
+        m = _DONE_VERB51.match(text.lstrip())
+    if m is None and ("you" in text or "You" in text or "we" in text or " u " in text):
+        m = _YOU_DID51.search(text)
     if m is None:
         return
     raise GroundingError(
