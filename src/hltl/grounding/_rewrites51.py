@@ -1071,7 +1071,7 @@ def _checklist51(text: str, lexicon: Lexicon) -> None:
 # bottle."): both of them, or either; refused (it had been read as the last one; 'he' / 'she' in
 # that place are refused naming who it could be)
 _THEY51 = re.compile(
-    r"(?<=[.;,!?])\s*(?:and |but |oh, |oh )?(?P<said>they) (?:also |too |both |as well |each )?"
+    r"(?<=[.;,!?])\s*(?:and |but |oh, |oh )?(?P<said>they) (?:also |too |as well )?"
     r"(?:want|need|'d like|would like|asked for|fancy|are after|'re after|wanted|needed)\b",
     _F,
 )
@@ -1084,8 +1084,9 @@ def _they51(text: str, lexicon: Lexicon) -> None:
     m = _THEY51.search(text)
     if m is None or len(_ids(text[: m.start()], lexicon, "human")) < 2:
         return
-    if _ids(text[m.end() :], lexicon, "human"):
-        return
+    after = text[m.end() :]
+    if _ids(after, lexicon, "human") or not _ids(after, lexicon, "object"):
+        return  # (someone named after it, or no new object: 'they both want them')
     raise GroundingError(
         f"{m['said']!r} after {text[: m.start()].strip()!r} could mean both people or one of "
         "them: name the person"
