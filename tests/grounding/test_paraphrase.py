@@ -206,8 +206,6 @@ KNOWN_MISSES = frozenset(
         "the crumhorn lady.",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
         "Omar's after a spoon to stir his tea. Could you get him one?",
-        "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
-        "them both.",
         "Bob was on about crisps all through the ice show and Alice wants her bottle can you "
         "sort that",
         "Person A's walking the coast path later and a single bottle will see her through, the "
