@@ -802,6 +802,12 @@ PAST = [
     ("The apple to Bob is done, now the crisps to Alice.", CELL),
     ("Apple to Bob: done. Crisps to Alice: please.", CELL),
     ("Lemon to Marco - done. Salt to Lena next.", KITCHEN),
+    ("Person B wanted the apple, now Person B wants the chips.", L44),
+    ("Give Bob the apple. Oh, that's been done.", CELL),
+    ("Person A has received the chips.", L24),
+    ("Give Alice the apple and Bob the crisps; they both want the mugs too.", CELL),
+    ("Bob's been asking about the red mug all morning; he has it now.", CELL),
+    ("With my apologies for the muddle earlier, could Person B have been given the bottle?", F42),
 ]
 MINE = {
     _rewrites51._would_have51,
@@ -817,6 +823,7 @@ MINE = {
     _rewrites51._will51,
     _rewrites51._checklist51,
     _rewrites51._they51,
+    _rewrites51._received51,
 }
 
 
@@ -846,6 +853,7 @@ def test_past_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
         ("When you're done, give Bob the apple.", "apple>B", CELL),
         ("Give Bob the apple, thanks, I'll owe you one.", "apple>B", CELL),
         ("Put the apple on the shelf, then give it to Bob.", "apple@shelf ; apple>B", CELL),
+        ("Alice wanted the cup, now Bob wants the apple.", "cup>A & apple>B", CELL),
     ],
 )
 def test_past_near_read(text: str, want: str, scene: Scene) -> None:

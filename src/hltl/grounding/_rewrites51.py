@@ -704,12 +704,19 @@ _WOULD_HAVE51 = re.compile(
 )
 
 
+_WOULD_P_HAVE51 = re.compile(
+    r"\b(?P<said>(?:could|would|should|might|must) (?:[A-Z]\w*(?: [A-Z]\w*)?|he|she|they) "
+    r"(?:have|'ve) (?:been given|got|had|received|wanted|been handed))\b",
+    _F,
+)
+
+
 def _would_have51(text: str, lexicon: Lexicon) -> None:
     """Session 51: refuse a want or a handover said as what would or should have been."""
     low = text.lower()
     if " have " not in low and "'ve " not in low and " of " not in low:
         return
-    m = _WOULD_HAVE51.search(text)
+    m = _WOULD_HAVE51.search(text) or _WOULD_P_HAVE51.search(text)
     if m is None:
         return
     raise GroundingError(
@@ -781,6 +788,32 @@ def _done_verb51(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# -- 'P has received the X' ("Person A has received the chips."): what was done, no request;
+# refused ("Bob's been given the apple." is refused already)
+_RECEIVED51 = re.compile(
+    r"^(?P<said>(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?:has|have|'s) (?:already |just |now )?"
+    r"(?:received|been handed|got hold of|collected|picked up|been sent))\b"
+)
+
+
+def _received51(text: str, lexicon: Lexicon) -> None:
+    """Session 51: refuse 'P has received the X' (above)."""
+    if (
+        " received " not in text
+        and " been " not in text
+        and " got hold " not in text
+        and " collected " not in text
+        and " picked up " not in text
+    ):
+        return
+    m = _RECEIVED51.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what was done: it asks for nothing; say 'give …' to have it done"
+    )
+
+
 # -- a want said over by another ("Bob wanted the apple, now he wants the crisps.", "Bob asked for
 # the apple earlier, now he's after the crisps."): the new want may replace the old or add to it;
 # refused (12c's fuzz: both were read; "…, but now he'd rather have the jug" replaces it, read)
@@ -793,13 +826,24 @@ _WANT_NOW51 = re.compile(
 )
 
 
+_WANT_NOW_NAMED51 = re.compile(
+    r"\b(?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?:wanted|asked for|was after|had asked for|asked after|"
+    r"was wanting|requested|fancied|was hoping for|needed)\b[^.;!?]*?[,;.]\s*(?:but |and |though |"
+    r"only )?(?:now|these days|today|this time)\s*,?\s*(?P<q>[A-Z]\w*(?: [A-Z]\w*)?)(?:'s| is)? "
+    r"(?:wants|needs|'d like|would like|fancies|prefers|after|asking for|asks for|keen on|set on|"
+    r"hoping for)\b"
+)
+
+
 def _want_now51(text: str, lexicon: Lexicon) -> None:
     """Session 51: refuse a past want followed by 'now he wants …' (above)."""
     if "now" not in text.lower() and "today" not in text.lower() and "this time" not in text:
         return
     m = _WANT_NOW51.search(text)
     if m is None:
-        return
+        m = _WANT_NOW_NAMED51.search(text)
+        if m is None or m["p"] != m["q"] or not _only_person(m["p"], lexicon):
+            return
     raise GroundingError(
         f"{m.group(0)!r} says an earlier want and a new one: the new one may replace it or add "
         "to it; say 'instead' or 'too'"
@@ -901,7 +945,8 @@ def _habit51(text: str, lexicon: Lexicon) -> None:
 _HAS_IT51 = re.compile(
     r"[,;.!?]\s*(?:(?:but|and|though|oh|well)\s*,?\s+)?(?P<said>(?:he|she|they)(?:'s|'ve| has| "
     r"have) (?:already |just )?(?:got|had|received|been given|gotten) (?:it|them|that|those|"
-    r"that one)(?: (?:now|already|by now|since|though|anyway))?)\s*[.!]*$",
+    r"that one)(?: (?:now|already|by now|since|though|anyway))?|(?:he|she) has (?:it|them) "
+    r"(?:now|already)|they have (?:it|them) (?:now|already))\s*[.!]*$",
     _F,
 )
 
@@ -911,6 +956,8 @@ def _has_it51(text: str, lexicon: Lexicon) -> None:
     if (
         " got " not in text
         and " had " not in text
+        and " has " not in text
+        and " have " not in text
         and "'s had" not in text
         and " received " not in text
         and " given " not in text
@@ -933,6 +980,8 @@ _DONE_SAID51 = re.compile(
     r"[,;.!?]\s*(?:(?:and|but|so|oh|well|though)\s*,?\s+)?(?P<said>(?:(?:it's|that's|it is|that is|"
     r"it has|it's all|that's all|it's been|that's been|they're|they've been|it was|all) "
     r"(?:all |already |been |now )*(?:sorted|handled|taken care of|dealt with|seen to|sorted out)"
+    r"|(?:it's|that's|it has|that has|it is|that is|it was|that was|they've|they have) (?:all )?"
+    r"(?:been |already )+done"
     r"|(?:I've|I have|I|we've|we have|we|I'll|I will|we'll|I'm going to|I can|let me|leave it, "
     r"I'll) (?:already |just |quickly |now )*(?:done|did|do|sorted|sort|sort out|sorted out|"
     r"handled|handle|seen to|see to|dealt with|deal with|taken care of|take care of|get|got|fetch|"
@@ -1071,7 +1120,7 @@ def _checklist51(text: str, lexicon: Lexicon) -> None:
 # bottle."): both of them, or either; refused (it had been read as the last one; 'he' / 'she' in
 # that place are refused naming who it could be)
 _THEY51 = re.compile(
-    r"(?<=[.;,!?])\s*(?:and |but |oh, |oh )?(?P<said>they) (?:also |too |as well )?"
+    r"(?<=[.;,!?])\s*(?:and |but |oh, |oh )?(?P<said>they) (?:also |too |as well |both |each )?"
     r"(?:want|need|'d like|would like|asked for|fancy|are after|'re after|wanted|needed)\b",
     _F,
 )
@@ -1155,6 +1204,7 @@ _STEPS51: tuple[Callable[[str, Lexicon], str], ...] = ()
 REFUSE51: tuple[Callable[[str, Lexicon], None], ...] = (
     _would_have51,
     _done_verb51,
+    _received51,
     _want_now51,
     _gone51,
     _fibbing51,
