@@ -1145,8 +1145,14 @@ def _they51(text: str, lexicon: Lexicon) -> None:
 # -- one object both placed and handed over at once ("Put the mugs on the shelf, Bob's got the red
 # one." read mug_red@shelf & mug_red>B): a reading that does two things with one object at the
 # same time contradicts itself; refused (12c's fuzz)
+_HOLDS51 = re.compile(r"(?:'s got|'s had| has got| has had| has| had| got)\b")
+
+
 def _one_object_twice51(text: str, node: Node, lexicon: Lexicon) -> None:
-    """Session 51: refuse a reading whose 'and' does two things with one object."""
+    """Session 51: refuse a reading whose 'and' does two things with one object, when the text
+    says someone has or had a thing ('give it to Bob' after a placing reads as before)."""
+    if _HOLDS51.search(text) is None:
+        return
     stack = [node]
     while stack:
         n = stack.pop()
