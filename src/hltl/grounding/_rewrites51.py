@@ -15,6 +15,7 @@ from hltl.grounding._normalise1 import (
     _unknown_word,
 )
 from hltl.grounding._rewrites45 import _read_for, _read_for_said
+from hltl.grounding._rewrites48 import _GLOSS48
 from hltl.grounding._rewrites50 import _cut50
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Group, Node, tasks
@@ -46,7 +47,7 @@ def _gloss51(text: str, lexicon: Lexicon) -> str:
     if " you" not in text:
         return text
     m = _GLOSS51.match(text)
-    if m is None or (m["place"] and _names(m["place"], lexicon)):
+    if m is None or (m["place"] and _names(m["place"], lexicon)) or _GLOSS48.match(text):
         return text
     if not all(_unknown_word(w, lexicon) for w in re.split(r"[ -]", m["w"])):
         return text
@@ -59,7 +60,8 @@ def _gloss51(text: str, lexicon: Lexicon) -> str:
 _THANKS_IN51 = re.compile(
     r"^(?P<w>[^\W\d_]+(?:['’ -][^\W\d_]+){0,2}),\s*(?:that's|that is|which is|it's|it is|"
     r"meaning) (?:(?:thanks|thank you|cheers|ta)(?: (?:in|in the|from)(?: [^\W\d_]+){1,2})|"
-    r"[^\W\d_]+(?: [^\W\d_]+)? for (?:thanks|thank you|cheers|ta))\s*[,;:]\s*(?:and )?"
+    r"(?P<lang>[^\W\d_]+(?: [^\W\d_]+)?) for (?:thanks|thank you|cheers|ta))\s*[,;:]\s*"
+    r"(?:and )?"
 )
 
 
@@ -68,7 +70,7 @@ def _thanks_in51(text: str, lexicon: Lexicon) -> str:
     if "thank" not in text and "cheers" not in text and " ta" not in text:
         return text
     m = _THANKS_IN51.match(text)
-    if m is None or _names(m["w"], lexicon):
+    if m is None or _names(m["w"], lexicon) or (m["lang"] and m["lang"].isascii()):
         return text
     return _cut50(text, 0, m.end(), "", lexicon)
 
@@ -234,7 +236,7 @@ def _ever_since51(text: str, lexicon: Lexicon) -> str:
 _AFTER_STATE51 = re.compile(
     r"^After (?P<w>[^,;.!?]{3,60}),\s*(?=(?P<p>" + _P51 + r")(?:'s| is) (?:gasping|parched|"
     r"starving|famished|thirsty|hungry|peckish|exhausted|shattered|knackered|done in|worn out|"
-    r"frozen|freezing|flagging|wilting|dying of thirst|spent)\b)"
+    r"frozen|freezing|flagging|wilting|dying of thirst|spent)\s*,\s*so\b)"
 )
 
 
@@ -252,15 +254,14 @@ def _after_state51(text: str, lexicon: Lexicon) -> str:
 # -- '; that's all he's after' closing a want ("Person B wants the chips; that's all he's
 # after."): said ', that's all' (read), when the pronoun may be the one person who gets it
 _ALL_AFTER51 = re.compile(
-    r"\s*[;,]\s*(?:and )?that(?:'s| is) all (?P<pro>he|she|they)(?:(?:'s| is|'re| are) "
-    r"(?:after|wanting|asking for|hoping for|angling for)| (?:wants|needs|asked for|asks for|"
-    r"wanted|needed))(?=\s*[.!]?$)"
+    r"\s*;\s*(?:and )?that(?:'s| is) all (?P<pro>he|she|they)(?:(?:'s| is|'re| are) "
+    r"(?:after|wanting|asking for|hoping for|angling for)| (?:wants|needs))(?=\s*[.!]?$)"
 )
 
 
 def _all_after51(text: str, lexicon: Lexicon) -> str:
     """Session 51: a closing "; that's all he's after" read as ", that's all"."""
-    if "all " not in text:
+    if "all " not in text or ";" not in text:
         return text
     m = _ALL_AFTER51.search(text)
     if m is None:
@@ -587,7 +588,7 @@ def _do_you_think51(text: str, lexicon: Lexicon) -> str:
     if not text.startswith(("Do ", "D'you ", "Would ")):
         return text
     m = _DO_YOU_THINK51.match(text)
-    if m is None or not _only_person(m["p"], lexicon):
+    if m is None or not m["rel"] or not _only_person(m["p"], lexicon):
         return text
     put = f"{m['m'].capitalize()} {m['p']}{m['rel'] or ''} "
     return _read_for(f"{put}{text[m.end() :]}", text, None, lexicon)
