@@ -1663,7 +1663,23 @@ FORGET_PEOPLE = (
 # (not after a choice said to be free, "either plate, she's not bothered": a remark of forgetting
 # after it says nothing a careful person could read)
 _FREE_CHOICE = frozenset(
-    ("either", "any", "whichever", "whatever", "choice", "bothered", "fussy", "mind", "matter")
+    (
+        "either",
+        "any",
+        "whichever",
+        "whatever",
+        "choice",
+        "bothered",
+        "fussy",
+        "mind",
+        "matter",
+        # session 51: the free choices session 50's `closed` took for forgetting ("…, I'm easy",
+        # "I don't care which", "I'll let you pick", "Your call which")
+        "easy",
+        "care",
+        "pick",
+        "call",
+    )
 )
 FORGET_FORMS = ("closed", "objects", "people", "free")
 # kin (session 50; 12r's "Grandad said she wants the teddy." read teddy>B, session 34's check of

@@ -709,6 +709,11 @@ def _lots(entry: Entry, seed: int) -> list[fuzz.Variant]:
         ("Alice wants the red mug or the blue one.", "mug_red>A | mug_blue>A", ("closed", "free")),
         # a choice said to be free: only `free`
         ("Give Bob either mug, he's not fussy.", "mug_red>B | mug_blue>B", ("free",)),
+        # ... in the words session 50's `closed` missed ('easy', 'care', 'pick', 'call')
+        ("Give Bob the apple or the cup, I'm easy.", "apple>B | cup>B", ("free",)),
+        ("Give Bob the apple or the cup, I don't care which.", "apple>B | cup>B", ("free",)),
+        ("Give Bob the apple or the cup, I'll let you pick.", "apple>B | cup>B", ("free",)),
+        ("Give Bob the apple or the cup. Your call which.", "apple>B | cup>B", ("free",)),
         # a question, a kind the scene has two of, a pronoun, two handovers, a placing, a refused
         # entry: none
         ("Could you give Bob the apple or the cup?", "apple>B | cup>B", ()),
