@@ -255,6 +255,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "forgets",
         "lots",
         "kin",
+        "done",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -276,7 +277,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     )
     assert (
         "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents', "
-        "'thoughts', 'chains', 'forgets', 'lots', 'kin')" in err
+        "'thoughts', 'chains', 'forgets', 'lots', 'kin', 'done')" in err
     )
 
 
