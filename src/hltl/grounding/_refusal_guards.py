@@ -4,7 +4,7 @@
 from hltl.grounding.stepguard import Entry
 
 GUARDS: dict[str, Entry | str] = {
-    "derivation": "1d7ffe6182788e23cc9eb351a762547656216b51af821a61",
+    "derivation": "33d71a3257a14c08229c5a2993d046f656216b51af821a61",
     "hltl.grounding._rewrites40:posture_state40": (
         "6cf3b8d6a10b133f",
         (
@@ -268,10 +268,175 @@ GUARDS: dict[str, Entry | str] = {
         ((), (", so ",), False),
         (),
     ),
+    "hltl.grounding._rewrites49r:then_again49r": ("eada7b206cf1a5d8", ((), (" then",), False), ()),
     "hltl.grounding._rewrites49r:whoever_else49r": (
         "2e6fb3b56d4dacef",
         ((), ("whoever",), False),
         (),
     ),
     "hltl.grounding._rewrites49s:_has_now49s": ("ce80a566f2ac89e1", ((), (" now",), False), ()),
+    "hltl.grounding._rewrites50:_who_asked50": (
+        "ac64e7ee41198f92",
+        (("Was it ", "Which "), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_checklist51": (
+        "7c17e1ab8fb75fa0",
+        ((), ("complete", "delivered", "done", "finished", "sorted", "ticked"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_done_said51": (
+        "c0610ee85c1cf5b6",
+        (
+            (),
+            (
+                "already ",
+                "been ",
+                "both",
+                "handled",
+                "it",
+                "seen to",
+                "sorted",
+                "taken care of",
+                "that",
+                "the lot",
+                "them",
+                "this",
+                "those",
+            ),
+            True,
+        ),
+        (
+            (
+                "_DONE_SAID51",
+                (
+                    "pattern",
+                    "[,;.!?]\\s*(?:(?:and|but|so|oh|well|though)\\s*,?\\s+)?(?P<said>(?:(?:it's|that's|it is|that is|it has|it's all|that's all|it's been|that's been|they're|they've been|it was|all) (?:all |already |been |now )*(?:sorted|handled|taken care of|dealt with|seen to|sorted out)|(?:it's|that's|it has|that has|it is|that is|it was|that was|they've|they have) (?:all )?(?:been |already )+done|(?:I've|I have|I|we've|we have|we|I'll|I will|we'll|I'm going to|I can|let me|leave it, I'll) (?:already |just |quickly |now )*(?:done|did|do|sorted|sort|sort out|sorted out|handled|handle|seen to|see to|dealt with|deal with|taken care of|take care of|get|got|fetch|grab|grabbed) (?:it|that|them|this|those|that one|this one|the pair of them|both of them|the lot|both|it all|them both|it out|that out)(?: (?:myself|ourselves|out|already|now|for (?:him|her|them)))?))\\s*[.!]*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites51:_fibbing51": (
+        "8e335f12c5abe8c7",
+        ((" leg", " on", " up", "fibs", "ing", "porkies", "serious", "tales"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_gone51": (
+        "3012640aeced4a17",
+        ((), (" off", " out", "away", "discharged", "gone", "left", "not "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_habit51": (
+        "7bb5f4e97a797ac6",
+        (
+            (
+                "always",
+                "generally",
+                "likes to",
+                "mostly",
+                "normally",
+                "often",
+                "tends to",
+                "typically",
+                "usually",
+            ),
+            (),
+            True,
+        ),
+        (
+            (
+                "_HABIT51",
+                (
+                    "pattern",
+                    "^(?P<said>(?P<p>[A-Z]\\w*(?: [A-Z]\\w*)?) (?:usually|normally|generally|typically|always|often|mostly|tends to|likes to) (?:gets?|has|have|takes?|receives?|is given|gets given)) [^,;.!?]+[.!]?$",
+                    32,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites51:_has_it51": (
+        "024603a1b90e2a6b",
+        (
+            (" given ", " got ", " gotten ", " had ", " has ", " have ", " received ", "'s had"),
+            (),
+            False,
+        ),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_one_object_twice51": (
+        "2283ad80a33d4dfc",
+        ((" got", " had", " has"), (), True),
+        (("_HOLDS51", ("pattern", "(?:'s got|'s had| has got| has had| has| had| got)\\b", 32)),),
+    ),
+    "hltl.grounding._rewrites51:_possibly51": (
+        "df4028e3043adf72",
+        ((), ("conceivably", "possibly", "potentially"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_praise51": ("a205364b27419a7f", ((), ("ing",), False), ()),
+    "hltl.grounding._rewrites51:_received51": (
+        "66d6835e0bc62cc1",
+        ((" been ", " collected ", " got hold ", " picked up ", " received "), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_they51": ("b3ea19fc9f100743", ((), ("they",), False), ()),
+    "hltl.grounding._rewrites51:_want_now51": (
+        "d7328c40ee432fe6",
+        (("this time",), ("now", "today"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_will51": ("9ac9239bc464acd0", ((), ("will ",), False), ()),
+    "hltl.grounding._rewrites51:_would_have51": (
+        "e568ae63977b3ebb",
+        ((), (" have ", " of ", "'ve "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_and_then_who51r": (
+        "95f4f5d14c14f3d6",
+        ((), ("actually",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_done_after51r": (
+        "eba968adfc007661",
+        (
+            (),
+            (
+                "brought",
+                "drunk",
+                "eaten",
+                "finished",
+                "gave",
+                "given",
+                "got",
+                "had",
+                "handed",
+                "passed",
+                "taken",
+                "took",
+                "used",
+            ),
+            False,
+        ),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_excluded_back51r": (
+        "f9e2d838d87bedd9",
+        (
+            (),
+            ("apart", "bar ", "besides", "but not", "except", "excluding", "other than", "save"),
+            False,
+        ),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_instead_twice51r": (
+        "404ec027fdebaa37",
+        ((), ("instead",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_not_said51r": ("d9a0f7aa1f2c4179", ((), ("not ",), False), ()),
+    "hltl.grounding._rewrites51r:_owner_said51r": ("9d0f456e95a8343c", (("'s",), (), False), ()),
+    "hltl.grounding._rewrites51r:_people_had51r": ("cabf84b5e68f2846", ((), (" or ",), False), ()),
+    "hltl.grounding._rewrites51r:_well_again51r": ("6bc8b553a713e7df", ((), ("well",), False), ()),
+    "hltl.grounding._rewrites51r:_who_wants51r": ("313b3da0d03e554c", ((), (" or ",), False), ()),
 }
