@@ -168,20 +168,14 @@ KNOWN_MISSES = frozenset(
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
-        "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
         "bottle for Person A, the chips to Person B.",
-        "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
-        "The chips can go to whichever of the two you like, Person A or Person B, they both "
-        "put in a shift on the cake stall.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
-        "All three of the pens into the box, Priya's had enough of the doodling.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
         "pool.",
-        "The bottle's for Person A and for no one else, she's earned it at the fun run.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         "about, so give it her.",
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
@@ -207,8 +201,6 @@ KNOWN_MISSES = frozenset(
         "the crumhorn lady.",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
         "Omar's after a spoon to stir his tea. Could you get him one?",
-        "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
-        "them both.",
         "Bob was on about crisps all through the ice show and Alice wants her bottle can you "
         "sort that",
         "Person A's walking the coast path later and a single bottle will see her through, the "
@@ -245,7 +237,6 @@ KNOWN_MISSES = frozenset(
         "Blue mug first, for Alice, as she's off bodging stools. After that the apple goes to Bob.",
         "Bottle goes to Person A the apple to Person B no rush the pipe fitter's only just started",
         "Lena first, she wants the white plate; the tongs can go on the worktop after.",
-        "Noah's short a glue stick. Zoe's short a ruler. Sort them both out, cheers.",
         "Kofi wants the tin of screws Jess wants the small spanner both now please the "
         "helmsman's boat won't fix itself",
         "Person A's on her way to water divining, so hand her the bottle or the chips, "
@@ -266,7 +257,6 @@ KNOWN_MISSES = frozenset(
         "notebook to priya thanks she has minutes to take",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
-        "All four things to Person B: bottle, chips, cup and apple.",
         "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
         "and cup alike.",
         "Alice put in for the bottle and she's owed it, so it's hers; Bob can have the crisps "
@@ -284,7 +274,6 @@ KNOWN_MISSES = frozenset(
         "Person B's way.",
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
-        "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
         "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
         "over it goes.",
         "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "
@@ -314,15 +303,12 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
-        "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
         "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
         "Emma's the visitor; she'd like a banana, can you bring her one?",
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
         "one'll do.",
-        "Noah's forgotten his ruler; lend him ours, would you.",
         "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
         "Person A's doing her wordsearch she's parched bottle to her.",
         "Ruth's doing her rounds the thermometer's for her.",
@@ -342,8 +328,6 @@ KNOWN_MISSES = frozenset(
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
-        "Ko rab'a, that's thanks in Gilbertese, and now the chips across to Person B please.",
-        "Bob's desperate for a bottle of water after his cajón session.",
         "Alice is back from the pitch and putt she wants the bottle give it her",
         "The bottle is Person B's he asked earlier the chips are Person A's.",
         "Grandad's feeding Lily on the sofa. The bib. He needs it, hand it to him.",
@@ -378,30 +362,6 @@ KNOWN_MISSES = frozenset(
         "Jess.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
         # blind49 (tuned on in session 51): refusals left at its one measurement (docs/grounding.md)
-        "Jërëjëf, as we say back in Dakar, and could you bring Carol the blue mug when you've a "
-        "spare moment?",
-        "Sorry to be a nuisance, but the crisps would be lovely over with Bob, cheers.",
-        "With my apologies for the muddle earlier, could Person B be given the bottle now?",
-        "Right then, if you'd be a star, the packing tape goes over to Tom, ta.",
-        "Bob's got a proper craving for an apple after his go-karting.",
-        "What Person A needs after three hours of bark rubbing in the woods is the cup, nothing "
-        "fancier.",
-        "Person B is after the bottle, being a collier with a dry throat, and Person A has her "
-        "eye on the apple.",
-        "Person A fancies the chips, being a woodcutter with an appetite.",
-        "Ever since the shrimping trip, the bottle's what Person B has been hoping for.",
-        "After an afternoon on the rock climbing wall, Person A is gasping, so the bottle, please.",
-        "Person B wants the chips; that's all he's after.",
-        "Mia's crying out for the barcode scanner, the site manager wants a count.",
-        "Noah has been needing the ruler since the start of the lesson.",
-        "Bob's been asking about the red mug all morning; pass it to him, would you.",
-        "The chips are hers, Person A's I mean.",
-        "At the narrowboat club Person A asked for the bottle and Person B for the chips, so "
-        "could you see to the pair of them.",
-        "It's Person A's bottle, she wants it.",
-        "Person A again, same as last time, the bottle.",
-        "Person B gets the chips; as for the bottle, that's hers, Person A's, the lass who does "
-        "aerial silks.",
         "Right so the apple goes to Alice who's been at the clay pigeon shooting and the crisps "
         "go to Carol and I reckon that's us.",
         "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
@@ -419,30 +379,7 @@ KNOWN_MISSES = frozenset(
         "across to him.",
         "Marco wants the knife he's doing the fish Lena wants the salt.",
         "Grandad wants the wipes Lily's made a mess with her yoghurt",
-        "Alice or Bob, whichever of the two, can have the crisps; they share everything on the a "
-        "cappella tour.",
-        "So nobody sulks, Person A gets the apple and the stunt double, Person B, gets the cup, "
-        "one thing apiece.",
-        "Any of the four things, Person B isn't choosy.",
-        "Whichever of the chips and the apple, Person A is happy with one.",
-        "Person A can take her pick of the bottle or the chips, she's earned it at the improv "
-        "night.",
-        "Whichever bottle you like, so long as Person A gets it.",
-        "Any bottle going would suit Person A, she's not choosy after her bushcraft weekend.",
-        "Person B's doing a twelve-hour sail maker shift, so both, the bottle and the chips, go "
-        "to him please.",
-        "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist.",
-        "Mr Lee and Mrs Khan can each have a blanket, the blue one for him.",
-        "It doesn't matter which box, just the one of them on the belt for the driver's test run.",
-        "Either of the blocks to Lily, she likes them both.",
         "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
-        "Person B is taking both things, bottle and chips, to the seed saving stall, so hand him "
-        "the two.",
-        "A lone bottle's all there is; Person A gets it.",
-        "The one bottle in here, for Person A, as she's a marine biologist and always thirsty.",
-        "Person A gets the bottle, the only one on offer.",
-        "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
-        "Both blankets on the locker for now, the ward's too warm for them at the minute.",
         "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
         "Person A's allergic to apples, so give her the cup instead.",
@@ -455,26 +392,12 @@ KNOWN_MISSES = frozenset(
         "Apart from the medium box, which stays put, the boxes go on the belt.",
         "Don't bother fetching the globe, Noah's after the ruler and nothing else for his scale "
         "drawing.",
-        "Bottle to Bob, no wait, I've mixed them up again, Alice's the one.",
-        "Give Person A the apple; actually, she's just said, make that the chips.",
-        "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag.",
-        "The bottle to Person A, yes, I've checked the rota twice, Person A.",
-        "The chips to Person A, I mean, gosh, it's the bottle she's asked for, to Person A.",
-        "Bowl on the tray, no, it's got soup in, so in the sink.",
-        "Stapler in the box, sorry, Priya likes it kept on the desk.",
-        "The red book for Zoe, wait, she's read that, the green one.",
         "cup to person b who does the bat detecting and apple to person a",
         "person b fancies the bottle after his epee bout cheers",
         "gloves to mia her hands are freezing on the dock",
         "put the scissors on the desk zoes done with her terrarium label",
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
-        "Do you think Person A, who's been grafting roses all morning, could have the cup?",
-        "Can you give Person B the chips, as a favour to a weary mahout?",
-        "Can you put the packing tape on the pallet so Tom can grab it on his way out?",
-        "Would you put the globe on the bookshelf? Mrs Ortiz needs the desk clear for the crystal "
-        "radio demo.",
-        "Could Kofi borrow the big spanner for a bit, a mate's bike has a loose nut?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -513,8 +436,6 @@ KNOWN_UNCLEAR = frozenset(
         "from me now.",
         "tom wanted a box, small or medium, can't remember which",
         # blind49 (tuned on in session 51)
-        "Ruth and Mrs Khan were both on about the jug; she says it's hers.",
-        "The doctor asked for one of the cups, green or white, but I've lost track of which.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
