@@ -35,7 +35,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites40s:_owner40s": ("0dc938d10b4ba26f", ((), ("for h",), False), ()),
     "hltl.grounding._rewrites41l:_done41l": (
-        "b5854426c5fc691b",
+        "1fc9d91d09e8a6d4",
         ((), ("been", "was", "were"), False),
         (),
     ),

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids
-from hltl.grounding._rewrites41l import _SUBORDINATE41L
+from hltl.grounding._rewrites41l import _SUBORDINATE41L, said_as_done41l
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -77,7 +76,7 @@ def _told_done51l(text: str, lexicon: Lexicon) -> None:
         rest = m.group("rest")
         if not (_ids(rest, lexicon, "human") or _ids(rest, lexicon, "surface")):
             continue
-        _refuse51l(m)
+        said_as_done41l(m)
     if "you" not in low:
         return
     for m in _YOU_GAVE51L.finditer(text):
@@ -89,15 +88,7 @@ def _told_done51l(text: str, lexicon: Lexicon) -> None:
             continue
         if not (_ids(rest, lexicon, "human") or _ids(rest, lexicon, "surface")):
             continue
-        _refuse51l(m)
-
-
-def _refuse51l(m: re.Match[str]) -> None:
-    said = m.group(0).strip()
-    raise GroundingError(
-        f"{said!r} is said as done ({m.group('said').strip()!r}), not as something to do: "
-        "say the request without it, e.g. 'give Bob the chips' or 'put the cup on the shelf'"
-    )
+        said_as_done41l(m)
 
 
 # refusals asked of the text before it is read (offline._parse, before the other session-51 ones)
