@@ -617,7 +617,7 @@ def _favour51(text: str, lexicon: Lexicon) -> str:
 # only places things
 _GRAB_IT51 = re.compile(
     r",?\s+so (?:that )?(?P<p>" + _P51 + r"|he|she|they) (?:can|could|will|'ll|may|might) "
-    r"(?:grab|collect|get|take|pick up|fetch|pick|nab|find|reach) (?:it|them)(?: up)?(?: (?:on "
+    r"(?:grab|collect|get|take|pick up|fetch|pick|nab|find) (?:it|them)(?: up)?(?: (?:on "
     r"(?:his|her|their) way (?:out|in|past|home|through)|later(?: on)?|when (?:he|she|they) "
     r"(?:goes|leaves|passes|comes|gets)[^,.;!?]*|after [^,.;!?]+|first thing))?(?=\s*[.!?]?$)"
 )

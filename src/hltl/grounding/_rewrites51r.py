@@ -314,6 +314,7 @@ def _asked_one_of51r(text: str, lexicon: Lexicon) -> str:
 
 def _forgot51r(out: str, lexicon: Lexicon) -> bool:
     """Whether ``out`` is refused naming the choice the speaker forgot."""
+    # why: offline imports this module (its rules are offline's steps)
     from hltl.grounding.offline import parse_instruction
 
     try:
@@ -418,6 +419,9 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
     if m is None or m.group(0).strip(" ,.!").lower() == "the one":
         return text
     if _DONE_HEAD51R.search(text.strip()[: m.start()]):
+        return text
+    # "Hand the bottle to Person A, the only one here.": said of the person named before it
+    if _ids(" ".join(text.strip()[: m.start()].split()[-3:]), lexicon, "human"):
         return text
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
     node = _reading(out, lexicon)

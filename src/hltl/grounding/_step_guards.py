@@ -12914,7 +12914,7 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("the one ",), False),
         (),
     ),
-    "hltl.grounding._rewrites51r:_only_one51r": ("e95ad001fa261b70", ((), (" one",), False), ()),
+    "hltl.grounding._rewrites51r:_only_one51r": ("6faf60749df0fd57", ((), (" one",), False), ()),
     "hltl.grounding._rewrites51r:_pick_of51r": ("c51c95cacdc68fae", ((), ("pick of",), False), ()),
     "hltl.grounding._rewrites51r:_she_said_make51r": (
         "86f372ca79200f35",

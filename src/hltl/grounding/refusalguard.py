@@ -1,17 +1,16 @@
-"""The refusals and checks asked of every text, indexed by their words (session 51, 12b).
+"""The refusals and checks asked of every text, indexed by their words (session 51, 12b)."""
 
-offline._REFUSALS (``refuse(text, lexicon)``, asked before the read) and offline._CHECKS
-(``check(text, node, lexicon)``, asked of the whole reading) raise GroundingError to refuse and
-return None otherwise. Most begin with a test of the text's words (``if "which" not in
-text.lower(): return``) or search the text for a pattern and return where it finds nothing. Their
-guards are read from that source with the step guards' reader (stepguard.py), a refusal's
-``return`` (None) read as a step's ``return text`` (it does nothing) and the function's end as a
-``return`` too: a guard's atoms are words one of which the text must hold for the function to
-refuse anything. offline asks the guard first (``asked``) and does not call a refusal that cannot
-refuse the text. A refusal whose first statements are of no kind the reader knows has no guard
-and is always called; so is one changed since the list was made (its fingerprint, and what the
-module names it was read with hold, are checked as the step guards' are).
-"""
+# offline._REFUSALS (``refuse(text, lexicon)``, asked before the read) and offline._CHECKS
+# (``check(text, node, lexicon)``, asked of the whole reading) raise GroundingError to refuse and
+# return None otherwise. Most begin with a test of the text's words (``if "which" not in
+# text.lower(): return``) or search the text for a pattern and return where it finds nothing. Their
+# guards are read from that source with the step guards' reader (stepguard.py), a refusal's
+# ``return`` (None) read as a step's ``return text`` (it does nothing) and the function's end as a
+# ``return`` too: a guard's atoms are words one of which the text must hold for the function to
+# refuse anything. offline asks the guard first (``asked``) and does not call a refusal that cannot
+# refuse the text. A refusal whose first statements are of no kind the reader knows has no guard
+# and is always called; so is one changed since the list was made (its fingerprint, and what the
+# module names it was read with hold, are checked as the step guards' are).
 
 from __future__ import annotations
 
@@ -151,6 +150,7 @@ def guards_of(fns: tuple[Callable[..., Any], ...]) -> tuple[Guard | None, ...]:
     """``fns``' guards, read once per tuple."""
     kept = _GUARDED.get(id(fns))
     if kept is None or kept[0] is not fns:
+        # why: the generated list imports this module's Entry; read on first use
         from hltl.grounding._refusal_guards import GUARDS
 
         if len(_GUARDED) > 64:
@@ -213,6 +213,7 @@ def _write(entries: dict[str, Entry]) -> str:
 
 def all_refusals() -> tuple[Callable[..., Any], ...]:
     """Every refusal and check offline asks through the index, once each."""
+    # why: offline imports this module (its loops ask the index)
     from hltl.grounding import offline
 
     return tuple(dict.fromkeys((*offline._REFUSALS, *offline._CHECKS)))
