@@ -398,6 +398,104 @@ KNOWN_MISSES = frozenset(
         "put the scissors on the desk zoes done with her terrarium label",
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
+        # blind50 (tuned on in session 52): refusals left at its one measurement (docs/grounding.md)
+        "Um, sorry to be a pest, would you pop the red mug up on the shelf? Carol's numerology "
+        "lot are in at six.",
+        "Would you be a star and let Person B have the bottle and the cup? Many thanks in advance.",
+        "Sorry, just one teeny thing, Person B's after the bottle, if you could manage it.",
+        "Pardon me butting in, the chips to Person A please, and no rush whatsoever.",
+        "Apologies for the fuss, could the stapler go in the box? Priya's clearing the desk for "
+        "the cryptographer's visit.",
+        "No pressure, mate, but Tom could do with the work gloves before his shift, cheers.",
+        "If you'd be so kind, lay the knife on the worktop, Marco's doing the lemons in a sec.",
+        "Ever so sorry, would you mind getting the teddy to Lily? Grandad's got his hands full.",
+        "Person A has a real fancy for the apple today, whereas Person B could murder the chips "
+        "after his underwater rugby practice.",
+        "I reckon Person A would quite like the bottle after her gong bath.",
+        "Mr Lee's been on at me about his tablets since ten, and Mrs Khan's thirsty, so she wants "
+        "the water jug.",
+        "We need the small box sat on the pallet before the lorry pulls in.",
+        "Lena's short of tongs and a white plate for the wedding planner's table.",
+        "Jess needs the torch to have a look behind the bench.",
+        "Alice is after the bottle for her open water swim. Bob, same deal with the crisps.",
+        "Person A gets the apple as her bit of lunch, and the cup's Person B's, for his tea "
+        "before senet.",
+        "The chips are Person B's. Oh, and he'll take the apple off your hands as well.",
+        "Person B's getting the bottle, and the chips can go to his colleague, Person A.",
+        "That bottle belongs to Person A and she'd like it back before her flint knapping class.",
+        "Mr Lee's been shivering since they opened the window, so he's to have the blue blanket, "
+        "please.",
+        "Mrs Ortiz is doing map skills next period, so set the globe on her desk, would you.",
+        "Kofi's been hunting high and low for the hammer all morning, give it him before he loses "
+        "his rag.",
+        "bottle for Alice crisps for Bob that's your lot cheers",
+        "Cup first, it's Person B's. Apple second, that one's Person A's, she's eating it on the "
+        "boat.",
+        "Person A gets the bottle first and after she's had it you take Person B the chips and "
+        "then you can have a rest.",
+        "Chips? Person B. Cup? Person A. He's got pachisi at three and she's got a tooth out.",
+        "Right so what we'll do is Person A has the chips and Person B has the bottle and then "
+        "we're sorted for the boomerang lot.",
+        "Blue pen to Sam and the notepad to Priya she's got the etymology meeting at two.",
+        "Teddy goes down on the play mat where she can reach. After that the bib to Lily, it's "
+        "nearly lunch.",
+        "Give each of them something to eat: apple for Person A, chips for Person B.",
+        "One of them gets the bottle, whichever of the two is nearer you.",
+        "Whichever way you look at it, that bottle's going to Person A in the end, so off you go.",
+        "Whatever bottle's knocking about, let Person A have it, she's parched from the egg "
+        "throwing.",
+        "Whichever of the two things you grab first, Person B gets it.",
+        "One blanket apiece for our two patients, so blue goes to Mr Lee and the grey one's for "
+        "Mrs Khan.",
+        "Each student gets a book: red to Noah, green to Zoe.",
+        "The two mugs on the shelf please, the oenologist's tasting needs the table.",
+        "Alice gets the crisps, just the one bag mind.",
+        "Person A's stocking up for the windjammer trip, so she's to have every one of the four "
+        "things.",
+        "Person B wants the pair of drinking things, so that's the cup plus the bottle.",
+        "There's a single cup, which is Person A's, and a single apple, which Person B can have.",
+        "Only the one bottle here and only Person A to give it to, so do that.",
+        "Person A can take the both of them off you, bottle along with the chips.",
+        "The green cup and the white cup are both dirty from the oenologist's tasting, put the "
+        "pair in the sink.",
+        "Sweep the whole lot of pens, black, blue and red, into the box before the "
+        "ethnomusicologist drops by.",
+        "Of the boxes, two go on the belt today: the small one and the medium one, the large "
+        "stays put.",
+        "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue.",
+        "Alice is off crisps this week, so it's the bottle she wants, not those.",
+        "Person B's allergic to apples, so let him have everything else you've got.",
+        "Person A doesn't eat chips, but any of the other three things will do her, your choice.",
+        "The cup's not Person A's, it's meant for Person B, so hand it to him.",
+        "Person A doesn't want any of the food, only the bottle, she's just had her dinner.",
+        "It's not for me, love, the bottle's for Person A over there.",
+        "Sam can't stand red ink, so one of the other pens for him, you decide which.",
+        "Mr Lee has had his medication already; it's only the water jug he's after.",
+        "Load the boxes on the belt except for the big one, that's waiting on the pallet.",
+        "Don't put the knife out, just the tongs for Lena.",
+        "Lily's bored of the teddy, she wants the red block instead.",
+        "Jess doesn't need the drill after all, she's only after the torch for the crawl space.",
+        "Take the apple to Alice, oh hang on, I've muddled my names, Carol's the one who asked.",
+        "Crisps for Alice, no, hold your horses, they were Bob's.",
+        "Give Person B the chips, hmm, no, he said apple, not chips.",
+        "Stick the bottle down somewhere, no, tell you what, straight into Person A's hand.",
+        "Give Person A the, um, the bottle I meant to say.",
+        "The notepad should go in the box, no, hang on, Priya wants it left out on the desk.",
+        "Leave the hammer on the bench, actually no, lock it away in the locker for the night.",
+        "start with the cup for person a and when you've done that the apple's for person b",
+        "poor person b's been hanging about for his chips for ages",
+        "he's off on a bothy trip so person b wants the bottle and the chips both",
+        "tchoukball starts in ten so person a needs her bottle now",
+        "reckon you could hand person a her bottle i've got my hands full",
+        "grandad's asked for the teddy to do his silly voices",
+        "Bob's waiting on his crispz, could you take them over.",
+        "Person B's after the appled for his packed lunch.",
+        "Those xchips on the side are meant for Person A.",
+        "Grandad's got jam on his hands, get him the baby wipws.",
+        "Could you do the bottle for Person A first, and when that's done, the chips for Person B?",
+        "Is it possible to get the spoon onto the tray before Dana's round?",
+        "Would you leave the bib ready on the high chair for lunchtime?",
+        "Kofi's asking if he can borrow the big spanner, would you take it over?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -436,6 +534,11 @@ KNOWN_UNCLEAR = frozenset(
         "from me now.",
         "tom wanted a box, small or medium, can't remember which",
         # blind49 (tuned on in session 51)
+        # blind50 (tuned on in session 52)
+        "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
+        "Person B said he wanted the chips, or was it the cup? I was only half listening.",
+        "Mia told me one of the boxes goes to Tom but I never noted down which.",
+        "Wipes to Grandad, no, not him, to one of the girls, which one did he say?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -538,8 +641,9 @@ KNOWN_UNCLEAR = frozenset(
 # and KNOWN_UNCLEAR; "blind49" written in session 50 by another engineer and committed alone,
 # measured once at the end of session 50 (0 wrong), tuned on in session 51: asserted now, the rest
 # in KNOWN_MISSES and KNOWN_UNCLEAR; "blind50" written in session 51 by another engineer and
-# committed alone, measured once at the end of session 51, not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind50"})
+# committed alone, measured once at the end of session 51 (0 wrong), tuned on in session 52:
+# asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

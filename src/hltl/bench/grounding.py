@@ -154,8 +154,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # (written in session 50 by another engineer and committed alone, never opened by the engineers who
 # change the grounder before its one measurement at the end of session 50; tuned on in session 51),
 # blind50 (written in session 51 by another engineer and committed alone, never opened by the
-# engineers who change the grounder before its one measurement at the end of session 51; to be tuned
-# on in session 52).
+# engineers who change the grounder before its one measurement at the end of session 51; tuned on in
+# session 52).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
