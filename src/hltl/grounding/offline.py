@@ -57,6 +57,10 @@ from hltl.grounding import (
     _rewrites51l,
     _rewrites51r,
     _rewrites51s,
+    _rewrites52,
+    _rewrites52l,
+    _rewrites52r,
+    _rewrites52s,
     refusalguard,
 )
 from hltl.grounding._normalise1 import _ids, _only
@@ -161,6 +165,10 @@ _REFUSALS = (
     *_rewrites51.REFUSE51,
     *_rewrites51r.REFUSE51R,
     *_rewrites51s.REFUSE51S,
+    *_rewrites52l.REFUSE52L,
+    *_rewrites52.REFUSE52,
+    *_rewrites52r.REFUSE52R,
+    *_rewrites52s.REFUSE52S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -204,6 +212,10 @@ _CHECKS = (
     *_rewrites51.CHECK51,
     *_rewrites51r.CHECK51R,
     *_rewrites51s.CHECK51S,
+    *_rewrites52l.CHECK52L,
+    *_rewrites52.CHECK52,
+    *_rewrites52r.CHECK52R,
+    *_rewrites52s.CHECK52S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
