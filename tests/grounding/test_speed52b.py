@@ -1,5 +1,4 @@
-"""Session 52 (12b): `_forgot_choice50l` looks for the speaker's remarks only in a reading with
-a choice, and refuses what it refused before."""
+"""Session 52 (12b): `_forgot_choice50l` asks for remarks only beside a choice, as it refused."""
 
 from __future__ import annotations
 
