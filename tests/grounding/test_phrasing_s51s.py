@@ -1,0 +1,125 @@
+"""Session-51 phrasings of issue 12 (engineer 12s): 12c's deferral wrong readings and blind49's
+sentence splits, negation and exclusion, lower case and typos, each as a family (fresh sentences
+in other scenes, each read (wrongly) or refused on issue-lead 7a5caf25 as the test says, and near
+sentences); docs/grounding.md, "Session 51 (engineer 12s)"."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.grounding import _rewrites49, offline
+from hltl.grounding import _rewrites51s as r51s
+from hltl.grounding import gate as re
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    OFFICE,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    PhrasingCases,
+    assert_case,
+    tree,
+)
+
+FIG1 = load_scene(ROOT / "examples/scenes/fig1.yaml")  # Person A (Alice), Person B (Bob)
+DUO = load_scene(ROOT / "examples/scenes/2-2.yaml")  # Person A, Person B
+ONE = load_scene(ROOT / "examples/scenes/1-1.yaml")  # Person A alone
+F41 = load_scene(ROOT / "examples/scenes/4-1.yaml")  # Person A, Person B
+F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")  # Person A, Person B
+L24 = load_scene(ROOT / "examples/scenes/2-4-line.yaml")  # Person A, Person B
+L44 = load_scene(ROOT / "examples/scenes/4-4-line.yaml")  # Person A, Person B
+SQ = load_scene(ROOT / "examples/scenes/4-4-square.yaml")  # Person A, Person B
+T12 = load_scene(ROOT / "examples/scenes/1-2.yaml")  # Person A alone
+T21 = load_scene(ROOT / "examples/scenes/2-1.yaml")  # Person A, Person B
+
+# -- a request put off until someone's word (_said_so51s, a check of the whole reading) ---------
+# 12c's session-50 and -51 fuzz (blind47 #42, blind4 #60 and 'wait for …, then'): each was read
+# on issue-lead 7a5caf25, the clause that waits dropped as a remark; the robot does not hear the
+# word it waits on (blind30's time rule).
+
+SAID_SO: list[tuple[str, Scene]] = [
+    ("Once the site boss says so, Alice mentioned the crisps; could you take them to her.", FIG1),
+    ("Once the site boss says so, Person A mentioned the bottle; could you take it to her.", DUO),
+    ("Once the foreman says so, pick up the bottle. Put it on the counter.", CELL),
+    ("Wait for the foreman's nod, then give Alice the crisps.", FIG1),
+    ("Wait for my signal, then Alice wants the crisps.", FIG1),
+    ("As soon as the manager gives the word, pick up the knife. Put it on the rack.", KITCHEN),
+    ("Wait for the oven timer, then Marco wants the tongs.", KITCHEN),
+    (
+        "When the doctor gives the go-ahead, Mrs Khan mentioned the magazine; could you take it "
+        "to her.",
+        WARD,
+    ),
+    ("Wait for the ward round, then Mr Lee wants the jug.", WARD),
+    ("Once the supervisor signs off, pick up the tape. Put it on the pallet.", DEPOT),
+    ("Wait for the lorry, then put the small box on the belt.", DEPOT),
+    ("The moment Priya nods, pick up the stapler. Put it in the box.", OFFICE),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), SAID_SO)
+def test_said_so51s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_said_so51s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the check each is read (the clause that waits dropped)."""
+    kept = tuple(c for c in offline._CHECKS if c is not r51s._said_so51s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    for text, scene in SAID_SO:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: waiting said of someone ('is waiting for', 'can wait till'), a wait of a
+# moment, a say-so that is over: read as before
+test_said_so51s_near = PhrasingCases().test(
+    ("Carol is waiting for the apple, and after that Alice for the cup", "apple>C ; cup>A", CELL),
+    ("Take the bottle over. Person A's waiting for it.", "bottle>A", T12),
+    ("Carol has been waiting for ages for the apple, could you bring it to her", "apple>C", CELL),
+    ("Lena's been waiting for the salt, take it over to her.", "salt>B", KITCHEN),
+    ("Nothing to wait for, the bottle can go to Person A straight off.", "bottle>A", T12),
+)
+
+# -- 'X has left P gasping for the Y' after a sentence of its own (a fix in _rewrites49._LEFT49)
+# The cause before 'has left' ran over a sentence stop, so the sentence before was dropped:
+# "Check with the deckhand first. An hour on the bongos has left Person A gasping for the
+# bottle." (12c's fuzz, blind47 #27) and "Feed the cat. …" read `bottle>A` on issue-lead 7a5caf25.
+
+LEFT_AFTER: list[tuple[str, Scene]] = [
+    (
+        "Check with the deckhand first. An hour on the bongos has left Person A gasping for the "
+        "bottle.",
+        DUO,
+    ),
+    ("Feed the cat. An hour on the bongos has left Alice gasping for the bottle.", FIG1),
+    ("Mop the floor. An hour at the lathe has left Jess gasping for the drill.", WORKSHOP),
+    ("Ring the school. An hour of phonics has left Noah desperate for the ruler.", CLASSROOM),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), LEFT_AFTER)
+def test_left_one_sentence51s(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_left_one_sentence51s_was_read(monkeypatch: pytest.MonkeyPatch) -> None:
+    """With session 49's pattern as it was (and the deferral check off) each is read."""
+    old = re.compile(
+        r"^(?P<c>[A-Z][^,;]*?) (?:has|have|had) left (?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?P<a>gasping|"
+        r"desperate|dying|parched|longing|crying out|starving|aching|itching|thirsting) for "
+    )
+    monkeypatch.setattr(_rewrites49, "_LEFT49", old)
+    kept = tuple(c for c in offline._CHECKS if c is not r51s._said_so51s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    for text, scene in LEFT_AFTER:
+        assert tree(text, scene) is not None, text
+
+
+test_left_one_sentence51s_alone = PhrasingCases().test(
+    ("An hour on the bongos has left Alice gasping for the bottle.", "bottle>A", FIG1),
+    ("An hour at the lathe has left Jess gasping for the drill.", "drill>B", WORKSHOP),
+)
