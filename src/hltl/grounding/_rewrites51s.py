@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F
+from hltl.grounding._normalise1 import _F, _ids, _only_person
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -53,6 +53,32 @@ _SAID_SO51S = re.compile(
 )
 
 
+# a time clause waiting on a person's return or their being done ("When Bob gets back the apple
+# goes to him.", "As soon as Bob's done the apple goes to him.": said without the comma, 'Bob gets
+# back the apple' had read as the handover; with it, it is refused as an event): the person is
+# one of the scene, a he / she, or a role naming nothing of the scene ('the site boss')
+_BACK51S = re.compile(
+    r"\b(?:when|once|as soon as|soon as|the moment|the minute|until|till|not before)\s+"
+    r"(?P<p>[a-z]+(?: [a-z]+)?)\s*(?:(?:gets|comes|'s|is|has got|has come|'s come) back|(?:'s|is|"
+    r"has|'s been) (?:done|finished|free|ready|in|here|up|awake)|arrives|turns up|wakes up|gets in|"
+    r"comes in|shows up|returns)\b",
+    _F,
+)
+
+
+def _waits_on_person51s(text: str, lexicon: Lexicon) -> str | None:
+    """The words of a time clause above whose person is one (or a role), else None."""
+    m = _BACK51S.search(text)
+    if m is None:
+        return None
+    p = m["p"].lower()
+    if p not in ("he", "she") and not _only_person(m["p"], lexicon):
+        words = p.split()
+        if words[0] != "the" or len(words) != 2 or _ids(m["p"], lexicon):
+            return None
+    return m.group(0)
+
+
 # a word one of the kinds above holds (the check's cheap test)
 _CUES51S = (
     "check",
@@ -84,6 +110,28 @@ def _said_so51s(text: str, node: Node, lexicon: Lexicon) -> None:
     refused."""
     del node
     low = text.lower()
+    if any(
+        w in low
+        for w in (
+            "back",
+            "done",
+            "finished",
+            "free",
+            "ready",
+            "in",
+            "here",
+            "up",
+            "awake",
+            "arrives",
+            "returns",
+        )
+    ):
+        said = _waits_on_person51s(text, lexicon)
+        if said is not None:
+            raise GroundingError(
+                f"{said!r} waits on something to happen, which the robot does not see: say what "
+                "to do now, or ask when it has happened"
+            )
     if not any(w in low for w in _CUES51S):
         return
     m = _SAID_SO51S.search(text)
@@ -98,11 +146,37 @@ def _said_so51s(text: str, node: Node, lexicon: Lexicon) -> None:
     )
 
 
+# -- session 51 (12s): a later time said as a text would ('tmrw', 'tonite', 'l8r') -------------
+#
+# "apple for bob tmrw", "Give Bob the apple tmrw." read apple>B: the abbreviation, a word of no
+# scene, was taken with the name before it and dropped. Said in full ('tomorrow', 'tonight',
+# 'later on') the task is put off and refused (session 20's time rule): refused the same way.
+_LATER_TEXTED51S = re.compile(
+    r"\b(?:tmrw|tmw|tmr|tmrrw|tmrow|tmoro|tmorow|tmoz|tomoz|2moro|2morro|2morrow|2morow|tonite|"
+    r"2nite|2night|l8r|l8er|l8ter)\b",
+    _F,
+)
+
+
+def _later_texted51s(text: str, lexicon: Lexicon) -> None:
+    """Session 51 (12s): a text's later time (above) is refused as the time in full is."""
+    del lexicon
+    low = text.lower()
+    if not any(w in low for w in ("tm", "2m", "2n", "l8", "tonite", "tomoz")):
+        return
+    m = _LATER_TEXTED51S.search(text)
+    if m is not None:
+        raise GroundingError(
+            f"{m.group(0)!r} (a later time) puts the task off: the cell acts now, so say the "
+            "request when it is to be done"
+        )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
-REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = (_later_texted51s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
 CHECK51S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_said_so51s,)
