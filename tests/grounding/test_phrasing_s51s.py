@@ -199,3 +199,38 @@ test_not_other_kind51s = PhrasingCases().test(
     ("Mr Novak wants a plate — the white one, mind, not the blue.", "plate_white>C", KITCHEN),
     ("Give Bob a mug, the red one, not the blue.", "mug_red>B", CELL),
 )
+
+# -- a run-on said with its stops (_run_on51s) ---------------------------------------------------
+
+RUN_ON = PhrasingCases()
+test_run_on51s = RUN_ON.test(
+    ("Marco wants the knife he's doing the fish Lena wants the salt.", "knife>A & salt>B", KITCHEN),
+    ("Grandad wants the wipes Lily's made a mess with her yoghurt", "wipes>B", NURSERY),
+    ("gloves to mia her hands are freezing on the dock", "gloves>A", DEPOT),
+    ("put the scissors on the desk zoes done with her terrarium label", "scissors@desk", CLASSROOM),
+    ("Give Carol the apple she's starving Bob wants the crisps", "apple>C & chips>B", CELL),
+    ("Pills to Mr Lee his head is pounding", "pills>B", WARD),
+    (
+        "Give Mrs Khan the magazine she's bored Mr Lee wants the jug",
+        "magazine>C & jug>B",
+        WARD,
+    ),
+    (
+        "Sam wants the stapler he's doing the mailout Priya wants the notebook",
+        "stapler>B & notebook>A",
+        OFFICE,
+    ),
+    ("hammer to kofi his shelf is wonky", "hammer>A", WORKSHOP),
+    ("put the knife on the rack marcos done with it", "knife@rack", KITCHEN),
+)
+test_run_on51s_near = RUN_ON.test(
+    # 'she' may be Alice or Carol, not Bob: refused as said with the stop
+    ("Give Bob the apple she wants the crisps", None, CELL),
+    # the words before the clause are no request of their own
+    ("Alice wants the cup Carol has", None, CELL),
+    ("Lena wants the salt marco has", None, KITCHEN),
+)
+
+
+def test_run_on51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    RUN_ON.refused_without((r51s._run_on51s,), monkeypatch)

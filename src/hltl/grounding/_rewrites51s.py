@@ -6,7 +6,9 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
+from hltl.grounding._rewrites39 import _name_s39
+from hltl.grounding._rewrites44r import _read_or44r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -172,10 +174,81 @@ def _later_texted51s(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# -- session 51 (12s): run-ons and lower case (blind49's) -----------------------------------------
+#
+# "Marco wants the knife he's doing the fish Lena wants the salt.", "Grandad wants the wipes
+# Lily's made a mess with her yoghurt", "gloves to mia her hands are freezing on the dock": a
+# request run on into the next clause with no stop between. A new clause starts at a he / she /
+# they (with its verb), a his / her / their and a noun with its verb, or a person of the scene
+# with 's, is, has, wants, needs …, after a word that ends no phrase of its own ('to', 'and',
+# 'the', a verb of the grammar …). Said with a stop there, when the words before the first stop
+# read by themselves as a request and the whole then reads.
+_CLAUSE_VERB51S = (
+    r"(?:'s|'re|'ve|'ll|'d| is| are| was| were| has| have| had| wants| needs| fancies| asked"
+    r"| keeps| can't| won't| isn't| hasn't)\b"
+)
+_NEW_CLAUSE51S = re.compile(
+    rf"(?<=[a-z0-9])\s+(?=(?:he|she|they){_CLAUSE_VERB51S}|(?:his|her|their) [a-z]+(?: [a-z]+)?"
+    r" (?:is|are|was|were|has|have|keeps?|keep)\b)",
+    _F,
+)
+_PERSON_CLAUSE51S = re.compile(
+    rf"(?<=[a-z0-9])\s+(?P<p>(?:person|mr|mrs|ms|miss|dr|nurse) [a-z]+|[a-z]+){_CLAUSE_VERB51S}",
+    _F,
+)
+# words after which a new clause cannot start: the phrase before it is not over
+_OPEN51S = frozenset(
+    {
+        *("and", "but", "or", "so", "because", "cos", "as", "since", "that", "which", "who"),
+        *("when", "if", "to", "for", "with", "from", "the", "a", "an", "not", "then", "tell"),
+        *("ask", "let", "make", "says", "said", "thinks", "reckons", "know", "knows", "than"),
+        *("give", "hand", "pass", "bring", "take", "put", "get", "fetch", "whether", "where"),
+        *("of", "on", "in", "at", "by", "about", "what", "how", "once", "until", "after"),
+    }
+)
+
+
+def _run_on51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): a run-on said with its stops (above)."""
+    # "… on the desk zoes done with …": session 39's name and s said with its apostrophe first
+    body = _name_s39(text.rstrip(), lexicon)
+    if re.search(r"[.;:!?]\s+\S", body) or "," in body:
+        return text  # stops said already: not a run-on
+    cuts = {m.start() for m in _NEW_CLAUSE51S.finditer(body)}
+    for m in _PERSON_CLAUSE51S.finditer(body):
+        if _only_person(m["p"], lexicon):
+            cuts.add(m.start())
+    cuts = {
+        c
+        for c in cuts
+        if body[:c].split()[-1].lower() not in _OPEN51S and len(body[:c].split()) > 1
+    }
+    if not cuts:
+        return text
+    first = min(cuts)
+    if _reading(body[:first], lexicon) is None:
+        return text  # the words before the first stop are no request of their own
+    out, last = [], 0
+    for c in sorted(cuts):
+        out.append(body[last:c])
+        last = c
+    out.append(body[last:])
+    said = ".".join(out)
+    # the rewrites before this one (a remark closing the instruction, session 38's) are asked of
+    # the sentences said, as of the same words said with their stops
+    from hltl.grounding import normalise
+
+    for again in (normalise.rewritten19, normalise.canonical19):
+        plain = again(said, lexicon)
+        if plain != said and _reading(plain, lexicon) is not None:
+            return plain
+    return _read_or44r(said, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
-_STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (_run_on51s,)
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = (_later_texted51s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
