@@ -444,7 +444,6 @@ KNOWN_MISSES = frozenset(
         "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
         "Person A's allergic to apples, so give her the cup instead.",
-        "Person A gets the chips, and not Person B, who's had his at the minigolf.",
         "Forget the cup, it's only the apple Person B's after.",
         "Person B, being a nurseryman with simple tastes, wants nothing but the chips.",
         "Don't hold the bottle back from Person A any longer.",

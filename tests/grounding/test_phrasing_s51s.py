@@ -234,3 +234,24 @@ test_run_on51s_near = RUN_ON.test(
 
 def test_run_on51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     RUN_ON.refused_without((r51s._run_on51s,), monkeypatch)
+
+# -- ', and not P' said ', not P' (_and_not_person51s) ---------------------------------------
+
+AND_NOT = PhrasingCases()
+test_and_not_person51s = AND_NOT.test(
+    ("Person A gets the chips, and not Person B, who's had his at the minigolf.", "chips>A", F41),
+    ("Person A gets the chips, but not Person B.", "chips>A", F41),
+    ("Give Lena the salt, and not Marco, he's had his.", "salt>B", KITCHEN),
+    ("The salt goes to Lena, but not Marco.", "salt>B", KITCHEN),
+    ("Give Lena the salt, and not Mr Novak, who's had his at lunch.", "salt>B", KITCHEN),
+    ("The magazine's for Mrs Khan, and not Mr Lee, he's asleep.", "magazine>C", WARD),
+    ("Give Alice the cup, and not Bob.", "cup>A", CELL),
+)
+test_and_not_person51s_near = AND_NOT.test(
+    ("Person A gets the chips, and not Person A.", None, F41),
+    ("Give Alice the cup, and not Bob the apple.", None, CELL),
+)
+
+
+def test_and_not_person51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    AND_NOT.refused_without((r51s._and_not_person51s,), monkeypatch)

@@ -174,6 +174,32 @@ def _later_texted51s(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# -- session 51 (12s): negation and exclusion (blind49's) ----------------------------------------
+#
+# "Person A gets the chips, and not Person B, who's had his at the minigolf.": the person left
+# out said after 'and not' / 'but not' (session 33's "…, not Person B" reads; 'and not' was asked
+# to name objects): said ", not P", when P is one person of the scene and a stop, a comma or the
+# end follows the name.
+_AND_NOT_PERSON51S = re.compile(
+    r",\s*(?:and|but) not (?P<p>(?:person|mr|mrs|ms|miss|dr|nurse) [a-z]+|[a-z]+)"
+    r"(?=\s*(?:[,.;!]|$))",
+    _F,
+)
+
+
+def _and_not_person51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): ', and not P' said ', not P' (above)."""
+    if " not " not in text.lower():
+        return text
+    m = _AND_NOT_PERSON51S.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if _ids(m["p"], lexicon) <= _ids(text[: m.start()], lexicon, "human"):
+        return text  # the person left out is the one who gets it: refused as before
+    out = f"{text[: m.start()]}, not {m['p']}{text[m.end() :]}"
+    return _read_or44r(out, text, lexicon)
+
+
 # -- session 51 (12s): run-ons and lower case (blind49's) -----------------------------------------
 #
 # "Marco wants the knife he's doing the fish Lena wants the salt.", "Grandad wants the wipes
@@ -248,7 +274,7 @@ def _run_on51s(text: str, lexicon: Lexicon) -> str:
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
-_STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (_run_on51s,)
+_STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (_run_on51s, _and_not_person51s)
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = (_later_texted51s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
