@@ -93,6 +93,11 @@ test_said_so51s_near = PhrasingCases().test(
     ("Once Alice has the cup, Bob gets the chips", "cup>A ; chips>B", CELL),
     ("Give Bob the chips and then when he's got them give Alice the cup", "chips>B ; cup>A", CELL),
     ("hand carol the apple when youre ready", "apple>C", CELL),
+    (
+        "Could Person A have the cup first and, when she's done with it, the bottle?",
+        "cup>A ; bottle>A",
+        F42,
+    ),
 )
 
 # -- a later time said as a text would (_later_texted51s, a refusal before the read) ------------
@@ -235,6 +240,7 @@ test_run_on51s_near = RUN_ON.test(
 def test_run_on51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     RUN_ON.refused_without((r51s._run_on51s,), monkeypatch)
 
+
 # -- ', and not P' said ', not P' (_and_not_person51s) ---------------------------------------
 
 AND_NOT = PhrasingCases()
@@ -255,3 +261,121 @@ test_and_not_person51s_near = AND_NOT.test(
 
 def test_and_not_person51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     AND_NOT.refused_without((r51s._and_not_person51s,), monkeypatch)
+
+
+# -- "it's only the X P's after" (_only_cleft51s) --------------------------------------------
+
+ONLY_CLEFT = PhrasingCases()
+test_only_cleft51s = ONLY_CLEFT.test(
+    ("Forget the cup, it's only the apple Person B's after.", "apple>B", F42),
+    ("Forget the tongs, it's only the knife Marco's after.", "knife>A", KITCHEN),
+    ("Never mind the lemon, it's only the salt Lena's after.", "salt>B", KITCHEN),
+    ("Forget the jug, it's only the magazine Mr Lee's after.", "magazine>B", WARD),
+    ("Forget the cup, it's only the apple Bob's after.", "apple>B", CELL),
+)
+test_only_cleft51s_near = ONLY_CLEFT.test(
+    ("Forget the apple, it's only the apple Bob's after.", None, CELL),
+)
+
+
+def test_only_cleft51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ONLY_CLEFT.refused_without((r51s._only_cleft51s,), monkeypatch)
+
+
+# -- "Don't bother fetching the X, <request>" (_dont_bother51s) -------------------------------
+
+DONT_BOTHER = PhrasingCases()
+test_dont_bother51s = DONT_BOTHER.test(
+    (
+        "Don't bother fetching the globe, Noah's after the ruler and nothing else for his scale "
+        "drawing.",
+        "ruler>B",
+        CLASSROOM,
+    ),
+    ("Don't bother fetching the tongs, Marco's after the knife.", "knife>A", KITCHEN),
+    ("Don't bother getting the lemon, Lena wants the salt.", "salt>B", KITCHEN),
+    ("Don't bother fetching the pills, Mrs Khan's after the magazine.", "magazine>C", WARD),
+    ("Don't bother with the cup, Bob wants the apple.", "apple>B", CELL),
+)
+test_dont_bother51s_near = DONT_BOTHER.test(
+    ("Don't bother fetching the apple, Bob wants the apple.", None, CELL),
+    ("Don't bother fetching Bob, Alice wants the cup.", None, CELL),
+)
+
+
+def test_dont_bother51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DONT_BOTHER.refused_without((r51s._dont_bother51s,), monkeypatch)
+
+
+# -- ", which stays put" after a thing left out (_which_stays51s) ----------------------------
+
+WHICH_STAYS = PhrasingCases()
+test_which_stays51s = WHICH_STAYS.test(
+    (
+        "Apart from the medium box, which stays put, the boxes go on the belt.",
+        "box_small@conveyor & box_large@conveyor",
+        DEPOT,
+    ),
+    (
+        "Apart from the notebook, which stays put, everything goes in the box.",
+        "pen_black@box & pen_blue@box & stapler@box & pen_red@box",
+        OFFICE,
+    ),
+    (
+        "Except the stapler, which stays where it is, the things go in the box.",
+        "pen_black@box & notebook@box & pen_blue@box & pen_red@box",
+        OFFICE,
+    ),
+    (
+        "Apart from the cup, which stays put, everything goes on the shelf.",
+        "bottle@shelf & chips@shelf & apple@shelf & mug_red@shelf & mug_blue@shelf",
+        CELL,
+    ),
+)
+test_which_stays51s_near = WHICH_STAYS.test(
+    ("Apart from the cup, which goes to Bob, everything goes on the shelf.", None, CELL),
+)
+
+
+def test_which_stays51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHICH_STAYS.refused_without((r51s._which_stays51s,), monkeypatch)
+
+
+# -- "Don't hold the X back from P" (_hold_back51s) --------------------------------------------
+
+HOLD_BACK = PhrasingCases()
+test_hold_back51s = HOLD_BACK.test(
+    ("Don't hold the bottle back from Person A any longer.", "bottle>A", ONE),
+    ("Don't keep the salt from Lena any longer.", "salt>B", KITCHEN),
+    ("Stop keeping the magazine from Mrs Khan.", "magazine>C", WARD),
+    ("Don't hold the stapler back from Sam.", "stapler>B", OFFICE),
+    ("Don't hold the apple back from Bob any longer.", "apple>B", CELL),
+)
+test_hold_back51s_near = HOLD_BACK.test(
+    ("Don't keep the apple from the shelf.", None, CELL),
+)
+
+
+def test_hold_back51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    HOLD_BACK.refused_without((r51s._hold_back51s,), monkeypatch)
+
+
+# -- "<person>'ll" said "<person> will" (_ll_will51s) ----------------------------------------
+
+LL_WILL = PhrasingCases()
+test_ll_will51s = LL_WILL.test(
+    ("Priya'll take a pen, just not the red, she's marking.", "pen_black>A | pen_blue>A", OFFICE),
+    ("Sam'll take a pen, just not the red.", "pen_black>B | pen_blue>B", OFFICE),
+    ("Marco'll take the knife.", "knife>A", KITCHEN),
+    ("Ruth'll take the thermometer.", "thermometer>A", WARD),
+    ("Carol'll take the apple.", "apple>C", CELL),
+)
+test_ll_will51s_near = LL_WILL.test(
+    ("Carol'll take the apple to Bob.", None, CELL),
+    ("Nobody'll take the apple.", None, CELL),
+    ("Carol'll not take the apple.", None, CELL),
+)
+
+
+def test_ll_will51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    LL_WILL.refused_without((r51s._ll_will51s,), monkeypatch)

@@ -8,9 +8,28 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
 from hltl.grounding._rewrites39 import _name_s39
-from hltl.grounding._rewrites44r import _read_or44r
+from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
+
+
+def _plain51s(out: str, text: str, lexicon: Lexicon) -> str:
+    """``out`` (a rewrite of ``text``) as the grammar reads it: itself when it reads without the
+    normaliser, else the first of the normaliser's rewrites of it that does (the rewrites before
+    this rule's step are not asked again of what it returns); ``text`` when ``out`` does not read
+    at all."""
+    if out == text or _reading(out, lexicon) is None:
+        return text
+    if _reading(out, lexicon, normalise=False) is not None:
+        return out
+    from hltl.grounding import normalise  # (normalise imports this module)
+
+    for again in (normalise.rewritten19, normalise.canonical, normalise.canonical19):
+        plain = again(out, lexicon)
+        if plain != out and _reading(plain, lexicon, normalise=False) is not None:
+            return plain
+    return out
+
 
 # -- session 51 (12s): a request put off until someone's word (12c's deferrals fuzz) ------------
 #
@@ -63,7 +82,9 @@ _BACK51S = re.compile(
     r"\b(?:when|once|as soon as|soon as|the moment|the minute|until|till|not before)\s+"
     r"(?P<p>[a-z]+(?: [a-z]+)?)\s*(?:(?:gets|comes|'s|is|has got|has come|'s come) back|(?:'s|is|"
     r"has|'s been) (?:done|finished|free|ready|in|here|up|awake)|arrives|turns up|wakes up|gets in|"
-    r"comes in|shows up|returns)\b",
+    r"comes in|shows up|returns)\b"
+    # "when she's done with it, the bottle": done with what the request hands over is an order
+    r"(?! with (?:it|them|that|those|this|these|the)\b)",
     _F,
 )
 
@@ -197,7 +218,109 @@ def _and_not_person51s(text: str, lexicon: Lexicon) -> str:
     if _ids(m["p"], lexicon) <= _ids(text[: m.start()], lexicon, "human"):
         return text  # the person left out is the one who gets it: refused as before
     out = f"{text[: m.start()]}, not {m['p']}{text[m.end() :]}"
-    return _read_or44r(out, text, lexicon)
+    return _plain51s(out, text, lexicon)
+
+
+# "Forget the cup, it's only the apple Person B's after.": the cleft of the one wanted with
+# 'only' (which says no more than the cleft: nothing else is wanted): said without it, as the
+# older rules read "Forget the cup, it's the apple Person B's after."
+_ONLY_CLEFT51S = re.compile(r"\bit(?P<be>'s| is) only (?=(?:the|a|an) [a-z])", _F)
+
+
+def _only_cleft51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): "it's only the X P's after" said "it's the X P's after"."""
+    if "only" not in text.lower():
+        return text
+    out = _ONLY_CLEFT51S.sub(lambda m: f"it{m['be']} ", text)
+    return _plain51s(out, text, lexicon)
+
+
+# "Don't bother fetching the globe, Noah's after the ruler …": the thing not to fetch said before
+# the request: said "Not the globe, <request>" (session 33's 'not X, Y'), when the thing is one
+# of the scene and the request then reads without handing it over.
+_DONT_BOTHER51S = re.compile(
+    r"^(?:please\s+)?(?:don't|do not|no need to|you needn't|needn't) bother (?:fetching|getting|"
+    r"bringing|with|taking|grabbing|moving|carrying) (?P<x>the [a-z]+(?: [a-z]+)?)\s*[,;]\s*"
+    r"(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _dont_bother51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): "Don't bother fetching the X, <request>" said "Not the X, <request>"."""
+    if "bother" not in text.lower():
+        return text
+    m = _DONT_BOTHER51S.match(text.strip())
+    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
+        return text
+    if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
+        return text
+    out = f"Not {m['x']}, {m['rest']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
+# "Apart from the medium box, which stays put, the boxes go on the belt.": what the thing left
+# out does, said of it in a relative clause ('which stays put / where it is / here'): it says no
+# more than 'apart from' does: taken off.
+_WHICH_STAYS51S = re.compile(
+    r"(?P<ex>\b(?:apart from|except(?: for)?|bar|other than|besides|but) (?:the |that |this )?"
+    r"[a-z]+(?: [a-z]+)?)\s*,\s*(?:which|that) (?:stays|is staying|can stay|will stay|should stay|"
+    r"remains|stops|is stopping|can stop)(?: put| here| there| where it is| behind| alone| as it "
+    r"is)?\s*(?=,)",
+    _F,
+)
+
+
+def _which_stays51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): ", which stays put" after a thing left out taken off (above)."""
+    if "which" not in text.lower() and "that" not in text.lower():
+        return text
+    out = _WHICH_STAYS51S.sub(lambda m: m["ex"], text)
+    return _plain51s(out, text, lexicon)
+
+
+# "Don't hold the bottle back from Person A any longer.": not to keep a thing from a person is to
+# give it to them: said "Give P the X", when P is one person and X names things of the scene.
+_HOLD_BACK51S = re.compile(
+    r"^(?P<lead>(?:please\s+)?)(?:don't|do not|stop|quit) (?:hold|holding|keep|keeping) "
+    r"(?P<x>(?:the|that|those|this|these) [a-z]+(?: [a-z]+)?) (?:back )?from (?P<p>(?:person|mr|"
+    r"mrs|ms|miss|dr|nurse) [a-z]+|[a-z]+)(?: (?:any longer|anymore|any more|now))?"
+    r"(?P<end>\s*(?:[.!;,].*)?)$",
+    _F,
+)
+
+
+def _hold_back51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): "Don't hold the X back from P" said "Give P the X"."""
+    if "from" not in text.lower():
+        return text
+    m = _HOLD_BACK51S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x = _ids(m["x"], lexicon)
+    if not x or _ids(m["x"], lexicon, "object") != x:
+        return text
+    out = f"{m['lead']}Give {m['p']} {m['x']}{m['end'] or '.'}"
+    return _plain51s(out, text, lexicon)
+
+
+# "Priya'll take a pen, …": a person's 'will' run on as 'll ("Bob'll have the apple" reads; 'take'
+# after it did not): said "Priya will take a pen", when the name is one person's of the scene.
+_LL51S = re.compile(r"\b(?P<p>(?:person|mr|mrs|ms|miss|dr|nurse) [a-z]+|[a-z]+)'ll\b", _F)
+
+
+def _ll_will51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): "<person>'ll" said "<person> will"."""
+    if "'ll" not in text.lower():
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        return f"{m['p']} will" if _only_person(m["p"], lexicon) else m[0]
+
+    out = _LL51S.sub(said, text)
+    return _plain51s(out, text, lexicon)
 
 
 # -- session 51 (12s): run-ons and lower case (blind49's) -----------------------------------------
@@ -259,22 +382,23 @@ def _run_on51s(text: str, lexicon: Lexicon) -> str:
         out.append(body[last:c])
         last = c
     out.append(body[last:])
-    said = ".".join(out)
     # the rewrites before this one (a remark closing the instruction, session 38's) are asked of
     # the sentences said, as of the same words said with their stops
-    from hltl.grounding import normalise
-
-    for again in (normalise.rewritten19, normalise.canonical19):
-        plain = again(said, lexicon)
-        if plain != said and _reading(plain, lexicon) is not None:
-            return plain
-    return _read_or44r(said, text, lexicon)
+    return _plain51s(".".join(out), text, lexicon)
 
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
-_STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (_run_on51s, _and_not_person51s)
+_STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (
+    _run_on51s,
+    _and_not_person51s,
+    _only_cleft51s,
+    _dont_bother51s,
+    _which_stays51s,
+    _hold_back51s,
+    _ll_will51s,
+)
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = (_later_texted51s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
