@@ -402,12 +402,8 @@ KNOWN_MISSES = frozenset(
         "Person A again, same as last time, the bottle.",
         "Person B gets the chips; as for the bottle, that's hers, Person A's, the lass who does "
         "aerial silks.",
-        "Right so the apple goes to Alice who's been at the clay pigeon shooting and the crisps "
-        "go to Carol and I reckon that's us.",
         "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
         "Could you sort both of those.",
-        "Take the cup to Person B who's the prompter tonight and once that's done the apple to "
-        "Person A too",
         "Person A. Back from the square dance. She needs the bottle. And the cup, she said.",
         "Chips to Person B first since he's got swing dance in ten minutes, bottle to Person A "
         "next, okay.",
@@ -454,7 +450,6 @@ KNOWN_MISSES = frozenset(
         "Bowl on the tray, no, it's got soup in, so in the sink.",
         "Stapler in the box, sorry, Priya likes it kept on the desk.",
         "The red book for Zoe, wait, she's read that, the green one.",
-        "cup to person b who does the bat detecting and apple to person a",
         "person b fancies the bottle after his epee bout cheers",
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",

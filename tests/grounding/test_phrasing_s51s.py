@@ -379,3 +379,43 @@ test_ll_will51s_near = LL_WILL.test(
 
 def test_ll_will51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     LL_WILL.refused_without((r51s._ll_will51s,), monkeypatch)
+
+
+# -- a 'who' clause after the person, said without its commas (_who_run_on51s) ----------------
+
+WHO_RUN_ON = PhrasingCases()
+test_who_run_on51s = WHO_RUN_ON.test(
+    ("cup to person b who does the bat detecting and apple to person a", "cup>B & apple>A", L44),
+    (
+        "Take the cup to Person B who's the prompter tonight and once that's done the apple to "
+        "Person A too",
+        "cup>B ; apple>A",
+        F41,
+    ),
+    (
+        "Right so the apple goes to Alice who's been at the clay pigeon shooting and the crisps "
+        "go to Carol and I reckon that's us.",
+        "apple>A & chips>C",
+        CELL,
+    ),
+    ("give the apple to bob who plays darts and the cup to carol", "apple>B & cup>C", CELL),
+    (
+        "give the salt to lena who does the sauces and the knife to marco",
+        "salt>B & knife>A",
+        KITCHEN,
+    ),
+    (
+        "the knife goes to marco who's doing the fish and the salt goes to lena",
+        "knife>A & salt>B",
+        KITCHEN,
+    ),
+)
+test_who_run_on51s_near = WHO_RUN_ON.test(
+    ("give the apple to bob who wants the cup and the chips to carol", None, CELL),
+    ("give the apple to bob who isn't hungry and the cup to carol", None, CELL),
+    ("give the apple to bob who gave it to carol", None, CELL),
+)
+
+
+def test_who_run_on51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHO_RUN_ON.refused_without((r51s._who_run_on51s,), monkeypatch)

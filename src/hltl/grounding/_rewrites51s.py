@@ -387,11 +387,49 @@ def _run_on51s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(".".join(out), text, lexicon)
 
 
+# "cup to person b who does the bat detecting and apple to person a", "Right so the apple goes to
+# Alice who's been at the clay pigeon shooting and the crisps go to Carol …": a 'who' clause about
+# the person a thing goes to, said without its commas, and the next request joined by 'and':
+# said with its commas ("…, who does the bat detecting, and apple to person a", which the older
+# rules read), when the clause names nothing of the scene and asks nothing.
+_WHO_RUN_ON51S = re.compile(
+    r"\b(?P<to>to|for) (?P<p>(?:person|mr|mrs|ms|miss|dr|nurse) [a-z]+|[a-z]+) "
+    r"(?P<who>who(?:'s| is| does| has| was| plays| runs| works| did| teaches| drives| cooks|'ll be|"
+    r" will be) [a-z' -]+?)"
+    r"(?P<end> and (?=(?:the|a|an|once|then|after that|[a-z]+ (?:to|for|goes|go|gets)) )|\s*[.!]?"
+    r"\s*$)",
+    _F,
+)
+
+
+# words a clause that only describes the person does not hold
+_NOT_SAID51S = re.compile(
+    r"\b(?:not|no|never|if|unless|or|either|whichever|wants?|needs?|asked|after|instead|give|"
+    r"hand|pass|bring|take|put|it|them|him|her|he|she|they)\b|n't\b",
+    _F,
+)
+
+
+def _who_run_on51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): a 'who' clause after the person, said with its commas (above)."""
+    if " who" not in text.lower() or "," in text:
+        return text
+    m = _WHO_RUN_ON51S.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    if _ids(m["who"], lexicon) or _NOT_SAID51S.search(m["who"]):
+        return text
+    end = ", and " if m["end"].strip() == "and" else m["end"]
+    out = f"{text[: m.start('who')].rstrip()}, {m['who']}{end}{text[m.end() :]}"
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-50 ones)
 _STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (
     _run_on51s,
+    _who_run_on51s,
     _and_not_person51s,
     _only_cleft51s,
     _dont_bother51s,
