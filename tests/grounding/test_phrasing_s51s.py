@@ -66,6 +66,14 @@ SAID_SO: list[tuple[str, Scene]] = [
     ("As soon as Lena's done the salt goes to her.", KITCHEN),
     ("When Ruth gets back the jug goes to her.", WARD),
     ("When the driver gets back the tape goes to Tom.", DEPOT),
+    # opened by a preposition (12c)
+    ("Pending the foreman's okay, Alice gets the crisps.", FIG1),
+    ("Subject to the foreman's nod, Alice gets the crisps.", FIG1),
+    ("On the foreman's word, Alice gets the crisps.", FIG1),
+    ("At the foreman's signal, Alice gets the crisps.", FIG1),
+    ("Pending the manager's okay, Lena gets the salt.", KITCHEN),
+    ("At the doctor's signal, Mr Lee gets the pills.", WARD),
+    ("Subject to the doctor's nod, Mrs Khan gets the magazine.", WARD),
 ]
 
 
@@ -93,6 +101,8 @@ test_said_so51s_near = PhrasingCases().test(
     ("Once Alice has the cup, Bob gets the chips", "cup>A ; chips>B", CELL),
     ("Give Bob the chips and then when he's got them give Alice the cup", "chips>B ; cup>A", CELL),
     ("hand carol the apple when youre ready", "apple>C", CELL),
+    ("The foreman's given the nod, so the crisps to Alice.", "chips>A", FIG1),
+    ("Wait, Alice wants the crisps.", "chips>A", FIG1),
     (
         "Could Person A have the cup first and, when she's done with it, the bottle?",
         "cup>A ; bottle>A",
@@ -234,6 +244,14 @@ test_run_on51s_near = RUN_ON.test(
     # the words before the clause are no request of their own
     ("Alice wants the cup Carol has", None, CELL),
     ("Lena wants the salt marco has", None, KITCHEN),
+    # a clause saying someone holds it, or that the need is over, or whose pronoun cannot be the
+    # person (12c's probes of the rule)
+    ("Marco wants the knife he's doing the fish Lena's got the salt.", None, KITCHEN),
+    ("gloves to mia she had them earlier", None, DEPOT),
+    ("gloves to mia her hands are fine now", None, DEPOT),
+    ("gloves to tom her hands are freezing on the dock", None, DEPOT),
+    ("give bob the apple hes already got one", None, CELL),
+    ("apple to bob hes got it already", None, CELL),
 )
 
 

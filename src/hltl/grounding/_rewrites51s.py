@@ -7,10 +7,11 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
+from hltl.grounding._normalise4 import _fit36
 from hltl.grounding._rewrites39 import _name_s39
 from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, tasks
 
 
 def _plain51s(out: str, text: str, lexicon: Lexicon) -> str:
@@ -69,7 +70,10 @@ _SAID_SO51S = re.compile(
     rf"|\b(?:get|got|have|getting)\s+(?:the |a |an )?{_WORD51S}\s+from\s+(?P<giver>{_WHO51S})"
     rf"(?=\s*(?:first|beforehand|before\b|[.,;:!?]|$))"
     rf"|\b(?:get|got|getting)\s+(?!your\b|my\b)(?:{_WHO51S}'s|{_WHO51S}s') {_WORD51S}\s+"
-    rf"(?:first|beforehand|before\b)",
+    rf"(?:first|beforehand|before\b)"
+    # opened by a preposition: 'Pending / Subject to / On / At / Upon / With(out) P's nod, …'
+    rf"|\b(?:pending|subject to|on|upon|at|awaiting|after|following)\s+(?:the |a |an )?(?:"
+    rf"{_WHO51S}'s |{_WHO51S}s' |my |our |his |her |their )?{_WORD51S}\b",
     _F,
 )
 
@@ -357,6 +361,16 @@ _OPEN51S = frozenset(
 )
 
 
+# what a remark run on after a request may not say: that someone holds or had the thing, that a
+# need is over, or a negation
+_HELD_OR_OVER51S = re.compile(
+    r"\b(?:has|have|had|got|gets|getting|fine|ok|okay|alright|better|over|no longer|not|never|"
+    r"earlier|already|yesterday|anymore|any more|none|nothing|wrong|broken|sorted|(?:done|"
+    r"finished)(?! with))\b|n't\b",
+    _F,
+)
+
+
 def _run_on51s(text: str, lexicon: Lexicon) -> str:
     """Session 51 (12s): a run-on said with its stops (above)."""
     # "… on the desk zoes done with …": session 39's name and s said with its apostrophe first
@@ -375,13 +389,31 @@ def _run_on51s(text: str, lexicon: Lexicon) -> str:
     if not cuts:
         return text
     first = min(cuts)
-    if _reading(body[:first], lexicon) is None:
+    head = _reading(body[:first], lexicon)
+    if head is None:
         return text  # the words before the first stop are no request of their own
     out, last = [], 0
     for c in sorted(cuts):
         out.append(body[last:c])
         last = c
     out.append(body[last:])
+    # each clause after it is a request of its own, or a remark about a person it names or one
+    # the requests before it give to (each he / she / his / her may be them) that says nothing
+    # of holding the thing or of a need that is over ("gloves to mia she had them earlier",
+    # "gloves to tom her hands are freezing": refused as before)
+    given = {t.target for t in tasks(head) if t.kind == "deliver"}
+    for clause in out[1:]:
+        if _HELD_OR_OVER51S.search(clause):
+            return text
+        if _ids(clause, lexicon, "object"):
+            node = _reading(clause, lexicon)
+            if node is None:
+                return text
+            given |= {t.target for t in tasks(node) if t.kind == "deliver"}
+            continue
+        who = given | _ids(clause, lexicon, "human")
+        if not any(_fit36(pid, clause, lexicon) for pid in who):
+            return text
     # the rewrites before this one (a remark closing the instruction, session 38's) are asked of
     # the sentences said, as of the same words said with their stops
     return _plain51s(".".join(out), text, lexicon)
