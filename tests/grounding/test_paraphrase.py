@@ -409,8 +409,6 @@ KNOWN_MISSES = frozenset(
         "next, okay.",
         "Person B has been on the dawn chorus walk since five and he's starving so the chips for "
         "him.",
-        "Person A gets the bottle, Person B gets the chips, and the pair of them can get back to "
-        "their warhammer game.",
         "Omar's finished with the sponge, so into the sink with it, and after that the bowl goes "
         "across to him.",
         "Alice or Bob, whichever of the two, can have the crisps; they share everything on the a "
@@ -437,11 +435,7 @@ KNOWN_MISSES = frozenset(
         "Person A gets the bottle, the only one on offer.",
         "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
         "Both blankets on the locker for now, the ward's too warm for them at the minute.",
-        "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
-        "Person A's allergic to apples, so give her the cup instead.",
-        "Person B, being a nurseryman with simple tastes, wants nothing but the chips.",
-        "Not on the tray, the sponge, it'll drip; it goes in the sink.",
         "Bottle to Bob, no wait, I've mixed them up again, Alice's the one.",
         "Give Person A the apple; actually, she's just said, make that the chips.",
         "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag.",

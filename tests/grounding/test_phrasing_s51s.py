@@ -16,6 +16,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -437,3 +438,155 @@ test_who_run_on51s_near = WHO_RUN_ON.test(
 
 def test_who_run_on51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     WHO_RUN_ON.refused_without((r51s._who_run_on51s,), monkeypatch)
+
+
+# -- 'after the <occasion>' inside a not-wanting clause (_not_wanted_when51s) ------------------
+
+NOT_WANTED_WHEN = PhrasingCases()
+test_not_wanted_when51s = NOT_WANTED_WHEN.test(
+    (
+        "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
+        "chips>B",
+        FIG1,
+    ),
+    (
+        "Marco's not fussed about the lemon after the staff lunch; he wants the knife.",
+        "knife>A",
+        KITCHEN,
+    ),
+    (
+        "Lena isn't bothered about the tongs since the barbecue; she wants the salt.",
+        "salt>B",
+        KITCHEN,
+    ),
+    (
+        "Mr Lee's not fussed about the jug after the ward round; he wants the magazine.",
+        "magazine>B",
+        WARD,
+    ),
+)
+test_not_wanted_when51s_near = NOT_WANTED_WHEN.test(
+    ("Marco's not fussed about the lemon after the salt; he wants the knife.", None, KITCHEN),
+)
+
+
+def test_not_wanted_when51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_WANTED_WHEN.refused_without((r51s._not_wanted_when51s,), monkeypatch)
+
+
+# -- 'the pair of them can …' said 'they can …' (_pair_can51s) ---------------------------------
+
+PAIR_CAN = PhrasingCases()
+test_pair_can51s = PAIR_CAN.test(
+    (
+        "Person A gets the bottle, Person B gets the chips, and the pair of them can get back to "
+        "their warhammer game.",
+        "bottle>A & chips>B",
+        T21,
+    ),
+    (
+        "Marco gets the knife, Lena gets the salt, and both of them can go back to their stations.",
+        "knife>A & salt>B",
+        KITCHEN,
+    ),
+    (
+        "Ruth gets the thermometer, Mr Lee gets the jug, and the two of them can get back to "
+        "their crossword.",
+        "thermometer>A & jug>B",
+        WARD,
+    ),
+    (
+        "Bob gets the apple, Carol gets the cup, and the pair of them can get back to their game.",
+        "apple>B & cup>C",
+        CELL,
+    ),
+)
+test_pair_can51s_near = PAIR_CAN.test(
+    ("Bob gets the apple, and the pair of them can get back to their game.", None, CELL),
+)
+
+
+def test_pair_can51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PAIR_CAN.refused_without((r51s._pair_can51s,), monkeypatch)
+
+
+# -- ', being a <trade>,' (_being_a51s) and 'wants nothing but the X' (_nothing_but51s) --------
+
+BEING_A = PhrasingCases()
+test_being_a51s = BEING_A.test(
+    ("Mrs Khan, being a retired teacher, wants the magazine.", "magazine>C", WARD),
+    ("Mr Lee, being a night owl, needs the jug.", "jug>B", WARD),
+    ("Person B, being a nurseryman with simple tastes, wants just the chips.", "chips>B", L24),
+)
+test_being_a51s_near = BEING_A.test(
+    ("Bob, being a friend of Carol's, wants the apple.", None, CELL),
+)
+
+
+def test_being_a51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BEING_A.refused_without((r51s._being_a51s,), monkeypatch)
+
+
+NOTHING_BUT = PhrasingCases()
+test_nothing_but51s = NOTHING_BUT.test(
+    ("Lena wants nothing but the salt.", "salt>B", KITCHEN),
+    ("Person B wants nothing but the chips.", "chips>B", L24),
+    ("Mr Lee needs nothing but the magazine.", "magazine>B", WARD),
+    ("Sam wants nothing except the stapler.", "stapler>B", OFFICE),
+)
+test_nothing_but51s_near = NOTHING_BUT.test(
+    ("Lena wants nothing but Marco.", None, KITCHEN),
+)
+
+
+def test_nothing_but51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOTHING_BUT.refused_without((r51s._nothing_but51s,), monkeypatch)
+
+
+def test_being_nothing_but51s() -> None:
+    # blind49's sentence needs both rules
+    assert_case(
+        "Person B, being a nurseryman with simple tastes, wants nothing but the chips.",
+        "chips>B",
+        L24,
+    )
+    assert_case(
+        "Alice, being a dentist with a sweet tooth, wants nothing but the apple.", "apple>A", CELL
+    )
+
+
+# -- ", it'll drip" between the thing and where it goes (_itll_why51s) -------------------------
+
+ITLL_WHY = PhrasingCases()
+test_itll_why51s = ITLL_WHY.test(
+    ("Not on the tray, the sponge, it'll drip; it goes in the sink.", "sponge@sink", LAB),
+    ("Not on the tray, the bowl, it'll spill; it goes in the sink.", "bowl@sink", LAB),
+    ("Not on the rack, the knife, it'll fall; it goes on the counter.", "knife@counter", KITCHEN),
+    ("Not on the shelf, the cup, it'll fall off; it goes on the table.", "cup@table", CELL),
+)
+test_itll_why51s_near = ITLL_WHY.test(
+    ("Not on the rack, it'll fall; it goes on the counter.", None, KITCHEN),
+)
+
+
+def test_itll_why51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ITLL_WHY.refused_without((r51s._itll_why51s,), monkeypatch)
+
+
+# -- "P's allergic to Xs, so give her the Y instead" (_reason_instead51s) ------------------------
+
+REASON_INSTEAD = PhrasingCases()
+test_reason_instead51s = REASON_INSTEAD.test(
+    ("Person A's allergic to apples, so give her the cup instead.", "cup>A", L44),
+    ("Marco's allergic to lemons, so give him the salt instead.", "salt>A", KITCHEN),
+    ("Mr Lee's allergic to the pills, so give him the magazine instead.", "magazine>B", WARD),
+    ("Carol's sick of apples, so give her the cup instead.", "cup>C", CELL),
+)
+test_reason_instead51s_near = REASON_INSTEAD.test(
+    ("Carol's sick of apples, so give her the apple instead.", None, CELL),
+    ("Carol's sick of apples and the cup, so give her the chips instead.", None, CELL),
+)
+
+
+def test_reason_instead51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    REASON_INSTEAD.refused_without((r51s._reason_instead51s,), monkeypatch)

@@ -6,9 +6,10 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
+from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
 from hltl.grounding._normalise4 import _fit36
 from hltl.grounding._rewrites39 import _name_s39
+from hltl.grounding._rewrites42s import _remark_only42s
 from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node, tasks
@@ -327,6 +328,143 @@ def _ll_will51s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# "Bob's not fussed about the bottle after the longsword class; he wants the crisps.": when the
+# person stopped wanting the thing ('after / since the <occasion>') said inside the not-wanting
+# clause the older rules read ("Bob's not fussed about the bottle; he wants the crisps."): taken
+# off, when its words name nothing of the scene, want nothing and negate nothing.
+_NOT_WANTED_WHEN51S = re.compile(
+    r"(?P<head>(?:\bnot|n't|\bnever) [a-z' ]*?\b(?:about|for|on|of|with|at|near) (?:the|that|"
+    r"those|this|these|any) [a-z]+(?: [a-z]+)?) (?P<mod>(?:after|since|following|from) (?:the|a|"
+    r"an|his|her|their|that|this) [a-z' -]+?)(?=\s*[;,.])",
+    _F,
+)
+
+
+def _not_wanted_when51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): 'after the <occasion>' inside a not-wanting clause taken off (above)."""
+    low = text.lower()
+    if "not" not in low and "n't" not in low and "never" not in low:
+        return text
+    m = _NOT_WANTED_WHEN51S.search(text)
+    if m is None or not _remark_only42s(re.sub(r"^\S+ ", "", m["mod"]), lexicon):
+        return text
+    if _ids(m["mod"], lexicon):
+        return text
+    return _plain51s(f"{text[: m.end('head')]}{text[m.end() :]}", text, lexicon)
+
+
+# "Person A gets the bottle, Person B gets the chips, and the pair of them can get back to their
+# warhammer game.": 'the pair of them' (session 41's 'both of them') as the subject of a closing
+# remark: said 'they' ("…, and they can get back to their game" reads as the two requests).
+_PAIR_CAN51S = re.compile(
+    r"\b(?:the pair|both|the two|the both) of (?:them|'em)(?= (?:can|could|will|may|might|should"
+    r"|'ll)\b)",
+    _F,
+)
+
+
+def _pair_can51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): 'the pair of them can …' said 'they can …' (above)."""
+    if " of " not in text.lower():
+        return text
+    out = _PAIR_CAN51S.sub("they", text)
+    node = _reading(out, lexicon) if out != text else None
+    if node is None or len({t.target for t in tasks(node) if t.kind == "deliver"}) != 2:
+        return text  # 'the pair of them' is the two the requests give to
+    return _plain51s(out, text, lexicon)
+
+
+# "Person B, being a nurseryman with simple tastes, wants …": a trade said with 'being' between
+# commas after the person: said without it ("Person B, a nurseryman with simple tastes, wants …"
+# reads), when the words name nothing of the scene.
+_BEING_A51S = re.compile(r",\s*being (?P<a>an? [a-z][a-z' -]*?)\s*,", _F)
+
+
+def _being_a51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): ', being a <trade>,' said ', a <trade>,' (above)."""
+    if "being" not in text.lower():
+        return text
+    m = _BEING_A51S.search(text)
+    if m is None or _ids(m["a"], lexicon) or not _remark_only42s(m["a"], lexicon):
+        return text
+    return _plain51s(f"{text[: m.start()]}, {m['a']},{text[m.end() :]}", text, lexicon)
+
+
+# "… wants nothing but the chips.": 'nothing but / except / other than the X' after a want: said
+# 'just the X' (session 50's 'wants just the Z').
+_NOTHING_BUT51S = re.compile(
+    r"\b(?P<v>wants|needs|would like|'s after|is after|asked for|fancies) nothing (?:but|except|"
+    r"other than|apart from|besides) (?P<x>(?:the|a|an) [a-z]+(?: [a-z]+)?)",
+    _F,
+)
+
+
+def _nothing_but51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): 'wants nothing but the X' said 'wants just the X' (above)."""
+    if "nothing" not in text.lower():
+        return text
+    m = _NOTHING_BUT51S.search(text)
+    if m is None:
+        return text
+    x = _ids(m["x"], lexicon)
+    if not x or _ids(m["x"], lexicon, "object") != x:
+        return text
+    out = f"{text[: m.start()]}{m['v']} just {m['x']}{text[m.end() :]}"
+    return _plain51s(out, text, lexicon)
+
+
+# "Not on the tray, the sponge, it'll drip; it goes in the sink.": why not there, said between
+# the thing and where it goes ('it'll drip / fall / roll off'): taken off ("Not on the tray, the
+# sponge; it goes in the sink." reads).
+_ITLL_WHY51S = re.compile(
+    r",\s*(?:it|they)(?:'ll| will) (?:drip|leak|spill|break|fall|fall off|roll|roll off|get wet|"
+    r"get dirty|smash|tip over|melt|go soggy|get knocked|topple|slide off)(?: everywhere| off)?"
+    r"\s*(?=[;,])",
+    _F,
+)
+
+
+def _itll_why51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): ", it'll drip" between the thing and where it goes taken off."""
+    if "'ll" not in text.lower() and " will " not in text.lower():
+        return text
+    m = _ITLL_WHY51S.search(text)
+    if m is None or not _ids(text[: m.start()], lexicon, "object"):
+        return text
+    return _plain51s(f"{text[: m.start()]}{text[m.end() :]}", text, lexicon)
+
+
+# "Person A's allergic to apples, so give her the cup instead.": 'instead' after a reason that
+# names the one thing the request replaces: said ", not the X" (which reads), when the reason
+# names that one thing and at most the person, and the request then hands the X to no one.
+_REASON_INSTEAD51S = re.compile(
+    r"^(?P<reason>[^,;.!?]+?)\s*,?\s+so (?P<req>(?:give|hand|pass|bring|take|get) [^,;.!?]+?)"
+    r"\s*,?\s*instead(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _reason_instead51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): 'P's allergic to Xs, so give her the Y instead' said '…, not the X'."""
+    if "instead" not in text.lower():
+        return text
+    m = _REASON_INSTEAD51S.match(text.strip())
+    if m is None:
+        return text
+    named = _names(m["reason"], lexicon)
+    things = [it for it in named if all(r.kind == "object" for r in it.refs)]
+    people = [it for it in named if all(r.kind == "human" for r in it.refs)]
+    if len(things) != 1 or len(people) > 1 or len(things) + len(people) != len(named):
+        return text
+    x = f"the {things[0].text}"
+    if _ids(m["req"], lexicon) & _ids(x, lexicon):
+        return text
+    out = f"{m['reason']}, so {m['req']}, not {x}{m['end'] or '.'}"
+    if _read_without44r(out, text, x, lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # -- session 51 (12s): run-ons and lower case (blind49's) -----------------------------------------
 #
 # "Marco wants the knife he's doing the fish Lena wants the salt.", "Grandad wants the wipes
@@ -468,6 +606,12 @@ _STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (
     _which_stays51s,
     _hold_back51s,
     _ll_will51s,
+    _not_wanted_when51s,
+    _pair_can51s,
+    _being_a51s,
+    _nothing_but51s,
+    _itll_why51s,
+    _reason_instead51s,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = (_later_texted51s,)
