@@ -402,8 +402,6 @@ KNOWN_MISSES = frozenset(
         "Person A again, same as last time, the bottle.",
         "Person B gets the chips; as for the bottle, that's hers, Person A's, the lass who does "
         "aerial silks.",
-        "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
-        "Could you sort both of those.",
         "Person A. Back from the square dance. She needs the bottle. And the cup, she said.",
         "Chips to Person B first since he's got swing dance in ten minutes, bottle to Person A "
         "next, okay.",

@@ -590,3 +590,74 @@ test_reason_instead51s_near = REASON_INSTEAD.test(
 
 def test_reason_instead51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     REASON_INSTEAD.refused_without((r51s._reason_instead51s,), monkeypatch)
+
+
+# -- a closing "Could you sort both of those." (_sort_those51s) --------------------------------
+
+SORT_THOSE = PhrasingCases()
+test_sort_those51s = SORT_THOSE.test(
+    (
+        "Marco wants the knife. Lena wants the salt. Could you sort both of those.",
+        "knife>A & salt>B",
+        KITCHEN,
+    ),
+    (
+        "Mr Lee needs the jug. Mrs Khan wants the magazine. Could you sort both of those?",
+        "jug>B & magazine>C",
+        WARD,
+    ),
+    (
+        "Bob wants the apple. Alice wants the cup. Can you sort the pair of them.",
+        "apple>B & cup>A",
+        CELL,
+    ),
+)
+test_sort_those51s_near = SORT_THOSE.test(
+    # 'both' of one request
+    ("Marco wants the knife. Could you sort both of those.", None, KITCHEN),
+)
+
+
+def test_sort_those51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SORT_THOSE.refused_without((r51s._sort_those51s,), monkeypatch)
+
+
+# -- 'P, back from the X, …' in a later sentence (_where_after51s) -----------------------------
+
+WHERE_AFTER = PhrasingCases()
+test_where_after51s = WHERE_AFTER.test(
+    (
+        "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle.",
+        "chips>A & bottle>B",
+        L44,
+    ),
+    (
+        "Marco wants the knife. Lena, back from the market, wants the salt.",
+        "knife>A & salt>B",
+        KITCHEN,
+    ),
+    ("Give Marco the knife; Lena, up at the pass, needs the salt.", "knife>A & salt>B", KITCHEN),
+    (
+        "Ruth needs the thermometer. Mr Lee, back from the day room, wants the magazine.",
+        "thermometer>A & magazine>B",
+        WARD,
+    ),
+)
+test_where_after51s_near = WHERE_AFTER.test(
+    # where the person is names a surface of the scene
+    ("Marco wants the knife. Lena, back from the fish counter, wants the salt.", None, KITCHEN),
+)
+
+
+def test_where_after51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHERE_AFTER.refused_without((r51s._where_after51s,), monkeypatch)
+
+
+def test_where_after_sort51s() -> None:
+    # blind49's sentence needs both rules
+    assert_case(
+        "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
+        "Could you sort both of those.",
+        "chips>A & bottle>B",
+        L44,
+    )

@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
+from hltl.grounding._normalise1 import _F, _ids, _names, _names_nothing, _only_person, _reading
+from hltl.grounding._normalise2 import _WHERE_AFTER28
 from hltl.grounding._normalise4 import _fit36
 from hltl.grounding._rewrites39 import _name_s39
 from hltl.grounding._rewrites42s import _remark_only42s
@@ -465,6 +466,58 @@ def _reason_instead51s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# "Person A wants the chips. Person B … wants the bottle. Could you sort both of those.": a last
+# sentence asking the hearer to 'sort' (out) what was said: taken off, when what is before it
+# reads, and 'both' / 'the two' / 'the pair' count its handovers.
+_SORT_THOSE51S = re.compile(
+    r"(?<=[.!?;])\s+(?:(?:could|can|would|will) you |please )?(?:just )?sort (?:out )?(?P<n>both"
+    r" of |all of |the pair of |the two of |each of )?(?:those|them|these|that|it|both|the lot)"
+    r"(?: out)?(?: for me)?(?:,? please)?(?:,? ta| thanks)?\s*[.?!]?\s*$",
+    _F,
+)
+
+
+def _sort_those51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): a closing "Could you sort both of those." taken off (above)."""
+    if "sort" not in text.lower():
+        return text
+    m = _SORT_THOSE51S.search(text)
+    if m is None:
+        return text
+    out = text[: m.start()]
+    node = _reading(out, lexicon)
+    if node is None:
+        return text
+    n = (m["n"] or "").lower()
+    if (
+        any(w in n or w in m[0].lower() for w in ("both", "pair", "two"))
+        and len(list(tasks(node))) != 2
+    ):
+        return text
+    return _plain51s(out, text, lexicon)
+
+
+# "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle.": where a
+# person is (back from), said between commas after the name, in a sentence after the first:
+# session 28's `_who_where28` takes it off in the first sentence only; taken off the same way in
+# each later one (the person one of the scene, the words naming nothing of it).
+def _where_after51s(text: str, lexicon: Lexicon) -> str:
+    """Session 51 (12s): session 28's 'P, back from the X, …' in a later sentence (above)."""
+    if ", " not in text or not re.search(r"[.;!?]\s+\S", text):
+        return text
+    parts = re.split(r"(?<=[.;!?])(\s+)", text)
+    changed = False
+    for k in range(2, len(parts), 2):
+        m = _WHERE_AFTER28.match(parts[k])
+        if m is None or not _only_person(m.group(1), lexicon):
+            continue
+        if not _names_nothing(m.group(2), lexicon):
+            continue
+        parts[k] = f"{m.group(1)} {parts[k][m.end() :]}"
+        changed = True
+    return _plain51s("".join(parts), text, lexicon) if changed else text
+
+
 # -- session 51 (12s): run-ons and lower case (blind49's) -----------------------------------------
 #
 # "Marco wants the knife he's doing the fish Lena wants the salt.", "Grandad wants the wipes
@@ -612,6 +665,8 @@ _STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (
     _nothing_but51s,
     _itll_why51s,
     _reason_instead51s,
+    _sort_those51s,
+    _where_after51s,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = (_later_texted51s,)
