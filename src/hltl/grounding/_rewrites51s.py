@@ -293,7 +293,7 @@ _HOLD_BACK51S = re.compile(
     r"^(?P<lead>(?:please\s+)?)(?:don't|do not|stop|quit) (?:hold|holding|keep|keeping) "
     r"(?P<x>(?:the|that|those|this|these) [a-z]+(?: [a-z]+)?) (?:back )?from (?P<p>(?:person|mr|"
     r"mrs|ms|miss|dr|nurse) [a-z]+|[a-z]+)(?: (?:any longer|anymore|any more|now))?"
-    r"(?P<end>\s*(?:[.!;,].*)?)$",
+    r"(?P<end>\s*[.!]?)\s*$",
     _F,
 )
 
