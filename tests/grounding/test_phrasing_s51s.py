@@ -661,35 +661,3 @@ def test_where_after_sort51s() -> None:
         "chips>A & bottle>B",
         L44,
     )
-
-
-# -- a he / she after 'not Q' that may be no one given to (_not_person_pronoun51s, a check) -------
-# Each was read on issue-lead 7a5caf25 with the pronoun taken for the one who gets the thing
-# ("Give Alice the cup, not Bob, he wants the apple." -> cup>A & apple>A).
-
-NOT_PERSON_PRONOUN: list[tuple[str, Scene]] = [
-    ("Give Alice the cup, not Bob, he wants the apple.", CELL),
-    ("Give Carol the cup, not Bob, he wants the apple.", CELL),
-    ("Give Bob the cup, not Alice, she wants the apple.", CELL),
-    ("Give Alice the cup, not Bob. He wants the apple.", CELL),
-    ("Give Lena the salt, not Marco, he wants the knife.", KITCHEN),
-]
-
-
-@pytest.mark.parametrize(("text", "scene"), NOT_PERSON_PRONOUN)
-def test_not_person_pronoun51s_refused(text: str, scene: Scene) -> None:
-    assert_case(text, None, scene)
-
-
-def test_not_person_pronoun51s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
-    kept = tuple(c for c in offline._CHECKS if c is not r51s._not_person_pronoun51s)
-    monkeypatch.setattr(offline, "_CHECKS", kept)
-    for text, scene in NOT_PERSON_PRONOUN:
-        assert tree(text, scene) is not None, text
-
-
-test_not_person_pronoun51s_near = PhrasingCases().test(
-    ("Give Alice the cup, not Bob, she wants it.", "cup>A", CELL),
-    ("Give Bob the cup, not Alice, he's thirsty.", "cup>B", CELL),
-    ("The salt goes to Lena, not Marco, she asked for it.", "salt>B", KITCHEN),
-)

@@ -175,37 +175,6 @@ def _said_so51s(text: str, node: Node, lexicon: Lexicon) -> None:
     )
 
 
-# "Give Alice the cup, not Bob, he wants the apple." read cup>A & apple>A: 'he' (who may be the
-# Bob left out, never Alice) was taken for the one the cup goes to. A reading with a person left
-# out ('not Q') and, after it, a he / she / him / her and a thing the reading gives to someone
-# the pronoun cannot be is refused (the pronoun is about someone else: the one left out, or
-# another); a remark about the one left out ("…, not Marco, he's had his.") is read as before.
-_NOT_PERSON51S = re.compile(
-    r"\bnot (?:to |for )?(?P<q>(?:person|mr|mrs|ms|miss|dr|nurse) [a-z]+|[a-z]+)(?=\s*[,.;!]|$)",
-    _F,
-)
-
-
-def _not_person_pronoun51s(text: str, node: Node, lexicon: Lexicon) -> None:
-    """Session 51 (12s): a pronoun after 'not Q' that may be no one given to (above): refused."""
-    if "not " not in text.lower():
-        return
-    m = _NOT_PERSON51S.search(text)
-    if m is None or not _only_person(m["q"], lexicon):
-        return
-    after = text[m.end() :]
-    if not re.search(r"\b(?:he|she|him|her)\b", after, flags=_F):
-        return
-    # the things said after it, given to someone the pronoun cannot be
-    said = _ids(after, lexicon, "object")
-    given = {t.target for t in tasks(node) if t.kind == "deliver" and t.obj in said}
-    if not given or any(_fit36(pid, after, lexicon) for pid in given):
-        return
-    raise GroundingError(
-        f"a he / she after 'not {m['q']}' may be no one the request gives to: say who gets what"
-    )
-
-
 # -- session 51 (12s): a later time said as a text would ('tmrw', 'tonite', 'l8r') -------------
 #
 # "apple for bob tmrw", "Give Bob the apple tmrw." read apple>B: the abbreviation, a word of no
@@ -702,7 +671,4 @@ _STEPS51S: tuple[Callable[[str, Lexicon], str], ...] = (
 # refusals asked of the text before it is read (offline._parse, after the session-50 ones)
 REFUSE51S: tuple[Callable[[str, Lexicon], None], ...] = (_later_texted51s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-50 ones)
-CHECK51S: tuple[Callable[[str, Node, Lexicon], None], ...] = (
-    _said_so51s,
-    _not_person_pronoun51s,
-)
+CHECK51S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_said_so51s,)
