@@ -536,6 +536,7 @@ test_nothing_but51s = NOTHING_BUT.test(
 )
 test_nothing_but51s_near = NOTHING_BUT.test(
     ("Lena wants nothing but Marco.", None, KITCHEN),
+    ("Person B wants nothing but the chips, and he's had them.", None, L24),
 )
 
 

@@ -405,8 +405,8 @@ def _nothing_but51s(text: str, lexicon: Lexicon) -> str:
     if "nothing" not in text.lower():
         return text
     m = _NOTHING_BUT51S.search(text)
-    if m is None:
-        return text
+    if m is None or not re.fullmatch(r"\s*[.!]?\s*", text[m.end() :]):
+        return text  # closing the text only ("…, and he's had them." is refused as before)
     x = _ids(m["x"], lexicon)
     if not x or _ids(m["x"], lexicon, "object") != x:
         return text
