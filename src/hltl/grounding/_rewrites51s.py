@@ -321,6 +321,8 @@ def _ll_will51s(text: str, lexicon: Lexicon) -> str:
     """Session 51 (12s): "<person>'ll" said "<person> will"."""
     if "'ll" not in text.lower():
         return text
+    if re.search(r"\b(?:either|other|whichever|one of|any)\b", text, flags=_F):
+        return text  # a choice said with it is left to the older rules
 
     def said(m: re.Match[str]) -> str:
         return f"{m['p']} will" if _only_person(m["p"], lexicon) else m[0]
@@ -513,6 +515,8 @@ def _where_after51s(text: str, lexicon: Lexicon) -> str:
             continue
         if not _names_nothing(m.group(2), lexicon):
             continue
+        if not _fit36(next(iter(_ids(m.group(1), lexicon, "human"))), m.group(2), lexicon):
+            continue  # "Zoe, back from his kayak lesson, …": whose lesson?
         parts[k] = f"{m.group(1)} {parts[k][m.end() :]}"
         changed = True
     return _plain51s("".join(parts), text, lexicon) if changed else text
@@ -548,6 +552,7 @@ _OPEN51S = frozenset(
         *("ask", "let", "make", "says", "said", "thinks", "reckons", "know", "knows", "than"),
         *("give", "hand", "pass", "bring", "take", "put", "get", "fetch", "whether", "where"),
         *("of", "on", "in", "at", "by", "about", "what", "how", "once", "until", "after"),
+        *("it's", "is", "was", "that's", "then", "now", "next"),
     }
 )
 
@@ -556,7 +561,8 @@ _OPEN51S = frozenset(
 # need is over, or a negation
 _HELD_OR_OVER51S = re.compile(
     r"\b(?:has|have|had|got|gets|getting|fine|ok|okay|alright|better|over|no longer|not|never|"
-    r"earlier|already|yesterday|anymore|any more|none|nothing|wrong|broken|sorted|(?:done|"
+    r"earlier|already|yesterday|anymore|any more|none|nothing|wrong|broken|sorted|back|away|gone|"
+    r"out|later|tomorrow|tonight|turn|(?:done|"
     r"finished)(?! with))\b|n't\b",
     _F,
 )
@@ -597,6 +603,8 @@ def _run_on51s(text: str, lexicon: Lexicon) -> str:
         if _HELD_OR_OVER51S.search(clause):
             return text
         if _ids(clause, lexicon, "object"):
+            if re.search(r"\b(?:wants?|needs?|would like|'d like) to\b", clause, flags=_F):
+                return text  # "… jess wants to use the hammer": a want to do, no handover
             node = _reading(clause, lexicon)
             if node is None:
                 return text
