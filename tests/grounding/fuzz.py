@@ -190,7 +190,14 @@ choice stands. A twenty-fifth family (session 50), kin: a he / she who wants, or
 given, said of a person the scene names by a word of kin or a title of the other sex ("Grandad
 says she's been asking for the teddy.", "Mr Lee's asked for the jug, let her have it."): refused;
 of that person's own sex, where no one else of the scene is of it ("Grandad says he wants the
-teddy."): the object to that person.
+teddy."): the object to that person. A twenty-sixth family (session 51), done: an entry's one
+handover of a one-of-a-kind object to a person named, said as already done or as never a request
+(12c's session-51 probes, read as requests: "Gave Bob the apple.", "The apple went to Bob.",
+"You brought Bob the apple.", "Great job getting the apple to Bob.", "Bob, our new starter, had the
+apple.", "Alice says Bob has the apple.", "Bob or Alice had the apple."), or said and then seen to
+("…, it's sorted.", "…, I'll see to it myself."): refused; and a checklist that ticks it off before
+another handover ("The apple to Bob: done. The cup to Bob, please.") or a want replaced ("Bob
+wanted the apple, now Bob wants the cup."): the other handover only.
 
 Run it whole by hand (it takes minutes; under /work/notes/bench.sh at nice on a shared machine):
 ``env PYTHONPATH=src:. .venv/bin/python -m tests.grounding.fuzz --seed 16``; a test runs a small
@@ -1663,7 +1670,23 @@ FORGET_PEOPLE = (
 # (not after a choice said to be free, "either plate, she's not bothered": a remark of forgetting
 # after it says nothing a careful person could read)
 _FREE_CHOICE = frozenset(
-    ("either", "any", "whichever", "whatever", "choice", "bothered", "fussy", "mind", "matter")
+    (
+        "either",
+        "any",
+        "whichever",
+        "whatever",
+        "choice",
+        "bothered",
+        "fussy",
+        "mind",
+        "matter",
+        # session 51: the free choices session 50's `closed` took for forgetting ("…, I'm easy",
+        # "I don't care which", "I'll let you pick", "Your call which")
+        "easy",
+        "care",
+        "pick",
+        "call",
+    )
 )
 FORGET_FORMS = ("closed", "objects", "people", "free")
 # kin (session 50; 12r's "Grandad said she wants the teddy." read teddy>B, session 34's check of
@@ -1717,6 +1740,39 @@ LOT_NAMED = (
     "The {o} and the {x} for {p}, the whole lot.",
 )
 LOT_FORMS = ("kind", "placed", "named")
+# done (session 51; 12c's probes: a handover said as already done, or as no request at all, was
+# read as a request in words the older refusals miss): for an entry's one handover of a
+# one-of-a-kind object ({o}) to a person named ({p}, {P} at a sentence's start; {q} / {Q} another
+# person named): refused
+DONE_SAID = (
+    "Gave {p} the {o}.",
+    "The {o} went to {p}.",
+    "The {o}'s gone over to {p}.",
+    "{P} has received the {o}.",
+    "You brought {p} the {o}.",
+    "Great job getting the {o} to {p}.",
+    "{P}, our new starter, had the {o}.",
+    "{Q} says {p} has the {o}.",
+    "{P} or {q} had the {o}.",
+)
+# ... the entry, then a remark that it is seen to: refused
+DONE_AFTER = (
+    ", it's all sorted.",
+    ", I've done it already.",
+    ", I'll see to it myself.",
+    ". Oh, that's been done.",
+)
+# ... ticked off, then another one-of-a-kind object ({x}) for the person: that handover only
+DONE_CHECKLIST = (
+    "The {o} to {p}: done. The {x} to {p}, please.",
+    "{O} to {p} - done. Now the {x} to {p}.",
+)
+# ... a want of it replaced by a want of {x}: that handover only
+DONE_REPLACED = (
+    "{P} wanted the {o}, now {p} wants the {x}.",
+    "{P} asked for the {o} earlier, but now {p}'s after the {x}.",
+)
+DONE_FORMS = ("said", "after", "checklist", "replaced")
 SAID_FORMS = (
     "reason before",
     "condition",
@@ -1760,6 +1816,7 @@ Family = Literal[
     "forgets",
     "lots",
     "kin",
+    "done",
 ]
 FAMILIES: tuple[Family, ...] = get_args(Family)
 
@@ -3971,6 +4028,47 @@ def lots(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[
         yield Variant(part, entry.scene, said, None, "refuse", "lots", readings, "named")
 
 
+def done(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:
+    """The done variants of one grounded entry that is no question, of one handover of a
+    one-of-a-kind object naming its one person by a name and nothing else of the scene (DONE_FORMS;
+    none of another): that handover said as already done or as no request (`said`, DONE_SAID) or
+    the entry followed by a remark that it is seen to (`after`, DONE_AFTER): refused; ticked off
+    before another one-of-a-kind object for the person (`checklist`, DONE_CHECKLIST) or a want of it
+    replaced by a want of another (`replaced`, DONE_REPLACED): the handover of the other only."""
+    text = entry.text.strip()
+    want = entry.want
+    said_as = _one_person_said(text, want, scene)
+    if text.endswith("?") or said_as is None or not isinstance(want, Task):
+        return
+    if want.obj not in _unique_objects(scene) or want.target is None:
+        return
+    p = _proper_name(scene, want.target) or said_as[0]
+    o = _name(scene, want.obj)
+    people = [q for h in scene.humans if h.id != want.target and (q := _proper_name(scene, h.id))]
+    q = rng.choice(people) if people else None
+    keys = {"p": p, "P": p[:1].upper() + p[1:], "o": o, "O": o[:1].upper() + o[1:]}
+    if q is not None:
+        keys |= {"q": q, "Q": q[:1].upper() + q[1:]}
+    fitting = [f for f in DONE_SAID if _fits(f, scene) and (q is not None or "{q" not in f.lower())]
+    if fitting:
+        said = rng.choice(fitting).format(**keys)
+        yield Variant(part, entry.scene, said, None, "refuse", "done", (), "said")
+    after = [c for c in DONE_AFTER if _names_nothing(c, scene)]
+    if after:
+        said = _then(text, rng.choice(after))
+        yield Variant(part, entry.scene, said, None, "refuse", "done", (), "after")
+    others = [x for x in _unique_objects(scene) if x != want.obj]
+    if not others:
+        return
+    xid = rng.choice(others)
+    other = Task("deliver", xid, want.target)
+    for form, forms in (("checklist", DONE_CHECKLIST), ("replaced", DONE_REPLACED)):
+        fitting = [f for f in forms if _fits(f, scene)]
+        if fitting:
+            said = rng.choice(fitting).format(x=_name(scene, xid), **keys)
+            yield Variant(part, entry.scene, said, other, "same", "done", (), form)
+
+
 def _one_id(name: str, scene: Scene) -> str:
     (hid,) = _named(name, scene, "human")
     return hid
@@ -4061,6 +4159,7 @@ def generated(
     rng_forgets = random.Random(f"forgets:{seed}")
     rng_lots = random.Random(f"lots:{seed}")
     rng_kin = random.Random(f"kin:{seed}")
+    rng_done = random.Random(f"done:{seed}")
     for part in parts:
         corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
         for n, entry in enumerate(corpus.entries):
@@ -4143,6 +4242,9 @@ def generated(
                     yield v, scene
             if "kin" in families:
                 for v in kin(part, entry, scene, rng_kin):
+                    yield v, scene
+            if "done" in families:
+                for v in done(part, entry, scene, rng_done):
                     yield v, scene
 
 

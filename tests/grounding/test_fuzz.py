@@ -255,6 +255,7 @@ def test_over_the_corpus_each_variant_names_what_it_says() -> None:
         "forgets",
         "lots",
         "kin",
+        "done",
     ],
 )
 def test_a_family_of_a_seed_does_not_change_with_the_others(family: fuzz.Family) -> None:
@@ -276,7 +277,7 @@ def test_an_unknown_family_is_an_error(capsys: pytest.CaptureFixture[str]) -> No
     )
     assert (
         "'remarks', 'purposes', 'idioms', 'turns', 'said', 'holds', 'texted', 'antecedents', "
-        "'thoughts', 'chains', 'forgets', 'lots', 'kin')" in err
+        "'thoughts', 'chains', 'forgets', 'lots', 'kin', 'done')" in err
     )
 
 
@@ -709,6 +710,11 @@ def _lots(entry: Entry, seed: int) -> list[fuzz.Variant]:
         ("Alice wants the red mug or the blue one.", "mug_red>A | mug_blue>A", ("closed", "free")),
         # a choice said to be free: only `free`
         ("Give Bob either mug, he's not fussy.", "mug_red>B | mug_blue>B", ("free",)),
+        # ... in the words session 50's `closed` missed ('easy', 'care', 'pick', 'call')
+        ("Give Bob the apple or the cup, I'm easy.", "apple>B | cup>B", ("free",)),
+        ("Give Bob the apple or the cup, I don't care which.", "apple>B | cup>B", ("free",)),
+        ("Give Bob the apple or the cup, I'll let you pick.", "apple>B | cup>B", ("free",)),
+        ("Give Bob the apple or the cup. Your call which.", "apple>B | cup>B", ("free",)),
         # a question, a kind the scene has two of, a pronoun, two handovers, a placing, a refused
         # entry: none
         ("Could you give Bob the apple or the cup?", "apple>B | cup>B", ()),
@@ -950,6 +956,86 @@ def test_over_the_corpus_each_forget_lot_and_kin_form_is_made() -> None:
     )
     for v, scene in fuzz.generated(PARTS, seed=49, every=2, families=("forgets", "lots", "kin")):
         kinds[f"{v.family} {v.form}"] += 1
+        assert (v.want is None) is (v.must == "refuse")
+        for t in tasks(v.want) if v.want is not None else ():
+            assert t.obj in fuzz._objects_named(v.text, scene), v.text
+    assert min(kinds.values()) >= 5, kinds
+
+
+# -- done (session 51) ----------------------------------------------------------------------------
+
+
+def _done(entry: Entry, seed: int) -> list[fuzz.Variant]:
+    return list(fuzz.done("t", entry, CELL, random.Random(seed)))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "forms"),
+    [
+        ("Give Bob the apple.", "apple>B", fuzz.DONE_FORMS),
+        ("The crisps are for Carol.", "chips>C", fuzz.DONE_FORMS),
+        # a question, a kind the scene has two of, a pronoun, two handovers, a placing, a choice,
+        # a refused entry: none
+        ("Could you give Bob the apple?", "apple>B", ()),
+        ("Give Bob the red mug.", "mug_red>B", ()),
+        ("Bob wants the apple, give it to him.", "apple>B", ()),
+        ("Give Bob the apple and Alice the cup.", "apple>B & cup>A", ()),
+        ("Put the apple on the shelf.", "apple@shelf", ()),
+        ("Give Bob the apple or the cup.", "apple>B | cup>B", ()),
+        ("Give her the apple.", None, ()),
+    ],
+)
+def test_done_is_made_for_one_handover_of_a_one_of_a_kind_object(
+    text: str, want: str | None, forms: tuple[str, ...]
+) -> None:
+    entry = _entry("cell", text, want)
+    for seed in range(20):
+        made = _done(entry, seed)
+        assert tuple(v.form for v in made) == forms
+        for v in made:
+            assert v.family == "done" and not v.readings
+            if v.form in ("said", "after"):
+                assert v.want is None and v.must == "refuse"
+            else:
+                assert isinstance(v.want, Task) and v.must == "same"
+                assert isinstance(entry.want, Task)
+                assert v.want.target == entry.want.target and v.want.obj != entry.want.obj
+                assert v.want.obj in fuzz._objects_named(v.text, CELL), v.text
+            if v.form == "after":
+                assert v.text.startswith(text.rstrip(".")) and v.text.endswith(fuzz.DONE_AFTER)
+
+
+def test_each_done_form_says_the_handover_and_nothing_else() -> None:
+    entry = _entry("cell", "Give Bob the apple.", "apple>B")
+    ids = {"cup": "cup", "water bottle": "bottle", "crisps": "chips"}
+    said: set[str] = set()
+    for seed in range(300):
+        for v in _done(entry, seed):
+            if v.form == "after":
+                said.add(v.text[len("Give Bob the apple") :])
+                continue
+            found = [
+                f
+                for f in (*fuzz.DONE_SAID, *fuzz.DONE_CHECKLIST, *fuzz.DONE_REPLACED)
+                for x in ids
+                for q in ("Alice", "Carol")
+                if v.text == f.format(p="Bob", P="Bob", o="apple", O="Apple", x=x, q=q, Q=q)
+            ]
+            assert found, v.text
+            said.add(found[0])
+            if v.form != "said":
+                assert (
+                    isinstance(v.want, Task)
+                    and v.want.obj == ids[next(x for x in ids if x in v.text)]
+                )
+    assert said >= {*fuzz.DONE_SAID, *fuzz.DONE_CHECKLIST, *fuzz.DONE_REPLACED, *fuzz.DONE_AFTER}
+
+
+def test_over_the_corpus_each_done_form_is_made() -> None:
+    """Every second entry of three parts: each variant names what it reads as."""
+    kinds = {f: 0 for f in fuzz.DONE_FORMS}
+    for v, scene in fuzz.generated(PARTS, seed=51, every=2, families=("done",)):
+        kinds[v.form] += 1
         assert (v.want is None) is (v.must == "refuse")
         for t in tasks(v.want) if v.want is not None else ():
             assert t.obj in fuzz._objects_named(v.text, scene), v.text

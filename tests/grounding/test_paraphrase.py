@@ -168,20 +168,14 @@ KNOWN_MISSES = frozenset(
         # blind36 (tuned on in session 38): refusals left at its one measurement (docs/grounding.md)
         "Can Person B have the bottle, and what about the chips for Person A, is that alright?",
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
-        "Ta, pet, and could Lily have her teddy now? She's flagging after the face painting.",
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
         "One apiece for the pair of them, they've both been up ladders with the bunting: the "
         "bottle for Person A, the chips to Person B.",
-        "Both of them go to Person B, bottle and chips, he's got the marching band to feed.",
-        "The chips can go to whichever of the two you like, Person A or Person B, they both "
-        "put in a shift on the cake stall.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
-        "All three of the pens into the box, Priya's had enough of the doodling.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
         "pool.",
-        "The bottle's for Person A and for no one else, she's earned it at the fun run.",
         "Take the bottle over to Person B, oh silly me, he's not here, it's Person A who's "
         "about, so give it her.",
         "Lemon on the plate rack, no, sorry, the worktop, chef wants it for the fish.",
@@ -207,8 +201,6 @@ KNOWN_MISSES = frozenset(
         "the crumhorn lady.",
         # blind40 (tuned on in session 42): refusals left at its one measurement (docs/grounding.md)
         "Omar's after a spoon to stir his tea. Could you get him one?",
-        "Mia's been asking about the scanner; as for Tom, it's the tape he's short of. Sort "
-        "them both.",
         "Bob was on about crisps all through the ice show and Alice wants her bottle can you "
         "sort that",
         "Person A's walking the coast path later and a single bottle will see her through, the "
@@ -245,7 +237,6 @@ KNOWN_MISSES = frozenset(
         "Blue mug first, for Alice, as she's off bodging stools. After that the apple goes to Bob.",
         "Bottle goes to Person A the apple to Person B no rush the pipe fitter's only just started",
         "Lena first, she wants the white plate; the tongs can go on the worktop after.",
-        "Noah's short a glue stick. Zoe's short a ruler. Sort them both out, cheers.",
         "Kofi wants the tin of screws Jess wants the small spanner both now please the "
         "helmsman's boat won't fix itself",
         "Person A's on her way to water divining, so hand her the bottle or the chips, "
@@ -266,7 +257,6 @@ KNOWN_MISSES = frozenset(
         "notebook to priya thanks she has minutes to take",
         "The scannsr to Tom, he's got the barrow boy's pallets to do.",
         # blind45 (tuned on in session 47): refusals left at its one measurement (docs/grounding.md)
-        "All four things to Person B: bottle, chips, cup and apple.",
         "Person A is doing a damson jam tasting, so she's needing both drinking vessels, bottle "
         "and cup alike.",
         "Alice put in for the bottle and she's owed it, so it's hers; Bob can have the crisps "
@@ -284,7 +274,6 @@ KNOWN_MISSES = frozenset(
         "Person B's way.",
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
-        "The dairymaid's left a solitary bottle on the side; take it to Person A, she's earned it.",
         "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
         "over it goes.",
         "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "
@@ -314,15 +303,12 @@ KNOWN_MISSES = frozenset(
         "Tom's shifting crates of mead and needs the work goves, chuck them his way.",
         "The treddy on the play mat for Lily.",
         # blind46 (tuned on in session 48): refusals left at its one measurement (docs/grounding.md)
-        "Mèrcie, that's Jèrriais for thanks, and would you kindly drop the sponge into the sink?",
-        "Mrs Khan has been pining for that magazine since the laundress took her paper away.",
         "The chips? That's Person A's lot. The bottle? Hers as well, she's running the sand "
         "castle contest.",
         "Person A asked for the bottle on her way in from the bonesetter, and Person B the chips.",
         "Emma's the visitor; she'd like a banana, can you bring her one?",
         "Sam's run out of ink marking up the chair bodger's invoices and needs a pen. The red "
         "one'll do.",
-        "Noah's forgotten his ruler; lend him ours, would you.",
         "Person A wants the apple she's been on the pogo stick all morning so get it to her.",
         "Person A's doing her wordsearch she's parched bottle to her.",
         "Ruth's doing her rounds the thermometer's for her.",
@@ -342,8 +328,6 @@ KNOWN_MISSES = frozenset(
         "the water jug on mr lee's locker please he's been coughing all night",
         "Give Person A the bottler now, her bodhrán lesson starts in five.",
         # blind47 (tuned on in session 49): refusals left at its one measurement (docs/grounding.md)
-        "Ko rab'a, that's thanks in Gilbertese, and now the chips across to Person B please.",
-        "Bob's desperate for a bottle of water after his cajón session.",
         "Alice is back from the pitch and putt she wants the bottle give it her",
         "The bottle is Person B's he asked earlier the chips are Person A's.",
         "Grandad's feeding Lily on the sofa. The bib. He needs it, hand it to him.",
@@ -378,30 +362,6 @@ KNOWN_MISSES = frozenset(
         "Jess.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
         # blind49 (tuned on in session 51): refusals left at its one measurement (docs/grounding.md)
-        "Jërëjëf, as we say back in Dakar, and could you bring Carol the blue mug when you've a "
-        "spare moment?",
-        "Sorry to be a nuisance, but the crisps would be lovely over with Bob, cheers.",
-        "With my apologies for the muddle earlier, could Person B be given the bottle now?",
-        "Right then, if you'd be a star, the packing tape goes over to Tom, ta.",
-        "Bob's got a proper craving for an apple after his go-karting.",
-        "What Person A needs after three hours of bark rubbing in the woods is the cup, nothing "
-        "fancier.",
-        "Person B is after the bottle, being a collier with a dry throat, and Person A has her "
-        "eye on the apple.",
-        "Person A fancies the chips, being a woodcutter with an appetite.",
-        "Ever since the shrimping trip, the bottle's what Person B has been hoping for.",
-        "After an afternoon on the rock climbing wall, Person A is gasping, so the bottle, please.",
-        "Person B wants the chips; that's all he's after.",
-        "Mia's crying out for the barcode scanner, the site manager wants a count.",
-        "Noah has been needing the ruler since the start of the lesson.",
-        "Bob's been asking about the red mug all morning; pass it to him, would you.",
-        "The chips are hers, Person A's I mean.",
-        "At the narrowboat club Person A asked for the bottle and Person B for the chips, so "
-        "could you see to the pair of them.",
-        "It's Person A's bottle, she wants it.",
-        "Person A again, same as last time, the bottle.",
-        "Person B gets the chips; as for the bottle, that's hers, Person A's, the lass who does "
-        "aerial silks.",
         "Person A. Back from the square dance. She needs the bottle. And the cup, she said.",
         "Chips to Person B first since he's got swing dance in ten minutes, bottle to Person A "
         "next, okay.",
@@ -409,48 +369,109 @@ KNOWN_MISSES = frozenset(
         "him.",
         "Omar's finished with the sponge, so into the sink with it, and after that the bowl goes "
         "across to him.",
-        "Alice or Bob, whichever of the two, can have the crisps; they share everything on the a "
-        "cappella tour.",
-        "So nobody sulks, Person A gets the apple and the stunt double, Person B, gets the cup, "
-        "one thing apiece.",
-        "Any of the four things, Person B isn't choosy.",
-        "Whichever of the chips and the apple, Person A is happy with one.",
-        "Person A can take her pick of the bottle or the chips, she's earned it at the improv "
-        "night.",
-        "Whichever bottle you like, so long as Person A gets it.",
-        "Any bottle going would suit Person A, she's not choosy after her bushcraft weekend.",
-        "Person B's doing a twelve-hour sail maker shift, so both, the bottle and the chips, go "
-        "to him please.",
-        "Sam can have one of the pens, whichever, he's an ichthyologist, not a contortionist.",
-        "Mr Lee and Mrs Khan can each have a blanket, the blue one for him.",
-        "It doesn't matter which box, just the one of them on the belt for the driver's test run.",
-        "Either of the blocks to Lily, she likes them both.",
         "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
-        "Person B is taking both things, bottle and chips, to the seed saving stall, so hand him "
-        "the two.",
-        "A lone bottle's all there is; Person A gets it.",
-        "The one bottle in here, for Person A, as she's a marine biologist and always thirsty.",
-        "Person A gets the bottle, the only one on offer.",
-        "All three pens into the box, Priya's clearing the desk for the primatologist's visit.",
-        "Both blankets on the locker for now, the ward's too warm for them at the minute.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
-        "Bottle to Bob, no wait, I've mixed them up again, Alice's the one.",
-        "Give Person A the apple; actually, she's just said, make that the chips.",
-        "The chips for Person A, oops, wrong name, I mean Person B, the one with the sabre bag.",
-        "The bottle to Person A, yes, I've checked the rota twice, Person A.",
-        "The chips to Person A, I mean, gosh, it's the bottle she's asked for, to Person A.",
-        "Bowl on the tray, no, it's got soup in, so in the sink.",
-        "Stapler in the box, sorry, Priya likes it kept on the desk.",
-        "The red book for Zoe, wait, she's read that, the green one.",
         "person b fancies the bottle after his epee bout cheers",
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
-        "Do you think Person A, who's been grafting roses all morning, could have the cup?",
-        "Can you give Person B the chips, as a favour to a weary mahout?",
-        "Can you put the packing tape on the pallet so Tom can grab it on his way out?",
-        "Would you put the globe on the bookshelf? Mrs Ortiz needs the desk clear for the crystal "
-        "radio demo.",
-        "Could Kofi borrow the big spanner for a bit, a mate's bike has a loose nut?",
+        # blind50 (tuned on in session 52): refusals left at its one measurement (docs/grounding.md)
+        "Um, sorry to be a pest, would you pop the red mug up on the shelf? Carol's numerology "
+        "lot are in at six.",
+        "Would you be a star and let Person B have the bottle and the cup? Many thanks in advance.",
+        "Sorry, just one teeny thing, Person B's after the bottle, if you could manage it.",
+        "Pardon me butting in, the chips to Person A please, and no rush whatsoever.",
+        "Apologies for the fuss, could the stapler go in the box? Priya's clearing the desk for "
+        "the cryptographer's visit.",
+        "No pressure, mate, but Tom could do with the work gloves before his shift, cheers.",
+        "If you'd be so kind, lay the knife on the worktop, Marco's doing the lemons in a sec.",
+        "Ever so sorry, would you mind getting the teddy to Lily? Grandad's got his hands full.",
+        "Person A has a real fancy for the apple today, whereas Person B could murder the chips "
+        "after his underwater rugby practice.",
+        "I reckon Person A would quite like the bottle after her gong bath.",
+        "Mr Lee's been on at me about his tablets since ten, and Mrs Khan's thirsty, so she wants "
+        "the water jug.",
+        "We need the small box sat on the pallet before the lorry pulls in.",
+        "Lena's short of tongs and a white plate for the wedding planner's table.",
+        "Jess needs the torch to have a look behind the bench.",
+        "Alice is after the bottle for her open water swim. Bob, same deal with the crisps.",
+        "Person A gets the apple as her bit of lunch, and the cup's Person B's, for his tea "
+        "before senet.",
+        "The chips are Person B's. Oh, and he'll take the apple off your hands as well.",
+        "Person B's getting the bottle, and the chips can go to his colleague, Person A.",
+        "That bottle belongs to Person A and she'd like it back before her flint knapping class.",
+        "Mr Lee's been shivering since they opened the window, so he's to have the blue blanket, "
+        "please.",
+        "Mrs Ortiz is doing map skills next period, so set the globe on her desk, would you.",
+        "Kofi's been hunting high and low for the hammer all morning, give it him before he loses "
+        "his rag.",
+        "bottle for Alice crisps for Bob that's your lot cheers",
+        "Cup first, it's Person B's. Apple second, that one's Person A's, she's eating it on the "
+        "boat.",
+        "Person A gets the bottle first and after she's had it you take Person B the chips and "
+        "then you can have a rest.",
+        "Chips? Person B. Cup? Person A. He's got pachisi at three and she's got a tooth out.",
+        "Right so what we'll do is Person A has the chips and Person B has the bottle and then "
+        "we're sorted for the boomerang lot.",
+        "Blue pen to Sam and the notepad to Priya she's got the etymology meeting at two.",
+        "Teddy goes down on the play mat where she can reach. After that the bib to Lily, it's "
+        "nearly lunch.",
+        "Give each of them something to eat: apple for Person A, chips for Person B.",
+        "One of them gets the bottle, whichever of the two is nearer you.",
+        "Whichever way you look at it, that bottle's going to Person A in the end, so off you go.",
+        "Whatever bottle's knocking about, let Person A have it, she's parched from the egg "
+        "throwing.",
+        "Whichever of the two things you grab first, Person B gets it.",
+        "One blanket apiece for our two patients, so blue goes to Mr Lee and the grey one's for "
+        "Mrs Khan.",
+        "Each student gets a book: red to Noah, green to Zoe.",
+        "The two mugs on the shelf please, the oenologist's tasting needs the table.",
+        "Alice gets the crisps, just the one bag mind.",
+        "Person A's stocking up for the windjammer trip, so she's to have every one of the four "
+        "things.",
+        "Person B wants the pair of drinking things, so that's the cup plus the bottle.",
+        "There's a single cup, which is Person A's, and a single apple, which Person B can have.",
+        "Only the one bottle here and only Person A to give it to, so do that.",
+        "Person A can take the both of them off you, bottle along with the chips.",
+        "The green cup and the white cup are both dirty from the oenologist's tasting, put the "
+        "pair in the sink.",
+        "Sweep the whole lot of pens, black, blue and red, into the box before the "
+        "ethnomusicologist drops by.",
+        "Of the boxes, two go on the belt today: the small one and the medium one, the large "
+        "stays put.",
+        "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue.",
+        "Alice is off crisps this week, so it's the bottle she wants, not those.",
+        "Person B's allergic to apples, so let him have everything else you've got.",
+        "Person A doesn't eat chips, but any of the other three things will do her, your choice.",
+        "The cup's not Person A's, it's meant for Person B, so hand it to him.",
+        "Person A doesn't want any of the food, only the bottle, she's just had her dinner.",
+        "It's not for me, love, the bottle's for Person A over there.",
+        "Sam can't stand red ink, so one of the other pens for him, you decide which.",
+        "Mr Lee has had his medication already; it's only the water jug he's after.",
+        "Load the boxes on the belt except for the big one, that's waiting on the pallet.",
+        "Don't put the knife out, just the tongs for Lena.",
+        "Lily's bored of the teddy, she wants the red block instead.",
+        "Jess doesn't need the drill after all, she's only after the torch for the crawl space.",
+        "Take the apple to Alice, oh hang on, I've muddled my names, Carol's the one who asked.",
+        "Crisps for Alice, no, hold your horses, they were Bob's.",
+        "Give Person B the chips, hmm, no, he said apple, not chips.",
+        "Stick the bottle down somewhere, no, tell you what, straight into Person A's hand.",
+        "Give Person A the, um, the bottle I meant to say.",
+        "The notepad should go in the box, no, hang on, Priya wants it left out on the desk.",
+        "Leave the hammer on the bench, actually no, lock it away in the locker for the night.",
+        "start with the cup for person a and when you've done that the apple's for person b",
+        "poor person b's been hanging about for his chips for ages",
+        "he's off on a bothy trip so person b wants the bottle and the chips both",
+        "tchoukball starts in ten so person a needs her bottle now",
+        "reckon you could hand person a her bottle i've got my hands full",
+        "grandad's asked for the teddy to do his silly voices",
+        "Bob's waiting on his crispz, could you take them over.",
+        "Person B's after the appled for his packed lunch.",
+        "Those xchips on the side are meant for Person A.",
+        "Grandad's got jam on his hands, get him the baby wipws.",
+        "Could you do the bottle for Person A first, and when that's done, the chips for Person B?",
+        "Is it possible to get the spoon onto the tray before Dana's round?",
+        "Would you leave the bib ready on the high chair for lunchtime?",
+        "Kofi's asking if he can borrow the big spanner, would you take it over?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -489,8 +510,11 @@ KNOWN_UNCLEAR = frozenset(
         "from me now.",
         "tom wanted a box, small or medium, can't remember which",
         # blind49 (tuned on in session 51)
-        "Ruth and Mrs Khan were both on about the jug; she says it's hers.",
-        "The doctor asked for one of the cups, green or white, but I've lost track of which.",
+        # blind50 (tuned on in session 52)
+        "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
+        "Person B said he wanted the chips, or was it the cup? I was only half listening.",
+        "Mia told me one of the boxes goes to Tom but I never noted down which.",
+        "Wipes to Grandad, no, not him, to one of the girls, which one did he say?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -592,7 +616,9 @@ KNOWN_UNCLEAR = frozenset(
 # wrong, refused since session 50), tuned on in session 50: asserted now, the rest in KNOWN_MISSES
 # and KNOWN_UNCLEAR; "blind49" written in session 50 by another engineer and committed alone,
 # measured once at the end of session 50 (0 wrong), tuned on in session 51: asserted now, the rest
-# in KNOWN_MISSES and KNOWN_UNCLEAR)
+# in KNOWN_MISSES and KNOWN_UNCLEAR; "blind50" written in session 51 by another engineer and
+# committed alone, measured once at the end of session 51 (0 wrong), tuned on in session 52:
+# asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
 MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
@@ -717,6 +743,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind48"].entries}) >= 3
     assert len(CORPORA["blind49"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind49"].entries}) >= 3
+    assert len(CORPORA["blind50"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind50"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -358,6 +358,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
     CASES.refused_without(
         (
             *normalise._STEPS36R,
+            # session 51 (12r; at the merge): its rules of the same families read some of these too
+            *normalise._STEPS51R,
             *normalise._STEPS42R,  # session 42 (12r): its rules of the same families read these too
             *normalise._STEPS39S_FIRST,
             *normalise._STEPS39S,

@@ -103,10 +103,8 @@ test_now_over50s_near = NOW_OVER.test(
 
 
 def test_now_over50s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    # (lead at the merge: 12's `_now_over50` reads the same family; both taken out)
-    from hltl.grounding import _rewrites50
-
-    NOW_OVER.refused_without((r50s._now_over50s, _rewrites50._now_over50), monkeypatch)
+    # (session 51: 12's `_rewrites50.asked_now_over50` is this rule's second way)
+    NOW_OVER.refused_without((r50s._now_over50s,), monkeypatch)
 
 
 # -- 'could the X head over to P' -----------------------------------------------------------------

@@ -152,7 +152,10 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # session 49 by another engineer and committed alone, never opened by the engineers who change the
 # grounder before its one measurement at the end of session 49; tuned on in session 50), blind49
 # (written in session 50 by another engineer and committed alone, never opened by the engineers who
-# change the grounder before its one measurement at the end of session 50; tuned on in session 51).
+# change the grounder before its one measurement at the end of session 50; tuned on in session 51),
+# blind50 (written in session 51 by another engineer and committed alone, never opened by the
+# engineers who change the grounder before its one measurement at the end of session 51; tuned on in
+# session 52).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -219,6 +222,7 @@ PARTS = (
     "blind47",
     "blind48",
     "blind49",
+    "blind50",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

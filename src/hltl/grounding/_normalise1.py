@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import bisect
 import functools
 from collections.abc import Callable
 
@@ -110,15 +111,29 @@ def _run(
 # theirs in the text: the folded ones in its lower case, the others in it as it is), so the
 # pass asks no guard again.
 _INDEXED_FROM = 300
-# by piece: each word beginning with it, whether it is asked of the lower-cased text, and the
-# steps it guards; and the steps without a guard (always picked)
-_Index = tuple[dict[str, tuple[tuple[str, bool, tuple[int, ...]], ...]], tuple[int, ...]]
+# Session 51 (12p): each word is indexed by the three letters of it (lower-cased) that the guard
+# words hold least often (any three letters of a word in the text are among the text's: the
+# rarest of them picks fewest words to ask), words under three letters by themselves; the text's
+# pieces of three letters are met with the index's in one set intersection, and the steps
+# picked for a text are kept (a pure function of the text: ~1 in 5 texts of a part is met again).
+# The index: words by their three letters (each with whether it is asked of the lower-cased
+# text and the steps it guards), those letters as a set, the words under three letters, the
+# steps without a guard (always picked), and the steps picked by text
+_Words = tuple[tuple[str, bool, tuple[int, ...]], ...]
+_Index = tuple[
+    dict[str, _Words],
+    frozenset[str],
+    tuple[tuple[str, _Words], ...],
+    tuple[int, ...],
+    dict[str, list[int]],
+]
 _INDEXES: dict[int, tuple[tuple[Guard | None, ...], _Index]] = {}
+_PICKS_KEPT = 4096
 
 
 def _index_of(rules: tuple[Guard | None, ...]) -> _Index | None:
-    """The steps' guard words by their first letters, with the steps each guards, and the steps
-    without a guard (None for a short tuple)."""
+    """The steps' guard words by three of their letters, with the steps each guards, and the
+    steps without a guard (None for a short tuple)."""
     if len(rules) < _INDEXED_FROM:
         return None
     kept = _INDEXES.get(id(rules))
@@ -133,14 +148,32 @@ def _index_of(rules: tuple[Guard | None, ...]) -> _Index | None:
                 words.setdefault((word, False), set()).add(k)
             for word in rule[1]:
                 words.setdefault((word, True), set()).add(k)
-        by_piece: dict[str, list[tuple[str, bool, tuple[int, ...]]]] = {}
+        held: dict[str, int] = {}  # how many words hold each three letters
+        for word, _ in words:
+            low = word.lower()
+            for piece in {low[i : i + 3] for i in range(len(low) - 2)}:
+                held[piece] = held.get(piece, 0) + 1
+        three: dict[str, list[tuple[str, bool, tuple[int, ...]]]] = {}
+        short: dict[str, list[tuple[str, bool, tuple[int, ...]]]] = {}
         for (word, folded), ks in sorted(words.items()):
-            by_piece.setdefault(word.lower()[:3], []).append((word, folded, tuple(sorted(ks))))
+            low = word.lower()
+            said = (word, folded, tuple(sorted(ks)))
+            if len(low) < 3:
+                short.setdefault(low, []).append(said)
+                continue
+            piece = min((low[i : i + 3] for i in range(len(low) - 2)), key=lambda p: (held[p], p))
+            three.setdefault(piece, []).append(said)
         if len(_INDEXES) > 64:
             _INDEXES.clear()
         kept = _INDEXES[id(rules)] = (
             rules,
-            ({piece: tuple(ws) for piece, ws in by_piece.items()}, tuple(always)),
+            (
+                {piece: tuple(ws) for piece, ws in three.items()},
+                frozenset(three),
+                tuple((piece, tuple(ws)) for piece, ws in short.items()),
+                tuple(always),
+                {},
+            ),
         )
     return kept[1]
 
@@ -148,19 +181,25 @@ def _index_of(rules: tuple[Guard | None, ...]) -> _Index | None:
 def _may_act(index: _Index, out: str, low: str, start: int) -> list[int]:
     """The steps from ``start`` on that may act on the ASCII text ``out`` (``low``: its lower
     case), in order: those without a guard, and those whose guard holds (a word of theirs in
-    it). A word in the text begins with one of its pieces of one to three letters (lower-cased:
-    ``out`` is ASCII), so each word that may be in it is asked once."""
-    by_piece, always = index
-    found = set(always)
-    n = len(low)
-    for size in (1, 2, 3):
-        for piece in {low[i : i + size] for i in range(n - size + 1)}:
-            said = by_piece.get(piece)
-            if said is not None:
+    it). A word in the text holds the three letters it is indexed by (lower-cased: ``out`` is
+    ASCII) among the text's, so each word that may be in it is asked once."""
+    three, pieces, short, always, picks = index
+    picked = picks.get(out)
+    if picked is None:
+        found = set(always)
+        for piece, said in short:
+            if piece in low:
                 for word, folded, ks in said:
                     if word in (low if folded else out):
                         found.update(ks)
-    return sorted(k for k in found if k >= start)
+        for piece in pieces.intersection({low[i : i + 3] for i in range(len(low) - 2)}):
+            for word, folded, ks in three[piece]:
+                if word in (low if folded else out):
+                    found.update(ks)
+        if len(picks) > _PICKS_KEPT:
+            picks.clear()
+        picked = picks[out] = sorted(found)
+    return picked[bisect.bisect_left(picked, start) :]
 
 
 def _run_indexed(
@@ -2325,8 +2364,26 @@ def _wants(text: str, lexicon: Lexicon) -> str:
     )
 
 
-@functools.lru_cache(maxsize=64)
+# Session 51 (12p): _scene_adjectives and _scene_words kept by the scene itself (its id, with the
+# scene kept beside: an id is its own only while it lives). lru_cache hashed the scene at every
+# call, and a frozen dataclass's hash is made anew each time from every object, person and
+# surface of it (~10 µs, some seven times an instruction); what is kept for a scene is what
+# was made from it, as before.
+_ADJECTIVES_KEPT: dict[int, tuple[Scene, dict[str, frozenset[str]]]] = {}
+
+
 def _scene_adjectives(scene: Scene) -> dict[str, frozenset[str]]:
+    kept = _ADJECTIVES_KEPT.get(id(scene))
+    if kept is not None and kept[0] is scene:
+        return kept[1]
+    out = _scene_adjectives_now(scene)
+    if len(_ADJECTIVES_KEPT) > 64:
+        _ADJECTIVES_KEPT.clear()
+    _ADJECTIVES_KEPT[id(scene)] = (scene, out)
+    return out
+
+
+def _scene_adjectives_now(scene: Scene) -> dict[str, frozenset[str]]:
     single = {
         w.lower()
         for n in (
@@ -5646,9 +5703,23 @@ def _idiom_stretch(chunk: str, lexicon: Lexicon) -> bool:
     )
 
 
-@functools.lru_cache(maxsize=64)
+_WORDS_KEPT: dict[int, tuple[Scene, frozenset[str]]] = {}
+
+
 def _scene_words(scene: Scene) -> frozenset[str]:
-    """Every word of every name in the scene ('b' of 'Person B', 'mr' of 'Mr Lee')."""
+    """Every word of every name in the scene ('b' of 'Person B', 'mr' of 'Mr Lee'; kept by the
+    scene itself, as _scene_adjectives)."""
+    kept = _WORDS_KEPT.get(id(scene))
+    if kept is not None and kept[0] is scene:
+        return kept[1]
+    out = _scene_words_now(scene)
+    if len(_WORDS_KEPT) > 64:
+        _WORDS_KEPT.clear()
+    _WORDS_KEPT[id(scene)] = (scene, out)
+    return out
+
+
+def _scene_words_now(scene: Scene) -> frozenset[str]:
     names = [o.id for o in scene.objects] + [h.id for h in scene.humans]
     names += [s.id for s in scene.surfaces] + [h.name for h in scene.humans]
     for x in (*scene.objects, *scene.humans, *scene.surfaces):

@@ -7067,7 +7067,7 @@ def _corrections19(text: str, lexicon: Lexicon) -> str:
         r"\1\2",
         out,
     )
-    m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
+    m = _rx(rf"(\s*[,.;:!—–-]\s*){_CUE19}\b\s*[,.:;!—–-]?\s*(?=[a-z])").search(out)
     if m is not None and m.start() > 0:
         before, after = out[: m.start()], out[m.end() :]
         if _APOLOGY19.search(before) or _rx(_BOTHER19).match(after):

@@ -56,11 +56,16 @@ def _done41l(text: str, lexicon: Lexicon) -> None:
         rest = m.group("rest")
         if not (_ids(rest, lexicon, "human") or _ids(rest, lexicon, "surface")):
             continue
-        said = m.group(0).strip()
-        raise GroundingError(
-            f"{said!r} is said as done ({m.group('said').strip()!r}), not as something to do: "
-            "say the request without it, e.g. 'give Bob the chips' or 'put the cup on the shelf'"
-        )
+        said_as_done41l(m)
+
+
+def said_as_done41l(m: re.Match[str]) -> None:
+    """Refuse the report ``m`` (its group 'said' the verb that tells it as done)."""
+    said = m.group(0).strip()
+    raise GroundingError(
+        f"{said!r} is said as done ({m.group('said').strip()!r}), not as something to do: "
+        "say the request without it, e.g. 'give Bob the chips' or 'put the cup on the shelf'"
+    )
 
 
 # -- session 41 (lead): a want taken back by an idiom, of what the reading hands that person --

@@ -148,13 +148,14 @@ _FORGOT_WORDS49L = (
 )
 
 
-def _forgot_choice49l(text: str, node: Node, lexicon: Lexicon) -> None:
-    """Session 49 (lead): a reading with a choice in it, of a text in which the speaker says they
-    have forgotten ("…, the small or the large, it's gone clean out of my head"), is a choice the
-    person made and the speaker lost, not one left to the robot: refused, naming the options."""
+def forgot49l(text: str) -> bool:
+    """Session 49 (lead): the speaker says they have forgotten ("…, the small or the large, it's
+    gone clean out of my head"), in one of the wordings listed above. A reading with a choice in
+    it, of such a text, is a choice the person made and the speaker lost, not one left to the
+    robot: session 50's `_forgot_choice50l` refuses it, naming the options (one check for both
+    sessions' wordings, so the reading is walked once)."""
     low = text.lower()
-    if any(w in low for w in _FORGOT_WORDS49L) and _FORGOT49L.search(text) is not None:
-        choice_forgotten49l(node, lexicon)
+    return any(w in low for w in _FORGOT_WORDS49L) and _FORGOT49L.search(text) is not None
 
 
 def choice_forgotten49l(
@@ -176,4 +177,4 @@ def choice_forgotten49l(
 # refusals asked of the text before it is read (offline._parse, after the session-48 ones)
 REFUSE49L: tuple[Callable[[str, Lexicon], None], ...] = (_lot_after_things49l,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-48 ones)
-CHECK49L: tuple[Callable[[str, Node, Lexicon], None], ...] = (_forgot_choice49l,)
+CHECK49L: tuple[Callable[[str, Node, Lexicon], None], ...] = ()

@@ -231,8 +231,10 @@ _NOW_OVER50 = re.compile(
 _ASKED50 = re.compile(r"^(?:Could|Can|Would|Will|Might|May|Is it|Would it) ")
 
 
-def _now_over50(text: str, lexicon: Lexicon) -> str:
-    """Session 50: a closing 'now her X's over' taken off a request asked as a question."""
+def asked_now_over50(text: str, lexicon: Lexicon) -> str:
+    """Session 50: a closing 'now her X's over' taken off a request asked as a question. Since
+    session 51 not a step of its own: the second way of `_rewrites50s._now_over50s`, the one
+    rule of this family (12s read it after 'can P have X')."""
     if "now " not in text or not text.endswith("?") or not _ASKED50.match(text):
         return text
     m = _NOW_OVER50.search(text)
@@ -528,7 +530,6 @@ _STEPS50_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _hands_on50,
     _finding50,
     _ok_with_you50,
-    _now_over50,
     _reckons50,
     _making50,
     _old_one50,

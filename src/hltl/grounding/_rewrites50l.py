@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
-from hltl.grounding._rewrites49l import choice_forgotten49l
+from hltl.grounding._rewrites49l import choice_forgotten49l, forgot49l
 from hltl.grounding.lexicon import TITLE_SEX, Lexicon, _kin_sex35s
 from hltl.grounding.tree import Node
 
@@ -127,8 +127,10 @@ def _forgot_choice50l(text: str, node: Node, lexicon: Lexicon) -> None:
     (`forgets50l`): a reading with a choice, of a text in which the speaker says they have
     forgotten, is refused naming the options; and so is one beside any remark of the speaker's
     about what they know or heard (`unknowing50l`: "I'm hazy on which", "I wasn't paying
-    attention", "it's on the tip of my tongue")."""
-    if forgets50l(text) is not None:
+    attention", "it's on the tip of my tongue"). Session 49's listed wordings (`forgot49l`, not
+    all of which `forgets50l` reads: "it's completely gone", "I'd have to ask him") are asked
+    here too, so the reading is walked for a choice once (session 51)."""
+    if forgets50l(text) is not None or forgot49l(text):
         choice_forgotten49l(node, lexicon)
     said = unknowing50l(text, lexicon)
     if said is not None:

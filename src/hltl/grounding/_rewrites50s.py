@@ -15,6 +15,7 @@ from hltl.grounding._rewrites43s import _NOW_OVER43S, _now_over43s
 from hltl.grounding._rewrites44r import _read_or44r, _read_without44r
 from hltl.grounding._rewrites44s import _agrees44s
 from hltl.grounding._rewrites45r import _isnt_its45r
+from hltl.grounding._rewrites50 import asked_now_over50
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -94,9 +95,17 @@ _MAY_HAVE50S = re.compile(
 
 
 def _now_over50s(text: str, lexicon: Lexicon) -> str:
-    """Session 50 (12s): the 'now …'s over' of a 'can P have X' taken off as session 43's."""
+    """Session 50 (12s): the 'now …'s over' of a 'can P have X' taken off as session 43's; else
+    (session 51, one rule for the family) 12's closing 'now her X's over' of a request asked as
+    a question (`_rewrites50.asked_now_over50`)."""
     if "now" not in text.lower():
         return text
+    out = _may_have_now_over50s(text, lexicon)
+    return out if out != text else asked_now_over50(text, lexicon)
+
+
+def _may_have_now_over50s(text: str, lexicon: Lexicon) -> str:
+    """'can / could / may P have X now her Y's over' read as P's want (`_now_over43s`)."""
     body = text.rstrip()
     ask = body.endswith("?")
     if ask:

@@ -4,7 +4,7 @@
 from hltl.grounding.stepguard import Entry
 
 GUARDS: dict[str, Entry | str] = {
-    "derivation": "1d7ffe6182788e23cc9eb351a7625476",
+    "derivation": "33d71a3257a14c08229c5a2993d046f6",
     "hltl.grounding._normalise1:_after": (
         "8d32d28388a12398",
         ((), ("after ",), True),
@@ -1126,6 +1126,7 @@ GUARDS: dict[str, Entry | str] = {
             ("re", ("module", "hltl.grounding.gate")),
         ),
     ),
+    "hltl.grounding._normalise2:_asked_as33": ("e7b68c69a415283b", (("?",), (), False), ()),
     "hltl.grounding._normalise2:_at_table30": (
         "7fe2c8f4951aba8f",
         ((), (" at ", " in ", " on "), False),
@@ -1400,6 +1401,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._normalise2:_dropped_is36": ("4c684f64082f4713", (("s ",), (), False), ()),
+    "hltl.grounding._normalise2:_dyou30": ("d3ee3155df180abf", ((), ("d'",), False), ()),
     "hltl.grounding._normalise2:_each_wants32": (
         "dda7693b3f623178",
         ((), ("a thing", "one thing", "something"), True),
@@ -2046,6 +2048,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_run_on_said32": (
+        "7e8e5428ed68fc4f",
+        ((" so",), ("then it's ",), True),
+        (
+            (
+                "_BREAK32",
+                (
+                    "pattern",
+                    ",?\\s+(?:and )?then it's (?:tea|coffee|lunch|dinner|home|my|our)(?: break| time)?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise2:_safe_where31": (
         "749277996baf8d0b",
         (
@@ -2207,6 +2223,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise2:_start_with33": (
+        "51da817f4ac0308c",
+        ((), ("begin", "start"), False),
+        (),
+    ),
     "hltl.grounding._normalise2:_state_after30": (
         "e8a1af9518d32c69",
         ((), (" after ",), False),
@@ -2309,6 +2330,7 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("the ",), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise2:_tag28": ("4e52be34a9b279f0", ((",",), (), False), ()),
     "hltl.grounding._normalise2:_telegraph35": (
         "4f5a8023f6ede6d9",
         ((), ("th",), True),
@@ -2790,6 +2812,20 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" of the",), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
+    "hltl.grounding._normalise3:_all_said29r": (
+        "0f4e3b51004c7cb1",
+        ((), ("welcome", "whatever"), True),
+        (
+            (
+                "_WHATEVER_THERE29R",
+                (
+                    "pattern",
+                    "^(?P<ex>(?:apart from|except(?: for)?|other than|besides|bar) [^,]+,\\s*[^,]*?)\\bwhatever(?:'s| is) (?:there|left|going|on offer)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_along_with28s": (
         "981822fed5a947af",
         ((), (" together", " with "), True),
@@ -2981,6 +3017,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise3:_choice_tail29r": (
+        "3590543a7f093d36",
+        ((), ("whichever",), False),
+        (
+            (
+                "_CHOICE_TAIL29R",
+                (
+                    "pattern",
+                    "\\s*[,;]\\s*(?:(?:just |so )?(?:pick|take|grab|choose|use) )?whichever(?: one)?(?:'s| is)? (?:comes to hand|you can reach(?: first)?|you reach first|is nearer(?: to you)?|is closer|is easier to reach|you can get to|you get to first)(?=\\s*(?:[,.!?]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_choice_tail32r": (
         "4f2afcfd097add40",
         ((), ("as long as it's ", "whichever"), True),
@@ -3078,6 +3128,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "(?P<list>(?:the |a |an )?[a-z]+(?: [a-z]+)?(?:(?:,\\s*|,? and )(?:the |a |an )?[a-z]+(?: [a-z]+)?)+),\\s*(?:that's |so )?(?P<n>two|three|four|five|six|2|3|4|5|6) (?:things|items|objects)(?: in all| altogether| in total)?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise3:_count_again28r": (
+        "51391ac1438eae72",
+        ((), ("all ",), False),
+        (
+            (
+                "_COUNT_AGAIN28R",
+                (
+                    "pattern",
+                    "\\s*,\\s*(?:that's |that is |so )?all (?P<n>two|three|four|five|six) (?:bits|things|items|pieces|objects|of them|of those)\\s*,\\s*",
                     34,
                 ),
             ),
@@ -3498,6 +3562,20 @@ GUARDS: dict[str, Entry | str] = {
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise3:_in_hand28r": ("c4129466679cf450", ((), ("hand",), False), ()),
+    "hltl.grounding._normalise3:_included27r": (
+        "a7f01e41c9ce9365",
+        ((), ("includ",), False),
+        (
+            (
+                "_INCLUDED27R",
+                (
+                    "pattern",
+                    ",\\s*(?:(?:and )?(?:the )?([\\w ]+?) included|including (?:the )?([\\w ]+?))(?=\\s*(?:[.!]|$))",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_into_with_them32r": (
         "0e91cf7b1f1712b6",
         ((), (" with ",), True),
@@ -3800,6 +3878,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise3:_not_first28r": (
+        "82436c80fc13c944",
+        ((), ("do not", "don't", "needn't", "no need", "not ", "you don't"), False),
+        (),
     ),
     "hltl.grounding._normalise3:_not_first29r": (
         "920880a3435a0ad9",
@@ -4419,6 +4502,36 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("e",), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
+    "hltl.grounding._normalise3:_slip31r": (
+        "febef4eaff0197b1",
+        ((), (" got ", "i tell a lie", "ixed", "silly me", "uddled", "what am i saying"), True),
+        (
+            (
+                "_SLIP_AFTER_CUE31R",
+                (
+                    "pattern",
+                    "(?P<cue>,\\s*(?:(?:(?:no,? |(?:eh|ah),? no,? |(?:oh|eh|ah),? )?(?:sorry|so sorry)(?:,? (?:no|wrong))?(?:,? i meant?)?|whoops|oops|(?:no,? )?my (?:mistake|bad)|pardon me|i meant?|i misspeak|i misspoke|let me rephrase|(?:or )?rather|(?:no,? )?(?:strike|scratch|belay|revert|cancel) that(?: order)?|(?:wait|no wait|no),? (?:revert|scratch|strike|cancel) that|correction|no,? (?:wait|hold on|hang on)|(?:eh|ah),? no|nay(?:,? i misspeak)?|no,? sorry|no,? no)|no|wait|hang on|hold on|oh)\\s*),\\s*(?:i tell a lie|i(?:'ve| have)? got (?:them|it|that|those|this|these) (?:all )?(?:mixed up|muddled(?: up)?|wrong|the wrong way round|back to front)(?: again)?|i(?:'ve| have)? (?:mixed|muddled) (?:them|it|that|those) up(?: again)?|silly me|what am i saying)\\s*,\\s*(?=\\S)",
+                    34,
+                ),
+            ),
+            (
+                "_SLIP_ALONE31R",
+                (
+                    "pattern",
+                    "(?P<lead>,\\s*)(?:i tell a lie|i(?:'ve| have)? got (?:them|it|that|those|this|these) (?:all )?(?:mixed up|muddled(?: up)?|wrong|the wrong way round|back to front)(?: again)?|i(?:'ve| have)? (?:mixed|muddled) (?:them|it|that|those) up(?: again)?|silly me|what am i saying)\\s*,\\s*(?=\\S)",
+                    34,
+                ),
+            ),
+            (
+                "_SLIP_CLOSING31R",
+                (
+                    "pattern",
+                    "[,;.!]\\s*(?:(?:oh|ah|no|sorry|wait|whoops|oops)\\s*,?\\s*)*(?P<said>(?:i tell a lie|i(?:'ve| have)? got (?:them|it|that|those|this|these) (?:all )?(?:mixed up|muddled(?: up)?|wrong|the wrong way round|back to front)(?: again)?|i(?:'ve| have)? (?:mixed|muddled) (?:them|it|that|those) up(?: again)?|silly me|what am i saying))(?:\\s*,?\\s*(?:sorry|again|there))*\\s*[.!]?\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise3:_slip_owned29s": (
         "049aaa3dfbd396e1",
         ((), (" got ", "mistake", "silly me", "wrong"), True),
@@ -4954,10 +5067,38 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("after", "following", "since"), True),
         (("_F", ("value", "re.IGNORECASE")), ("re", ("module", "hltl.grounding.gate"))),
     ),
+    "hltl.grounding._normalise4:_after_her35r": (
+        "6a80e31da038fa73",
+        ((), ("after",), False),
+        (
+            (
+                "_AFTER_HER35R",
+                (
+                    "pattern",
+                    ",\\s*after (?P<w>(?:her|his|their) (?:[a-z]+ )?(?:[a-z]+(?:ing|ics)|class|lesson|practice|training|shift|session|match|game|nap|walk|swim|workout|rehearsal|appointment|meeting|exam|lecture|visit|round))(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_after_those34t": (
         "8f0fc356f0d7ba60",
         ((), (" after ",), True),
         (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
+    ),
+    "hltl.grounding._normalise4:_alike34r": (
+        "f67ceb03479eddce",
+        ((), (" alike",), True),
+        (
+            (
+                "_ALIKE34R",
+                (
+                    "pattern",
+                    "^(?P<head>.*\\bboth\\b.+,\\s*(?:the )?[a-z]+ and (?:the )?[a-z]+) alike(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._normalise4:_also_hers36": (
         "e0cfea21f9ba2515",
@@ -4974,6 +5115,20 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_and_for35r": ("5650e338739dd769", ((), ("and for",), False), ()),
+    "hltl.grounding._normalise4:_any_arm37r": (
+        "c1fd41ba4a187bee",
+        ((), (" do ",), True),
+        (
+            (
+                "_ANY_ARM37R",
+                (
+                    "pattern",
+                    "^(?:either|any|whichever|each) (?:arm|robot|hand|one of you|of you|of your arms) (?:can|will|could|may) do (?:it|this|that|the job)\\s*[:;,.]\\s*(?=\\S)",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_any_order33r": (
         "52e35b045e755304",
         ((), (" order",), True),
@@ -5025,6 +5180,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "\\b(?P<a>an? [a-z]+),\\s*anything but (?P<x>the [a-z]+ one|the [a-z]+ [a-z]+)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_anything_but35r": (
+        "e50ec375f3d9c2e1",
+        ((), ("anything",), False),
+        (
+            (
+                "_ANYTHING_BUT35R",
+                (
+                    "pattern",
+                    "^(?P<p>[a-z]+(?: [a-z])?) can have anything (?:but|except|other than) (?P<x>[^,.;!?]+?)(?:,\\s*(?:i'm|i am) not (?:fussed|bothered) (?:what|which))?(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -5091,6 +5260,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^the (?P<role>[a-z]+) (?:on|at) table (?:[a-z]+|\\d+),\\s*(?P<p>[a-z][\\w ]*?),\\s*(?P<rest>.+)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_belongs35r": (
+        "04f5474ab51d85e4",
+        ((), ("belong",), False),
+        (
+            (
+                "_BELONGS35R",
+                (
+                    "pattern",
+                    "(?P<cue>\\bno),\\s*(?:it|they) (?:belongs?|is|are|'s) (?:to )?(?P<p>[^,.;!?]+?)(?:'s)?,\\s*(?P<v>give|hand|pass|take) (?P<it>it|them) (?:back )?to (?P<pro>her|him)(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -5453,6 +5636,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_dont_instead35r": (
+        "0b2b1aff3a2bc4ad",
+        ((), ("instead",), False),
+        (
+            (
+                "_DONT_INSTEAD35R",
+                (
+                    "pattern",
+                    "^(?:don't|do not) (?P<v>give|hand|pass) (?P<p>[a-z]+(?: [a-z])?) (?P<x>the [a-z]+(?: [a-z]+)?),\\s*(?:(?P<why>[^,.;!?]+?),\\s*)?(?:give|hand|pass) (?P<pro>him|her) (?P<y>the [a-z]+(?: [a-z]+)?) instead(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_drink_in35t": (
         "fef32d8ef7b5d6c4",
         ((), ("'d like", "could do with", "needs", "wants", "would like"), True),
@@ -5600,6 +5797,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_final_answer34r": (
+        "fd60d58d680ae943",
+        ((), ("final answer",), True),
+        (
+            (
+                "_FINAL34R",
+                (
+                    "pattern",
+                    "^(?P<head>.+?\\b(?:no|sorry|actually|i mean|i meant|or rather|correction)\\b.+?),\\s*(?:and )?(?:that's )?(?:my )?final answer(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_first_said34r": (
         "927415a9d851b1dd",
         ((), ("first",), True),
@@ -5656,6 +5867,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     ",\\s*(?:(?:whichever|whatever)(?: one)?(?:'s| is) (?:closer|nearer|nearest|closest|handier|handiest)(?: to (?:hand|you)|(?: to)? (?:your|the) (?:gripper|arm|hand))?|whichever(?: one)? you (?:like|pick|choose|prefer|fancy)|(?:whatever|whichever)(?: one)? you (?:grab|reach|get to|can reach) first|depending on (?:what|which|whichever)(?:'s| is) (?:easiest|nearest|closest|handiest|quickest)(?: to (?:reach|get|grab))?|(?P<who>(?:the [a-z]+(?: [a-z]+)?|he|she|they|i)(?:'s not|'re not|'m not| is not| isn't| are not| aren't| am not) (?:really )?(?:fussy|fussed|bothered|particular)(?: (?:which|what)(?: (?:colour|color|one|size|kind|of them))?)?)|(?:i'll|i will) [a-z]+(?: [a-z]+)? (?:on|with|from|in|into) whichever(?: one)? you (?:pick|choose|use)|(?:i|we) (?:just |only )?need (?:the )?one(?: of them)?(?: out| there| down| up)?(?: for (?:the |my |our )?[a-z]+)?|(?P<share>(?:either|any) way(?: round)? (?:is|'s) (?:fine|ok|okay|good)|you (?:decide|pick|choose) who gets (?:which|what)))(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_fronted_every35r": (
+        "ca81b34446f3ce24",
+        ((), ("every",), False),
+        (
+            (
+                "_FRONTED_EVERY35R",
+                (
+                    "pattern",
+                    "^(?P<open>(?:except(?: for)?|apart from|other than|bar|aside from) [^,.;:!?]+,\\s*[^.;:!?]*?)\\bevery (?:item|thing|object|single thing)\\b",
                     34,
                 ),
             ),
@@ -5772,6 +5997,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "(?:\\s*,\\s*|\\s+)(?:so|and|which means|meaning)\\s+(?P<pro>she|he)(?:'s| has| will have|'ll have)(?: got)? (?P<n>two|three|four|both)(?: (?:of them|things|items|now))?(?P<end>\\s*[.!]?)\\s*$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_got_wrong35r": (
+        "457d275d8af43cc7",
+        ((), ("wrong",), False),
+        (
+            (
+                "_GOT_WRONG35R",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:oops|whoops|sorry|oh|hang on|wait)),\\s*i(?:'ve| have)? (?:gone and )?(?:got|had) (?:it|that|them) wrong,\\s*(?P<p>[^,.;!?]+?)(?:'s| is) the one who (?P<v>ordered|wanted|asked for|wants|needs|needed) (?P<it>it|them)(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -5899,6 +6138,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_hers35r": (
+        "57ecfdd44683d0b4",
+        ((), ("so the",), False),
+        (
+            (
+                "_HERS35R",
+                (
+                    "pattern",
+                    "(?P<lead>,\\s*so )(?P<x>the [a-z]+(?: [a-z]+)?)(?:'s| is) (?P<pro>hers|his)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_human_noun36t": (
         "2d30254ae6a35cd6",
         ((), ("human ",), True),
@@ -5941,6 +6194,20 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("all over", "blocking", "cluttering", "in the way o", "taking up "), True),
         (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
+    "hltl.grounding._normalise4:_instead35r": (
+        "694f82867d260a16",
+        ((), ("instead",), False),
+        (
+            (
+                "_INSTEAD35R",
+                (
+                    "pattern",
+                    "^(?P<p>[^,;]+?)(?:'s| is) (?P<adj>[a-z]+),\\s*so (?P<rest>.+?),? instead(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_into_they_go33r": (
         "b9fc9260caf404f6",
         ((), ("they go", "with "), True),
@@ -5964,6 +6231,34 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^(?P<x>the [a-z]+(?: [a-z]+)?) (?:isn't|is not|'s not) (?P<p>[a-z][\\w ]*?)'s,\\s*(?:it's|it is) (?P<q>[a-z][\\w ]*?)'s(?:,\\s*(?:so )?(?:take|give|bring|hand) it (?:to|over to) (?P<pro>him|her))?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_isnt_on35r": (
+        "9fc0826d14e667be",
+        ((), ("that is",), True),
+        (
+            (
+                "_ISNT_ON35R",
+                (
+                    "pattern",
+                    "\\bthat (?:isn't|is not) (?:already )?(?:sitting |lying |resting |left )?(?P<p>on|in) (?P<s>the [a-z]+(?: [a-z]+)?)(?P<why>,\\s*(?:she|he|they)(?:'ll| will) know why)?",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_it_says35r": (
+        "d4f86e6fa6b9fdb0",
+        ((), ("it says",), False),
+        (
+            (
+                "_IT_SAYS35R",
+                (
+                    "pattern",
+                    ",\\s*or,\\s*(?:(?:ugh|er|erm|um|hmm|oh),\\s*)?(?:(?:my|the) notes? (?:are|is|'s) [a-z]+,\\s*)?(?P<x>the [a-z]+(?: [a-z]+)?) it says(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -6026,6 +6321,20 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_keep_going36": ("223de288ddb424d1", (("going",), (), False), ()),
+    "hltl.grounding._normalise4:_keep_losing35r": (
+        "e73d4305840ada03",
+        ((), ("keep",), False),
+        (
+            (
+                "_KEEP_LOSING35R",
+                (
+                    "pattern",
+                    "(?P<head>\\b(?:no|sorry|actually)\\b.*?),\\s*i keep (?:losing|misplacing|forgetting|dropping) (?:it|them)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_kind_before34s": (
         "dfc8b869aad2ea57",
         ((), ("bite", "drink", "nibble", "refreshment", "snack", "treat"), True),
@@ -6040,6 +6349,16 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_late_alone35r": (
+        "acac1b7ea85de2b8",
+        ((), ("it",), False),
+        (
+            (
+                "_LATE_ALONE35R",
+                ("pattern", "^(?:sorry,\\s*)?(?P<said>[^.!?]+)\\.\\s+(?P<rest>\\S.*)$", 34),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_lay_hands34r": (
         "8b9052bb2fddda19",
         ((), ("you can ",), True),
@@ -6049,6 +6368,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "\\b(?P<any>any (?:[a-z]+ )?[a-z]+) (?:that )?you can (?:lay|get|put) (?:your )?hands on\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_leave_be35r": (
+        "50e1cdde7a700f1e",
+        ((), ("leave",), False),
+        (
+            (
+                "_LEAVE_BE35R",
+                (
+                    "pattern",
+                    "^(?P<head>.+?)\\s*(?:,\\s*)?(?:and |but )?leave (?P<x>the [a-z]+(?: [a-z]+)?) (?:be|alone)(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -6080,6 +6413,21 @@ GUARDS: dict[str, Entry | str] = {
                     34,
                 ),
             ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_leave_that34r": (
+        "7cd42df97c93bc7f",
+        ((), ("except the ",), True),
+        (
+            (
+                "_LEAVE_THAT34R",
+                (
+                    "pattern",
+                    "(?P<head>\\bexcept the (?P<a>[a-z]+) one),\\s*leave (?:that|it) (?:on|in) the (?P<s>[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+            ("re", ("module", "hltl.grounding.gate")),
         ),
     ),
     "hltl.grounding._normalise4:_leaving_aside34r": (
@@ -6171,6 +6519,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^there(?:'s| is) (?:a lone|a single|only one|just the one|just one|one) (?P<k>[a-z]+)(?: (?:in|on) (?:this|the) (?:cell|room|table|bench|place))?(?: here)?,?\\s*and (?P<p>[a-z][\\w ]*?) is the one to (?:have|get|take) it(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_meant_for35r": (
+        "2bbad1c360a67f23",
+        ((), ("meant",), False),
+        (
+            (
+                "_MEANT_FOR35R",
+                (
+                    "pattern",
+                    "(?P<said>\\bi meant (?P<x>the [a-z]+(?: [a-z]+)?)) for (?P<pro>her|him)(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -6302,6 +6664,16 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_no_fuss34r": (
+        "418e60ee696e5368",
+        ((), ("no fuss,",), True),
+        (
+            (
+                "_NO_FUSS34R",
+                ("pattern", "^no fuss,\\s*(?P<rest>(?:nothing else,\\s*)?just .+)$", 34),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_no_good34r": (
         "26401df8ee056b9c",
         ((), ("a different one", "another one", "one of the others"), True),
@@ -6316,10 +6688,38 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_no_need36r": (
+        "c9b9fd80f8460afa",
+        ((), ("no need for anything ",), True),
+        (
+            (
+                "_NO_NEED36R",
+                (
+                    "pattern",
+                    "^no need for anything (?:fancy|special|else|more),\\s*(?=(?:just|only) )",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_no_trouble36t": (
         "f631a8a02a60c193",
         ((), ("bother", "trouble"), True),
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
+    ),
+    "hltl.grounding._normalise4:_no_wait37r": (
+        "6716944d3126f906",
+        ((), ("no need to ",), True),
+        (
+            (
+                "_NO_WAIT37R",
+                (
+                    "pattern",
+                    "^no need to (?:wait|hang) (?:about|around|round)(?: for anything| for me)?\\s*[,;:]\\s*(?=\\S)",
+                    34,
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._normalise4:_no_wait_to34r": (
         "dfb3abbbd6c3bb18",
@@ -6466,6 +6866,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_not_theirs35r": (
+        "e8fb46f6c69553b0",
+        (("'s",), (), False),
+        (
+            (
+                "_NOT_THEIRS35R",
+                (
+                    "pattern",
+                    "(?P<head>\\bnot the [a-z]+ one),\\s*(?:that's|that is|it's|it is) (?:the )?(?P<o>[a-z]+)'s(?: and (?:she|he|they)(?:'s| is|'re| are) (?P<w>[a-z ]+?))?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_not_these33r": (
         "19076f2494a7e736",
         ((), ("not ",), True),
@@ -6562,6 +6976,11 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
         ),
+    ),
+    "hltl.grounding._normalise4:_one_apiece36r": (
+        "227603c12409f44b",
+        ((), ("one ",), True),
+        (("_ONE_APIECE36R", ("pattern", "^one (?:apiece|each)\\s*:\\s*(?=\\S)", 34)),),
     ),
     "hltl.grounding._normalise4:_one_by34r": (
         "a5b7f83ca2bd6457",
@@ -6737,6 +7156,20 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("all of us", "everyone", "the lot", "us all"), True),
         (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
+    "hltl.grounding._normalise4:_only_one35r": (
+        "1106944b19435a93",
+        ((), ("only",), False),
+        (
+            (
+                "_ONLY_ONE35R",
+                (
+                    "pattern",
+                    "^(?P<head>[^,.;!?]+),\\s*there(?:'s| is) only (?:the )?one(?: only)?(?:\\s*,\\s*(?:don't worry|no worries|never mind))?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_only_one_got37r": (
         "f820a9ab8798ae83",
         ((), (" the ",), True),
@@ -6774,6 +7207,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^(?:only|just) (?P<x>the [a-z]+(?: [a-z]+)?),\\s*and (?:only|just) (?:to|for) (?P<p>[^,.;!?]+?)(?:,\\s*(?:no other jobs|nothing else|no other tasks)(?: for now)?)?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_only_wants35r": (
+        "67ea5b63b19b7c86",
+        ((), ("wants",), False),
+        (
+            (
+                "_ONLY_WANTS35R",
+                (
+                    "pattern",
+                    "(?P<head>\\b(?:not fussed|not bothered|doesn't mind|don't mind|does not mind) which),\\s*(?:she|he|they) (?:only|just) wants? (?P<w>(?:a|an|some) [a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -6883,6 +7330,20 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._normalise4:_own35r": (
+        "6d716746a2a45835",
+        ((), ("own",), False),
+        (
+            (
+                "_OWN35R",
+                (
+                    "pattern",
+                    "^(?P<head>.+?),\\s*(?P<pro>she|he)(?:'s| has)? (?:brought|got|has) (?:(?:her|his) own (?P<a>[a-z]+)|(?P<b>[a-z]+) of (?:her|his) own)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_owner_then34r": (
         "2c181ec2fa1cdd5a",
         ((), ("give", "hand", "pass", "take"), True),
@@ -6920,6 +7381,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "\\bthe pair of (?P<k>[a-z]+s)(?=,\\s*(?:the )?[a-z]+ and (?:the )?[a-z]+\\s*[.!]?$)",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_pair_of37r": (
+        "4901025d65dc4816",
+        ((), ("the pair of ",), True),
+        (
+            (
+                "_PAIR_OF37R",
+                (
+                    "pattern",
+                    "\\bthe pair of (?P<ks>[a-z]+s)(?=,\\s*the [a-z]+(?: one)? and the [a-z]+(?: one)?,)",
                     34,
                 ),
             ),
@@ -7017,6 +7492,34 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" can take ",), False),
         (),
     ),
+    "hltl.grounding._normalise4:_rather_after35r": (
+        "654ac97b62b63c21",
+        ((), ("rather",), False),
+        (
+            (
+                "_RATHER_AFTER35R",
+                (
+                    "pattern",
+                    "^(?P<head>[^.!?]+)[.!]\\s*(?:(?:er|erm|um|hmm|oh),?\\s*)?(?:hold on|hang on|wait),\\s*(?P<pro>she|he)(?:'d| would) rather have (?P<x>the [a-z]+(?: [a-z]+)?)(?:,\\s*go with (?:that|it|that one))?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_rather_have35r": (
+        "c8a6f62ca5f982ae",
+        ((), (" would ",), True),
+        (
+            (
+                "_RATHER_HAVE35R",
+                (
+                    "pattern",
+                    "(?P<cue>\\bno),\\s*(?P<p>[^,.;!?]+?) would (?:rather|prefer to) have (?P<it>it|them)(?: in (?:her|his|their) hands?)?(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_rather_order34r": (
         "2a6388a67a947735",
         ((), (" and then ",), True),
@@ -7026,6 +7529,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^(?P<x>(?:the )?[a-z]+(?: [a-z]+)?) and then (?P<y>(?:the )?[a-z]+(?: [a-z]+)?) to (?P<p>[a-z][\\w ]*?),\\s*or rather (?P<y2>(?:the )?[a-z]+(?: [a-z]+)?) first,? and then (?P<x2>(?:the )?[a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_rather_person35r": (
+        "de727ca1ba3549be",
+        ((), ("person",), False),
+        (
+            (
+                "_RATHER_PERSON35R",
+                (
+                    "pattern",
+                    "\\b(?P<prep>to|for) (?P<p1>person [a-z])\\s*,\\s*(?:or rather|no|sorry|i mean),?\\s+(?P<p2>person [a-z]|[a-z]+)(?:\\s*,\\s*i (?:keep|always) (?:mixing|getting) them (?:up|mixed up|muddled))?(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -7925,6 +8442,16 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("the other way about",), True),
         (("_WAY_ABOUT37R", ("pattern", "\\bthe other way about\\b", 34)),),
     ),
+    "hltl.grounding._normalise4:_we_have34r": (
+        "f9cd43ac7303d243",
+        ((), ("everything",), True),
+        (
+            (
+                "_WE_HAVE34R",
+                ("pattern", "\\b(?P<e>everything) (?:we've got|we have got|we have)\\b", 34),
+            ),
+        ),
+    ),
     "hltl.grounding._normalise4:_what_she_wants35s": (
         "8a0fcb10335b8dba",
         ((), ("what ",), True),
@@ -8043,6 +8570,20 @@ GUARDS: dict[str, Entry | str] = {
                 (
                     "pattern",
                     "^whichever of (?:the two(?: people)?|them) is (?:closer|nearer|nearest|closest|free|handier)(?: to you)? (?P<rest>(?:can have|gets|should get|can take) .+)$",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._normalise4:_who_getting35r": (
+        "1ce755337f6241e9",
+        ((), ("getting",), False),
+        (
+            (
+                "_WHO_GETTING35R",
+                (
+                    "pattern",
+                    "(?P<cue>\\b(?:hang about|hang on|hold on|wait)),\\s*no,\\s*it(?:'s| is) (?P<p>[^,.;!?]+?) who(?:'s| is) getting (?P<it>it|them)(?P<end>\\s*[.!]?)$",
                     34,
                 ),
             ),
@@ -8706,16 +9247,23 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" both ", " each "), False),
         (),
     ),
+    "hltl.grounding._rewrites38r:_either_named38r": (
+        "dcd23b79330431c2",
+        ((), ("either",), False),
+        (),
+    ),
     "hltl.grounding._rewrites38r:_hates_others38r": (
         "47bf5173eb777b0d",
         ((), ("others",), False),
         (),
     ),
+    "hltl.grounding._rewrites38r:_leave_out38r": ("1409147ccaaa9810", ((), ("leave",), False), ()),
     "hltl.grounding._rewrites38r:_needs_something38r": (
         "286c5c2713ed9fea",
         ((), ("will do",), False),
         (),
     ),
+    "hltl.grounding._rewrites38r:_never_mind38r": ("6427042a5c6327e9", ((), ("never",), False), ()),
     "hltl.grounding._rewrites38r:_no_matter38r": (
         "ab798f09ed08d0f5",
         ((), ("matter", "regardless"), False),
@@ -8904,6 +9452,7 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites39:_at_all39": ("70c375a5f6c47e23", ((), (" at all ",), False), ()),
     "hltl.grounding._rewrites39:_courtesy39": (
         "f3b5db42de1b91d5",
         (
@@ -9337,6 +9886,21 @@ GUARDS: dict[str, Entry | str] = {
         "45119bf9741bbe79",
         ((), ("other",), False),
         (),
+    ),
+    "hltl.grounding._rewrites40r:_no_need40r": (
+        "2319661dd7030995",
+        ((), (" bother asking", "no need to "), True),
+        (
+            ("_F", ("value", "re.IGNORECASE")),
+            (
+                "_NO_NEED40R",
+                (
+                    "value",
+                    '"^(?:no need to (?:ask|check|wait|worry|look)(?: (?:anyone|her|him|them|me|around|twice))?|(?:don\'t|do not|no need to) bother asking(?: (?:her|him|them|anyone))?)\\\\s*,\\\\s*(?=[a-z])"',
+                ),
+            ),
+            ("re", ("module", "hltl.grounding.gate")),
+        ),
     ),
     "hltl.grounding._rewrites40r:_pair40r": ("274b63d300dc7e8f", ((), ("one each",), False), ()),
     "hltl.grounding._rewrites40r:_rather40r": ("4595fdba0b090259", ((), ("rather",), False), ()),
@@ -11112,6 +11676,11 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites44s:_opening_sorry44s": (
+        "9076cbddaf82f573",
+        ((), ("sorry",), False),
+        (),
+    ),
     "hltl.grounding._rewrites44s:_over_they_go44s": ("8130d7575e3a1959", ((), (" go",), False), ()),
     "hltl.grounding._rewrites44s:_past_and44s": ("89227e0fedda724e", ((), (" and ",), False), ()),
     "hltl.grounding._rewrites44s:_run_on_pronoun44s": (
@@ -11733,6 +12302,7 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites48:_keeps48": ("6bdc1be42f9a61ce", ((" keeps ",), (), False), ()),
     "hltl.grounding._rewrites48:_like48": ("ad3557c7052da99e", ((), ("like,",), False), ()),
     "hltl.grounding._rewrites48:_purpose48": ("cc252e54db0a4098", ((" to ",), (), False), ()),
+    "hltl.grounding._rewrites48:_she_is48": ("af65fb7d267035dd", (("He", "She"), (), False), ()),
     "hltl.grounding._rewrites48:_stretch48": ("2fc66d6c0f3e3d0a", ((), ("after a",), False), ()),
     "hltl.grounding._rewrites48:_tag48": ("02fde08ce2f9f3b0", ((" not ", "n't "), (), False), ()),
     "hltl.grounding._rewrites48:_want_said48": (
@@ -11843,6 +12413,11 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites49:_could_use49": ("968ea3207f9a6671", ((" after ",), (), False), ()),
+    "hltl.grounding._rewrites49:_for_that49": (
+        "7dca3751c1c746e4",
+        (("for that", "for the job", "for this"), (), False),
+        (),
+    ),
     "hltl.grounding._rewrites49:_grateful49": ("0f28823000f238b5", (("grateful",), (), False), ()),
     "hltl.grounding._rewrites49:_had_nothing49": (
         "4aa7d01922a0b01a",
@@ -11862,6 +12437,11 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites49:_in_way49": ("346d99fa7f34acad", ((" way",), (), False), ()),
     "hltl.grounding._rewrites49:_left49": ("e237dab75b148fe3", ((" left ",), (), False), ()),
+    "hltl.grounding._rewrites49:_midway49": (
+        "94bd2ab25158e3d2",
+        (("Half way ", "Halfway ", "Midway ", "Part way ", "Partway "), (), False),
+        (),
+    ),
     "hltl.grounding._rewrites49:_minutes49": ("77480460f9291440", (("minute",), (), False), ()),
     "hltl.grounding._rewrites49:_objection49": (
         "c4033bf12f4dcad5",
@@ -11883,6 +12463,11 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites49:_sort_out49": ("856d17f34611b4be", (("sorting ",), (), False), ()),
     "hltl.grounding._rewrites49:_thanks_from49": ("3993a0e8e1fc4819", (("With ",), (), False), ()),
+    "hltl.grounding._rewrites49:_theirs49": (
+        "e3f9ef7fc4bf312a",
+        ((" hers", " his"), (), False),
+        (),
+    ),
     "hltl.grounding._rewrites49:_up_from49": ("dab0b54a55558906", ((" up from ",), (), False), ()),
     "hltl.grounding._rewrites49:_what_wants49": ("00503af6f74833ad", ((" what ",), (), False), ()),
     "hltl.grounding._rewrites49:_while_want49": ("c26c0e98789804df", (("while ",), (), False), ()),
@@ -11942,9 +12527,19 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" out", "hand", "ready"), False),
         (),
     ),
+    "hltl.grounding._rewrites49r:_whatever_of49r": (
+        "f0f536ed2657408c",
+        ((), ("any one", "anything", "whatever", "whichever"), False),
+        (),
+    ),
     "hltl.grounding._rewrites49r:_with_one49r": ("6d2e4481064ead86", ((), ("with ",), False), ()),
     "hltl.grounding._rewrites49s:_cleft_reach49s": ("90aa24b73c4f7eb4", ((), ("not",), False), ()),
     "hltl.grounding._rewrites49s:_dont_go49s": ("46908ad10649e173", ((), (" go ",), False), ()),
+    "hltl.grounding._rewrites49s:_go_on49s": (
+        "9909a2feb9ac8858",
+        ((), ("come on", "go on"), False),
+        (),
+    ),
     "hltl.grounding._rewrites49s:_isnt_either49s": (
         "eaf9953e12b496c2",
         (("n't",), (" not ",), False),
@@ -11956,6 +12551,11 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites49s:_let_at49s": ("13ccbb654140b7be", ((), (" at ",), False), ()),
+    "hltl.grounding._rewrites49s:_no_point49s": (
+        "04383ea20229bb5a",
+        ((), ("it's no", "no ", "there", "theres"), False),
+        (),
+    ),
     "hltl.grounding._rewrites49s:_not_touched49s": ("488d728976d22c16", ((), (" be ",), False), ()),
     "hltl.grounding._rewrites49s:_on_top49s": ("8ac719cf54db2c4e", ((), ("on top",), False), ()),
     "hltl.grounding._rewrites49s:_own_other49s": (
@@ -11992,11 +12592,6 @@ GUARDS: dict[str, Entry | str] = {
         "0eb4f5c6c946bb45",
         (("nothing",), (), False),
         (),
-    ),
-    "hltl.grounding._rewrites50:_now_over50": (
-        "56451341ce07bb28",
-        (("now ",), (), False),
-        (("_ASKED50", ("pattern", "^(?:Could|Can|Would|Will|Might|May|Is it|Would it) ", 32)),),
     ),
     "hltl.grounding._rewrites50:_ok_with_you50": (
         "7520dbb981e3d947",
@@ -12132,7 +12727,7 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("n't", "never", "not"), False),
         (),
     ),
-    "hltl.grounding._rewrites50s:_now_over50s": ("31699eba0f375b1d", ((), ("now",), False), ()),
+    "hltl.grounding._rewrites50s:_now_over50s": ("2bdfd44c18eac56a", ((), ("now",), False), ()),
     "hltl.grounding._rewrites50s:_on_way50s": ("4cc9488c7b43e608", ((), (" way",), False), ()),
     "hltl.grounding._rewrites50s:_purpose_when50s": (
         "245f07b6d8fa8f07",
@@ -12142,6 +12737,229 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites50s:_so_not_that50s": (
         "5537dc6b908ea5db",
         ((), ("so not",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_a_mates51": ("5ba6df920f585b26", (("'s ",), (), False), ()),
+    "hltl.grounding._rewrites51:_after_state51": ("c409b0c12222ba21", (("After ",), (), False), ()),
+    "hltl.grounding._rewrites51:_all_after51": ("2242a042e3a1208e", (("all ",), (), False), ()),
+    "hltl.grounding._rewrites51:_at_the51": ("9f03e34f87cf6c68", (("At ",), (), False), ()),
+    "hltl.grounding._rewrites51:_been51": ("65749fd6ddc30338", (("'s been ",), (), False), ()),
+    "hltl.grounding._rewrites51:_been_needing51": (
+        "90eed2c89e247ec6",
+        (("been needing",), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_being_a51": ("256438f2ef8ab41d", (("being a",), (), False), ()),
+    "hltl.grounding._rewrites51:_both_on51": ("415d29cdc3d60338", ((" both ",), (), False), ()),
+    "hltl.grounding._rewrites51:_bottle_of51": ("bacc235f4e341dfe", ((" of ",), (), False), ()),
+    "hltl.grounding._rewrites51:_clear51": (
+        "900bc41370d5da3c",
+        ((" clean", " clear", " empty", " free", " tidy"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_do_you_think51": (
+        "e7e7891de26d6548",
+        (("D'you ", "Do ", "Would "), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_ever_since51": (
+        "6f0b1fe9ea88aafd",
+        (("Ever ", "Since ", "since "), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_favour51": ("3b1df734663ed8e6", ((" as a ",), (), False), ()),
+    "hltl.grounding._rewrites51:_flagging51": ("69cc2a81fe68b0cb", ((" after ",), (), False), ()),
+    "hltl.grounding._rewrites51:_gloss51": ("81f166b1a096aba7", ((" you",), (), False), ()),
+    "hltl.grounding._rewrites51:_grab_it51": ("1ad48a5a207c156e", ((" so ",), (), False), ()),
+    "hltl.grounding._rewrites51:_i_mean51": ("268ce7a1f87a2f5a", (("I mean",), (), False), ()),
+    "hltl.grounding._rewrites51:_its_ones51": ("ec33553f2486866f", (("It",), (), False), ()),
+    "hltl.grounding._rewrites51:_lend_ours51": ("73c00daf748b2e4b", (("ours",), (), False), ()),
+    "hltl.grounding._rewrites51:_nothing_fancier51": (
+        "b62169374e656f34",
+        (("nothing ",), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_outsider51": (
+        "c08435593a5151c6",
+        ((" asked ", " is ", " needs ", " wants "), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_over_with51": (
+        "947555cb7950e004",
+        ((" over with ",), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_pair51": (
+        "902d7b1c05a11a49",
+        ((" of them", "the pair", "the two"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_proper51": ("903bd6cfdb3eecae", ((" for ",), (), False), ()),
+    "hltl.grounding._rewrites51:_same_as51": ("9ffb2836c126996d", (("same as ",), (), False), ()),
+    "hltl.grounding._rewrites51:_short_a51": ("e1db282ecc961caa", ((" short ",), (), False), ()),
+    "hltl.grounding._rewrites51:_since_clause51": (
+        "7530a5af3341630a",
+        ((" since ",), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_spare51": (
+        "15775c65e7957eb6",
+        (("free", "quiet", "spare"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_star51": ("2c236c45140aa1be", (("f you",), (), False), ()),
+    "hltl.grounding._rewrites51:_thanks_in51": (
+        "00c994f5e3faa1c3",
+        ((" ta", "cheers", "thank"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_the_lass51": (
+        "1661fb32c66beebf",
+        ((" that", " who"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51:_with_apologies51": (
+        "0a432fdce66c937c",
+        (("With ",), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_all_there_is51r": (
+        "0e50f6065ec9d3aa",
+        ((), (" all ", " only "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_any_one_on51r": (
+        "fdc3e32b5e2a6cbf",
+        ((), ("matter which",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_asked_one_of51r": (
+        "98dced6d9f1eecc8",
+        ((), ("of th",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_both_comma51r": (
+        "d5aee992c33a7387",
+        ((), ("both ,", "both,"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_both_of_them51r": (
+        "34c317a97bf1d149",
+        ((), ("both of them",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_clearing51r": (
+        "01aa1d851547a9b0",
+        ((), ("clean", "clear", "empty", "sort", "tidy", "tidying", "wip"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_each_have51r": (
+        "be929e99d1e06328",
+        ((), ("apiece", "each"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_earned51r": (
+        "98ff14b2ff219dff",
+        ((), ("deserved", "earned"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_front_choice51r": (
+        "2c75c30018eec1da",
+        ((), ("any", "either", "whichever"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_had_enough51r": (
+        "05c8fdc6ce28556f",
+        ((), ("enough", "fed up", "fill", "had it", "tired"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_its_the_asked51r": (
+        "10148d79c2c35c40",
+        ((), ("it is the", "it was the", "it's the"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_kept_on51r": (
+        "538fd3d9b2401399",
+        ((), (" it ", " them "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_left_a51r": (
+        "ce2e220207b6b261",
+        ((), (" out", "left"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_likes_both51r": (
+        "847a0570a7090ae1",
+        ((), (" both", "deserv", "earned", "either"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_listed51r": ("7cb20ea7ae508459", ((":",), (), False), ()),
+    "hltl.grounding._rewrites51r:_nobody_sulks51r": (
+        "dc591f11f5bf98be",
+        ((), ("no one", "no-one", "nobody", "of them"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_not_a51r": (
+        "a3c95dd1d43e2b62",
+        ((), ("not a", "not the"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_one_in_here51r": (
+        "83758f39bfe18a1f",
+        ((), ("lone ", "one ", "only ", "single ", "sole "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_one_with51r": (
+        "387ba14c4a5ec950",
+        ((), ("the one ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_only_one51r": ("6faf60749df0fd57", ((), (" one",), False), ()),
+    "hltl.grounding._rewrites51r:_pick_of51r": ("c51c95cacdc68fae", ((), ("pick of",), False), ()),
+    "hltl.grounding._rewrites51r:_she_said_make51r": (
+        "86f372ca79200f35",
+        ((), ("change", "make"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_so_long_as51r": (
+        "6d17110d70711009",
+        ((), ("long as", "provid"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_taking_to51r": ("0a7fcd4c70a8b5b3", ((), (" so ",), False), ()),
+    "hltl.grounding._rewrites51r:_the_one_is51r": (
+        "bcf044dbef4a1458",
+        ((), ("the one",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_they_share51r": (
+        "ee251b65a40b22f9",
+        ((), ("both", "halves", "share", "split", "swap"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_too_warm51r": ("c78140c5837947a1", ((), ("too ",), False), ()),
+    "hltl.grounding._rewrites51r:_why_fix51r": (
+        "6bdb190ab50e43f4",
+        ((",",), (), False),
+        (
+            (
+                "_BACK51R",
+                (
+                    "pattern",
+                    "\\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|actually|i mean|i meant)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites51r:_would_suit51r": (
+        "6f08f7bd82c555c9",
+        ((), ("content", "please", "satisf", "suit"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51r:_yes_again51r": (
+        "33f987015a2bb99a",
+        ((), ("aye", "correct", "right", "yeah", "yep", "yes"), False),
         (),
     ),
     "hltl.grounding.normalise:_people_then_pronoun": (

@@ -59,6 +59,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("(,\\s*(?:and )?then the [a-z]+) (?:the )?same way\\b", 2, True),
+    (
+        "(,\\s*(?:no wait|no|wait|sorry|actually|oh no|hang on))\\s*,\\s*((?:he|she|they)(?:'s|'ve| has| have| is| are)(?: already| just)? [a-z' ]+?)\\s*,\\s*(make (?:it|that)\\b)",
+        2,
+        True,
+    ),
     ("(,\\s*(?:no,\\s*)?to [A-Z][\\w ]*?),\\s*the (?:[a-z]+ ){0,2}[a-z]+\\s*([.!]?)$", 2, True),
     (
         "(,\\s*(?:no|sorry),\\s*[^,]+?),\\s*the [a-z]+ one(?:'s| is) (?:chipped|cracked|dirty|broken|empty|wrong|used|wet|full|too [a-z]+)\\s*([.!]?)$",
@@ -362,6 +367,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("(?<=[.!]\\s)(the [a-z]+(?: [a-z]+)?) likewise(?=\\s*[.!]?$)", 2, True),
     (
         "(?<=[.;!?])\\s*once (?:(?:they|he|she)(?:'ve|'s| have| has)(?: got| been given| had)? (?:them|it|those|that)|that's (?:done|sorted))\\s*,\\s*",
         2,
@@ -476,6 +482,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "(?P<lead>(?:^|(?<=[,;.])\\s*|\\bso |\\band |\\bplease ))(?:pack|send|see) (?P<p>him|her|them|[A-Z][\\w]*(?: [A-Z][\\w]*)?) off with (?P<x>(?:the|both|all) [a-z ,]+?)(?=\\s*[.!]?$)",
+        2,
+        True,
+    ),
+    (
         "(?P<lead>(?:^|(?<=[.!?,]))\\s*)(?:(?:so|and|but|oh)\\s+)?(?:please\\s+)?(?:excuse|forgive|pardon|ignore) (?:the|my|all the|this) (?P<what>[a-z]+(?: [a-z]+)?)(?: (?:on|in|all over|over) (?P<where>everything|the floor|the place|my [a-z]+|me))?\\s*(?=[.!?]|,|$)",
         2,
         True,
@@ -502,6 +513,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "(?P<lead>(?:^|(?<=[.;!?,])\\s*)(?:please,?\\s+)?(?:you\\s+)?)(?P<who>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<what>(?:the|a|an|that|this|those|these|both|both the|my|his|her|their) [a-z][a-z -]*?) (?P<verb>give|hand|pass|bring)(?=\\s*(?:please\\s*)?(?:[,.;!?]|$))",
+        2,
+        True,
+    ),
+    (
+        "(?P<lead>(?:^|(?<=[.;!?,])\\s*|\\b(?:you|to|please) ))run (?P<what>it|them|(?:the|that|this|those|these) [a-z][a-z ]*?)(?P<dir>(?: (?:up|down|over|across|round|along))?) to (?P<where>(?:the )?[a-z]+(?: [a-z]+)?)(?=\\s*(?:[,.;!?]|$|\\s(?:for|please|now)\\b))",
         2,
         True,
     ),
@@ -562,6 +578,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "(?P<lead>^|[.!;]\\s+|,\\s*(?:(?:oh|and|oh and),?\\s+)*)(?P<p>[a-z][\\w ]*?) (?:says|said|reckons|thinks|tells me)(?: that)? (?P<pro>he|she|they)(?P<verb>(?:'d| would) (?:love|like)| wants| needs| fancies)\\b",
+        2,
+        True,
+    ),
+    (
+        "(?P<lead>^|[.!]\\s+|,\\s*)the thing (?P<p>[a-z][\\w ]*?) (?P<v>wants|needs|has been after|'s been after|is after|would like|has asked for|asked for)\\b",
         2,
         True,
     ),
@@ -948,6 +969,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (
+        "(^|,\\s*|\\band\\s+)won't you (?=(?:give|hand|pass|bring|take|send|put|place|move|leave|set|drop|deliver)\\b)",
+        2,
+        True,
+    ),
     ("(^|[.!]\\s*)(?:last|lastly)\\s*[:,]\\s*", 2, True),
     ("(^|[.!]\\s*)thereafter\\s*,\\s*", 2, True),
     ("(^|[.!]\\s+)(?:the )?([a-z ]+?) first,\\s*(the [a-z ]+?)([.!])", 2, True),
@@ -993,6 +1019,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (",?\\s*\\b(?:in |on |at |onto |into )?(?:the )?same place\\b(?=\\s*(?:[,.;!?]|$))", 2, True),
     (
         ",?\\s*\\b(?:much appreciated|(?:i |really )*appreciate it|you'?re (?:a star|an angel|a gem|a lifesaver|the best))\\b",
         2,
@@ -1054,6 +1081,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (",?\\s+(?:rather than|instead of)\\s+(.+?)\\s*([.!]?)$", 2, True),
     (
         ",?\\s+bless (?:him|her|them|'?em)(?:,? the (?:poor )?(?:thing|dear|love|lamb))?(?=\\s*(?:[.!]|$))",
         2,
@@ -1145,6 +1173,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (",\\s*(?:it's|it is|that's|that is) the (?:last|only) one(?: left)?\\s*([.!]?)\\s*$", 2, True),
     (
+        ",\\s*(?:leaving|but leave|but leaving) (?:out|aside) (?P<what>the [a-z ]+?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
         ",\\s*(?:my (?:mistake|bad)|sorry|apologies|whoops|oops)(?:,\\s*([a-z]+))?\\s*([.!]?)$",
         2,
         True,
@@ -1229,7 +1262,9 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (",\\s*either's (fine|ok|okay|good)\\b", 2, True),
     (",\\s*every (?:single |last )?one\\b", 2, True),
+    (",\\s*hereinafter (?:called |referred to as )?['\\\"‘“](?P<name>[a-z ]+)['\\\"’”],", 2, True),
     (
         ",\\s*let me (?:think|see|check|look)(?: (?:at )?(?:my|the) (?:list|notes|sheet|order))?\\s*,\\s*(?=(?:no|sorry|actually)\\b)",
         2,
@@ -1360,6 +1395,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b((?:nurse|doctor|dr|chef|teacher|officer)) ([a-z]+)\\b", 2, True),
     (
         "\\b((?:once|when|after) (?:he|she|they)(?:'s| has| have|'ve)? (?:got|had|taken|received|gotten) (?:them|it|those|that))\\s+(?=(?:give|hand|pass|bring|put|place)\\b)",
+        2,
+        True,
+    ),
+    (
+        "\\b((?:put|place|set|leave|stack|store|move)s? (?:the |a |an |it\\b|them\\b)[\\w ]*?)(?<! over)(?<! right)(?<! out)(?<! up)(?<! down)(?<! back)(?<! in) there\\b",
         2,
         True,
     ),
@@ -1522,6 +1562,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:it|them)\\b", 2, True),
     ("\\b(?:kindly |please )?do the needful,?\\s+and\\s+", 2, True),
     ("\\b(?:many|big|huge) thanks\\b", 2, True),
+    ("\\b(?:middle|mid|sized?)\\b|-size", 2, True),
     (
         "\\b(?:might|could|may|can) ([A-Za-z][\\w ,'-]*?) be (?:conveyed|taken|brought|carried|delivered) to ([A-Za-z][\\w ]*?)(\\s*[.!?]|$)",
         2,
@@ -1739,6 +1780,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "\\b(?P<said>(?:you know|you'll know) (?:the one|which one|which)(?: i mean| i'm on about| i want)?|the one (?:i mean|i'm on about|i'm thinking of)|the usual one)(?=\\s*[.!?,;]?\\s*$)",
+        2,
+        True,
+    ),
+    (
+        "\\b(?P<sorry>sorry),\\s+(?:an?\\s+)?(?:chef|kitchen|workshop|old|bad) habits?(?=\\s*[.!])",
         2,
         True,
     ),
@@ -1975,6 +2021,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b[24] ", 0, True),
     ("\\b[a-z]+(?:-[a-z]+)+\\b", 2, True),
     ("\\b[a-z]{6,9}\\b", 2, True),
+    ("\\ba couple of (?:the )?(?=[a-z]+s\\b)", 2, True),
     ("\\ba couple of (?=(?:things|items|objects)\\b)", 2, True),
     ("\\ba couple of things\\s*,?\\s*namely\\s+(.+?)(?=\\s*[.!]?$)", 2, True),
     ("\\ba single (?=[a-z]+\\b)", 2, True),
@@ -2190,6 +2237,8 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\bthe pair of ([a-z]+s)(?=\\s*,\\s*the\\b)", 2, True),
     ("\\bthe pair of ([a-z]+s)\\b", 2, True),
     ("\\bthe wee ([a-z]+)\\b", 2, True),
+    ("\\bthem all(?= (?:in|on|into|onto|to|over|across|back|up)\\b)", 2, True),
+    ("\\bthem both(?= (?:in|on|into|onto|to|over|across|back|up)\\b)", 2, True),
     ("\\bthem\\b", 2, True),
     ("\\bthen\\b", 2, True),
     ("\\bthings?\\b", 2, True),
@@ -2335,6 +2384,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("\\s*,?\\s*rather than (?P<q>(?:the )?[A-Za-z][\\w ]*?)(?=\\s*(?:[.!;]|$))", 2, True),
     (
         "\\s*,?\\s+before (?:i|we) (?:start|begin|get going|get started|crack on|head off|go|leave)(?: on| with)?(?: (?:this|the|my|our|that) [a-z]+)?(?=\\s*[.!]?$)",
         2,
@@ -2421,6 +2471,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\s*[.!]", 0, True),
+    ("\\s*[.!]?$", 0, True),
     (
         "\\s*[.;,!]\\s*(?:(?:oh|no|sorry|wait|oops|whoops|ah)[,!.]?\\s+)*(?:my (?:mistake|bad|error|fault)|i got (?:it|that) wrong|i made a mistake|wrong (?:person|one))[,.!]?\\s+(?:it's|it is|it should be|it should go|that's|that should be|it goes|they're|they are) (?:for|to|on|in) (.+?)\\s*([.!]?)$",
         2,
@@ -2484,6 +2535,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("\\s+this time(?: round| around)?(?=\\s*(?:[,.;!?]|$))", 2, True),
     ("\\s+with (?:his|her|their|my|your) [a-z]+(?= *(?:[.,;!?]|$))", 2, True),
     ("\\s{2,}", 0, True),
     ("\\w+(?:-\\w+)+", 0, True),
@@ -2594,6 +2646,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(.+?)(?:,\\s*|\\s+[-—–]+\\s*|\\s*\\(\\s*)((?:i mean |i meant |that's |that is |meaning )?(?:the )?[\\w ]+?)(?: i mean| i meant)?\\s*\\)?\\s*([.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(.+?),?\\s*(and|then) do the same for ([a-z][\\w ]*?),? but with (the [a-z ]+?)\\s*([.!]?)$",
         2,
         True,
     ),
@@ -3028,6 +3085,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?P<head>(?:please )?(?:split|share|divide) the [a-z ]+? between [A-Za-z][\\w ]*? and [A-Za-z][\\w ]*?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
         "^(?P<head>(?:put|place|move|set|take|pop|stick) (?:the (?:whole )?lot|everything|all of it|all the things|all of them) (?:on|onto|in|into) the [a-z]+(?: [a-z]+)?)\\s*[,;]\\s*(?:only|but|just|though)\\s+leave (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?(?:(?:,| and| or| nor) (?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)*)(?: where (?:it is|they are)| alone| be| out| off it| as (?:it is|they are))(?P<end>\\s*[.!]?)$",
         2,
         True,
@@ -3198,6 +3260,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?P<p>[A-Za-z][\\w ]*?) (?:may|can|could|gets to|is allowed to) play with (?P<x>(?:one of the|either of the|any of the|the|a|an|either) [a-z]+(?: [a-z]+)??)(?=\\s*(?:[,.!;]|$))",
+        2,
+        True,
+    ),
+    (
         "^(?P<p>[A-Za-z][\\w ]*?) (?P<v>needs|wants|is after|'s after) (?:some |a few |a couple of )?(?:supplies|things|bits|stuff|bits and pieces)(?P<why> for (?:her|his|their|the) [a-z' -]+?)?\\s*:\\s*(?=(?:both )?the )",
         2,
         True,
@@ -3324,6 +3391,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("^([^,]+?),\\s*either (?=the )", 2, True),
     (
         "^([^:]+?) (?:takes|gets|wants|needs|should get|is getting|can have|receives) (one|two|three|four|five|six) (?:things?|items?|objects?)\\s*:\\s*(.+)$",
         2,
@@ -3381,6 +3449,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     (
         "^(either|any) ([a-z]+) (?:will do|would do|is fine|is okay|works) for ([A-Z]\\w*(?: [A-Z]\\w*)?)(\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
+        "^(except(?: for)?|apart from|other than|besides|aside from)\\s+(?:the |all )?(two|three|four|five|six|both) ([a-z]+)\\b",
         2,
         True,
     ),
@@ -3526,6 +3599,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^leave (?:everything|it all|all of it|the lot)(?: else)?(?: (?:on|in) (?P<s>the [a-z]+(?: [a-z]+)?))? (?:where it is|as it is|be|alone)\\s*,?\\s*(?:except|but|apart from|bar|other than|except for|save) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)\\s*(?:,\\s*which|;\\s*(?:that|it)|:\\s*(?:that|it)|,\\s*(?:that|it)) (?P<v>goes|should go|needs to go|wants to go|can go|has to go|is to go) (?P<prep>in|on|into|onto) (?P<t>the [a-z]+(?: [a-z]+)?)(?P<end>\\s*[.!]?)$",
+        2,
+        True,
+    ),
+    (
         "^leave (the [a-z ]+?) (?:where (?:it is|they are)|alone)\\s*,?\\s*(?:and\\s+)?(.+)$",
         2,
         True,
@@ -3549,6 +3627,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("^play on!\\s*", 2, True),
+    ("^sold to ([A-Za-z][\\w ]*?),\\s*(?:one|a|an|the) ([a-z ]+?)(\\s*[.!]?)$", 2, True),
     (
         "^the ([a-z ]+?)'s for the (two|three|four) ([a-z]+s)(?:,\\s*[a-z]+,? and [a-z]+)?(\\s*[.!]?)$",
         2,

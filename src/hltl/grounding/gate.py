@@ -116,6 +116,57 @@ def _needed(items: object, fold: bool) -> _Words:
     return best
 
 
+def _all_needed(items: object, fold: bool) -> list[frozenset[str]]:
+    """Session 51 (12p): every set of words one of which every match of the parsed sequence
+    ``items`` contains (each found as _needed finds its one best: a run of literals, a branch
+    whose every alternative needs a word, a plain group, an atomic group, a repeat at least
+    once), all of them: a match holds a word of each."""
+    sets: list[frozenset[str]] = []
+    run: list[str] = []
+
+    def close() -> None:
+        if run:
+            sets.append(frozenset({"".join(run)}))
+            run.clear()
+
+    for op, av in items:  # type: ignore[attr-defined]
+        if op is _LITERAL and av < 128:
+            run.append(chr(av).lower() if fold else chr(av))
+            continue
+        close()
+        if op is _BRANCH:
+            alts = [_needed(alt, fold) for alt in av[1]]
+            if all(alt is not None for alt in alts):
+                sets.append(frozenset().union(*alts))  # type: ignore[arg-type]
+        elif op is _SUBPATTERN:
+            _group, add, remove, sub = av
+            if not add and not remove:
+                sets += _all_needed(sub, fold)
+        elif op is _ATOMIC:
+            sets += _all_needed(av, fold)
+        elif op in _REPEATS:
+            low, _high, sub = av
+            if low >= 1:
+                sets += _all_needed(sub, fold)
+    close()
+    return [words for words in sets if "" not in words]
+
+
+def _also(parsed: object, fold: bool, first: tuple[str, ...]) -> tuple[tuple[str, ...], ...]:
+    """The sets of words a match needs besides ``first`` (the gate's own), the most selective
+    first, at most four (none that every word of ``first`` holds a word of: asked already;
+    none with a word of one letter)."""
+    out: list[tuple[str, ...]] = []
+    for words in sorted(
+        {_fewest(w) for w in _all_needed(parsed, fold)},
+        key=lambda w: (-min(map(len, w)), len(w), w),
+    ):
+        implied = all(any(w in f for w in words) for f in first)  # first's words hold one
+        if not implied and min(map(len, words)) > 1 and len(out) < 4:
+            out.append(words)  # (a single letter or space is in nearly every text)
+    return tuple(out)
+
+
 def _fewest(words: frozenset[str]) -> tuple[str, ...]:
     """``words`` without those holding another of them ('okay' beside 'ok'): a text holds one
     of what is left where it holds one of ``words``."""
@@ -142,6 +193,10 @@ _GATES: dict[int, dict[str, _Gate]] = {}
 # a compiled pattern's text and flags by the pattern's id (the pattern kept beside them: an id is
 # the pattern's only while it lives; re's hash of a pattern hashes its whole code at each call)
 _SOURCES: dict[int, tuple[re.Pattern[str], str, int]] = {}
+# Session 51 (12p): the other sets of words a pattern's every match needs (a word of each), asked
+# only where the text holds a word of its gate; by flags, then by pattern, only for patterns
+# that have any (a pure function of the pattern: kept while the gate is dropped and made again)
+_ALSO: dict[int, dict[str, tuple[tuple[str, ...], ...]]] = {}
 # each pattern gated, compiled from the parse its words were derived from, until it is first run
 # (then kept by the caller: ``compiled`` hands it over)
 _BUILT: dict[tuple[str, int], re.Pattern[str]] = {}
@@ -162,6 +217,12 @@ def _gate(pattern: str, flags: int, *, build: bool = True) -> _Gate:
         fold = bool(parsed.state.flags & re.IGNORECASE)  # its flags or an inline '(?i)'
         words = _needed(parsed, fold)
         gate = None if words is None else (_fewest(words), fold)
+        also = () if gate is None else _also(parsed, fold, gate[0])
+        if also:
+            kept = _ALSO.setdefault(flags, {})
+            if len(kept) > 16384:
+                kept.clear()
+            kept[pattern] = also
         if build and not flags & _RE_ONLY:
             if len(_BUILT) > 16384:
                 _BUILT.clear()
@@ -240,10 +301,23 @@ def may_match(pattern: str, flags: int, text: str) -> bool:
     words, fold = gate
     if fold:
         text = low
-    for word in words:  # noqa: SIM110  # a loop: any() over a generator costs more
+    for word in words:  # a loop: any() over a generator costs more
         if word in text:
-            return True
-    return False
+            break
+    else:
+        return False
+    # session 51: the other words it needs (a word of each), where it has any
+    also = _ALSO.get(flags)
+    if also is not None:
+        more = also.get(pattern)
+        if more is not None:
+            for need in more:
+                for word in need:
+                    if word in text:
+                        break
+                else:
+                    return False
+    return True
 
 
 @functools.lru_cache(maxsize=16384)

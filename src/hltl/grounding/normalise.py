@@ -564,6 +564,9 @@ from hltl.grounding._rewrites50s import _STEPS50S, _STEPS50S_FIRST
 from hltl.grounding._rewrites51 import _STEPS51, _STEPS51_FIRST
 from hltl.grounding._rewrites51r import _STEPS51R, _STEPS51R_FIRST
 from hltl.grounding._rewrites51s import _STEPS51S, _STEPS51S_FIRST
+from hltl.grounding._rewrites52 import _STEPS52, _STEPS52_FIRST
+from hltl.grounding._rewrites52r import _STEPS52R, _STEPS52R_FIRST
+from hltl.grounding._rewrites52s import _STEPS52S, _STEPS52S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -895,6 +898,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS52S_FIRST,
+    *_STEPS52R_FIRST,
+    *_STEPS52_FIRST,
     *_STEPS51S_FIRST,
     *_STEPS51R_FIRST,
     *_STEPS51_FIRST,
@@ -948,6 +954,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS52R,
     *_STEPS51R,
     *_STEPS50R,
     *_STEPS49R,
@@ -993,6 +1000,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS52S,
     *_STEPS51S,
     *_STEPS50S,
     *_STEPS49S,
@@ -1085,6 +1093,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS52,
     *_STEPS51,
     *_STEPS50,
     *_STEPS49,

@@ -106,6 +106,13 @@ def _plain(value: Any) -> Any:
     return value
 
 
+def _whole(node: ast.expr | None) -> bool:
+    """Whether ``node`` is absent or a whole number written out (a slice's bound)."""
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        node = node.operand
+    return node is None or (isinstance(node, ast.Constant) and type(node.value) is int)
+
+
 class _Unread(Exception):
     """The step's first statements are not of the kinds a guard is read from."""
 
@@ -237,6 +244,42 @@ class _Reader:
             return 1
         raise _Unread("hay")
 
+    def _part(self, node: ast.expr) -> int:
+        """Session 51: as ``_hay``, or a stretch of the text or of it lower-cased: sliced by
+        whole numbers (``text[:40]``), stripped of given characters (``text.rstrip(" .!")``),
+        lower-cased (``text[:8].lower()``; 1 from there on). A word in such a stretch is in the
+        text (lower-cased where the stretch is), and none of these can raise."""
+        with contextlib.suppress(_Unread):
+            return self._hay(node)
+        if (
+            isinstance(node, ast.Subscript)
+            and isinstance(node.slice, ast.Slice)
+            and node.slice.step is None
+            and all(_whole(b) for b in (node.slice.lower, node.slice.upper))
+        ):
+            return self._part(node.value)
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and not node.keywords
+        ):
+            if (
+                node.func.attr in ("strip", "lstrip", "rstrip")
+                and len(node.args) <= 1
+                and all(isinstance(a, ast.Constant) and type(a.value) is str for a in node.args)
+            ):
+                return self._part(node.func.value)
+            if node.func.attr == "lower" and not node.args:
+                self._part(node.func.value)
+                return 1
+        raise _Unread("hay")
+
+    def _said_words(self, node: ast.expr) -> tuple[str, ...]:
+        """Session 51: a string, or a tuple of strings written out (``startswith``'s argument)."""
+        if isinstance(node, ast.Tuple):
+            return tuple(self._str(e) for e in node.elts)
+        return (self._str(node),)
+
     def _words(self, node: ast.expr) -> tuple[str, ...]:
         """The strings of a tuple, list or set written out."""
         if isinstance(node, ast.Tuple | ast.List | ast.Set):
@@ -309,9 +352,11 @@ class _Reader:
             and node.func.attr in ("startswith", "endswith")
             and len(node.args) == 1
             and not node.keywords
-            and isinstance(node.args[0], ast.Constant)
-        ):  # session 49: text.startswith(W) only where W is in the text
-            return frozenset({("in", self._str(node.args[0]), self._hay(node.func.value))})
+            and isinstance(node.args[0], ast.Constant | ast.Tuple)
+        ):  # session 49: text.startswith(W) only where W is in the text (session 51: a
+            # tuple of words, any of them; a stretch of the text, 'text[:8].lower()')
+            fold = self._part(node.func.value)
+            return frozenset(("in", w, fold) for w in self._said_words(node.args[0]))
         helper = self._compared_helper(node, ast.NotEq)
         if helper is not None:
             return helper  # 'helper(text, …) != text': a helper that leaves it as it is
@@ -340,7 +385,15 @@ class _Reader:
             and isinstance(node.ops[0], ast.In)
             and isinstance(node.left, ast.Constant)
         ):
-            return frozenset({("in", self._str(node.left), self._hay(node.comparators[0]))})
+            return frozenset({("in", self._str(node.left), self._part(node.comparators[0]))})
+        if (
+            isinstance(node, ast.Compare)
+            and len(node.ops) == 1
+            and isinstance(node.ops[0], ast.Eq)
+            and isinstance(node.comparators[0], ast.Constant)
+            and type(node.comparators[0].value) is str
+        ):  # session 51: 'text[:5].lower() == "never"' only where the word is in the text
+            return frozenset({("in", node.comparators[0].value, self._part(node.left))})
         if isinstance(node, ast.Call) and self._helper(node.func, _SAID_ANY):
             if len(node.args) != 2 or node.keywords or not self._is_text(node.args[0]):
                 raise _Unread("_said_any")
@@ -389,7 +442,14 @@ class _Reader:
         if isinstance(node, ast.Compare) and len(node.ops) == 1:
             op, right = node.ops[0], node.comparators[0]
             if isinstance(op, ast.NotIn) and isinstance(node.left, ast.Constant):
-                return frozenset({("in", self._str(node.left), self._hay(right))})
+                return frozenset({("in", self._str(node.left), self._part(right))})
+            if (
+                isinstance(op, ast.NotEq)
+                and isinstance(right, ast.Constant)
+                and type(right.value) is str
+            ):
+                # session 51: 'text[:5].lower() != "never"' wherever the word is not in the text
+                return frozenset({("in", right.value, self._part(node.left))})
             if isinstance(op, ast.Is) and isinstance(right, ast.Constant) and right.value is None:
                 # None only where a search finds nothing ('in', any() and _said_any are bools)
                 left = node.left
@@ -711,6 +771,10 @@ class _Reader:
                 # holds now is read
                 self.lowers.discard(target.id)
                 self.matches.pop(target.id, None)
+                if isinstance(stmt.value, ast.IfExp):
+                    # session 51: 'm = P.search(text) if "w" in text.lower() else None'
+                    self.matches[target.id] = self._chosen(stmt.value)
+                    continue
                 try:
                     self._hay(stmt.value)
                 except _Unread:
@@ -736,6 +800,9 @@ class _Reader:
                 # module's patterns each substituted in the text: nothing without their words
                 atoms |= self._loop(stmt)
                 continue
+            if isinstance(stmt, ast.Return) and isinstance(stmt.value, ast.IfExp):
+                atoms |= self._returned(stmt.value)
+                return True
             if isinstance(stmt, ast.Return) and stmt.value is not None:
                 if self._is_text(stmt.value) and atoms:
                     return True
@@ -746,6 +813,37 @@ class _Reader:
                 return True
             raise _Unread("statement")
         return False
+
+    def _chosen(self, node: ast.IfExp) -> frozenset[Atom]:
+        """Session 51: the atoms of ``X if T else None`` bound to a name (a search's match, or
+        None): not None only where its test is true and, where X is a search of the text, X
+        finds something; the fewer atoms of the two. Its test must raise nothing."""
+        if (
+            not isinstance(node.orelse, ast.Constant)
+            or node.orelse.value is not None
+            or not self._safe(node.test)
+        ):
+            raise _Unread("if expression")
+        found = []
+        with contextlib.suppress(_Unread):
+            found.append(self.present(node.test))  # not None only where T is true
+        with contextlib.suppress(_Unread):
+            found.append(self._searches(node.body))  # a match only where X finds something
+        if not found:
+            raise _Unread("if expression")
+        return min(found, key=len)
+
+    def _returned(self, node: ast.IfExp) -> frozenset[Atom]:
+        """Session 51: the atoms of ``return X if T else text`` (the text wherever T is false:
+        T's atoms) or ``return text if T else X`` (wherever T is true: the atoms without which
+        it is). Its test must raise nothing."""
+        if not self._safe(node.test):
+            raise _Unread("if expression")
+        if self._is_text(node.orelse):
+            return self.present(node.test)
+        if self._is_text(node.body):
+            return self.absent(node.test)
+        raise _Unread("if expression")
 
     def _if(self, stmt: ast.If, atoms: set[Atom]) -> bool:
         """Read an ``if`` into ``atoms``: True where it returns the text wherever none of them
@@ -811,8 +909,22 @@ class _Reader:
             return self._safe(node.value)
         if isinstance(node, ast.Tuple) and all(isinstance(e, ast.Constant) for e in node.elts):
             return True
+        with contextlib.suppress(_Unread):
+            self._part(node)
+            return True  # session 51: a stretch of the text (slicing, strip, lower)
         if isinstance(node, ast.Call):
             func = node.func
+            if (
+                isinstance(func, ast.Attribute)
+                and func.attr in ("startswith", "endswith")
+                and len(node.args) == 1
+                and not node.keywords
+                and isinstance(node.args[0], ast.Constant | ast.Tuple)
+            ):
+                with contextlib.suppress(_Unread):
+                    self._part(func.value)
+                    self._said_words(node.args[0])
+                    return True  # session 51: of a stretch of the text, with words written out
             if (
                 isinstance(func, ast.Attribute)
                 and isinstance(func.value, ast.Name)
@@ -905,10 +1017,12 @@ def _words(pattern: str, flags: int) -> tuple[tuple[str, ...], bool] | None:
 
 def derivation() -> str:
     """A digest of how the gate derives a pattern's words (the list keeps the words it derived:
-    where this differs, no guard is used)."""
-    return "".join(
+    where this differs, no guard is used). Session 51: a digest of all five fingerprints (the
+    first 32 letters of them joined had been the first two only)."""
+    said = "".join(
         fingerprint(f) for f in (gate._needed, gate._fewest, gate._best, gate._gate, _words)
-    )[:32]
+    )
+    return hashlib.sha1(said.encode()).hexdigest()[:32]
 
 
 def _holds(fn: Callable[..., Any], deps: tuple[Dep, ...]) -> bool:
