@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites49, offline
+from hltl.grounding import _rewrites49, _rewrites51, offline
 from hltl.grounding import _rewrites51s as r51s
 from hltl.grounding import gate as re
 from hltl.world.scene import Scene, load_scene
@@ -620,7 +620,8 @@ test_sort_those51s_near = SORT_THOSE.test(
 
 
 def test_sort_those51s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    SORT_THOSE.refused_without((r51s._sort_those51s,), monkeypatch)
+    # session 51 (12): its 'the pair of them' rule (_pair51) reads 'sort the pair of them' too
+    SORT_THOSE.refused_without((r51s._sort_those51s, _rewrites51._pair51), monkeypatch)
 
 
 # -- 'P, back from the X, …' in a later sentence (_where_after51s) -----------------------------

@@ -605,6 +605,11 @@ def _run_on51s(text: str, lexicon: Lexicon) -> str:
         if _ids(clause, lexicon, "object"):
             if re.search(r"\b(?:wants?|needs?|would like|'d like) to\b", clause, flags=_F):
                 return text  # "… jess wants to use the hammer": a want to do, no handover
+            if not given:
+                # after a placing, another's want may be why it is put there ("drill on the
+                # bench jess wants (to use) the hammer"): a request of its own only after one
+                # that hands something over
+                return text
             node = _reading(clause, lexicon)
             if node is None:
                 return text
