@@ -4,8 +4,65 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids
+from hltl.grounding.lexicon import Lexicon, first_name_sex36s, person_name, said_sex35s
+from hltl.grounding.tree import Node, tasks
+
+# -- session 52 (12s): a he / she who wants a thing the reading gives to the other sex ----------
+#
+# "Give Alice the cup, not Bob, he wants the apple." read `cup>A & apple>A` (12c's fuzz, session
+# 51): the grammar gave the apple to the one person the request hands to, and session 34's
+# `_named_other_sex34s` let it be, Bob (named in 'not Bob') being one a 'he' may be. A clause whose
+# subject is a he / she and whose verb wants, needs or gets a thing of the scene says who is to
+# have it; a reading handing that thing to a person the scene says is of the other sex (a first
+# name, a title, a word of kin; not the generic 'Person A' / 'Person B', which older parts call
+# 'she' and 'he' either way) is refused. The clause names no other person ('she wants the apple
+# for Tom' hands it to Tom) and no him / her / them.
+_SHE_WANTS52S = re.compile(
+    r"\b(?P<pro>he|she)(?:'s| is| has| was)?(?: (?:just|really|still|also|too|been|got|even))*"
+    r" (?:wants|needs|gets|getting|get|would like|'d like|after|fancies|fancying|asked for|"
+    r"asking for|can have|should get|should have|'ll have|will have|'ll take|will take|takes|"
+    r"is having|'s having|craving|dying for|gasping for|desperate for)\b"
+    r"(?P<rest>[^,.;:!?]*)",
+    _F,
+)
+
+
+def _other_sex52s(pid: str, sex: str, lexicon: Lexicon) -> bool:
+    """Whether the scene says person ``pid`` is not of ``sex`` (a first name of one sex, a title,
+    a word of kin; none of them saying ``sex``)."""
+    said = {first_name_sex36s(pid, lexicon), said_sex35s(pid, lexicon)} - {None}
+    return bool(said) and sex not in said
+
+
+def _she_wants_other52s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 52 (12s): a thing a he / she wants given to the other sex is refused (above)."""
+    low = text.lower()
+    if "he" not in low:  # 'he' and 'she' both hold it
+        return
+    given = [t for t in tasks(node) if t.kind == "deliver"]
+    if not given:
+        return
+    for m in _SHE_WANTS52S.finditer(text):
+        rest = m["rest"]
+        if re.search(r"\b(?:him|her|them|for|to)\b", rest, flags=_F):
+            continue
+        if _ids(rest, lexicon, "human"):
+            continue
+        wanted = _ids(rest, lexicon, "object")
+        if not wanted:
+            continue
+        sex = "m" if m["pro"].lower() == "he" else "f"
+        for task in given:
+            if task.obj in wanted and _other_sex52s(task.target, sex, lexicon):
+                raise GroundingError(
+                    f"{m['pro']!r} wants {rest.strip()!r}, but the reading gives it to "
+                    f"{person_name(task.target, lexicon)}, whom {m['pro']!r} cannot mean: "
+                    "name the person"
+                )
+
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
@@ -14,4 +71,4 @@ _STEPS52S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-51 ones)
 REFUSE52S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-51 ones)
-CHECK52S: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK52S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_she_wants_other52s,)
