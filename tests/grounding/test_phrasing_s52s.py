@@ -15,7 +15,11 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
+    NURSERY,
+    OFFICE,
     WARD,
+    WORKSHOP,
     PhrasingCases,
     assert_case,
     tree,
@@ -62,3 +66,73 @@ test_she_wants_other52s_near = PhrasingCases().test(
     ("Alice wants the cup and she needs the apple.", "cup>A & apple>A", CELL),
     ("Mr Lee wants the jug, he's after the magazine too.", "jug>B & magazine>B", WARD),
 )
+
+
+# -- blind50's negation by kind (each refused on main 41c5ab87) --------------------------------
+
+# 'P doesn't drink from / eat off / use the X' said 'doesn't want the X' (_not_use52s)
+NOT_USE = PhrasingCases()
+test_not_use52s = NOT_USE.test(
+    (
+        "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue.",
+        "mug_blue>C",
+        CELL,
+    ),
+    ("Marco won't eat off the white plate, so give him the blue one.", "plate_blue>A", KITCHEN),
+    ("Mr Lee never drinks from the jug, give him the pills.", "pills>B", WARD),
+    ("Dana doesn't eat from the white cup, hand her the green one.", "cup_green>A", LAB),
+    ("Sam doesn't use the red pen, so give him the blue pen.", "pen_blue>B", OFFICE),
+    ("Mrs Khan won't drink out of the jug, give her the magazine.", "magazine>C", WARD),
+)
+test_not_use52s_near = NOT_USE.test(
+    # a not-wanting alone, or the thing then given to the same person: refused as before
+    ("Carol doesn't drink from the red mug.", None, CELL),
+    ("Carol doesn't drink from the red mug, give it to her.", None, CELL),
+    ("Bob doesn't use the red mug, give him the red mug.", None, CELL),
+)
+
+
+def test_not_use52s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_USE.refused_without((r52s._not_use52s,), monkeypatch)
+
+
+# 'P doesn't need the X after all, …' said without 'after all' (_after_all52s)
+AFTER_ALL = PhrasingCases()
+test_after_all52s = AFTER_ALL.test(
+    (
+        "Jess doesn't need the drill after all, she's only after the torch for the crawl space.",
+        "torch>B",
+        WORKSHOP,
+    ),
+    ("Sam doesn't need the stapler after all; he's after the notepad.", "notebook>B", OFFICE),
+    ("Mia doesn't need the tape after all, she's only after the scanner.", "scanner>A", DEPOT),
+    ("Lily doesn't want the teddy after all, she's only after the bib.", "bib>A", NURSERY),
+)
+test_after_all52s_near = AFTER_ALL.test(
+    # a want that is over, and nothing else asked: refused as before
+    ("Bob doesn't need the apple after all.", None, CELL),
+    ("Bob doesn't need the apple after all, give it to him.", None, CELL),
+)
+
+
+def test_after_all52s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    AFTER_ALL.refused_without((r52s._after_all52s,), monkeypatch)
+
+
+# "Don't put the X out, just the Y for P" said "Not the X, just …" (_dont_just52s)
+DONT_JUST = PhrasingCases()
+test_dont_just52s = DONT_JUST.test(
+    ("Don't put the knife out, just the tongs for Lena.", "tongs>B", KITCHEN),
+    ("Don't fetch the jug, only the magazine for Mrs Khan.", "magazine>C", WARD),
+    ("Don't get the drill out, just the torch for Jess.", "torch>B", WORKSHOP),
+    ("Don't bring the globe over, only the ruler for Noah.", "ruler>B", CLASSROOM),
+)
+test_dont_just52s_near = DONT_JUST.test(
+    # the same thing, or no thing of its own after 'just': refused as before
+    ("Don't bring the apple over, just the apple for Alice.", None, CELL),
+    ("Don't bring the apple over, just give it to Alice.", None, CELL),
+)
+
+
+def test_dont_just52s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DONT_JUST.refused_without((r52s._dont_just52s,), monkeypatch)

@@ -7,6 +7,8 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids
+from hltl.grounding._rewrites44r import _read_without44r
+from hltl.grounding._rewrites51s import _plain51s
 from hltl.grounding.lexicon import Lexicon, first_name_sex36s, person_name, said_sex35s
 from hltl.grounding.tree import Node, tasks
 
@@ -64,8 +66,80 @@ def _she_wants_other52s(text: str, node: Node, lexicon: Lexicon) -> None:
                 )
 
 
+# -- session 52 (12s): blind50's negation by kind -------------------------------------------------
+#
+# "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue." (blind50
+# #120): not using a thing said of its use ('doesn't drink from / eat off / use the X', 'won't
+# drink out of the X'): said "doesn't want the X", which the older rules read with what is wanted
+# instead (a not-wanting alone stays refused).
+_NOT_USE52S = re.compile(
+    r"\b(?:doesn't|does not|won't|will not|wouldn't|would not|never) (?:(?:drink|eat|drinks|eats)"
+    r" (?:from|out of|off)|use|uses) (?=(?:the|that|this|her|his|their) [a-z])",
+    _F,
+)
+
+
+def _not_use52s(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12s): 'P doesn't drink from the X' said 'P doesn't want the X' (above)."""
+    low = text.lower()
+    if "drink" not in low and "eat" not in low and "use" not in low:
+        return text
+    out = _NOT_USE52S.sub("doesn't want ", text)
+    return _plain51s(out, text, lexicon)
+
+
+# "Jess doesn't need the drill after all, she's only after the torch for the crawl space." (#139):
+# 'after all' closing a not-wanting clause says the want is over, which the clause says already:
+# taken off (a not-wanting alone stays refused, as a want that is over).
+_AFTER_ALL52S = re.compile(
+    r"(?P<neg>\b(?:doesn't|does not|don't|do not|won't|no longer|isn't|is not) (?:need|want|"
+    r"after|needs|wants|fancy|have) (?:the|that|this|her|his|their|any) [a-z]+(?: [a-z]+)?)"
+    r" after all(?=\s*[,;])",
+    _F,
+)
+
+
+def _after_all52s(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12s): 'P doesn't need the X after all, …' said without 'after all' (above)."""
+    if "after all" not in text.lower():
+        return text
+    return _plain51s(_AFTER_ALL52S.sub(lambda m: m["neg"], text), text, lexicon)
+
+
+# "Don't put the knife out, just the tongs for Lena." (#136): a negated command whose thing the
+# request after 'just / only' replaces: said "Not the X, just …" (session 42's), when the thing
+# is one of the scene and the request then reads without it.
+_PARTICLE52S = r"(?:out|over|down|up|across|round|back)"
+_DONT_JUST52S = re.compile(
+    r"^(?:please\s+)?(?:don't|do not) (?:put|get|bring|take|fetch|grab|pass|hand|give|set|lay)"
+    rf"(?: {_PARTICLE52S})? (?P<x>the [a-z]+(?: (?!{_PARTICLE52S}\b)[a-z]+)?)"
+    rf"(?: {_PARTICLE52S})?\s*[,;]\s*(?P<rest>(?:just|only) \S.*)$",
+    _F,
+)
+
+
+def _dont_just52s(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12s): "Don't put the X out, just the Y for P" said "Not the X, just …"."""
+    low = text.lower()
+    if "just" not in low and "only" not in low:
+        return text
+    m = _DONT_JUST52S.match(text.strip())
+    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
+        return text
+    if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
+        return text
+    out = f"Not {m['x']}, {m['rest']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
-_STEPS52S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS52S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _not_use52s,
+    _after_all52s,
+    _dont_just52s,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-51 ones)
