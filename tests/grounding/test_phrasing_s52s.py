@@ -136,3 +136,36 @@ test_dont_just52s_near = DONT_JUST.test(
 
 def test_dont_just52s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     DONT_JUST.refused_without((r52s._dont_just52s,), monkeypatch)
+
+
+# -- an opening 'Having given P the X' (_having_done52s, a refusal; 12c's probe) --------------
+#
+# each read on main 41c5ab87 as the participle's task and the request together ('&')
+HAVING = [
+    ("Having given Bob the apple, give Alice the crisps.", CELL),
+    ("Having given Marco the lemon, give Lena the salt.", KITCHEN),
+    ("Having put the apple on the shelf, give Alice the crisps.", CELL),
+    ("Having handed Mr Lee the jug, give Mrs Khan the magazine.", WARD),
+    ("Having put the drill on the bench, pass Kofi the hammer.", WORKSHOP),
+    ("Having given Bob the apple.", CELL),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HAVING)
+def test_having_done52s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_having_done52s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the refusal each is read (the participle's task taken as a request)."""
+    kept = tuple(r for r in offline._REFUSALS if r is not r52s._having_done52s)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
+    for text, scene in HAVING:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: the order said to the robot is read as before
+test_having_done52s_near = PhrasingCases().test(
+    ("Once you've given Bob the apple, give Alice the crisps.", "apple>B ; chips>A", CELL),
+    ("Give Bob the crisps after giving Carol the apple.", "apple>C ; chips>B", CELL),
+)

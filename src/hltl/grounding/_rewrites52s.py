@@ -134,6 +134,33 @@ def _dont_just52s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 52 (12s): an opening perfect participle (12c's probe) ------------------------------
+#
+# "Having given Bob the apple, give Alice the crisps." read `apple>B & chips>A`, and "Having given
+# Bob the apple." `apple>B`: the grammar took the participle for a request. 'Having given …' says
+# the task is done (a report), or at most that it comes first: refused before the read, as a
+# told-as-done task is ("Once you've given Bob the apple, give Alice the crisps." orders them).
+# Only opening a sentence; after a person's sentence ('Bob has earned the crisps, having given
+# Carol the apple.') session 34's `_doer_said34s` refuses it as said of them.
+_HAVING52S = re.compile(
+    r"(?:^|[.;!?]\s+)(?P<h>having (?:given|handed|passed|put|placed|set|taken|brought|fetched|"
+    r"dropped|delivered|popped|stuck|laid|sent|moved|left)\b[^,;.!?]*)",
+    _F,
+)
+
+
+def _having_done52s(text: str, lexicon: Lexicon) -> None:
+    """Session 52 (12s): a sentence opening "Having given P the X" is refused (above)."""
+    if "having" not in text.lower():
+        return
+    m = _HAVING52S.search(text.strip())
+    if m is not None:
+        raise GroundingError(
+            f"{m['h'].strip()!r} tells what is done already: to have it done first, say "
+            "'first …, then …'"
+        )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_use52s,
@@ -143,6 +170,6 @@ _STEPS52S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-51 ones)
-REFUSE52S: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE52S: tuple[Callable[[str, Lexicon], None], ...] = (_having_done52s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-51 ones)
 CHECK52S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_she_wants_other52s,)
