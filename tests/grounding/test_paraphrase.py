@@ -438,7 +438,6 @@ KNOWN_MISSES = frozenset(
         "ethnomusicologist drops by.",
         "Of the boxes, two go on the belt today: the small one and the medium one, the large "
         "stays put.",
-        "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue.",
         "Alice is off crisps this week, so it's the bottle she wants, not those.",
         "Person B's allergic to apples, so let him have everything else you've got.",
         "Person A doesn't eat chips, but any of the other three things will do her, your choice.",
@@ -448,9 +447,7 @@ KNOWN_MISSES = frozenset(
         "Sam can't stand red ink, so one of the other pens for him, you decide which.",
         "Mr Lee has had his medication already; it's only the water jug he's after.",
         "Load the boxes on the belt except for the big one, that's waiting on the pallet.",
-        "Don't put the knife out, just the tongs for Lena.",
         "Lily's bored of the teddy, she wants the red block instead.",
-        "Jess doesn't need the drill after all, she's only after the torch for the crawl space.",
         "Take the apple to Alice, oh hang on, I've muddled my names, Carol's the one who asked.",
         "Crisps for Alice, no, hold your horses, they were Bob's.",
         "Give Person B the chips, hmm, no, he said apple, not chips.",
