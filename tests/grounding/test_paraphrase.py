@@ -248,7 +248,6 @@ KNOWN_MISSES = frozenset(
         "Person A has given up chips for Lent, so the bottle only for her.",
         "Nothing for anyone but Person A: bottle to her.",
         "Person B isn't the one getting the bottle, it's Person A, she's got the long walk home.",
-        "Dana won't drink from the green cup, so take her the white one.",
         "Mr Lee's tablets can wait till the doctor's round; for now just hand him the magazine.",
         "Marco doesn't want the lemon; salt, please.",
         "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
