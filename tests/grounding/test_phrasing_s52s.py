@@ -9,7 +9,7 @@ import pytest
 
 from hltl.grounding import _rewrites52s as r52s
 from hltl.grounding import offline
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -18,12 +18,15 @@ from tests.grounding.helpers import (
     LAB,
     NURSERY,
     OFFICE,
+    ROOT,
     WARD,
     WORKSHOP,
     PhrasingCases,
     assert_case,
     tree,
 )
+
+F42 = load_scene(ROOT / "examples/scenes/4-2.yaml")  # Person A, Person B
 
 # -- a thing a he / she wants given to the other sex (_she_wants_other52s, a check) -----------
 #
@@ -169,3 +172,28 @@ test_having_done52s_near = PhrasingCases().test(
     ("Once you've given Bob the apple, give Alice the crisps.", "apple>B ; chips>A", CELL),
     ("Give Bob the crisps after giving Carol the apple.", "apple>C ; chips>B", CELL),
 )
+
+
+# "P doesn't want any of the K, only the X" said "P wants just the X" (_only_wanted52s)
+ONLY_WANTED = PhrasingCases()
+test_only_wanted52s = ONLY_WANTED.test(
+    (
+        "Person A doesn't want any of the food, only the bottle, she's just had her dinner.",
+        "bottle>A",
+        F42,
+    ),
+    ("Marco doesn't need anything sharp, just the tongs.", "tongs>A", KITCHEN),
+    ("Mr Lee doesn't want anything to read, only the jug.", "jug>B", WARD),
+    ("Priya doesn't need any of the pens, only the stapler.", "stapler>A", OFFICE),
+    ("Lily doesn't want any of the blocks, just the teddy.", "teddy>A", NURSERY),
+)
+test_only_wanted52s_near = ONLY_WANTED.test(
+    # the thing wanted then given to another, a name of two things, the same thing: refused
+    ("Bob doesn't want any of the food, only the cup, give it to Alice.", None, CELL),
+    ("Bob doesn't want any of the food, only the mug.", None, CELL),
+    ("Bob doesn't want the cup, only the cup.", None, CELL),
+)
+
+
+def test_only_wanted52s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ONLY_WANTED.refused_without((r52s._only_wanted52s,), monkeypatch)

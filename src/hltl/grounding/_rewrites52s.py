@@ -134,6 +134,33 @@ def _dont_just52s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# "Person A doesn't want any of the food, only the bottle, she's just had her dinner." (#126):
+# what is not wanted said by a kind or a quantity ('any of the food', 'anything else'), then the
+# one thing wanted after 'only / just': said "P wants just the X" (the 'only' says the rest).
+_ONLY_WANTED52S = re.compile(
+    r"\b(?:doesn't|does not|won't|will not|wouldn't|would not) (?P<v>want|need) "
+    r"(?P<neg>(?:any|anything|a thing|much|the|those|these)\b[^,;.!?]{0,40}?)\s*,\s*"
+    r"(?:only|just) (?P<x>the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!]|$))",
+    _F,
+)
+
+
+def _only_wanted52s(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12s): "P doesn't want any of the K, only the X" said "P wants just the X"."""
+    low = text.lower()
+    if "only" not in low and "just" not in low:
+        return text
+    m = _ONLY_WANTED52S.search(text)
+    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
+        return text
+    if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
+        return text
+    if _ids(m["x"], lexicon) & _ids(m["neg"], lexicon):
+        return text  # "doesn't want the cup, only the cup"
+    out = f"{text[: m.start()]}{m['v']}s just {m['x']}{text[m.end() :]}"
+    return _plain51s(out, text, lexicon)
+
+
 # -- session 52 (12s): an opening perfect participle (12c's probe) ------------------------------
 #
 # "Having given Bob the apple, give Alice the crisps." read `apple>B & chips>A`, and "Having given
@@ -166,6 +193,7 @@ _STEPS52S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_use52s,
     _after_all52s,
     _dont_just52s,
+    _only_wanted52s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52S: tuple[Callable[[str, Lexicon], str], ...] = ()
