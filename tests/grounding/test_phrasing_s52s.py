@@ -184,14 +184,17 @@ test_only_wanted52s = ONLY_WANTED.test(
     ),
     ("Marco doesn't need anything sharp, just the tongs.", "tongs>A", KITCHEN),
     ("Mr Lee doesn't want anything to read, only the jug.", "jug>B", WARD),
-    ("Priya doesn't need any of the pens, only the stapler.", "stapler>A", OFFICE),
-    ("Lily doesn't want any of the blocks, just the teddy.", "teddy>A", NURSERY),
+    ("Sam doesn't need anything to write with, just the stapler.", "stapler>B", OFFICE),
+    ("Tom doesn't need anything heavy, only the tape.", "tape>B", DEPOT),
+    ("Omar doesn't want any of the fruit, only the sponge.", "sponge>B", LAB),
 )
 test_only_wanted52s_near = ONLY_WANTED.test(
     # the thing wanted then given to another, a name of two things, the same thing: refused
     ("Bob doesn't want any of the food, only the cup, give it to Alice.", None, CELL),
     ("Bob doesn't want any of the food, only the mug.", None, CELL),
     ("Bob doesn't want the cup, only the cup.", None, CELL),
+    # what is not wanted names things of the scene: the older rules' (s39l's near sentence)
+    ("Ruth is cold. Mr Lee doesn't need the jug, just the magazine.", None, WARD),
 )
 
 

@@ -135,8 +135,10 @@ def _dont_just52s(text: str, lexicon: Lexicon) -> str:
 
 
 # "Person A doesn't want any of the food, only the bottle, she's just had her dinner." (#126):
-# what is not wanted said by a kind or a quantity ('any of the food', 'anything else'), then the
-# one thing wanted after 'only / just': said "P wants just the X" (the 'only' says the rest).
+# what is not wanted said by a kind or a quantity naming nothing of the scene ('any of the food',
+# 'anything sharp'), then the one thing wanted after 'only / just': said "P wants just the X"
+# (the 'only' says the rest). What names things of the scene ("Bob doesn't want the crisps, only
+# the bottle") is left to the older rules (sessions 31r, 37r, 38r, 39l).
 _ONLY_WANTED52S = re.compile(
     r"\b(?:doesn't|does not|won't|will not|wouldn't|would not) (?P<v>want|need) "
     r"(?P<neg>(?:any|anything|a thing|much|the|those|these)\b[^,;.!?]{0,40}?)\s*,\s*"
@@ -155,8 +157,8 @@ def _only_wanted52s(text: str, lexicon: Lexicon) -> str:
         return text
     if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
         return text
-    if _ids(m["x"], lexicon) & _ids(m["neg"], lexicon):
-        return text  # "doesn't want the cup, only the cup"
+    if _ids(m["neg"], lexicon):
+        return text  # what is not wanted names things of the scene: the older rules' (s31r, s37r)
     out = f"{text[: m.start()]}{m['v']}s just {m['x']}{text[m.end() :]}"
     return _plain51s(out, text, lexicon)
 
