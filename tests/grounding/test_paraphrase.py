@@ -441,6 +441,7 @@ KNOWN_MISSES = frozenset(
         "Person B's allergic to apples, so let him have everything else you've got.",
         "Person A doesn't eat chips, but any of the other three things will do her, your choice.",
         "The cup's not Person A's, it's meant for Person B, so hand it to him.",
+        "Person A doesn't want any of the food, only the bottle, she's just had her dinner.",
         "It's not for me, love, the bottle's for Person A over there.",
         "Sam can't stand red ink, so one of the other pens for him, you decide which.",
         "Mr Lee has had his medication already; it's only the water jug he's after.",

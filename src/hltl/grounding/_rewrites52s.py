@@ -8,9 +8,23 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids
 from hltl.grounding._rewrites44r import _read_without44r
-from hltl.grounding._rewrites51s import _plain51s
+from hltl.grounding._rewrites51s import _plain51s as _plain51
 from hltl.grounding.lexicon import Lexicon, first_name_sex36s, person_name, said_sex35s
 from hltl.grounding.tree import Node, tasks
+
+# a past holding or taking said after the negation ("…, so he had the blue one", "he had the
+# pills"): a report, which the rewrite would leave to be read as a handover (12c 13:43)
+_HELD52S = re.compile(
+    r"\b(?:had|got|took|received|was given|were given|was handed|has had|'s had|has got)\b", _F
+)
+
+
+def _plain51s(out: str, text: str, lexicon: Lexicon) -> str:
+    """Session 51's `_plain51s`, unless ``text`` says a past holding (above): then ``text``."""
+    if out != text and _HELD52S.search(text):
+        return text
+    return _plain51(out, text, lexicon)
+
 
 # -- session 52 (12s): a he / she who wants a thing the reading gives to the other sex ----------
 #
@@ -134,35 +148,6 @@ def _dont_just52s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
-# "Person A doesn't want any of the food, only the bottle, she's just had her dinner." (#126):
-# what is not wanted said by a kind or a quantity naming nothing of the scene ('any of the food',
-# 'anything sharp'), then the one thing wanted after 'only / just': said "P wants just the X"
-# (the 'only' says the rest). What names things of the scene ("Bob doesn't want the crisps, only
-# the bottle") is left to the older rules (sessions 31r, 37r, 38r, 39l).
-_ONLY_WANTED52S = re.compile(
-    r"\b(?:doesn't|does not|won't|will not|wouldn't|would not) (?P<v>want|need) "
-    r"(?P<neg>(?:any|anything|a thing|much|the|those|these)\b[^,;.!?]{0,40}?)\s*,\s*"
-    r"(?:only|just) (?P<x>the [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!]|$))",
-    _F,
-)
-
-
-def _only_wanted52s(text: str, lexicon: Lexicon) -> str:
-    """Session 52 (12s): "P doesn't want any of the K, only the X" said "P wants just the X"."""
-    low = text.lower()
-    if "only" not in low and "just" not in low:
-        return text
-    m = _ONLY_WANTED52S.search(text)
-    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
-        return text
-    if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
-        return text
-    if _ids(m["neg"], lexicon):
-        return text  # what is not wanted names things of the scene: the older rules' (s31r, s37r)
-    out = f"{text[: m.start()]}{m['v']}s just {m['x']}{text[m.end() :]}"
-    return _plain51s(out, text, lexicon)
-
-
 # -- session 52 (12s): an opening perfect participle (12c's probe) ------------------------------
 #
 # "Having given Bob the apple, give Alice the crisps." read `apple>B & chips>A`, and "Having given
@@ -195,7 +180,6 @@ _STEPS52S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_use52s,
     _after_all52s,
     _dont_just52s,
-    _only_wanted52s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52S: tuple[Callable[[str, Lexicon], str], ...] = ()
