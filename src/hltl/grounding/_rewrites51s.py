@@ -615,6 +615,8 @@ def _run_on51s(text: str, lexicon: Lexicon) -> str:
                 return text
             given |= {t.target for t in tasks(node) if t.kind == "deliver"}
             continue
+        if _ids(clause, lexicon) - _ids(clause, lexicon, "human"):
+            return text  # a remark naming a surface of the scene ("… hes at the pallet", s39)
         who = given | _ids(clause, lexicon, "human")
         if not any(_fit36(pid, clause, lexicon) for pid in who):
             return text
