@@ -248,7 +248,6 @@ KNOWN_MISSES = frozenset(
         "Person A has given up chips for Lent, so the bottle only for her.",
         "Nothing for anyone but Person A: bottle to her.",
         "Person B isn't the one getting the bottle, it's Person A, she's got the long walk home.",
-        "Dana won't drink from the green cup, so take her the white one.",
         "Mr Lee's tablets can wait till the doctor's round; for now just hand him the magazine.",
         "Marco doesn't want the lemon; salt, please.",
         "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
@@ -362,40 +361,16 @@ KNOWN_MISSES = frozenset(
         "Jess.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
         # blind49 (tuned on in session 51): refusals left at its one measurement (docs/grounding.md)
-        "Right so the apple goes to Alice who's been at the clay pigeon shooting and the crisps "
-        "go to Carol and I reckon that's us.",
-        "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
-        "Could you sort both of those.",
-        "Take the cup to Person B who's the prompter tonight and once that's done the apple to "
-        "Person A too",
         "Person A. Back from the square dance. She needs the bottle. And the cup, she said.",
         "Chips to Person B first since he's got swing dance in ten minutes, bottle to Person A "
         "next, okay.",
         "Person B has been on the dawn chorus walk since five and he's starving so the chips for "
         "him.",
-        "Person A gets the bottle, Person B gets the chips, and the pair of them can get back to "
-        "their warhammer game.",
         "Omar's finished with the sponge, so into the sink with it, and after that the bowl goes "
         "across to him.",
-        "Marco wants the knife he's doing the fish Lena wants the salt.",
-        "Grandad wants the wipes Lily's made a mess with her yoghurt",
         "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
-        "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
-        "Person A's allergic to apples, so give her the cup instead.",
-        "Person A gets the chips, and not Person B, who's had his at the minigolf.",
-        "Forget the cup, it's only the apple Person B's after.",
-        "Person B, being a nurseryman with simple tastes, wants nothing but the chips.",
-        "Don't hold the bottle back from Person A any longer.",
-        "Not on the tray, the sponge, it'll drip; it goes in the sink.",
-        "Priya'll take a pen, just not the red, she's marking.",
-        "Apart from the medium box, which stays put, the boxes go on the belt.",
-        "Don't bother fetching the globe, Noah's after the ruler and nothing else for his scale "
-        "drawing.",
-        "cup to person b who does the bat detecting and apple to person a",
         "person b fancies the bottle after his epee bout cheers",
-        "gloves to mia her hands are freezing on the dock",
-        "put the scissors on the desk zoes done with her terrarium label",
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
         # blind50 (tuned on in session 52): refusals left at its one measurement (docs/grounding.md)
@@ -462,7 +437,6 @@ KNOWN_MISSES = frozenset(
         "ethnomusicologist drops by.",
         "Of the boxes, two go on the belt today: the small one and the medium one, the large "
         "stays put.",
-        "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue.",
         "Alice is off crisps this week, so it's the bottle she wants, not those.",
         "Person B's allergic to apples, so let him have everything else you've got.",
         "Person A doesn't eat chips, but any of the other three things will do her, your choice.",
@@ -472,9 +446,7 @@ KNOWN_MISSES = frozenset(
         "Sam can't stand red ink, so one of the other pens for him, you decide which.",
         "Mr Lee has had his medication already; it's only the water jug he's after.",
         "Load the boxes on the belt except for the big one, that's waiting on the pallet.",
-        "Don't put the knife out, just the tongs for Lena.",
         "Lily's bored of the teddy, she wants the red block instead.",
-        "Jess doesn't need the drill after all, she's only after the torch for the crawl space.",
         "Take the apple to Alice, oh hang on, I've muddled my names, Carol's the one who asked.",
         "Crisps for Alice, no, hold your horses, they were Bob's.",
         "Give Person B the chips, hmm, no, he said apple, not chips.",

@@ -6925,7 +6925,15 @@ def _negation22(text: str, lexicon: Lexicon) -> str:
     def not_other(m: re.Match[str]) -> str:
         kept = f"the {m.group(1)} {m.group(2)}"
         other = _ids(f"the {m.group(4)} {m.group(2)}", lexicon, "object")
-        if _only(kept, lexicon, "object") and len(other) == 1 and other != _ids(kept, lexicon):
+        # session 51 (12s): the other is a K too ("…, and the salt shaker, not the lemon" named
+        # the lemon by 'lemon' alone, and the 'not' was lost: 12c's chains fuzz)
+        kinds = _ids(f"the {m.group(2)}", lexicon, "object")
+        if (
+            _only(kept, lexicon, "object")
+            and len(other) == 1
+            and other != _ids(kept, lexicon)
+            and other | _ids(kept, lexicon) <= kinds
+        ):
             # "The red mug, not the blue, goes to Alice": the subject keeps no comma
             before = out[: m.start()].lower().rstrip()
             subject = before == "the" or before.endswith((". the", "! the", "; the"))

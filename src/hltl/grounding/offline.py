@@ -1674,7 +1674,15 @@ def _held_past36s(sentence: list[Item]) -> tuple[str, str, bool] | None:
     Alice the cup, Bob had the chips." had read cup>A & chips>B): what was, asking nothing."""
     start = 0
     for k, it in enumerate([*sentence, Item("punct", ",", ",")]):
-        if _is(it, ","):
+        # session 51 (12s): or a bare 'and' before another clause's person ("Bob got the apple
+        # and Alice wants the crisps" had read apple>B & chips>A: 12c's fuzz)
+        if _is(it, ",") or (
+            _is(it, "and")
+            and it.text.lower() == "and"
+            and k + 1 < len(sentence)
+            and sentence[k + 1].kind == "ent"
+            and all(r.kind == "human" for r in sentence[k + 1].refs)
+        ):
             said = _held32s(sentence[start:k]) if start > 0 or k < len(sentence) else None
             if said is not None and said[2]:
                 return said
