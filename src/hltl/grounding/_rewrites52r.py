@@ -6,12 +6,12 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _names
+from hltl.grounding._normalise1 import _F, _ids, _names, _reading
 from hltl.grounding._rewrites44r import _agrees44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites51r import _BACK51R, _CUE51R, _one_task51r
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Group, Node, has_choice, tasks
 
 # -- 12c's fuzz: wrong readings of session 51 ---------------------------------------------------
 
@@ -271,6 +271,331 @@ def _who_asked52r(text: str, lexicon: Lexicon) -> str:
     return text if out == text.strip() else out
 
 
+# -- blind50: whichever, one of, each ------------------------------------------------------------
+
+# a share-out by a role the scene's people share, with the kind: "Each student gets a book:",
+# "Both patients get a blanket,", "One blanket apiece for our two patients, so …"
+_EACH_KIND52R = (
+    re.compiled(
+        r"^(?:each|every) (?P<role>[a-z]+) (?:gets|has|can have|is getting|receives|is to have) "
+        r"(?:a|an|one) (?P<kind>[a-z]+)(?: each| apiece)?\s*[:,;]\s*(?:so\s+)?",
+        _F,
+    ),
+    re.compiled(
+        r"^(?:each of|both|all|all of) (?:the |our |both )?(?:two |three )?(?P<role>[a-z]+)s "
+        r"(?:gets?|have|can have|are getting|receive|are to have) (?:a|an|one) (?P<kind>[a-z]+)"
+        r"(?: each| apiece)?\s*[:,;]\s*(?:so\s+)?",
+        _F,
+    ),
+    re.compiled(
+        r"^(?:one|a|an) (?P<kind>[a-z]+) (?:apiece|each) for (?:our|the|both|both of our|both the|"
+        r"all|all our|all the) (?:two |three )?(?P<role>[a-z]+)s\s*[:,;]\s*(?:so\s+)?",
+        _F,
+    ),
+)
+# a list item that is a bare colour: "red to Noah", "blue goes to Mr Lee"
+_BARE52R = re.compiled(
+    r"(?P<pre>^|[,;]\s*(?:and\s+)?|\band\s+)(?P<c>[a-z]+)(?= (?:to|for|goes to|going to|is for|"
+    r"'s for)\b)",
+    _F,
+)
+
+
+def _each_kind52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): a share-out said by a role the scene's people share and the kind ("Each
+    student gets a book: red to Noah, green to Zoe"; "One blanket apiece for our two patients,
+    so blue goes to Mr Lee and the grey one's for Mrs Khan") is its list, a bare colour read as
+    the thing of the kind ("the red book to Noah"): read only when the list hands one thing of
+    the kind to each person of the role and to no one else."""
+    low = text.lower()
+    if "each" not in low and "both" not in low and "apiece" not in low and "every" not in low:
+        return text
+    body = text.strip()
+    for rx in _EACH_KIND52R:
+        m = rx.match(body)
+        if m is not None:
+            break
+    else:
+        return text
+    kind = m["kind"]
+    role = m["role"]
+    people = _ids(role, lexicon, "human")
+    kinds = _ids(kind, lexicon, "object")
+    if len(people) < 2 or not kinds or _ids(role, lexicon) != people:
+        return text
+
+    def bare(b: re.Match[str]) -> str:
+        said = f"the {b['c']} {kind}"
+        one = _ids(said, lexicon, "object")
+        return f"{b['pre']}{said}" if len(one) == 1 and one <= kinds else b.group(0)
+
+    rest = _BARE52R.sub(bare, body[m.end() :])
+    rest = rest[:1].upper() + rest[1:]
+    node = _reading(rest, lexicon)
+    if node is None or has_choice(node):
+        return text
+    got = list(tasks(node))
+    if any(t.kind != "deliver" or t.obj not in kinds for t in got):
+        return text
+    if sorted(t.target for t in got) != sorted(people):
+        return text
+    return rest
+
+
+# "Whichever of the two things you grab first, Person B gets it."
+_GRAB_FIRST52R = re.compiled(
+    r"^(?:whichever|whatever) (?:(?:one )?of (?P<of>the [a-z]+(?: [a-z]+)?)|(?P<x>[a-z]+)) you "
+    r"(?:grab|pick up|get to|lay (?:your )?hands on|find|reach|come across|see|spot|get hold of)"
+    rf" first\s*,\s*(?P<p>{_P46R}) (?:gets|can have|should get|is to have|'s to have|has|takes)"
+    r" (?:it|that one|that)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _grab_first52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "Whichever of the two things you grab first, P gets it" (whatever X you
+    lay hands on first) leaves which to the robot: "Give P one of the two things" (either X),
+    read only as a choice of things for that one person."""
+    if "first" not in text.lower():
+        return text
+    m = _GRAB_FIRST52R.match(text.strip())
+    if m is None:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    if pid is None:
+        return text
+    what = f"one of {m['of']}" if m["of"] else f"either {m['x']}"
+    out = f"Give {m['p']} {what}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or not (isinstance(node, Group) and node.op == "or"):
+        return text
+    got = list(tasks(node))
+    if any(t.kind != "deliver" or t.target != pid for t in got) or len(got) < 2:
+        return text
+    return out
+
+
+# "One of them gets the bottle, whichever of the two is nearer you."
+_ONE_OF_THEM52R = re.compiled(
+    r"^one of (?:them|the two of them|those two|the pair of them|the two) (?P<v>gets|can have|"
+    r"should get|is to get|is getting|has) (?P<x>the [a-z]+(?: [a-z]+)?)\s*,\s*whichever(?: of "
+    r"(?:the two|them|the pair)| one)?(?: is|'s) (?:nearer|closer|nearest|closest|handier|easier"
+    r"|easiest)(?: (?:to )?(?:you|the robot))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_of_them52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "One of them gets the bottle, whichever of the two is nearer you" in a
+    scene of two people is "Either of them gets the bottle": the robot's choice of who (said by
+    the 'whichever … nearer you')."""
+    if "whichever" not in text.lower() or len(lexicon.scene.humans) != 2:
+        return text
+    m = _ONE_OF_THEM52R.match(text.strip())
+    if m is None:
+        return text
+    out = f"Either of them {m['v']} {m['x']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or not (isinstance(node, Group) and node.op == "or"):
+        return text
+    got = list(tasks(node))
+    if len({t.obj for t in got}) != 1 or len({t.target for t in got}) != 2:
+        return text
+    return out
+
+
+# -- blind50: counts and plurals -----------------------------------------------------------------
+
+# a thing said in a list ("the cup", "bottle", "the black pen"), not running into the list's word
+_THING52R = r"(?:the )?[a-z]+(?: (?!(?:along|together|with|and|plus|as|or)\b)[a-z]+)?"
+
+# "…, just the one bag mind.": the count of one said again by its packaging
+_ONE_BAG52R = re.compiled(
+    r"\s*,\s*(?P<only>just|only) the one (?P<n>[a-z]+)(?:\s*,?\s*mind(?: you)?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_bag52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): a handover of one thing closed by "just the one bag (, mind)" (the one
+    packet, roll, dose: a word naming nothing of the scene) is "…, just the one": the count of
+    one said again."""
+    if "the one" not in text.lower():
+        return text
+    m = _ONE_BAG52R.search(text.strip())
+    if m is None or _names(m["n"], lexicon):
+        return text
+    out = f"{text.strip()[: m.start()]}, {m['only']} the one{m['end'] or '.'}"
+    got = _one_task51r(out, lexicon)
+    return out if got is not None and got[0] == "deliver" else text
+
+
+# "the pair of drinking things, so that's the cup plus the bottle"
+_PAIR_OF52R = re.compiled(
+    r"\bthe (?P<n>pair|two|couple|three)(?: of)? (?:[a-z]+ ){1,2}things\s*,\s*(?:so\s+)?"
+    r"(?:that's|that is|that'll be|meaning|i\.e\.)\s+"
+    rf"(?P<x>{_THING52R})(?:\s*,\s*(?P<y>{_THING52R}))?\s+(?:plus|and|along with|with|as well "
+    rf"as)\s+(?P<z>{_THING52R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+_COUNT52R = {"pair": 2, "two": 2, "couple": 2, "three": 3}
+
+
+def _pair_of52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "the pair of drinking things, so that's the cup plus the bottle" names
+    the things it counts: "the cup and the bottle" (read only when the things said are as many
+    as the count, each one thing of the scene)."""
+    if "things" not in text.lower():
+        return text
+    m = _PAIR_OF52R.search(text.strip())
+    if m is None:
+        return text
+    said = [w for w in (m["x"], m["y"], m["z"]) if w]
+    ids = [_ids(w, lexicon, "object") for w in said]
+    if len(said) != _COUNT52R[m["n"].lower()] or any(len(i) != 1 for i in ids):
+        return text
+    if len(set().union(*ids)) != len(said):
+        return text
+    things = [w if w.lower().startswith("the ") else f"the {w}" for w in said]
+    listed = (
+        " and ".join(things) if len(things) == 2 else f"{things[0]}, {things[1]} and {things[2]}"
+    )
+    out = f"{text.strip()[: m.start()]}{listed}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or has_choice(node) or len(list(tasks(node))) != len(said):
+        return text
+    return out
+
+
+# "P can take the both of them off you, bottle along with the chips."
+_BOTH_OFF52R = re.compiled(
+    rf"^(?P<p>{_P46R}) (?:can|could|will|'ll) (?:take|have) (?:the )?both of them"
+    r"(?: off (?:you|your hands))?"
+    rf"\s*,\s*(?P<x>{_THING52R}) (?:along with|together with|and|with|plus|as well as) "
+    rf"(?P<y>{_THING52R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _both_off52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "P can take the both of them off you, bottle along with the chips" is
+    "Give P the bottle and the chips" (the two things said after it, each one of the scene)."""
+    if "both of them" not in text.lower():
+        return text
+    m = _BOTH_OFF52R.match(text.strip())
+    if m is None:
+        return text
+    pid = _person46r(m["p"], lexicon)
+    x, y = (_ids(w, lexicon, "object") for w in (m["x"], m["y"]))
+    if pid is None or len(x) != 1 or len(y) != 1 or x == y:
+        return text
+    things = [w if w.lower().startswith("the ") else f"the {w}" for w in (m["x"], m["y"])]
+    out = f"Give {m['p']} {things[0]} and {things[1]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    got = [] if node is None else list(tasks(node))
+    if len(got) != 2 or any(t.kind != "deliver" or t.target != pid for t in got):
+        return text
+    return out
+
+
+# "The green cup and the white cup are both dirty from the tasting, put the pair in the sink."
+_BOTH_STATE52R = re.compiled(
+    r"^(?P<things>(?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?) are both "
+    r"(?P<why>[^,;.]+?)\s*[,;]\s*(?:so\s+)?(?P<v>put|pop|stick|place|set|leave|pile) (?:the pair|"
+    r"the two(?: of them)?|them(?: both)?|both(?: of them)?|the both of them|the lot)\s+(?P<where>"
+    r"(?:in|on|into|onto) the [a-z]+)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _both_state52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "X and Y are both dirty (from the tasting), put the pair in the sink"
+    is "Put X and Y in the sink": the state (naming nothing else of the scene) says why."""
+    if " both " not in text.lower():
+        return text
+    m = _BOTH_STATE52R.match(text.strip())
+    if m is None:
+        return text
+    why = re.sub(r"\b(?:[a-z]+)'s\b", "", m["why"], flags=_F)
+    if _names(why, lexicon) or _names(m["why"], lexicon) or _NOT52R.search(m["why"]):
+        return text
+    things = m["things"][:1].lower() + m["things"][1:]
+    out = f"Put {things} {m['where']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    got = [] if node is None else list(tasks(node))
+    if len(got) != 2 or any(t.kind != "place" for t in got) or len({t.obj for t in got}) != 2:
+        return text
+    return out
+
+
+_NOT52R = re.compiled(r"\b(?:not|n't|never|no)\b", _F)
+
+# "…, the oenologist's tasting needs the table."
+_NEEDS_THE52R = re.compiled(
+    r"\s*[,;]\s*(?P<who>(?:the |our |my )?[a-z]+(?:'s)?(?: [a-z]+){0,2}) (?:needs|wants|is "
+    r"using|will need|'ll need|has booked|is having) (?P<s>the [a-z]+)(?: (?:for|at) [a-z' ]+)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _needs_the52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): placings closed by "the oenologist's tasting needs the table" (someone
+    or something that is no one of the scene needing a surface the things are not put on: why
+    they are moved) have the remark taken off."""
+    low = text.lower()
+    if not any(w in low for w in ("needs the", "wants the", "using the", "need the", "booked the")):
+        return text
+    m = _NEEDS_THE52R.search(text.strip())
+    if m is None:
+        return text
+    sid = _ids(m["s"], lexicon, "surface")
+    if len(sid) != 1 or _ids(m["s"], lexicon) != sid:
+        return text
+    who = re.sub(r"\b(?:the|our|my)\b", "", m["who"], flags=_F)
+    if _names(who, lexicon) or _NOT52R.search(m["who"]):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" or t.target in sid for t in tasks(node)):
+        return text
+    return out
+
+
+# "Give each of them something to eat: …"
+_GIVE_EACH52R = re.compiled(
+    r"^(?:give|hand|pass|pass out|hand out|share out) (?P<who>each of them|both of them|the two of"
+    r" them|each of you|them each|them both) (?P<what>one thing|something|an item|a thing)"
+    r"(?P<to> to (?:eat|drink|use|read|play with))?\s*(?P<sep>[:,])\s*",
+    _F,
+)
+
+
+def _give_each52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "Give each of them something to eat: apple for P, chips for Q" is
+    session 33's share-out header "Each of them gets something to eat: …" (its count check:
+    one thing to every person of the scene)."""
+    if "each" not in text.lower() and "both" not in text.lower():
+        return text
+    m = _GIVE_EACH52R.match(text.strip())
+    if m is None:
+        return text
+    who = m["who"].lower()
+    if who in ("them each", "each of you"):
+        who = "each of them"
+    elif who == "them both":
+        who = "both of them"
+    verb = "get" if who.startswith("both") or who.startswith("the two") else "gets"
+    out = f"{who[:1].upper()}{who[1:]} {verb} {m['what']}{m['to'] or ''}{m['sep']} "
+    out += text.strip()[m.end() :]
+    node = _reading(out, lexicon)
+    got = [] if node is None else list(tasks(node))
+    humans = sorted(h.id for h in lexicon.scene.humans)
+    if node is None or has_choice(node) or sorted(t.target for t in got) != humans:
+        return text
+    return out if all(t.kind == "deliver" for t in got) else text
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
@@ -283,6 +608,15 @@ _STEPS52R: tuple[Callable[[str, Lexicon], str], ...] = (
     _left_out52r,
     _away_in52r,
     _who_asked52r,
+    _each_kind52r,
+    _grab_first52r,
+    _one_of_them52r,
+    _one_bag52r,
+    _pair_of52r,
+    _both_off52r,
+    _both_state52r,
+    _needs_the52r,
+    _give_each52r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-51 ones)
 REFUSE52R: tuple[Callable[[str, Lexicon], None], ...] = (_too_after52r,)
