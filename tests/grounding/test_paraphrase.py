@@ -439,15 +439,6 @@ KNOWN_MISSES = frozenset(
         "Blue pen to Sam and the notepad to Priya she's got the etymology meeting at two.",
         "Teddy goes down on the play mat where she can reach. After that the bib to Lily, it's "
         "nearly lunch.",
-        "Whichever way you look at it, that bottle's going to Person A in the end, so off you go.",
-        "Whatever bottle's knocking about, let Person A have it, she's parched from the egg "
-        "throwing.",
-        "Person A's stocking up for the windjammer trip, so she's to have every one of the four "
-        "things.",
-        "There's a single cup, which is Person A's, and a single apple, which Person B can have.",
-        "Only the one bottle here and only Person A to give it to, so do that.",
-        "Sweep the whole lot of pens, black, blue and red, into the box before the "
-        "ethnomusicologist drops by.",
         "Of the boxes, two go on the belt today: the small one and the medium one, the large "
         "stays put.",
         "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue.",
@@ -517,9 +508,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind49 (tuned on in session 51)
         # blind50 (tuned on in session 52)
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
-        "Person B said he wanted the chips, or was it the cup? I was only half listening.",
-        "Mia told me one of the boxes goes to Tom but I never noted down which.",
-        "Wipes to Grandad, no, not him, to one of the girls, which one did he say?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

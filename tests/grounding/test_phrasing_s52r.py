@@ -23,6 +23,7 @@ from tests.grounding.helpers import (
     WORKSHOP,
     PhrasingCases,
     assert_case,
+    unclear_tests,
 )
 
 # the example scenes blind50 uses
@@ -598,3 +599,217 @@ test_give_each = GIVE_EACH.test(
 
 def test_give_each_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     GIVE_EACH.refused_without((_rewrites52r._give_each52r,), monkeypatch)
+
+
+# -- blind50: more choices and counts ------------------------------------------------------------
+
+# _in_the_end52r: "that bottle's going to P in the end" (eventually): where, not when
+IN_THE_END = PhrasingCases()
+test_in_the_end = IN_THE_END.test(
+    (
+        "Whichever way you look at it, that bottle's going to Person A in the end, so off you go.",
+        "bottle>A",
+        ONE,
+    ),
+    ("Whichever way you slice it, the apple's going to Carol in the end.", "apple>C", CELL),
+    ("The stapler goes to Sam in the end, so off you go.", "stapler>B", OFFICE),
+    ("Whichever way you look at it, the tongs are going to Lena eventually.", "tongs>B", KITCHEN),
+    # near: a placing; said as done
+    ("The apple's going on the shelf in the end.", None, CELL),
+    ("The apple went to Carol in the end.", None, CELL),
+)
+
+
+def test_in_the_end_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    IN_THE_END.refused_without((_rewrites52r._in_the_end52r,), monkeypatch)
+
+
+# _knocking52r: "Whatever bottle's knocking about, let P have it" (any one of the kind)
+KNOCKING = PhrasingCases()
+test_knocking = KNOCKING.test(
+    (
+        "Whatever bottle's knocking about, let Person A have it, she's parched from the egg "
+        "throwing.",
+        "bottle>A",
+        T12,
+    ),
+    ("Whatever mug's knocking about, let Carol have it.", "mug_red>C | mug_blue>C", CELL),
+    (
+        "Whichever pen's lying around, let Sam have it.",
+        "pen_black>B | pen_blue>B | pen_red>B",
+        OFFICE,
+    ),
+    (
+        "Whatever blanket's kicking about, Mr Lee can have it.",
+        "blanket_blue>B | blanket_grey>B",
+        WARD,
+    ),
+    # near: a placing; a person, not a kind
+    ("Whatever mug's knocking about, put it on the shelf.", None, CELL),
+    ("Whatever Bob's knocking about, let Carol have it.", None, CELL),
+)
+
+
+def test_knocking_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    KNOCKING.refused_without((_rewrites52r._knocking52r,), monkeypatch)
+
+
+# _every_one52r: "every one of the four things" is "all four things"
+EVERY_ONE = PhrasingCases()
+test_every_one = EVERY_ONE.test(
+    (
+        "Person A's stocking up for the windjammer trip, so she's to have every one of the four "
+        "things.",
+        "bottle>A & chips>A & cup>A & apple>A",
+        SQ,
+    ),
+    (
+        "Carol's off to the fair, so she's to have every one of the six things.",
+        "cup>C & bottle>C & chips>C & apple>C & mug_red>C & mug_blue>C",
+        CELL,
+    ),
+    (
+        "Sam's moving desks, so he's to have every one of the five things.",
+        "pen_black>B & notebook>B & pen_blue>B & stapler>B & pen_red>B",
+        OFFICE,
+    ),
+    (
+        "Grandad's babysitting all day, so he's to have every one of the six things.",
+        "block_red>B & wipes>B & teddy>B & beaker>B & block_green>B & bib>B",
+        NURSERY,
+    ),
+    # near: the count is not the scene's
+    ("Sam's moving desks, so he's to have every one of the four things.", None, OFFICE),
+)
+
+
+def test_every_one_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    EVERY_ONE.refused_without((_rewrites52r._every_one52r,), monkeypatch)
+
+
+# _only_one52r: "Only the one bottle here and only P to give it to, so do that"
+ONLY_ONE = PhrasingCases()
+test_only_one = ONLY_ONE.test(
+    ("Only the one bottle here and only Person A to give it to, so do that.", "bottle>A", ONE),
+    ("Just the one bottle here and just Person A to hand it to, so go ahead.", "bottle>A", T12),
+    ("Only the one globe here and only Noah to give it to, so do that.", "globe>B", CLASSROOM),
+    ("There's only the one banana and only Emma to give it to.", "banana>C", LAB),
+    # near: the scene has two mugs
+    ("Only the one mug here and only Carol to give it to, so do that.", None, CELL),
+)
+
+
+def test_only_one_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ONLY_ONE.refused_without((_rewrites52r._only_one52r,), monkeypatch)
+
+
+# _single_which52r: "There's a single cup, which is P's, and a single apple, which Q can have"
+SINGLE_WHICH = PhrasingCases()
+test_single_which = SINGLE_WHICH.test(
+    (
+        "There's a single cup, which is Person A's, and a single apple, which Person B can have.",
+        "cup>A & apple>B",
+        F42,
+    ),
+    (
+        "There's a single globe, which is Zoe's, and a single ruler, which Noah can have.",
+        "globe>C & ruler>B",
+        CLASSROOM,
+    ),
+    (
+        "There's a single banana, which Emma gets, and a single spoon, which is Omar's.",
+        "banana>C & spoon>B",
+        LAB,
+    ),
+    ("There's one stapler, which Sam can have.", "stapler>B", OFFICE),
+    # near: only whose it is; the scene has two mugs
+    ("There's one stapler, which is Sam's.", None, OFFICE),
+    ("There's a single mug, which Carol can have.", None, CELL),
+)
+
+
+def test_single_which_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SINGLE_WHICH.refused_without((_rewrites52r._single_which52r,), monkeypatch)
+
+
+# _whole_lot52r: "Sweep the whole lot of pens, …, into the box" (all the pens; a placing)
+WHOLE_LOT = PhrasingCases()
+test_whole_lot = WHOLE_LOT.test(
+    (
+        "Sweep the whole lot of pens, black, blue and red, into the box before the "
+        "ethnomusicologist drops by.",
+        "pen_black@box & pen_blue@box & pen_red@box",
+        OFFICE,
+    ),
+    ("Scoop up both blocks onto the mat.", "block_red@mat & block_green@mat", NURSERY),
+    ("Put the whole lot of mugs on the shelf.", "mug_red@shelf & mug_blue@shelf", CELL),
+    (
+        "Gather the whole lot of plates onto the rack.",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    # near: a handover
+    ("Sweep the whole lot of pens to Sam.", None, OFFICE),
+)
+
+
+def test_whole_lot_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHOLE_LOT.refused_without((_rewrites52r._whole_lot52r,), monkeypatch)
+
+
+# -- blind50: the speaker does not know which (refused naming every reading) ---------------------
+
+# _or_was_it52r: "…the chips, or was it the cup? I was only half listening."; _one_of_the_girls52r:
+# "…, to one of the girls, which one did he say?"; _never_noted52r: "one of the boxes goes to Tom
+# but I never noted down which"
+UNCLEAR = [
+    (
+        "Person B said he wanted the chips, or was it the cup? I was only half listening.",
+        L44,
+        ("chips", "cup"),
+    ),
+    ("Person A wants the bottle, or was it the chips? Search me.", DUO, ("bottle", "chips")),
+    ("Sam asked for the stapler, or was it the notepad?", OFFICE, ("stapler", "notebook")),
+    (
+        "Zoe asked for the ruler, or was it the glue? I was miles away.",
+        CLASSROOM,
+        ("ruler", "glue"),
+    ),
+    (
+        "Wipes to Grandad, no, not him, to one of the girls, which one did he say?",
+        NURSERY,
+        ("Person A", "Person C"),
+    ),
+    ("The bib goes to one of the girls, which one was it?", NURSERY, ("Person A", "Person C")),
+    ("The jug goes to one of the women, which one was it?", WARD, ("Person A", "Person C")),
+    (
+        "Mia told me one of the boxes goes to Tom but I never noted down which.",
+        DEPOT,
+        ("box_small", "box_medium", "box_large"),
+    ),
+    (
+        "Carol said one of the mugs is for Bob, but I never caught which.",
+        CELL,
+        ("mug_red", "mug_blue"),
+    ),
+    ("Lily wants one of the blocks, I forgot to ask which.", NURSERY, ("block_red", "block_green")),
+]
+test_unclear_names, test_unclear_refusals_are = unclear_tests(
+    UNCLEAR,
+    (
+        _rewrites52r._or_was_it52r,
+        _rewrites52r._one_of_the_girls52r,
+        _rewrites52r._never_noted52r,
+    ),
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # the doubt settled after it (a thing named again): not this refusal's
+        ("Give Bob the crisps, or was it the apple? No, the crisps.", None, CELL),
+    ],
+)
+def test_unclear_near(text: str, want: str | None, scene) -> None:
+    assert_case(text, want, scene)

@@ -10,7 +10,7 @@ from hltl.grounding._normalise1 import _F, _ids, _names, _reading
 from hltl.grounding._rewrites44r import _agrees44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites51r import _BACK51R, _CUE51R, _one_task51r
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.lexicon import Lexicon, person_name
 from hltl.grounding.tree import Group, Node, has_choice, tasks
 
 # -- 12c's fuzz: wrong readings of session 51 ---------------------------------------------------
@@ -596,6 +596,255 @@ def _give_each52r(text: str, lexicon: Lexicon) -> str:
     return out if all(t.kind == "deliver" for t in got) else text
 
 
+# -- blind50: more choices and counts ------------------------------------------------------------
+
+# "that bottle's going to Person A in the end"
+_IN_THE_END52R = re.compiled(
+    rf"\b(?P<v>(?:is|'s|are|'re) going|goes|go|will go|'ll go) to (?P<p>{_P46R})"
+    r"(?P<end> in the end| eventually| at the end of the day| when all's said and done)\b",
+    _F,
+)
+
+
+def _in_the_end52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "that bottle's going to P in the end" (eventually, at the end of the day)
+    says where it goes, not when: "… going to P" (read only as handovers)."""
+    low = text.lower()
+    if " end" not in low and "eventually" not in low and "said and done" not in low:
+        return text
+    m = _IN_THE_END52R.search(text)
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    out = f"{text[: m.start('end')]}{text[m.end('end') :]}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "deliver" for t in tasks(node)):
+        return text
+    return out
+
+
+# "Whatever bottle's knocking about, …"
+_KNOCKING52R = re.compiled(
+    r"^(?:whatever|whichever|any) (?P<x>[a-z]+)(?:'s| is) (?:knocking|lying|kicking|hanging|"
+    r"floating|sitting) (?:about|around)(?: (?:here|in here|the place))?\s*,\s*",
+    _F,
+)
+
+
+def _knocking52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "Whatever bottle's knocking about, let P have it" (lying around) is
+    "Any bottle, let P have it": any one of the kind (read only as handovers)."""
+    if "about" not in text.lower() and "around" not in text.lower():
+        return text
+    m = _KNOCKING52R.match(text.strip())
+    if m is None or not _ids(m["x"], lexicon, "object") or _ids(m["x"], lexicon, "human"):
+        return text
+    out = f"Any {m['x']}, {text.strip()[m.end() :]}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "deliver" for t in tasks(node)):
+        return text
+    return out
+
+
+# "every one of the four things"
+_EVERY_ONE52R = re.compiled(
+    r"\bevery (?:single )?one of the (?P<n>two|three|four|five|six) (?P<x>[a-z]+s)\b", _F
+)
+
+
+def _every_one52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "every one of the four things" is "all four things" ("both" for two):
+    the count check of the older rules then asks the scene."""
+    if "every" not in text.lower():
+        return text
+    m = _EVERY_ONE52R.search(text)
+    if m is None:
+        return text
+    n = m["n"].lower()
+    said = f"both {m['x']}" if n == "two" else f"all {n} {m['x']}"
+    out = f"{text[: m.start()]}{said}{text[m.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "Only the one bottle here and only Person A to give it to, so do that."
+_ONLY_ONE52R = re.compiled(
+    r"^(?:there's )?(?:(?:only|just) the one|(?:only|just) one|a|one|a single|a lone) "
+    r"(?P<x>[a-z]+(?: (?!(?:here|in|going|about|and)\b)[a-z]+)?)(?: here| in here| going| about)?"
+    rf"\s*,?\s*and (?:only|just) (?P<p>{_P46R}) to (?:give|hand|pass|take) it to"
+    r"(?:\s*,?\s*so (?:do that|go on|go ahead|off you go|get to it|crack on))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "Only the one bottle here and only Person A to give it to, so do that"
+    is "Give Person A the bottle" (the thing the scene's one of its kind)."""
+    if " to " not in text.lower() or "it to" not in text.lower():
+        return text
+    m = _ONLY_ONE52R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    if len(_ids(m["x"], lexicon, "object")) != 1 or _ids(m["x"], lexicon, "human"):
+        return text
+    out = f"Give {m['p']} the {m['x']}{m['end'] or '.'}"
+    got = _one_task51r(out, lexicon)
+    return out if got is not None and got[0] == "deliver" else text
+
+
+# "There's a single cup, which is Person A's, and a single apple, which Person B can have."
+_SINGLE_WHICH52R = re.compiled(
+    r"(?:^there's |^there is |(?<=, )and |(?<=; )and |(?<=, )|(?<=; ))(?:a single|one|a lone|"
+    r"just the one|the one) (?P<x>[a-z]+(?: [a-z]+)?), which (?:(?P<c>is|'s) (?P<p>"
+    rf"{_P46R})'s|(?P<q>{_P46R}) (?P<v>can have|gets|is getting|can take|should get|'s to have|"
+    r"is to have))(?=\s*(?:[,;.!]|$))",
+    _F,
+)
+
+
+def _single_which52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "There's a single cup, which is Person A's, and a single apple, which
+    Person B can have" hands each out: "the cup to Person A, and the apple to Person B" (each
+    thing the scene's one; at least one clause says who gets it, not only whose it is)."""
+    low = text.lower()
+    if "which" not in low or ("single" not in low and "one" not in low and "lone" not in low):
+        return text
+    parts = []
+    last = 0
+    gets = False
+    for m in _SINGLE_WHICH52R.finditer(text.strip()):
+        who = m["p"] or m["q"]
+        if _person46r(who, lexicon) is None or len(_ids(m["x"], lexicon, "object")) != 1:
+            return text
+        gets = gets or m["q"] is not None
+        lead = "and " if m.group(0).lower().startswith("and ") else ""
+        parts.append(f"{text.strip()[last : m.start()]}{lead}the {m['x']} to {who}")
+        last = m.end()
+    if not parts or not gets:
+        return text
+    out = "".join(parts) + text.strip()[last:]
+    out = out[:1].upper() + out[1:]
+    node = _reading(out, lexicon)
+    if node is None or has_choice(node) or any(t.kind != "deliver" for t in tasks(node)):
+        return text
+    return out
+
+
+# "Sweep the whole lot of pens, black, blue and red, into the box"
+_WHOLE_LOT52R = re.compiled(r"\bthe (?:whole|entire) lot of (?P<x>[a-z]+s)\b", _F)
+_SWEEP52R = re.compiled(
+    r"^(?P<v>sweep|scoop|gather|bundle|tip|chuck|round up|collect) (?=(?:up )?(?:all |both |the ))",
+    _F,
+)
+
+
+def _whole_lot52r(text: str, lexicon: Lexicon) -> str:
+    """Session 52 (12r): "the whole lot of pens" is "all the pens"; a placing said with "sweep"
+    (scoop, gather, bundle, tip, round up) the things "into the box" is "put": read only as
+    placings."""
+    low = text.lower()
+    if "lot of" not in low and not _SWEEP52R.match(text.strip()):
+        return text
+    out = _WHOLE_LOT52R.sub(lambda m: f"all the {m['x']}", text.strip())
+    v = _SWEEP52R.match(out)
+    if v is not None:
+        out = "Put " + re.sub(r"^up ", "", out[v.end() :], flags=_F)
+    if out == text.strip():
+        return text
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# "Mia told me one of the boxes goes to Tom but I never noted down which."
+_NEVER_NOTED52R = re.compiled(
+    r"\bone of the (?P<x>[a-z]+s)\b[^.?!;]*?(?:,|\bbut|\band)\s*(?:i )?(?:never "
+    r"(?:noted|wrote|jotted|took|caught|heard)|didn't (?:note|write|jot|catch|hear)|forgot to "
+    r"(?:note|write|ask))(?: down| in)? which\b",
+    _F,
+)
+
+
+def _never_noted52r(text: str, lexicon: Lexicon) -> None:
+    """Session 52 (12r): "one of the boxes goes to Tom but I never noted down which" (didn't
+    catch which) does not say which: refused, naming each thing of the kind (the speaker does
+    not know; not the robot's choice)."""
+    if "which" not in text.lower():
+        return
+    m = _NEVER_NOTED52R.search(text)
+    if m is None:
+        return
+    ids = sorted(_ids(m["x"], lexicon, "object"))
+    if len(ids) < 2 or _ids(m["x"], lexicon, "human"):
+        return
+    raise GroundingError(
+        f"{m.group(0).strip()!r}: which of the {m['x']} is meant is not said; it could be "
+        f"{' or '.join(ids)}: name the one"
+    )
+
+
+# "Person B said he wanted the chips, or was it the cup? I was only half listening."
+_OR_WAS_IT52R = re.compiled(
+    r"(?P<x>(?:the |a )?[a-z]+(?: [a-z]+)?)\s*,\s*or (?:was|is) it (?P<y>(?:the |a )?[a-z]+"
+    r"(?: [a-z]+)?)\s*\?(?P<rest>.*)$",
+    _F,
+)
+
+
+def _or_was_it52r(text: str, lexicon: Lexicon) -> None:
+    """Session 52 (12r): "…the chips, or was it the cup?" (the Y said as the speaker's doubt, and
+    nothing after naming a thing of the scene) leaves which open: refused, naming both."""
+    if "or was it" not in text.lower() and "or is it" not in text.lower():
+        return
+    m = _OR_WAS_IT52R.search(text.strip())
+    if m is None or _names(m["rest"], lexicon):
+        return
+    x, y = _names(m["x"], lexicon), _names(m["y"], lexicon)
+    if len(x) != 1 or len(y) != 1:
+        return
+    xs, ys = {r.id for r in x[0].refs}, {r.id for r in y[0].refs}
+    if len(xs) != 1 or len(ys) != 1 or xs == ys:
+        return
+    kinds = {x[0].refs[0].kind, y[0].refs[0].kind}
+    if kinds == {"human"}:
+        said = " or ".join(person_name(i, lexicon) for i in (*xs, *ys))
+    elif kinds == {"object"}:
+        said = " or ".join(f"the {i}" for i in (*xs, *ys))
+    else:
+        return
+    raise GroundingError(
+        f"{m.group(0).strip()!r}: the speaker does not know which is meant, {said}; say which"
+    )
+
+
+# "…, to one of the girls, which one did he say?"
+_ONE_OF_THE_GIRLS52R = re.compiled(
+    r"\bone of the (?P<g>girls|women|ladies|boys|men|lads|gents)\b(?P<rest>[^.!?]*?)\s*,?\s*"
+    r"(?:which (?:one|of them|of the two)? ?(?:did (?:he|she|they) say|was it|did (?:he|she|they) "
+    r"mean)\s*\?|i (?:forget|can't remember|don't know|never caught) which(?: one)?\s*[.!]?)",
+    _F,
+)
+
+
+def _one_of_the_girls52r(text: str, lexicon: Lexicon) -> None:
+    """Session 52 (12r): "…, to one of the girls, which one did he say?" (one of the women, the
+    boys: I forget which) does not say who: refused, naming the people of the scene 'she' (or
+    'he') fits."""
+    low = text.lower()
+    if "one of the" not in low or "which" not in low:
+        return
+    m = _ONE_OF_THE_GIRLS52R.search(text)
+    if m is None:
+        return
+    pro = "she" if m["g"].lower() in ("girls", "women", "ladies") else "he"
+    who = [h.id for h in lexicon.scene.humans if _agrees44r(h.id, pro, lexicon)]
+    if len(who) < 2:
+        return
+    said = " or ".join(person_name(i, lexicon) for i in who)
+    raise GroundingError(
+        f"'one of the {m['g']}' does not say which: it could mean {said}; name the person"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
@@ -617,8 +866,19 @@ _STEPS52R: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_state52r,
     _needs_the52r,
     _give_each52r,
+    _in_the_end52r,
+    _knocking52r,
+    _every_one52r,
+    _only_one52r,
+    _single_which52r,
+    _whole_lot52r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-51 ones)
-REFUSE52R: tuple[Callable[[str, Lexicon], None], ...] = (_too_after52r,)
+REFUSE52R: tuple[Callable[[str, Lexicon], None], ...] = (
+    _too_after52r,
+    _or_was_it52r,
+    _one_of_the_girls52r,
+    _never_noted52r,
+)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-51 ones)
 CHECK52R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
