@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.bench.grounding import parse_expectation
 from hltl.errors import GroundingError
 from hltl.grounding import _rewrites52r
 from hltl.grounding.lexicon import Lexicon
@@ -82,6 +83,18 @@ test_meant_mine = MEANT_MINE.test(
         LAB,
     ),
 )
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        # 'the other one' after the fix: the one taken back, or another? (12c's probe)
+        ("Give Priya the red pen, I mean the black one, my bad. Sam gets the other one.", OFFICE),
+        ("Give Alice the red mug, I mean the blue one, my bad. Bob gets the other one.", CELL),
+    ],
+)
+def test_meant_mine_near(text: str, scene) -> None:
+    assert_case(text, None, scene)
 
 
 def test_meant_mine_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -176,6 +189,52 @@ test_filler_fix = FILLER_FIX.test(
     ("Crisps for Alice, they were Bob's.", None, TWO),
     ("Crisps for Alice, no, hold your horses, they were Bob's but he's had them.", None, TWO),
 )
+
+
+# _one_who52r (a refusal): a correction closed by "P's the one who had it" (holds it already) or
+# "P's the one who asked for the cup" (another thing: added, or instead?); _done_it52r (a check of
+# the reading): a request closed by "Bob's done it" is said as done (12c's probes)
+ONE_WHO = [
+    (
+        "Take the apple to Alice, oh hang on, Carol's the one who asked for the cup.",
+        CELL,
+        "one_who",
+    ),
+    (
+        "Take the apple to Alice, oh hang on, I've muddled my names, Carol's the one who had it.",
+        CELL,
+        "one_who",
+    ),
+    (
+        "Bottle to Bob, no wait, I've mixed them up again, Alice's the one who had it.",
+        TWO,
+        "one_who",
+    ),
+    ("Give Marco the lemon, sorry, Lena's the one who's got it.", KITCHEN, "one_who"),
+    ("The stapler to Sam, no, Priya's the one who wanted the notepad.", OFFICE, "one_who"),
+    (
+        "The red mug and the blue mug are both filthy, put the pair on the shelf, Bob's done it.",
+        CELL,
+        "done_it",
+    ),
+    ("Put the knife on the rack, Marco's done it already.", KITCHEN, "done_it"),
+    ("The globe on the shelf, Zoe's sorted it.", CLASSROOM, "done_it"),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "rule"), ONE_WHO)
+def test_one_who_refused(text: str, scene, rule: str) -> None:
+    assert_case(text, None, scene)
+
+
+@pytest.mark.parametrize(("text", "scene", "rule"), ONE_WHO)
+def test_one_who_rule_is_what_refuses(text: str, scene, rule: str) -> None:
+    lexicon = Lexicon.of(scene)
+    with pytest.raises(GroundingError):
+        if rule == "one_who":
+            _rewrites52r._one_who52r(text, lexicon)
+        else:
+            _rewrites52r._done_it52r(text, parse_expectation("cup@shelf"), lexicon)
 
 
 def test_filler_fix_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -348,6 +407,8 @@ test_each_kind = EACH_KIND.test(
     ("Each student gets a book: red to Noah.", None, CLASSROOM),
     ("Each student gets a book: red to Noah, green to Mrs Ortiz.", None, CLASSROOM),
     ("Each patient gets a blanket: blue to Mr Lee, grey to Mr Lee.", None, WARD),
+    # near: what they hold, not a share-out (12c's probe)
+    ("Both patients have a blanket: grey to Mr Lee, blue to Mrs Khan.", None, WARD),
 )
 
 
@@ -448,16 +509,20 @@ test_pair_of = PAIR_OF.test(
         OFFICE,
     ),
     (
-        "Lily wants the pair of soft things, so that's the teddy and the bib.",
-        "teddy>A & bib>A",
-        NURSERY,
+        "Carol wants the two snacky things, so that's the crisps plus the apple.",
+        "chips>C & apple>C",
+        CELL,
     ),
     (
-        "Give Marco the two cutting things, so that's the knife plus the tongs.",
-        "knife>A & tongs>A",
-        KITCHEN,
+        "Emma wants the pair of drinking things, so that's the green cup plus the white cup.",
+        "cup_green>C & cup_white>C",
+        LAB,
     ),
-    # near: fewer or more things said than counted
+    # near: fewer or more things said than counted; a thing not of the kind; a past want; a
+    # description the rule cannot check (12c's probe)
+    ("Bob wants the pair of drinking things, so that's the cup plus the apple.", None, CELL),
+    ("Bob wanted the pair of drinking things, so that's the cup plus the bottle.", None, CELL),
+    ("Give Marco the two cutting things, so that's the knife plus the tongs.", None, KITCHEN),
     ("Person B wants the pair of drinking things, so that's the cup.", None, L44),
     ("Person B wants the three drinking things, so that's the cup plus the bottle.", None, L44),
 )

@@ -10,7 +10,7 @@ from hltl.grounding._normalise1 import _F, _ids, _names, _reading
 from hltl.grounding._rewrites44r import _agrees44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites51r import _BACK51R, _CUE51R, _one_task51r
-from hltl.grounding.lexicon import Lexicon, person_name
+from hltl.grounding.lexicon import KIND_CATEGORIES, Lexicon, person_name
 from hltl.grounding.tree import Group, Node, has_choice, tasks
 
 # -- 12c's fuzz: wrong readings of session 51 ---------------------------------------------------
@@ -32,7 +32,10 @@ def _meant_mine52r(text: str, lexicon: Lexicon) -> str:
     low = text.lower()
     if "i mean" not in low or "my " not in low:
         return text
-    return _MEANT_MINE52R.sub(lambda m: m["fix"], text)
+    m = _MEANT_MINE52R.search(text)
+    if m is None or re.search(r"\b(?:other|another|rest)\b", text[m.end() :], _F):
+        return text  # "…, my bad. Sam gets the other one.": the one taken back, or another?
+    return f"{text[: m.start()]}{m['fix']}{text[m.end() :]}"
 
 
 # "Whichever of the chips and the apple, Person A is happy with one, Person B too."
@@ -277,13 +280,13 @@ def _who_asked52r(text: str, lexicon: Lexicon) -> str:
 # "Both patients get a blanket,", "One blanket apiece for our two patients, so …"
 _EACH_KIND52R = (
     re.compiled(
-        r"^(?:each|every) (?P<role>[a-z]+) (?:gets|has|can have|is getting|receives|is to have) "
+        r"^(?:each|every) (?P<role>[a-z]+) (?:gets|can have|is getting|receives|is to have) "
         r"(?:a|an|one) (?P<kind>[a-z]+)(?: each| apiece)?\s*[:,;]\s*(?:so\s+)?",
         _F,
     ),
     re.compiled(
         r"^(?:each of|both|all|all of) (?:the |our |both )?(?:two |three )?(?P<role>[a-z]+)s "
-        r"(?:gets?|have|can have|are getting|receive|are to have) (?:a|an|one) (?P<kind>[a-z]+)"
+        r"(?:gets?|can have|are getting|receive|are to have) (?:a|an|one) (?P<kind>[a-z]+)"
         r"(?: each| apiece)?\s*[:,;]\s*(?:so\s+)?",
         _F,
     ),
@@ -432,13 +435,25 @@ def _one_bag52r(text: str, lexicon: Lexicon) -> str:
 
 # "the pair of drinking things, so that's the cup plus the bottle"
 _PAIR_OF52R = re.compiled(
-    r"\bthe (?P<n>pair|two|couple|three)(?: of)? (?:[a-z]+ ){1,2}things\s*,\s*(?:so\s+)?"
+    r"\bthe (?P<n>pair|two|couple|three)(?: of)? (?P<desc>[a-z]+) things\s*,\s*(?:so\s+)?"
     r"(?:that's|that is|that'll be|meaning|i\.e\.)\s+"
     rf"(?P<x>{_THING52R})(?:\s*,\s*(?P<y>{_THING52R}))?\s+(?:plus|and|along with|with|as well "
     rf"as)\s+(?P<z>{_THING52R})(?P<end>\s*[.!]?)$",
     _F,
 )
 _COUNT52R = {"pair": 2, "two": 2, "couple": 2, "three": 3}
+# what the description says of the things, by their categories (a closed list: a description
+# not in it, or a thing not of it, is not read)
+_DESC52R = {
+    **dict.fromkeys(("drinking", "drink", "drinky"), KIND_CATEGORIES["drinks"]),
+    **dict.fromkeys(("eating", "snack", "snacky", "food"), KIND_CATEGORIES["snacks"]),
+    "writing": frozenset({"pen", "pencil", "marker", "crayon"}),
+    "cutting": frozenset({"knife", "scissors"}),
+}
+# a want or a holding said in the past before the count ("Bob wanted the pair of …")
+_PAST52R = re.compiled(
+    r"\b(?:wanted|needed|asked for|was after|were after|had|got|took|was given|received)\b", _F
+)
 
 
 def _pair_of52r(text: str, lexicon: Lexicon) -> str:
@@ -450,11 +465,17 @@ def _pair_of52r(text: str, lexicon: Lexicon) -> str:
     m = _PAIR_OF52R.search(text.strip())
     if m is None:
         return text
+    kinds = _DESC52R.get(m["desc"].lower())
+    if kinds is None or _PAST52R.search(text.strip()[: m.start()]):
+        return text
     said = [w for w in (m["x"], m["y"], m["z"]) if w]
     ids = [_ids(w, lexicon, "object") for w in said]
     if len(said) != _COUNT52R[m["n"].lower()] or any(len(i) != 1 for i in ids):
         return text
     if len(set().union(*ids)) != len(said):
+        return text
+    cats = {o.id: o.category for o in lexicon.scene.objects}
+    if any(cats[i] not in kinds for one in ids for i in one):
         return text
     things = [w if w.lower().startswith("the ") else f"the {w}" for w in said]
     listed = (
@@ -845,6 +866,76 @@ def _one_of_the_girls52r(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# "…, put the pair on the shelf, Bob's done it.": the request said as done
+_DONE_IT52R = re.compiled(
+    rf"[,;.]\s*(?P<who>{_P46R}|she|he|they)(?:'s| has| have|'ve)(?: already| just)? (?:done|"
+    r"sorted|seen to|dealt with) (?:it|them|that|those|the lot)(?: already)?\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _done_it52r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 52 (12r): a request closed by "Bob's done it" (has sorted it, seen to them) is
+    said as done: a reading of it is refused (session 44's `_done_with44s` takes "done it" off
+    as "done with it", which says why things are put away; 12c's probe)."""
+    low = text.lower()
+    if "done" not in low and "sorted" not in low and "seen to" not in low and "dealt" not in low:
+        return
+    m = _DONE_IT52R.search(text)
+    if m is None:
+        return
+    who = m["who"]
+    if who.lower() not in ("she", "he", "they") and _person46r(who, lexicon) is None:
+        return
+    raise GroundingError(
+        f"{m.group(0).strip(' ,;.')!r} says it is done already: it asks for nothing; say what "
+        "is still to do"
+    )
+
+
+# "…, oh hang on, Carol's the one who had it." / "…, Carol's the one who asked for the cup."
+_ONE_WHO52R = re.compiled(
+    rf"[,;.]\s*(?:{_CUE51R})?(?P<p>{_P46R})(?:'s| is) the one (?:who|that)(?:'s| has| had)? "
+    r"(?P<v>had|has|got|took|taken|asked for|wanted|wants|needs|ordered)(?: got)? (?P<x>it|them|"
+    r"(?:the|a|an) [a-z]+(?: [a-z]+)?)\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _one_who52r(text: str, lexicon: Lexicon) -> None:
+    """Session 52 (12r): a correction closed by "P's the one who had it" (has it, took it: P
+    holds it already) or "P's the one who asked for the cup" (another thing than the request's:
+    is the cup added, or does it replace the apple?) leaves what to do open: refused."""
+    low = text.lower()
+    if "the one" not in low or not _BACK51R.search(text):
+        return
+    m = _ONE_WHO52R.search(text)
+    if (
+        m is None
+        or _person46r(m["p"], lexicon) is None
+        or not _BACK51R.search(text[: m.start("p")])
+    ):
+        return
+    v = m["v"].lower().split()[-1]
+    if v in ("had", "has", "got", "took", "taken"):
+        raise GroundingError(
+            f"'{m['p']}'s the one who {m['v']} {m['x']}' says {m['p']} holds it already: say who "
+            "is to get it"
+        )
+    x = m["x"].lower()
+    if x in ("it", "them"):
+        return
+    head = {
+        r.id for it in _names(text[: m.start()], lexicon) for r in it.refs if r.kind == "object"
+    }
+    said = _ids(m["x"], lexicon, "object")
+    if said and head and not said <= head:
+        raise GroundingError(
+            f"'{m['p']}'s the one who {m['v']} {m['x']}' names another thing than the request: "
+            "is it added, or instead? Say the whole request again"
+        )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
@@ -879,6 +970,7 @@ REFUSE52R: tuple[Callable[[str, Lexicon], None], ...] = (
     _or_was_it52r,
     _one_of_the_girls52r,
     _never_noted52r,
+    _one_who52r,
 )
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-51 ones)
-CHECK52R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK52R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_done_it52r,)
