@@ -792,8 +792,8 @@ def _never_noted52r(text: str, lexicon: Lexicon) -> None:
     if "which" not in text.lower():
         return
     m = _NEVER_NOTED52R.search(text)
-    if m is None:
-        return
+    if m is None or re.search(r"\b(?:not|except|apart|other than|or)\b", m.group(0), _F):
+        return  # "one of the pens, not the blue, …", "…, white or blue, …": the older refusals'
     ids = sorted(_ids(m["x"], lexicon, "object"))
     if len(ids) < 2 or _ids(m["x"], lexicon, "human"):
         return
