@@ -167,6 +167,8 @@ test_who_asked = WHO_ASKED.test(
     ("Give Mr Lee the magazine, no, Mrs Khan's the one who wanted.", "magazine>C", WARD),
     # near: no correction cue; a 'who' clause asking something else
     ("Take the apple to Alice, Carol's the one who asked.", None, CELL),
+    # near (session 33's): the person just taken back
+    ("Scanner to Tom. No, not Tom, Tom's the one who asked.", None, DEPOT),
     ("Take the apple to Alice, oh hang on, Carol's the one who asked why.", None, CELL),
 )
 
@@ -488,6 +490,8 @@ test_one_bag = ONE_BAG.test(
     # near: the word names a thing of the scene; a placing
     ("Alice gets the crisps, just the one bottle mind.", None, FIG1),
     ("Put the crisps on the shelf, just the one packet mind.", None, CELL),
+    # near (session 33's): a count word of its own
+    ("Marco needs his knife, just the one pair.", None, KITCHEN),
 )
 
 

@@ -269,6 +269,8 @@ def _who_asked52r(text: str, lexicon: Lexicon) -> str:
         return text
     out = _MUDDLED52R.sub(lambda m: m["cue"].rstrip() + " ", text.strip())
     m = _WHO_ASKED52R.search(out)
+    if m is not None and re.search(rf"\bnot {re.escape(m['p'])}\b", out[: m.start()], _F):
+        return text  # "No, not Tom, Tom's the one who asked.": who is meant?
     if m is not None and _person46r(m["p"], lexicon) is not None:
         out = f"{out[: m.start('who')]}{m['who']} asked for it{m['end']}"
     return text if out == text.strip() else out
@@ -426,12 +428,15 @@ def _one_bag52r(text: str, lexicon: Lexicon) -> str:
     if "the one" not in text.lower():
         return text
     m = _ONE_BAG52R.search(text.strip())
-    if m is None or _names(m["n"], lexicon):
-        return text
+    if m is None or _names(m["n"], lexicon) or m["n"].lower() in _COUNTS52R:
+        return text  # "his knife, just the one pair": a count of its own, not a packet
     out = f"{text.strip()[: m.start()]}, {m['only']} the one{m['end'] or '.'}"
     got = _one_task51r(out, lexicon)
     return out if got is not None and got[0] == "deliver" else text
 
+
+# words that count things of their own ("just the one pair"): not a packet of the one thing
+_COUNTS52R = frozenset({"pair", "set", "couple", "lot", "few", "dozen", "bunch", "load", "pack"})
 
 # "the pair of drinking things, so that's the cup plus the bottle"
 _PAIR_OF52R = re.compiled(
