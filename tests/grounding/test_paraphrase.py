@@ -414,27 +414,6 @@ KNOWN_MISSES = frozenset(
         "Blue pen to Sam and the notepad to Priya she's got the etymology meeting at two.",
         "Teddy goes down on the play mat where she can reach. After that the bib to Lily, it's "
         "nearly lunch.",
-        "Give each of them something to eat: apple for Person A, chips for Person B.",
-        "One of them gets the bottle, whichever of the two is nearer you.",
-        "Whichever way you look at it, that bottle's going to Person A in the end, so off you go.",
-        "Whatever bottle's knocking about, let Person A have it, she's parched from the egg "
-        "throwing.",
-        "Whichever of the two things you grab first, Person B gets it.",
-        "One blanket apiece for our two patients, so blue goes to Mr Lee and the grey one's for "
-        "Mrs Khan.",
-        "Each student gets a book: red to Noah, green to Zoe.",
-        "The two mugs on the shelf please, the oenologist's tasting needs the table.",
-        "Alice gets the crisps, just the one bag mind.",
-        "Person A's stocking up for the windjammer trip, so she's to have every one of the four "
-        "things.",
-        "Person B wants the pair of drinking things, so that's the cup plus the bottle.",
-        "There's a single cup, which is Person A's, and a single apple, which Person B can have.",
-        "Only the one bottle here and only Person A to give it to, so do that.",
-        "Person A can take the both of them off you, bottle along with the chips.",
-        "The green cup and the white cup are both dirty from the oenologist's tasting, put the "
-        "pair in the sink.",
-        "Sweep the whole lot of pens, black, blue and red, into the box before the "
-        "ethnomusicologist drops by.",
         "Of the boxes, two go on the belt today: the small one and the medium one, the large "
         "stays put.",
         "Alice is off crisps this week, so it's the bottle she wants, not those.",
@@ -447,13 +426,6 @@ KNOWN_MISSES = frozenset(
         "Mr Lee has had his medication already; it's only the water jug he's after.",
         "Load the boxes on the belt except for the big one, that's waiting on the pallet.",
         "Lily's bored of the teddy, she wants the red block instead.",
-        "Take the apple to Alice, oh hang on, I've muddled my names, Carol's the one who asked.",
-        "Crisps for Alice, no, hold your horses, they were Bob's.",
-        "Give Person B the chips, hmm, no, he said apple, not chips.",
-        "Stick the bottle down somewhere, no, tell you what, straight into Person A's hand.",
-        "Give Person A the, um, the bottle I meant to say.",
-        "The notepad should go in the box, no, hang on, Priya wants it left out on the desk.",
-        "Leave the hammer on the bench, actually no, lock it away in the locker for the night.",
         "start with the cup for person a and when you've done that the apple's for person b",
         "poor person b's been hanging about for his chips for ages",
         "he's off on a bothy trip so person b wants the bottle and the chips both",
@@ -508,9 +480,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind49 (tuned on in session 51)
         # blind50 (tuned on in session 52)
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
-        "Person B said he wanted the chips, or was it the cup? I was only half listening.",
-        "Mia told me one of the boxes goes to Tom but I never noted down which.",
-        "Wipes to Grandad, no, not him, to one of the girls, which one did he say?",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
