@@ -1,0 +1,141 @@
+"""Session 52 (12p): always-asked regular expressions run only where they can match — the same
+answers on every text, over corpus sentences and mixes of the words the shortcuts ask."""
+
+from __future__ import annotations
+
+import re
+from functools import cache
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hltl.bench.grounding import CORPUS_DIR, load_corpus
+from hltl.grounding import _normalise2, _rewrites51l, gate
+from tests.grounding.helpers import ROOT
+
+
+@cache
+def _sentences() -> tuple[str, ...]:
+    out: list[str] = []
+    for part in ("tuning", "blind22", "blind45", "blind50"):
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        out += [e.text for e in corpus.entries]
+    return tuple(out)
+
+
+# -- gate.first_words ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("pattern", "want"),
+    [
+        (r"ab|cd", {"ab": {"ab"}, "cd": {"cd"}}),
+        (r"sag ?ol|hi", {"sag": {"sag ol"}, "sagol": {"sagol"}, "hi": {"hi"}}),
+        (
+            r"as-?salaamu? alaikum",
+            {"as": {"as-salaam alaikum", "as-salaamu alaikum"}}
+            | {"assalaam": {"assalaam alaikum"}, "assalaamu": {"assalaamu alaikum"}},
+        ),
+        (r"(?:didi )?madloba", {"didi": {"didi madloba"}, "madloba": {"madloba"}}),
+        (r"Merci(?: beaucoup)?", {"merci": {"Merci", "Merci beaucoup"}}),
+    ],
+)
+def test_first_words_spell_out_every_text(pattern: str, want: dict[str, set[str]]) -> None:
+    assert gate.first_words(pattern, re.I) == want
+
+
+@pytest.mark.parametrize(
+    "pattern",
+    [
+        r"ab+",  # a repeat without end: not spelt out
+        r"a[bc]",  # a class
+        r"(?:x)?",  # the empty text
+        r" hi",  # begins with a letter that is not a word letter
+        r"(?=a)ab",  # a look-around
+        "stra\u017fe",  # 'ſ' folds onto 's'
+        "\u212aelvin",  # the Kelvin sign folds onto 'k'
+        r"(?:a|b|c|d)(?:a|b|c|d)(?:a|b|c|d)",  # more texts than the limit (here 16)
+    ],
+)
+def test_first_words_none_where_not_spelt_out(pattern: str) -> None:
+    assert gate.first_words(pattern, re.I, limit=16) is None
+
+
+def test_the_courtesies_are_spelt_out() -> None:
+    by = _normalise2._BY_FIRST24
+    assert by is not None and len(by) > 200
+    assert {"one", "as", "merci", "o"} <= by.keys()
+
+
+@cache
+def _courtesy_words() -> tuple[str, ...]:
+    by = _normalise2._BY_FIRST24 or {}
+    return tuple(sorted({t for texts in by.values() for t in texts}))
+
+
+_SEP = st.sampled_from(["", " ", "-", "'", ",", ".", "x", "_", "1", " one "])
+
+
+@settings(max_examples=400, deadline=None)
+@given(
+    st.one_of(
+        st.sampled_from(_sentences()),
+        st.tuples(
+            st.sampled_from(_sentences()),
+            _SEP,
+            st.sampled_from(_courtesy_words()).map(lambda w: w.upper() if len(w) % 3 else w),
+            _SEP,
+            st.sampled_from(_courtesy_words()),
+        ).map(lambda t: "".join(t)),
+        st.lists(st.sampled_from(_courtesy_words()), min_size=1, max_size=4).map(" ".join),
+    )
+)
+def test_courtesy_found_as_the_whole_list_finds_it(text: str) -> None:
+    want = _normalise2._COURTESY_WORD24.search(text) is not None
+    assert _normalise2._courtesy_word24(text) is want, text
+
+
+def test_courtesy_shortcut_sees_the_corpus_courtesies() -> None:
+    found = [t for t in _sentences() if _normalise2._COURTESY_WORD24.search(t)]
+    assert len(found) > 20
+    assert all(_normalise2._courtesy_word24(t) for t in found)
+    assert not any(_normalise2._courtesy_word24(t) for t in _sentences() if t not in found)
+
+
+# -- _told_done51l: the patterns' words ------------------------------------------------------
+
+_MIX = (
+    *_rewrites51l._WENT_WORDS51L,
+    *_rewrites51l._GAVE_WORDS51L,
+    "you",
+    "You've",
+    "the apple",
+    "Alice",
+    "to",
+    "on the shelf",
+    "'s",
+    "has",
+    "up",
+)
+
+
+@settings(max_examples=400, deadline=None)
+@given(
+    st.one_of(
+        st.sampled_from(_sentences()),
+        st.lists(st.sampled_from(_MIX), min_size=2, max_size=7).map(" ".join),
+        st.tuples(st.sampled_from(_sentences()), st.sampled_from(_MIX)).map(" ".join),
+    )
+)
+def test_a_pattern_whose_words_are_missing_finds_nothing(text: str) -> None:
+    low = text.lower()
+    if not low.isascii():
+        return
+    if not any(w in low for w in _rewrites51l._WENT_WORDS51L):
+        assert _rewrites51l._WENT51L.search(text) is None, text
+    if not any(w in low for w in _rewrites51l._GAVE_WORDS51L):
+        assert _rewrites51l._YOU_GAVE51L.search(text) is None, text
+
+
+# (the reports themselves stay refused: tests/grounding/test_phrasing_s51l.py)
