@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import CORPUS_DIR, load_corpus
-from hltl.grounding import _normalise2, _rewrites51l, gate
+from hltl.grounding import _normalise2, _rewrites41l, _rewrites51l, gate
 from tests.grounding.helpers import ROOT
 
 
@@ -139,3 +139,40 @@ def test_a_pattern_whose_words_are_missing_finds_nothing(text: str) -> None:
 
 
 # (the reports themselves stay refused: tests/grounding/test_phrasing_s51l.py)
+
+
+# -- a lazy subject's pattern asked by its tail first ------------------------------------------
+
+_TAILED = (
+    (_rewrites41l._DONE41L, _rewrites41l._DONE_SAID41L),
+    (_rewrites51l._WENT51L, _rewrites51l._WENT_SAID51L),
+    (_rewrites51l._YOU_GAVE51L, _rewrites51l._GAVE_SAID51L),
+)
+
+
+def test_the_tail_is_the_pattern_without_its_subject() -> None:
+    for full, tail in _TAILED:
+        assert full.pattern == r"(?P<subject>[^,.;:!?]*?)" + tail.pattern
+        assert full.flags == tail.flags
+
+
+@settings(max_examples=400, deadline=None)
+@given(
+    st.one_of(
+        st.sampled_from(_sentences()),
+        st.lists(
+            st.sampled_from((*_MIX, "been", "handed", ",", "Bob")), min_size=2, max_size=8
+        ).map(" ".join),
+        st.tuples(st.sampled_from(_sentences()), st.sampled_from(_MIX)).map(" ".join),
+    )
+)
+def test_where_the_tail_finds_nothing_the_pattern_finds_nothing(text: str) -> None:
+    for full, tail in _TAILED:
+        if tail.search(text) is None:
+            assert not list(full.finditer(text)), (full.pattern[:40], text)
+
+
+def test_the_tail_finds_the_corpus_reports() -> None:
+    found = [t for t in _sentences() if _rewrites51l._WENT51L.search(t)]
+    assert found
+    assert all(_rewrites51l._WENT_SAID51L.search(t) for t in found)
