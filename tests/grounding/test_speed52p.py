@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import CORPUS_DIR, load_corpus
-from hltl.grounding import _normalise2, _rewrites41l, _rewrites51l, gate
+from hltl.grounding import _normalise2, _rewrites41l, _rewrites42s, _rewrites51l, gate
 from tests.grounding.helpers import ROOT
 
 
@@ -176,3 +176,41 @@ def test_the_tail_finds_the_corpus_reports() -> None:
     found = [t for t in _sentences() if _rewrites51l._WENT51L.search(t)]
     assert found
     assert all(_rewrites51l._WENT_SAID51L.search(t) for t in found)
+
+
+# -- _robot_rest42s: the closing rest said at the text's end ------------------------------------
+
+
+def test_spelt_spells_out_every_text() -> None:
+    assert gate.spelt(r"take (?:five|ten)(?: now)?", re.I) == {
+        "take five",
+        "take ten",
+        "take five now",
+        "take ten now",
+    }
+    assert gate.spelt(r"take \w+") is None
+
+
+def test_every_rest_ends_in_a_letter() -> None:
+    ends = _rewrites42s._REST_ENDS42S
+    assert len(ends) > 50
+    assert all(t[-1].isalpha() and t == t.lower() for t in ends)
+
+
+@settings(max_examples=400, deadline=None)
+@given(
+    st.one_of(
+        st.sampled_from(_sentences()),
+        st.tuples(
+            st.sampled_from(_sentences()).map(lambda t: t.rstrip(".!?")),
+            st.sampled_from([", ", " and ", ", then you can ", " ", ","]),
+            st.sampled_from(_rewrites42s._REST_ENDS42S).map(
+                lambda w: w.upper() if len(w) % 2 else w
+            ),
+            st.sampled_from(["", ".", "!", " . ", "!!", "?", " x", "s", "\t"]),
+        ).map(lambda t: "".join(t)),
+    )
+)
+def test_a_rest_the_check_turns_away_is_not_there(text: str) -> None:
+    if _rewrites42s._ROBOT_REST42S.search(text) is not None:
+        assert _rewrites42s._may_rest42s(text), text

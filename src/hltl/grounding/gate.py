@@ -49,6 +49,7 @@ __all__ = [
     "may_match",
     "required",
     "search",
+    "spelt",
     "split",
     "sub",
 ]
@@ -207,6 +208,18 @@ def first_words(pattern: str, flags: int = 0, limit: int = 4096) -> dict[str, se
             end += 1
         out.setdefault(low[:end], set()).add(text)
     return out
+
+
+def spelt(pattern: str, flags: int = 0, limit: int = 4096) -> frozenset[str] | None:
+    """Session 52 (12p): every text ``pattern`` matches, where it is spelt out by literals,
+    alternatives, plain groups and repeats of at most two, and they are at most ``limit``;
+    None where not."""
+    try:
+        parsed = _parser.parse(pattern, flags)
+    except re.error:
+        return None
+    texts = _spelt(list(parsed), limit)
+    return None if texts is None else frozenset(texts)
 
 
 def _spelt(items: list[Any], limit: int) -> set[str] | None:
