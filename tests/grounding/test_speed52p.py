@@ -5,14 +5,26 @@ from __future__ import annotations
 
 import re
 from functools import cache
+from typing import Any
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hltl.bench.grounding import CORPUS_DIR, load_corpus
-from hltl.grounding import _normalise2, _rewrites41l, _rewrites42s, _rewrites51l, gate
-from tests.grounding.helpers import ROOT
+from hltl.errors import GroundingError
+from hltl.grounding import (
+    _normalise2,
+    _normalise3,
+    _rewrites41l,
+    _rewrites42s,
+    _rewrites51l,
+    gate,
+    offline,
+)
+from hltl.grounding.lexicon import Lexicon
+from hltl.world.scene import Scene
+from tests.grounding.helpers import CELL, ROOT, WORKSHOP
 
 
 @cache
@@ -214,3 +226,49 @@ def test_every_rest_ends_in_a_letter() -> None:
 def test_a_rest_the_check_turns_away_is_not_there(text: str) -> None:
     if _rewrites42s._ROBOT_REST42S.search(text) is not None:
         assert _rewrites42s._may_rest42s(text), text
+
+
+# -- _inert_stretches: what is left read first -------------------------------------------------
+
+
+def _reads(text: str, scene: Scene) -> bool:
+    try:
+        offline.parse_instruction(text, scene, Lexicon.of(scene), normalise=False)
+    except GroundingError:
+        return False
+    return True
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give Bob the apple, cheers.", CELL),  # the text reads as it is
+        ("Give Bob the apple, lovely, cheers mate.", CELL),
+        ("cheers, the apple to Bob, ta very much", CELL),
+        ("Right, well, bob the apple", CELL),  # neither reads
+        ("Thanks, the torch, Jess, cheers.", WORKSHOP),
+    ],
+)
+def test_the_text_is_read_only_where_what_is_left_reads(
+    text: str, scene: Scene, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    read: list[str] = []
+    real = offline.parse_instruction
+
+    def counted(said: str, *args: Any, **kwargs: Any) -> Any:
+        read.append(said)
+        return real(said, *args, **kwargs)
+
+    monkeypatch.setattr(offline, "parse_instruction", counted)
+    got = _normalise3._inert_stretches(text, Lexicon.of(scene))
+    monkeypatch.undo()
+    if not read:
+        assert got == text  # nothing inert, or all of it
+        return
+    out = read[0]
+    assert out != text
+    if not _reads(out, scene):
+        assert read == [out] and got == text
+    else:
+        assert read == [out, text]
+        assert got == (text if _reads(text, scene) else out)
