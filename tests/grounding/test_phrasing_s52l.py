@@ -48,6 +48,8 @@ SAYS_HOLDS = [
     ("Alice said Bob had got the apple.", CELL),
     ("Bob has the apple, Alice says.", CELL),
     ("Bob's got the apple, says Alice.", CELL),
+    ("Bob has the apple, Alice says, so give Carol the crisps.", CELL),
+    ("Alice says Bob has the apple in his bag.", CELL),
     ("The coxswain says Bob has the apple.", CELL),
     ("Ruth says Mr Lee has got the magazine.", WARD),
     ("Mr Lee has the jug, the nurse says.", WARD),
@@ -109,6 +111,9 @@ def test_reported_holding_read_without_the_rule(monkeypatch: pytest.MonkeyPatch)
         ("Alice says Bob has to have the apple.", CELL, "apple>B"),
         ("Alice says Bob has asked for the apple.", CELL, "apple>B"),
         ("Alice says give Bob the apple.", CELL, "apple>B"),
+        # a want said with 'has' (12c's probe: lost by the rule's first version)
+        ("Alice says Bob has his eye on the apple.", CELL, "apple>B"),
+        ("Alice says Bob has a craving for the apple.", CELL, "apple>B"),
         ("Bob wants the apple, Alice says.", CELL, "apple>B"),
         ("Give Carol the cup, Alice says.", CELL, "cup>C"),
         ("Priya says Sam wants the notepad.", OFFICE, "notebook>B"),

@@ -61,9 +61,9 @@ def _got_it52l(text: str, lexicon: Lexicon) -> None:
 # "Bob had the apple." asks for nothing), but which the grammar reads as a hand-over once the
 # report is gone. A report of who has or had a thing ('says', 'said', 'reckons', 'thinks',
 # 'tells me', 'told me', 'mentioned'; by anyone: 'Alice', 'the coxswain'), opening the sentence
-# or closing it ("Bob has the apple, Alice says."), is refused as the sentence itself is. Kept: a
-# reported want or need ("Alice says Bob wants the apple", "… Bob has to have the apple", "… Bob
-# has asked for the apple": a request, as on main).
+# or closing it ("Bob has the apple, Alice says(, so …)"), is refused as the sentence itself is.
+# Kept: a reported want or need ("Alice says Bob wants the apple", "… Bob has to have the apple",
+# "… Bob has asked for the apple", "… Bob has his eye on the apple": a request, as on main).
 _HOLDING52L = (
     r"(?P<said>(?P<p>[A-Za-z]+(?: (?!(?:has|had|got|is|was)\b)[A-Za-z]+)?)\s*(?P<verb>['’]s\s+"
     r"got|['’]s\s+had|has\s+got|has\s+had|had\s+got|['’]d\s+got|has|had|got|['’]s\s+been\s+"
@@ -79,11 +79,13 @@ _SAYS_HOLDS52L = re.compiled(
 _HOLDS_SAYS52L = re.compiled(
     rf"^\s*{_HOLDING52L}\s*,\s*(?:(?P<who>(?:(?:the|our|my|a)\s+)?[A-Za-z]+(?: [A-Za-z]+)?)\s+"
     r"(?:says|said|reckons|thinks|tells me|told me)|(?:says|said)\s+(?P<who2>(?:(?:the|our|my|a)"
-    r"\s+)?[A-Za-z]+(?: [A-Za-z]+)?))\s*[.!]*\s*$",
+    r"\s+)?[A-Za-z]+(?: [A-Za-z]+)?))\s*(?:[,.;:!]|$)",
     _F,
 )
 _SAYS_WORDS52L = ("says", "said", "reckons", "thinks", "tells me", "told me", "mentioned")
 _PRONOUN52L = frozenset({"he", "she", "they"})
+# where the thing held ends ("the apple in his bag"; "his eye | on the apple")
+_HEAD_END52L = re.compiled(r"\b(?:on|for|of|to|in|at|with|about|from|over)\b", _F)
 
 
 def _says_holds52l(text: str, lexicon: Lexicon) -> None:
@@ -98,8 +100,10 @@ def _says_holds52l(text: str, lexicon: Lexicon) -> None:
     p = m.group("p")
     if p.lower() not in _PRONOUN52L and not _ids(p, lexicon, "human"):
         return
-    if _ids(p, lexicon, "object") or not _ids(m.group("rest"), lexicon, "object"):
+    if _ids(p, lexicon, "object"):
         return
+    if not _ids(_HEAD_END52L.split(m.group("rest"), maxsplit=1)[0], lexicon, "object"):
+        return  # 'has his eye on the apple', 'has a craving for it': a want, not a holding
     past = m.group("verb").lower() in {"had", "got"} or "had" in m.group("verb").lower()
     whom = "the person" if p.lower() in _PRONOUN52L else p
     raise GroundingError(
