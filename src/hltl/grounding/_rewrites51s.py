@@ -25,7 +25,7 @@ def _plain51s(out: str, text: str, lexicon: Lexicon) -> str:
         return text
     if _reading(out, lexicon, normalise=False) is not None:
         return out
-    from hltl.grounding import normalise  # (normalise imports this module)
+    from hltl.grounding import normalise  # why: normalise imports this module
 
     for again in (normalise.rewritten19, normalise.canonical, normalise.canonical19):
         plain = again(out, lexicon)
