@@ -9,7 +9,13 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _reading
 from hltl.grounding._rewrites44r import _agrees44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
-from hltl.grounding._rewrites51r import _BACK51R, _CUE51R, _one_task51r
+from hltl.grounding._rewrites51r import (
+    _BACK51R,
+    _CUE51R,
+    _one_task51r,
+    one_surface51r,
+    placed_elsewhere51r,
+)
 from hltl.grounding.lexicon import KIND_CATEGORIES, Lexicon, person_name
 from hltl.grounding.tree import Group, Node, has_choice, tasks
 
@@ -575,17 +581,13 @@ def _needs_the52r(text: str, lexicon: Lexicon) -> str:
     m = _NEEDS_THE52R.search(text.strip())
     if m is None:
         return text
-    sid = _ids(m["s"], lexicon, "surface")
-    if len(sid) != 1 or _ids(m["s"], lexicon) != sid:
+    sid = one_surface51r(m["s"], lexicon)
+    if sid is None:
         return text
     who = re.sub(r"\b(?:the|our|my)\b", "", m["who"], flags=_F)
     if _names(who, lexicon) or _NOT52R.search(m["who"]):
         return text
-    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
-    node = _reading(out, lexicon)
-    if node is None or any(t.kind != "place" or t.target in sid for t in tasks(node)):
-        return text
-    return out
+    return placed_elsewhere51r(text, m, sid, lexicon)
 
 
 # "Give each of them something to eat: …"

@@ -12792,7 +12792,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites51r:_clearing51r": (
-        "01aa1d851547a9b0",
+        "bf338d6d05533be2",
         ((), ("clean", "clear", "empty", "sort", "tidy", "tidying", "wip"), False),
         (),
     ),
@@ -13028,7 +13028,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites52r:_needs_the52r": (
-        "6cde61bf664162cf",
+        "ecd6b81ad03bd270",
         ((), ("booked the", "need the", "needs the", "using the", "wants the"), False),
         (),
     ),
