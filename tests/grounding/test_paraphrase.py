@@ -440,6 +440,115 @@ KNOWN_MISSES = frozenset(
         "Is it possible to get the spoon onto the tray before Dana's round?",
         "Would you leave the bib ready on the high chair for lunchtime?",
         "Kofi's asking if he can borrow the big spanner, would you take it over?",
+        # blind51 (tuned on in session 53): refusals left at its one measurement (docs/grounding.md)
+        "Baie dankie in advance, my friend, Person B would really like the chips.",
+        "Right, bit of a ramble, but the bottle, Person A, whenever suits you.",
+        "Whenever's convenient, pal, the packing tape wants to go on the belt.",
+        "Oh, and if it's no bother, the tongs to Lena, she's got the mixologist waiting at the "
+        "pass.",
+        "Sorry to nag, but Zoe still needs the glue stick for her crystal growing poster, could "
+        "you?",
+        "Please, when you've a minute, the torch over to Jess, cheers, the light's awful under "
+        "that van.",
+        "Person A's packing her own lunch box this morning and would be grateful for the cup and "
+        "the apple.",
+        "Person B skipped breakfast and is now eyeing up the chips like a hawk, so they'd better "
+        "go to him.",
+        "If you ask me, the thing Person A has been angling for all along is that bottle.",
+        "Person A has been craving the chips since her shift as a crossing warden ended.",
+        "Person B's gasping, so he ought to have the bottle, and the chips can keep Person A "
+        "going.",
+        "Person A's first in the queue for the bottle, and once she's sorted, Person B's lined up "
+        "for the chips.",
+        "Mr Novak reckons his truffle pasta is crying out for the salt, while Marco's after the "
+        "knife for the fillets.",
+        "Lily's grizzling and reaching out her little arms, she's after her teddy.",
+        "The apple, grab it and pass it along to Carol, and while you're about it, the red mug "
+        "for her as well.",
+        "That bottle's cluttering up the floor, could you lift it onto the shelf?",
+        "Between the two of them it's simple: the cup is what Person A is after, Person B the "
+        "apple.",
+        "Person B's got the chips coming, so take them across, and after those the apple's his as "
+        "well.",
+        "Person A's throat is like sandpaper after the crossing warden shift, so give her the "
+        "bottle.",
+        "That bottle over there, Person A has her eye on it.",
+        "Person B has put in for the chips; as for Person A, the bottle's hers.",
+        "The gloves are Tom's, he left them, bring them to him.",
+        "Bob gets the crisps first. Once he has them, over to Alice goes the cup.",
+        "the bottle needs to go up on the shelf and bob said hed have the crisps so they go to him",
+        "Crisps for Alice, she put her hand up for them. Bob, on the other hand, has picked the "
+        "bottle.",
+        "cup over to person a the apple is for person b oh and the bottle goes to person a as well",
+        "The small box goes on the belt. Stick the medium box on the belt beside it. That's all "
+        "for the belt.",
+        "Lena's got a table of six the white plate to her please and the salt",
+        "Jess has run out of screws. Kofi's going to need the big spanner for the axle. Off you "
+        "go.",
+        "Bob's not bothered about colour, either of the mugs will suit him fine.",
+        "Give Person A whichever of the bottle and the cup is closer.",
+        "Person B says any of the four things will do, he's honestly not fussed which one turns "
+        "up.",
+        "Whichever route you take round the desks, the bottle should finish up in Person A's "
+        "hands.",
+        "Take Person A the bottle, either hand's fine.",
+        "One thing per person: Person A's having the bottle, and the chips are going to Person B.",
+        "Both pens that aren't on the desk, the black and the red, go in the box.",
+        "Pick whichever box you like from the two that aren't on the pallet and set it on the "
+        "belt.",
+        "Marco and Lena each get a plate from you, the white one to Marco and the blue one to "
+        "Lena, service starts soon.",
+        "Bob wants the two things on offer.",
+        "Person B's parched, let him have the two things he can drink out of, that's the cup plus "
+        "the bottle.",
+        "Person A's asking for a bottle, only the one, she won't need more.",
+        "Split them up, would you: Person B takes the bottle, Person A takes the chips.",
+        "The green cup and the white cup have had their lot, stick the pair of them in the sink.",
+        "The plates, both of them, want setting out on the worktop for the specials.",
+        "Lily can have the pair of blocks, the red as well as the green.",
+        "Apart from the mugs, which are staying exactly where they are, everything's going to "
+        "Alice for her picnic.",
+        "It's the cup for Person B, he doesn't want the apple at all.",
+        "One thing for Person A, she doesn't mind what, just so long as it isn't the chips.",
+        "Person A has gone off the bottle, she'd much rather have the cup.",
+        "It isn't Person A who's having the bottle, it's Person B, give it to him.",
+        "Person B's not the one the chips are meant for, it's Person A who gets them.",
+        "Don't put the bottle down, give it straight to Person A.",
+        "The bottle goes to Person A and to nobody else, she put her name on it this morning.",
+        "Omar's the one getting the banana, Emma's already had her fruit.",
+        "Priya wants every pen bar the blue one, so the red and the black go to her.",
+        "Every single thing goes on the belt apart from the work gloves and the barcode scanner.",
+        "Noah's not to have the scissors today, the ruler is what he should get instead.",
+        "Leave the teddy bear, it's the bib Grandad's asking for, Lily's about to have her mashed "
+        "carrot.",
+        "Every tool and bit for Jess, apart from the drill and the torch, she's kitting out her "
+        "van.",
+        "Take the bottle to Alice, oh hang on, it's Bob who wants it, not Alice.",
+        "The crisps up on the shelf, no, actually, I've changed my mind, it's the bottle that "
+        "goes up there.",
+        "Cup to Person B, hmm, no, not the cup, make it the chips for him.",
+        "It's Person A who's after the apple, oh wait, my mistake, it's actually Person B.",
+        "Chips for Person A, then the bottle for Person B, no, sorry, the cup for Person B.",
+        "Take Person A the bottle, sorry, I said chips before, it's the bottle.",
+        "Give the sippy cup to Ava, oops, sorry, it's Lily's, she's the one who's thirsty.",
+        "Torch onto the workbench, actually, rethink, lock it away in the locker instead, it "
+        "walks off otherwise.",
+        "person a has been on the go all afternoon and needs that bottle so over it goes",
+        "the bottle is for person a whenever ur free no rush",
+        "chips are for person b and person a has dibs on the bottle",
+        "pop the tongs down on the worktop please lena wants them there",
+        "Since he sat down Bob hasn't taken his eyes off the xrisps, so let him have them.",
+        "Stash the cheps up on the shelf where the dog can't get them.",
+        "Pirson A left her cup behind at lunch, could it go back to her.",
+        "Persun A hasn't eaten since breakfast and would like the chips.",
+        "Person A is off out, she'll want her bettle handed over before she goes.",
+        "Over to Pesson A with the bottle, and across to Person B with the chips.",
+        "Sam's minuting the budget meeting and needs the notepsd for it.",
+        "Marco's finishing the fish and wants the lrmon to squeeze over it.",
+        "Any chance you could drop the apple off with Person A and swing by Person B with the cup?",
+        "Priya's got a stack of rota packs to clip together, would you be able to bring her the "
+        "stapler?",
+        "Any chance you could run the packing tape over to Mia for the pallets?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -480,6 +589,12 @@ KNOWN_UNCLEAR = frozenset(
         # blind49 (tuned on in session 51)
         # blind50 (tuned on in session 52)
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
+        # blind51 (tuned on in session 53)
+        "Mr Lee or Mrs Khan asked for the magazine, one of the two, I forget which.",
+        "Tom was very particular about which box he wanted, small, medium or large, and it's gone "
+        "clean out of my head.",
+        "Give Person A the chips, no wait, I've lost track of who asked.",
+        "Did Zoe ask for the glue stick or the red book? I can't remember.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -584,8 +699,9 @@ KNOWN_UNCLEAR = frozenset(
 # in KNOWN_MISSES and KNOWN_UNCLEAR; "blind50" written in session 51 by another engineer and
 # committed alone, measured once at the end of session 51 (0 wrong), tuned on in session 52:
 # asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind51" written in session 52 by
-# another engineer and committed alone, measured once at the end of session 52, not asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind51"})
+# another engineer and committed alone, measured once at the end of session 52 (0 wrong), tuned on
+# in session 53: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -156,8 +156,8 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # blind50 (written in session 51 by another engineer and committed alone, never opened by the
 # engineers who change the grounder before its one measurement at the end of session 51; tuned on in
 # session 52), blind51 (written in session 52 by another engineer and committed alone, never opened
-# by the engineers who change the grounder before its one measurement at the end of session 52; to
-# be tuned on in session 53).
+# by the engineers who change the grounder before its one measurement at the end of session 52;
+# tuned on in session 53).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
