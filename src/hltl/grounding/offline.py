@@ -61,6 +61,10 @@ from hltl.grounding import (
     _rewrites52l,
     _rewrites52r,
     _rewrites52s,
+    _rewrites53,
+    _rewrites53l,
+    _rewrites53r,
+    _rewrites53s,
     refusalguard,
 )
 from hltl.grounding._normalise1 import _ids, _only
@@ -169,6 +173,10 @@ _REFUSALS = (
     *_rewrites52.REFUSE52,
     *_rewrites52r.REFUSE52R,
     *_rewrites52s.REFUSE52S,
+    *_rewrites53l.REFUSE53L,
+    *_rewrites53.REFUSE53,
+    *_rewrites53r.REFUSE53R,
+    *_rewrites53s.REFUSE53S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -216,6 +224,10 @@ _CHECKS = (
     *_rewrites52.CHECK52,
     *_rewrites52r.CHECK52R,
     *_rewrites52s.CHECK52S,
+    *_rewrites53l.CHECK53L,
+    *_rewrites53.CHECK53,
+    *_rewrites53r.CHECK53R,
+    *_rewrites53s.CHECK53S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
