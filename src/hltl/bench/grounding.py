@@ -157,7 +157,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # engineers who change the grounder before its one measurement at the end of session 51; tuned on in
 # session 52), blind51 (written in session 52 by another engineer and committed alone, never opened
 # by the engineers who change the grounder before its one measurement at the end of session 52;
-# tuned on in session 53).
+# tuned on in session 53), blind52 (written in session 53 by another engineer and committed alone,
+# never opened by the engineers who change the grounder before its one measurement at the end of
+# session 53; to be tuned on in session 54).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -226,6 +228,7 @@ PARTS = (
     "blind49",
     "blind50",
     "blind51",
+    "blind52",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
