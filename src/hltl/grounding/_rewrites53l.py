@@ -1,13 +1,113 @@
-"""The grounder's rules of session 53, the lead (docs/grounding.md)."""
+"""The grounder's rules of session 53, the lead (docs/grounding.md): 12c's fuzz reports."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _objects_only, _only_person
+from hltl.grounding._rewrites44l import _HELD44L, _OWN44L, beside_request44l
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
+# -- what a person holds, said beside a request ----------------------------------------------
+#
+# 12c's session-52 fuzz: "Bob's got the apple; give him the crisps." read `apple>B & chips>B`, as
+# did "Bob has the apple, give him the crisps as well." and "Marco has the lemon, give Lena the
+# salt." (`lemon>A & salt>B`). Session 32 reads "P has the X" beside another's share as a share
+# ("Person A has the chips and the bottle is Person B's.", "she has the bottle, he has the
+# crisps"), and session 44 refuses it beside a request only with 'so' after it or with the
+# person's own thing ("Bob's got the cup so give Alice the apple."). Beside a request said as a
+# request (a verb of handing opening its clause: "give him …", "could you pass …"), the holding is
+# no longer one of a list of shares: it could say what the person holds (nothing to do) or allot
+# the thing — refused naming both, as session 44 does. Kept: shares alone ("Alice has the apple
+# and Bob has the crisps."), a holding as a condition ("Once Alice has the cup, give Bob …").
+_REQUEST53L = re.compiled(
+    r"(?:^|[.;,:!?]\s*|\b(?:and|then|so|but|now)\s+)(?:(?:please|just|now|kindly|also|then|"
+    r"oh|and)\s*,?\s+|(?:could|would|can|will)\s+you\s+(?:please\s+|just\s+|also\s+|kindly\s+)?)*"
+    r"(?:give|hand|pass|bring|take|deliver|put|place|fetch|send|carry|move|set|drop|pop|stick|"
+    r"toss|chuck|lay|get)\b",
+    _F,
+)
+
+
+def _held_request53l(text: str, lexicon: Lexicon) -> None:
+    """Session 53 (lead): "Bob's got the apple; give him the crisps." — a holding beside a request
+    said as one — refused naming both readings."""
+    if "has" not in text and "got" not in text:
+        return
+    for m in _HELD44L.finditer(text):
+        verb = " ".join(m["verb"].lower().replace("’", "'").split())
+        if m["adv1"] or m["adv2"] or m["own"] or m["tail"] or verb.endswith(("had", "holding")):
+            continue  # session 44's `held_beside44l` says what it is
+        if m["whose"].lower() in _OWN44L or m["after"].lower().endswith("so"):
+            continue  # the same
+        rest = text[: m.start("who")] + " , " + text[m.end("x") :]
+        if _REQUEST53L.search(rest) is None:
+            continue
+        who = m["who"]
+        thing = " ".join(m["x"].split())
+        if not _only_person(who, lexicon) or not _objects_only(thing, lexicon):
+            continue
+        beside_request44l(text[m.start("who") : m.end("x")].strip(), who, thing)
+
+
+# -- a want said over by a later one ---------------------------------------------------------
+#
+# 12c's session-52 fuzz: "First Bob wanted the apple, then the crisps." read `apple>B ; chips>B`
+# and "The apple was for Bob, now the crisps are." `apple>B & chips>B`. Session 51's `_want_now51`
+# refuses "Bob wanted the apple, now he wants the crisps." (the new want may replace the old or add
+# to it); said with the second want left out ("…, now the crisps (are).", "…, (and) then the
+# crisps.") after a clause opening with a word that tells a story of wants ('first', 'originally',
+# 'at first'), or with 'now' after a past want or part, it is the same: refused. Kept: "Kofi asked
+# for the big spanner, then the hammer." (two requests in order, blind9), "Bob wanted the apple
+# first, then the crisps." (the order of two wants), "Bob wanted the apple." (a want, as read).
+_PAST53L = (
+    r"(?:wanted|asked for|was after|were after|had asked for|asked after|was wanting|requested|"
+    r"fancied|was hoping for|needed|(?:was|were)(?: meant| going)? for)"
+)
+_THEN_THING53L = (
+    r"(?:it(?:'s|’s| is| was)\s+)?(?:the|his|her|their|that|those|this|these|a|an|some)\s+[a-z]+"
+)
+_WANT_NOW53L = re.compiled(
+    rf"\b{_PAST53L}\b[^.;!?]*?[,;.]\s*(?:but\s+|and\s+|though\s+|only\s+)?(?:now|these days|"
+    rf"today|this time)\s*,?\s+{_THEN_THING53L}",
+    _F,
+)
+_FIRST_THEN53L = re.compiled(
+    r"(?:^|[.;!?]\s*)(?:first(?:ly)?|at first|originally|initially|to begin with|to start with|"
+    rf"in the beginning)\s*,?\s+[^.;!?]*?\b{_PAST53L}\b[^.;!?]*?[,;]\s*(?:and\s+|but\s+)?(?:then|"
+    rf"later|after that|afterwards)\s*,?\s+{_THEN_THING53L}",
+    _F,
+)
+_NOW_WORDS53L = ("now", "today", "this time", "these days")
+_FIRST_WORDS53L = ("first", "originally", "initially", "begin", "start with")
+
+
+def _want_over53l(text: str, lexicon: Lexicon) -> None:
+    """Session 53 (lead): "The apple was for Bob, now the crisps are.", "First Bob wanted the
+    apple, then the crisps." — a want and a later one, the later said short — refused."""
+    low = text.lower()
+    if any(w in low for w in _NOW_WORDS53L):
+        m = _WANT_NOW53L.search(text)
+        if m is not None:
+            said = m.group(0)
+            raise GroundingError(
+                f"{said!r} says an earlier want and a new one: the new one may replace it or "
+                "add to it; say 'instead' or 'too'"
+            )
+    if any(w in low for w in _FIRST_WORDS53L):
+        m = _FIRST_THEN53L.search(text)
+        if m is not None:
+            said = m.group(0).lstrip(".;!? ")
+            raise GroundingError(
+                f"{said!r} could tell how a want changed (only the later one stands) or ask for "
+                "both in that order: say 'give … instead' or 'give …, then …'"
+            )
+
+
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53L: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE53L: tuple[Callable[[str, Lexicon], None], ...] = (_held_request53l, _want_over53l)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53L: tuple[Callable[[str, Node, Lexicon], None], ...] = ()

@@ -1,0 +1,128 @@
+"""Phrasings the session-53 lead rules refuse or read (docs/grounding.md, Session 53 (lead))."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.errors import GroundingError
+from hltl.grounding import _rewrites53l, offline
+from hltl.grounding.offline import parse_instruction
+from hltl.world.scene import Scene
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    DEPOT,
+    KITCHEN,
+    NURSERY,
+    OFFICE,
+    WARD,
+    WORKSHOP,
+    assert_reads,
+)
+
+# -- a holding beside a request (12c's fuzz: "Bob's got the apple; give him the crisps." read
+# apple>B & chips>B)
+
+HELD = [
+    ("Bob's got the apple; give him the crisps.", CELL),
+    ("Bob has the apple, give him the crisps as well.", CELL),
+    ("Bob's got the apple. Give Alice the crisps.", CELL),
+    ("Bob has the apple, please give Alice the crisps.", CELL),
+    ("Bob's got the apple, could you give Alice the crisps?", CELL),
+    ("Give Bob the crisps; Alice has the apple.", CELL),
+    ("Marco's got the lemon; give him the salt.", KITCHEN),
+    ("Marco has the lemon, give Lena the salt.", KITCHEN),
+    ("Mr Lee's got the jug; give him the magazine.", WARD),
+    ("Mrs Khan has the magazine, give her the jug too.", WARD),
+    ("Tom's got the tape; give him the gloves.", DEPOT),
+    ("Jess has the hammer, hand her the drill as well.", WORKSHOP),
+    ("Sam has the stapler, could you pass him the notepad?", OFFICE),
+    ("Noah's got the globe. Bring Zoe the ruler.", CLASSROOM),
+    ("Lily has got the teddy, now pass her the beaker.", NURSERY),
+]
+
+# -- a want said over by a later one, the later said short (12c's fuzz: "First Bob wanted the
+# apple, then the crisps." read apple>B ; chips>B, "The apple was for Bob, now the crisps are."
+# apple>B & chips>B)
+
+OVER = [
+    ("First Bob wanted the apple, then the crisps.", CELL),
+    ("Originally Bob wanted the apple, then the crisps.", CELL),
+    ("First the apple was for Bob, then the crisps.", CELL),
+    ("The apple was for Bob, now the crisps are.", CELL),
+    ("The apple was for Bob, but now the crisps are.", CELL),
+    ("Bob wanted the apple, now the crisps.", CELL),
+    ("Bob wanted the apple before, now the crisps.", CELL),
+    ("First Marco wanted the lemon, then the salt.", KITCHEN),
+    ("The lemon was for Marco, now the salt is.", KITCHEN),
+    ("First Mr Lee wanted the jug, then the magazine.", WARD),
+    ("The jug was for Mrs Khan, now the magazine is.", WARD),
+    ("At first Jess asked for the drill, and then the torch.", WORKSHOP),
+    ("Initially Tom needed the tape, later the gloves.", DEPOT),
+    ("The stapler was meant for Sam, now it's the notepad.", OFFICE),
+    ("Zoe was after the glue stick earlier, now the scissors.", CLASSROOM),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HELD)
+def test_holding_beside_a_request_refused(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError, match="beside a request could say what"):
+        parse_instruction(text, scene)
+
+
+@pytest.mark.parametrize(("text", "scene"), OVER)
+def test_want_said_over_refused(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError, match=r"earlier want and a new one|how a want changed"):
+        parse_instruction(text, scene)
+
+
+def _read_without(
+    rule: object, said: str, cases: list[tuple[str, Scene]], mp: pytest.MonkeyPatch
+) -> int:
+    """How many of ``cases`` read with ``rule`` out of the refusals (none refused as ``said``)."""
+    mp.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r is not rule))
+    read = 0
+    for text, scene in cases:
+        try:
+            parse_instruction(text, scene)
+        except GroundingError as refused:
+            assert said not in str(refused)
+            continue
+        read += 1
+    return read
+
+
+def test_holding_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The rule is what refuses them: without it each was read as two hand-overs."""
+    rule = _rewrites53l._held_request53l
+    assert _read_without(rule, "beside a request", HELD, monkeypatch) >= 12
+
+
+def test_want_over_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The rule is what refuses them: without it most were read as two hand-overs."""
+    rule = _rewrites53l._want_over53l
+    assert _read_without(rule, "want", OVER, monkeypatch) >= 10
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "spec"),
+    [
+        # shares alone, and a holding as a condition (session 32; the corpus)
+        ("Alice has the apple and Bob has the crisps.", CELL, "apple>A & chips>B"),
+        ("Alice has the apple, Bob the crisps.", CELL, "apple>A & chips>B"),
+        ("Once Alice has the apple, give Bob the crisps.", CELL, "apple>A ; chips>B"),
+        ("Give Bob the crisps once Alice has the apple.", CELL, "apple>A ; chips>B"),
+        # two requests in order, a want, an order of wants
+        ("Bob asked for the apple, then the crisps.", CELL, "apple>B ; chips>B"),
+        ("Bob wanted the apple first, then the crisps.", CELL, "apple>B ; chips>B"),
+        ("Bob wanted the apple.", CELL, "apple>B"),
+        ("First give Bob the apple, then the crisps.", CELL, "apple>B ; chips>B"),
+        (
+            "Kofi asked for the big spanner, then the hammer.",
+            WORKSHOP,
+            "spanner_large>A ; hammer>A",
+        ),
+    ],
+)
+def test_requests_still_read(text: str, scene: Scene, spec: str) -> None:
+    assert_reads(text, spec, scene)
