@@ -26,18 +26,17 @@ from tests.grounding.helpers import (
 HELD = [
     ("Bob's got the apple; give him the crisps.", CELL),
     ("Bob has the apple, give him the crisps as well.", CELL),
-    ("Bob's got the apple. Give Alice the crisps.", CELL),
-    ("Bob has the apple, please give Alice the crisps.", CELL),
-    ("Bob's got the apple, could you give Alice the crisps?", CELL),
-    ("Give Bob the crisps; Alice has the apple.", CELL),
+    ("Bob's got the apple. Give Bob the crisps.", CELL),
+    ("Bob has the apple, please give him the crisps.", CELL),
+    ("Bob's got the apple, could you give him the crisps?", CELL),
     ("Marco's got the lemon; give him the salt.", KITCHEN),
-    ("Marco has the lemon, give Lena the salt.", KITCHEN),
+    ("Marco has the lemon, pass Marco the salt too.", KITCHEN),
     ("Mr Lee's got the jug; give him the magazine.", WARD),
     ("Mrs Khan has the magazine, give her the jug too.", WARD),
     ("Tom's got the tape; give him the gloves.", DEPOT),
     ("Jess has the hammer, hand her the drill as well.", WORKSHOP),
     ("Sam has the stapler, could you pass him the notepad?", OFFICE),
-    ("Noah's got the globe. Bring Zoe the ruler.", CLASSROOM),
+    ("Noah's got the globe. Bring him the ruler.", CLASSROOM),
     ("Lily has got the teddy, now pass her the beaker.", NURSERY),
 ]
 
@@ -95,7 +94,7 @@ def _read_without(
 def test_holding_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> None:
     """The rule is what refuses them: without it each was read as two hand-overs."""
     rule = _rewrites53l._held_request53l
-    assert _read_without(rule, "beside a request", HELD, monkeypatch) >= 12
+    assert _read_without(rule, "beside a request", HELD, monkeypatch) >= 11
 
 
 def test_want_over_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -111,6 +110,10 @@ def test_want_over_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> Non
         ("Alice has the apple and Bob has the crisps.", CELL, "apple>A & chips>B"),
         ("Alice has the apple, Bob the crisps.", CELL, "apple>A & chips>B"),
         ("Once Alice has the apple, give Bob the crisps.", CELL, "apple>A ; chips>B"),
+        # another person's part beside a share (sessions 32, 36, 44)
+        ("Bob's got the apple. Give Alice the crisps.", CELL, "apple>B & chips>A"),
+        ("Give Bob the crisps; Alice has the apple.", CELL, "chips>B & apple>A"),
+        ("Marco has the lemon, give Lena the salt.", KITCHEN, "lemon>A & salt>B"),
         ("Give Bob the crisps once Alice has the apple.", CELL, "apple>A ; chips>B"),
         # two requests in order, a want, an order of wants
         ("Bob asked for the apple, then the crisps.", CELL, "apple>B ; chips>B"),

@@ -17,12 +17,14 @@ from hltl.grounding.tree import Node
 # did "Bob has the apple, give him the crisps as well." and "Marco has the lemon, give Lena the
 # salt." (`lemon>A & salt>B`). Session 32 reads "P has the X" beside another's share as a share
 # ("Person A has the chips and the bottle is Person B's.", "she has the bottle, he has the
-# crisps"), and session 44 refuses it beside a request only with 'so' after it or with the
-# person's own thing ("Bob's got the cup so give Alice the apple."). Beside a request said as a
-# request (a verb of handing opening its clause: "give him …", "could you pass …"), the holding is
-# no longer one of a list of shares: it could say what the person holds (nothing to do) or allot
-# the thing — refused naming both, as session 44 does. Kept: shares alone ("Alice has the apple
-# and Bob has the crisps."), a holding as a condition ("Once Alice has the cup, give Bob …").
+# crisps", "Give Bob the cup, Alice has the apple."), and session 44 refuses it beside a request
+# only with 'so' after it or with the person's own thing ("Bob's got the cup so give Alice the
+# apple."). Beside a request said as one (a verb of handing opening its clause: "give him …",
+# "could you pass …") to the same person (named again, or him / her / them), the holding is not a
+# share beside another's part: it could say what the person holds (nothing to do) or allot the
+# thing — refused naming both, as session 44 does. Kept: shares ("Alice has the apple and Bob has
+# the crisps.", "Lena has the lemon, give Marco the tongs.": sessions 32, 36, 44), a holding as a
+# condition ("Once Alice has the cup, give Bob …").
 _REQUEST53L = re.compiled(
     r"(?:^|[.;,:!?]\s*|\b(?:and|then|so|but|now)\s+)(?:(?:please|just|now|kindly|also|then|"
     r"oh|and)\s*,?\s+|(?:could|would|can|will)\s+you\s+(?:please\s+|just\s+|also\s+|kindly\s+)?)*"
@@ -30,6 +32,7 @@ _REQUEST53L = re.compiled(
     r"toss|chuck|lay|get)\b",
     _F,
 )
+_CLAUSE_END53L = re.compiled(r"[.;!?]")
 
 
 def _held_request53l(text: str, lexicon: Lexicon) -> None:
@@ -44,9 +47,13 @@ def _held_request53l(text: str, lexicon: Lexicon) -> None:
         if m["whose"].lower() in _OWN44L or m["after"].lower().endswith("so"):
             continue  # the same
         rest = text[: m.start("who")] + " , " + text[m.end("x") :]
-        if _REQUEST53L.search(rest) is None:
+        request = _REQUEST53L.search(rest)
+        if request is None:
             continue
         who = m["who"]
+        clause = _CLAUSE_END53L.split(rest[request.end() :], maxsplit=1)[0]
+        if not re.search(rf"\b(?:{re.escape(who)}|him|her|them)\b", clause, _F):
+            continue  # another person's part beside a share: session 32's reading
         thing = " ".join(m["x"].split())
         if not _only_person(who, lexicon) or not _objects_only(thing, lexicon):
             continue
