@@ -66,7 +66,7 @@ def held_beside44l(text: str, lexicon: Lexicon) -> None:
                 f"{said!r} says what {who} already holds or had: it asks for nothing; leave it "
                 f"out, or say 'give {who} the {thing}' to have it handed over"
             )
-        beside_request44l(said, who, thing)
+        beside_request44l(said, who, f"the {thing}")
 
 
 def beside_request44l(said: str, who: str, thing: str) -> NoReturn:
@@ -74,6 +74,6 @@ def beside_request44l(said: str, who: str, thing: str) -> NoReturn:
     ``_held_request53l``)."""
     raise GroundingError(
         f"{said!r} beside a request could say what {who} already holds (nothing to do for "
-        f"it) or that {who} is to get the {thing}: say 'give {who} the {thing}' "
+        f"it) or that {who} is to get {thing}: say 'give {who} {thing}' "
         "to have it handed over, or leave it out"
     )

@@ -7,6 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _objects_only, _only_person
+from hltl.grounding._rewrites42r import _WHO42R
 from hltl.grounding._rewrites44l import _HELD44L, _OWN44L, beside_request44l
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
@@ -24,7 +25,9 @@ from hltl.grounding.tree import Node
 # share beside another's part: it could say what the person holds (nothing to do) or allot the
 # thing — refused naming both, as session 44 does. Kept: shares ("Alice has the apple and Bob has
 # the crisps.", "Lena has the lemon, give Marco the tongs.": sessions 32, 36, 44), a holding as a
-# condition ("Once Alice has the cup, give Bob …").
+# condition ("Once Alice has the cup, give Bob …"). Said of one of several ("Bob's got one of the
+# mugs; give him the other one.", "Bob has a mug, give him the apple.") the same; and alone
+# ("Bob's got one of the mugs.") refused as session 32 refuses "Bob has the apple." alone.
 _REQUEST53L = re.compiled(
     r"(?:^|[.;,:!?]\s*|\b(?:and|then|so|but|now)\s+)(?:(?:please|just|now|kindly|also|then|"
     r"oh|and)\s*,?\s+|(?:could|would|can|will)\s+you\s+(?:please\s+|just\s+|also\s+|kindly\s+)?)*"
@@ -35,9 +38,27 @@ _REQUEST53L = re.compiled(
 _CLAUSE_END53L = re.compiled(r"[.;!?]")
 
 
+_HELD_ONE53L = re.compiled(
+    rf"(?:^|[.;,:!?]\s*|\band\s+)(?P<who>{_WHO42R})\s*(?P<verb>'s got|’s got|\s*has got|\s*has)\s+"
+    r"(?P<x>(?:(?:one|either|any) of (?:the|those|these)\s+|an?\s+)[a-z]+(?:\s+[a-z]+)?)\s*"
+    r"(?P<after>[.;,:!?]|$)",
+    _F,
+)
+
+
+def _to_same53l(rest: str, who: str) -> bool:
+    """Whether ``rest`` holds a request said as one (a verb of handing opening its clause) whose
+    clause names ``who`` again or says him / her / them."""
+    request = _REQUEST53L.search(rest)
+    if request is None:
+        return False
+    clause = _CLAUSE_END53L.split(rest[request.end() :], maxsplit=1)[0]
+    return re.search(rf"\b(?:{re.escape(who)}|him|her|them)\b", clause, _F) is not None
+
+
 def _held_request53l(text: str, lexicon: Lexicon) -> None:
     """Session 53 (lead): "Bob's got the apple; give him the crisps." — a holding beside a request
-    said as one — refused naming both readings."""
+    to the same person — and "Bob's got one of the mugs." alone refused naming both readings."""
     if "has" not in text and "got" not in text:
         return
     for m in _HELD44L.finditer(text):
@@ -46,18 +67,29 @@ def _held_request53l(text: str, lexicon: Lexicon) -> None:
             continue  # session 44's `held_beside44l` says what it is
         if m["whose"].lower() in _OWN44L or m["after"].lower().endswith("so"):
             continue  # the same
-        rest = text[: m.start("who")] + " , " + text[m.end("x") :]
-        request = _REQUEST53L.search(rest)
-        if request is None:
-            continue
         who = m["who"]
-        clause = _CLAUSE_END53L.split(rest[request.end() :], maxsplit=1)[0]
-        if not re.search(rf"\b(?:{re.escape(who)}|him|her|them)\b", clause, _F):
+        if not _to_same53l(text[: m.start("who")] + " , " + text[m.end("x") :], who):
             continue  # another person's part beside a share: session 32's reading
         thing = " ".join(m["x"].split())
         if not _only_person(who, lexicon) or not _objects_only(thing, lexicon):
             continue
-        beside_request44l(text[m.start("who") : m.end("x")].strip(), who, thing)
+        beside_request44l(text[m.start("who") : m.end("x")].strip(), who, f"the {thing}")
+    for m in _HELD_ONE53L.finditer(text):
+        who = m["who"]
+        rest = text[: m.start("who")] + " , " + text[m.end("x") :]
+        alone = re.search(r"[a-z]", rest, _F) is None
+        if not alone and not _to_same53l(rest, who):
+            continue  # a share beside another's ("Bob has one of the mugs, Alice the other")
+        thing = " ".join(m["x"].split())
+        if not _only_person(who, lexicon) or not _objects_only(thing, lexicon):
+            continue
+        said = text[m.start("who") : m.end("x")].strip()
+        if alone:
+            raise GroundingError(
+                f"{said!r} could say what {who} already holds (nothing to do) or that {who} is to "
+                f"get {thing}: say 'give {who} {thing}' to have it handed over"
+            )
+        beside_request44l(said, who, thing)
 
 
 # -- a want said over by a later one ---------------------------------------------------------
@@ -79,7 +111,8 @@ _THEN_THING53L = (
 )
 _WANT_NOW53L = re.compiled(
     rf"\b{_PAST53L}\b[^.;!?]*?[,;.]\s*(?:but\s+|and\s+|though\s+|only\s+)?(?:now|these days|"
-    rf"today|this time)\s*,?\s+{_THEN_THING53L}",
+    rf"today|this time)\s*,?\s+(?:{_THEN_THING53L}|(?:please\s+|just\s+)?(?:give|hand|pass|"
+    r"bring|take|get|fetch)\s+(?:him|her|them)\b)",
     _F,
 )
 _FIRST_THEN53L = re.compiled(
