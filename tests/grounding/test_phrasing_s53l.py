@@ -53,6 +53,30 @@ HELD_ALONE = [
     ("Lily's got one of the blocks!", NURSERY),
 ]
 
+# one of several, held in the past (said wherever, as session 32 refuses "Bob had the apple.")
+HELD_PAST = [
+    ("Bob had one of the mugs.", CELL),
+    ("Bob had a mug, give Alice the other one.", CELL),
+    ("Marco had one of the plates.", KITCHEN),
+    ("Kofi had got one of the spanners; pass Jess the hammer.", WORKSHOP),
+]
+
+# an apology opener before a sentence refused alone (12c's fuzz of blind51 #64)
+OPENER = [
+    ("Sorry to bother you, but Bob had the crisps. He said they were stale.", CELL),
+    ("Sorry, but Bob had the apple.", CELL),
+    ("Apologies, but Bob had the apple.", CELL),
+    ("Pardon me, but Bob had the apple.", CELL),
+    ("I'm afraid Bob had the apple.", CELL),
+    ("sorry to bother you but bob had the apple", CELL),
+    ("Sorry to bother you, but Bob had the apple and Alice wants the crisps.", CELL),
+    ("Sorry, but Bob has the apple.", CELL),
+    ("Oh sorry, but Bob got the apple.", CELL),
+    ("Sorry to bother you, but Marco had the lemon. He said it was sour.", KITCHEN),
+    ("Excuse me, but Mr Lee had the jug.", WARD),
+    ("Forgive me, but Tom had the tape.", DEPOT),
+]
+
 # -- a want said over by a later one, the later said short (12c's fuzz: "First Bob wanted the
 # apple, then the crisps." read apple>B ; chips>B, "The apple was for Bob, now the crisps are."
 # apple>B & chips>B)
@@ -88,6 +112,23 @@ def test_holding_beside_a_request_refused(text: str, scene: Scene) -> None:
 def test_one_of_several_held_alone_refused(text: str, scene: Scene) -> None:
     with pytest.raises(GroundingError, match=r"could say what .* already holds"):
         parse_instruction(text, scene)
+
+
+@pytest.mark.parametrize(("text", "scene"), HELD_PAST)
+def test_one_of_several_held_before_refused(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError, match=r"says what .* had: it asks for nothing"):
+        parse_instruction(text, scene)
+
+
+@pytest.mark.parametrize(("text", "scene"), OPENER)
+def test_apology_opener_refused_as_what_follows(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError, match=r"says what|could say what"):
+        parse_instruction(text, scene)
+
+
+def test_opener_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The rule is what refuses them: without it each was read as a hand-over."""
+    assert _read_without(_rewrites53l._opener_but53l, "says what", OPENER, monkeypatch) >= 9
 
 
 @pytest.mark.parametrize(("text", "scene"), OVER)
@@ -142,6 +183,12 @@ def test_want_over_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> Non
         ),
         ("Alice has a cold, so please give her the cup.", CELL, "cup>A"),
         ("Bob wants the apple, now give him the crisps.", CELL, "apple>B & chips>B"),
+        ("Bob had a cold, so give him the apple.", CELL, "apple>B"),
+        # what follows an apology opener, read as it reads alone (blind2, blind17, blind41)
+        ("Sorry to bother you, but could you give Carol the apple?", CELL, "apple>C"),
+        ("Sorry, I know you're busy, but could Alice have the cup?", CELL, "cup>A"),
+        ("Sorry to be a nuisance, but Alice could do with the apple.", CELL, "apple>A"),
+        ("I'm afraid the apple needs to go to Bob.", CELL, "apple>B"),
         ("Give Bob the crisps once Alice has the apple.", CELL, "apple>A ; chips>B"),
         # two requests in order, a want, an order of wants
         ("Bob asked for the apple, then the crisps.", CELL, "apple>B ; chips>B"),

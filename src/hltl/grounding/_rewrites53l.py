@@ -27,7 +27,9 @@ from hltl.grounding.tree import Node
 # the crisps.", "Lena has the lemon, give Marco the tongs.": sessions 32, 36, 44), a holding as a
 # condition ("Once Alice has the cup, give Bob …"). Said of one of several ("Bob's got one of the
 # mugs; give him the other one.", "Bob has a mug, give him the apple.") the same; and alone
-# ("Bob's got one of the mugs.") refused as session 32 refuses "Bob has the apple." alone.
+# ("Bob's got one of the mugs.") refused as session 32 refuses "Bob has the apple." alone; in the
+# past ("Bob had one of the mugs.", read `mug_red>B | mug_blue>B`) refused wherever it is said, as
+# session 32 refuses "Bob had the apple.".
 _REQUEST53L = re.compiled(
     r"(?:^|[.;,:!?]\s*|\b(?:and|then|so|but|now)\s+)(?:(?:please|just|now|kindly|also|then|"
     r"oh|and)\s*,?\s+|(?:could|would|can|will)\s+you\s+(?:please\s+|just\s+|also\s+|kindly\s+)?)*"
@@ -39,7 +41,8 @@ _CLAUSE_END53L = re.compiled(r"[.;!?]")
 
 
 _HELD_ONE53L = re.compiled(
-    rf"(?:^|[.;,:!?]\s*|\band\s+)(?P<who>{_WHO42R})\s*(?P<verb>'s got|’s got|\s*has got|\s*has)\s+"
+    rf"(?:^|[.;,:!?]\s*|\band\s+)(?P<who>{_WHO42R})\s*"
+    r"(?P<verb>'s got|’s got|\s*has got|\s*had got|\s*has|\s*had)\s+"
     r"(?P<x>(?:(?:one|either|any) of (?:the|those|these)\s+|an?\s+)[a-z]+(?:\s+[a-z]+)?)\s*"
     r"(?P<after>[.;,:!?]|$)",
     _F,
@@ -59,7 +62,7 @@ def _to_same53l(rest: str, who: str) -> bool:
 def _held_request53l(text: str, lexicon: Lexicon) -> None:
     """Session 53 (lead): "Bob's got the apple; give him the crisps." — a holding beside a request
     to the same person — and "Bob's got one of the mugs." alone refused naming both readings."""
-    if "has" not in text and "got" not in text:
+    if "has" not in text and "got" not in text and "had" not in text:
         return
     for m in _HELD44L.finditer(text):
         verb = " ".join(m["verb"].lower().replace("’", "'").split())
@@ -78,12 +81,18 @@ def _held_request53l(text: str, lexicon: Lexicon) -> None:
         who = m["who"]
         rest = text[: m.start("who")] + " , " + text[m.end("x") :]
         alone = re.search(r"[a-z]", rest, _F) is None
-        if not alone and not _to_same53l(rest, who):
+        past = m["verb"].strip().startswith("had")
+        if not past and not alone and not _to_same53l(rest, who):
             continue  # a share beside another's ("Bob has one of the mugs, Alice the other")
         thing = " ".join(m["x"].split())
         if not _only_person(who, lexicon) or not _objects_only(thing, lexicon):
             continue
         said = text[m.start("who") : m.end("x")].strip()
+        if past:
+            raise GroundingError(
+                f"{said!r} says what {who} had: it asks for nothing; say 'give {who} {thing}' to "
+                "have it handed over"
+            )
         if alone:
             raise GroundingError(
                 f"{said!r} could say what {who} already holds (nothing to do) or that {who} is to "
@@ -147,7 +156,47 @@ def _want_over53l(text: str, lexicon: Lexicon) -> None:
             )
 
 
+# -- an apology opener before what would be refused ----------------------------------------
+#
+# 12c's fuzz of blind51 (its only wrong reading over 15,195 variants, #64's wrapper): "Sorry to
+# bother you, but person B had the chips. He said they were stale." read `chips>B`, as "Sorry, but
+# Bob had the apple.", "Apologies, but …", "Pardon me, but …", "I'm afraid Bob had the apple."
+# Said without the opener, each is refused (session 32's `_state_only32s`: a past holding asks
+# for nothing); the opener hid the sentence from the refusals (they look at the sentence as said),
+# and the grammar then read what follows it. An apology or regret opening the instruction, with
+# 'but' after it (or "I'm afraid …"), says nothing about what is asked: the refusals asked before
+# the read are asked again of what follows it. Kept: what follows read as it reads alone ("Sorry
+# to bother you, but could you give Carol the apple?": blind2).
+_OPENER53L = re.compiled(
+    r"^\s*(?:(?:oh|ah|um|erm|er|look|so)\s*,?\s+)*(?:(?:(?:i'm|i am|so|really|terribly)\s+)?"
+    r"sorry|apologies|my apologies|pardon me|pardon the intrusion|excuse me|forgive me)\b"
+    r"[^.;:!?]*?(?:,\s*|\s+)but\s*,?\s+|^\s*(?:(?:oh|ah|um|erm|er|look|so)\s*,?\s+)*(?:i'm|i am)"
+    r"\s+afraid\s*,?\s+(?:that\s+)?",
+    _F,
+)
+_OPENER_WORDS53L = ("sorry", "apolog", "pardon", "excuse", "forgive", "afraid")
+
+
+def _opener_but53l(text: str, lexicon: Lexicon) -> None:
+    """Session 53 (lead): "Sorry to bother you, but Bob had the crisps." — what follows an apology
+    opener is asked the refusals it would be asked alone."""
+    low = text.lower()
+    if not any(w in low for w in _OPENER_WORDS53L):
+        return
+    m = _OPENER53L.match(text)
+    if m is None or not re.search(r"[a-z]", text[m.end() :], _F):
+        return
+    # why: offline imports this module; its refusals are asked again of what follows the opener
+    from hltl.grounding import offline
+
+    offline.asked_before_read(text[m.end() :], lexicon)
+
+
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53L: tuple[Callable[[str, Lexicon], None], ...] = (_held_request53l, _want_over53l)
+REFUSE53L: tuple[Callable[[str, Lexicon], None], ...] = (
+    _held_request53l,
+    _want_over53l,
+    _opener_but53l,
+)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53L: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
