@@ -204,3 +204,31 @@ def test_want_over_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> Non
 )
 def test_requests_still_read(text: str, scene: Scene, spec: str) -> None:
     assert_reads(text, spec, scene)
+
+
+# -- a reported holding of a thing named with 'of' (12c's fuzz: "Jess says Kofi has the tin of
+# screws." read screws>A; session 52's `_says_holds52l` took 'the tin' for the thing held)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Jess says Kofi has the tin of screws.", WORKSHOP),
+        ("Kofi has the tin of screws, Jess says.", WORKSHOP),
+        ("Tom says Mia's got the roll of packing tape.", DEPOT),
+    ],
+)
+def test_reported_holding_of_a_thing_named_with_of_refused(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError, match="reported, says what"):
+        parse_instruction(text, scene)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "spec"),
+    [
+        ("Jess says Kofi has his eye on the tin of screws.", WORKSHOP, "screws>A"),
+        ("Jess says Kofi wants the tin of screws.", WORKSHOP, "screws>A"),
+    ],
+)
+def test_reported_wants_of_a_thing_named_with_of_read(text: str, scene: Scene, spec: str) -> None:
+    assert_reads(text, spec, scene)
