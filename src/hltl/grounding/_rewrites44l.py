@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import NoReturn
+
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _objects_only, _only_person
@@ -64,8 +66,14 @@ def held_beside44l(text: str, lexicon: Lexicon) -> None:
                 f"{said!r} says what {who} already holds or had: it asks for nothing; leave it "
                 f"out, or say 'give {who} the {thing}' to have it handed over"
             )
-        raise GroundingError(
-            f"{said!r} beside a request could say what {who} already holds (nothing to do for "
-            f"it) or that {who} is to get the {thing}: say 'give {who} the {thing}' "
-            "to have it handed over, or leave it out"
-        )
+        beside_request44l(said, who, f"the {thing}")
+
+
+def beside_request44l(said: str, who: str, thing: str) -> NoReturn:
+    """Refuse a holding said beside a request, naming both readings (also session 53's
+    ``_held_request53l``)."""
+    raise GroundingError(
+        f"{said!r} beside a request could say what {who} already holds (nothing to do for "
+        f"it) or that {who} is to get {thing}: say 'give {who} {thing}' "
+        "to have it handed over, or leave it out"
+    )

@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids
+from hltl.grounding._normalise1 import _F, _ids, _objects_only
 from hltl.grounding._rewrites41l import _SUBORDINATE41L, said_as_done41l
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
@@ -86,6 +86,7 @@ _SAYS_WORDS52L = ("says", "said", "reckons", "thinks", "tells me", "told me", "m
 _PRONOUN52L = frozenset({"he", "she", "they"})
 # where the thing held ends ("the apple in his bag"; "his eye | on the apple")
 _HEAD_END52L = re.compiled(r"\b(?:on|for|of|to|in|at|with|about|from|over)\b", _F)
+_HEAD_END_OF53L = re.compiled(r"\b(?:on|for|to|in|at|with|about|from|over)\b", _F)
 
 
 def _says_holds52l(text: str, lexicon: Lexicon) -> None:
@@ -102,8 +103,12 @@ def _says_holds52l(text: str, lexicon: Lexicon) -> None:
         return
     if _ids(p, lexicon, "object"):
         return
-    if not _ids(_HEAD_END52L.split(m.group("rest"), maxsplit=1)[0], lexicon, "object"):
-        return  # 'has his eye on the apple', 'has a craving for it': a want, not a holding
+    if not _ids(_HEAD_END52L.split(m.group("rest"), maxsplit=1)[0], lexicon, "object") and not (
+        _objects_only(_HEAD_END_OF53L.split(m.group("rest"), maxsplit=1)[0], lexicon)
+    ):
+        # 'has his eye on the apple', 'has a craving for it': a want, not a holding (session
+        # 53: a thing named with 'of', "the tin of screws", is the thing held — 12c's fuzz)
+        return
     past = m.group("verb").lower() in {"had", "got"} or "had" in m.group("verb").lower()
     whom = "the person" if p.lower() in _PRONOUN52L else p
     raise GroundingError(

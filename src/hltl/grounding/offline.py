@@ -780,21 +780,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
                 f"{off.group('said')!r} puts the task off: the cell acts now, so say the request "
                 "when it is to be done"
             )
-        _said_wrong31s(text)
-        _unasked_done31s(text, lexicon)
-        _has_beside_want31s(text, lexicon)
-        _state_only32s(text, lexicon)
-        _left_then_it32s(text, lexicon)
-        _owner_only33s(text, lexicon)
-        _other_after_repair33s(text, lexicon)
-        _them_after_choice33s(text, lexicon)
-        _doer_said34s(text, lexicon)
-        _spoken_to37s(text, lexicon)
-        described_one38r(text, lexicon)
-        _rewrites39.doubt_which39(text, lexicon)
-        _rewrites39.usual39(text, lexicon)
-        for refuse in refusalguard.asked(_REFUSALS, text):  # session 51 (12b): by their words
-            refuse(text, lexicon)
+        asked_before_read(text, lexicon)
         replaced = _taken_back(text, scene, lexicon)
         if replaced is not None:
             return replaced
@@ -943,6 +929,26 @@ _SAID_WRONG31S = re.compile(
     r"\s*[.!?]*\s*$",
     re.I,
 )
+
+
+def asked_before_read(text: str, lexicon: Lexicon) -> None:
+    """The refusals asked of the (normalised) text before it is read, in order (session 53: one
+    function, so ``_rewrites53l`` can ask them again of what follows an apology opener)."""
+    _said_wrong31s(text)
+    _unasked_done31s(text, lexicon)
+    _has_beside_want31s(text, lexicon)
+    _state_only32s(text, lexicon)
+    _left_then_it32s(text, lexicon)
+    _owner_only33s(text, lexicon)
+    _other_after_repair33s(text, lexicon)
+    _them_after_choice33s(text, lexicon)
+    _doer_said34s(text, lexicon)
+    _spoken_to37s(text, lexicon)
+    described_one38r(text, lexicon)
+    _rewrites39.doubt_which39(text, lexicon)
+    _rewrites39.usual39(text, lexicon)
+    for refuse in refusalguard.asked(_REFUSALS, text):  # session 51 (12b): by their words
+        refuse(text, lexicon)
 
 
 def _said_wrong31s(text: str) -> None:
