@@ -8,12 +8,17 @@ from collections.abc import Callable
 from functools import cache
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from hltl.bench.grounding import CORPUS_DIR, load_corpus
 from hltl.errors import GroundingError
 from hltl.grounding import (
+    _normalise1,
     _normalise2,
     _normalise3,
+    _rewrites38s,
+    _rewrites39s,
     _rewrites41,
     _rewrites42,
     _rewrites43r,
@@ -41,6 +46,8 @@ _STEPS: tuple[_Step, ...] = (
     _rewrites44._ask_forms44,
     _rewrites47._asked47,
     _rewrites43r._cue_typo43r,
+    _rewrites38s._about_them38s,  # _CUE_ANY38S
+    _rewrites39s._remark39s,  # _CUE_ANY38S (_people39s, _closed39s)
 )
 
 # sentences each of which one of the steps rewrites (from their sessions' tests and docs)
@@ -109,3 +116,30 @@ def test_cue_of_typo_is_the_loop_it_keeps(word: str) -> None:
     if low not in _rewrites43r._NOT_CUE_TYPOS43R:
         want = next((c for c in _rewrites43r._CUE_WORDS43R if _one_edit(low, c)), None)
     assert _rewrites43r._cue_of_typo43r(low) == want
+
+
+def _tidy_as_it_was(text: str) -> str:
+    """_tidy19 of session 52 (every rewrite asked)."""
+    out = gate.sub(r"([.!?])[.!?,;:]+", r"\1", text)
+    out = gate.sub(r"\s+([,;:.!?])", r"\1", out)
+    out = gate.sub(r"([,;:])\s*([,;:.!?])", r"\2", out)
+    out = gate.sub(r"^[\s,;:.!]+", "", out)
+    out = gate.sub(r"\s{2,}", " ", out).strip()
+    return gate.sub(r"[,;:]$", "", out).strip()
+
+
+@settings(max_examples=600, deadline=None)
+@given(
+    st.lists(
+        st.sampled_from(["the", "cup", "Bob", " ", "  ", ",", ".", "!", "?", ";", ":", "\n"])
+        | st.sampled_from(["\t", "\u00a0", "\u2003", "...", ", ", ". ", "a"]),
+        max_size=10,
+    ).map("".join)
+)
+def test_tidy19_answers_as_it_did(text: str) -> None:
+    assert _normalise1._tidy19(text) == _tidy_as_it_was(text)
+
+
+@pytest.mark.parametrize("text", [t for t, _ in _sentences()[::7]])
+def test_tidy19_answers_as_it_did_on_corpus_sentences(text: str) -> None:
+    assert _normalise1._tidy19(text) == _tidy_as_it_was(text)
