@@ -6573,7 +6573,16 @@ _VERB_NEXT19 = re.compile(
 )
 
 
+# Session 53 (12p): a text _tidy19 leaves as it is, said at once: each of its rewrites changes the
+# text exactly where its pattern matches (a mark doubled, a space before a mark, marks together,
+# marks or spaces opening it, two spaces, a mark closing it), so a text none of them matches
+# (at any step: none changes it) and that has no space at either end is its own tidy form
+_UNTIDY19 = re.compile(r"[.!?][.!?,;:]|\s[,;:.!?]|[,;:]\s*[,;:.!?]|^[\s,;:.!]|\s\s|[,;:]$")
+
+
 def _tidy19(text: str) -> str:
+    if text == text.strip() and _UNTIDY19.search(text) is None:
+        return text
     out = re.sub(r"([.!?])[.!?,;:]+", r"\1", text)
     out = re.sub(r"\s+([,;:.!?])", r"\1", out)
     out = re.sub(r"([,;:])\s*([,;:.!?])", r"\2", out)

@@ -2078,7 +2078,7 @@ def _idioms32(text: str, _lexicon: Lexicon) -> str:
     person something else ("Carol keeps asking for the apple, give her the cup": the cup
     instead, or both? causes9 refuses it)."""
     for pattern, plain in _IDIOMS32:
-        m = _rx(pattern).search(text)
+        m = re.search(_rx(pattern), text)  # gated (session 53, 12p)
         if m is not None and not re.search(r"\b(?:her|him|them)\b", text[m.end() :], _F):
             text = text[: m.start()] + plain + text[m.end() :]
     return text
@@ -2638,7 +2638,7 @@ def _idioms33(text: str, lexicon: Lexicon) -> str:
     of the scene only ('asking after Mr Lee' asks how he is), and not where a pronoun after it
     may hand that person something else (as _idioms32)."""
     for pattern, plain in _IDIOMS33:
-        m = _rx(pattern).search(text)
+        m = re.search(_rx(pattern), text)  # gated (session 53, 12p)
         if m is None:
             continue
         what = re.split(r"[,.;!?]|\s+(?:and|but|so|while)\s+", text[m.end() :], maxsplit=1)[0]
@@ -3244,7 +3244,7 @@ def _idioms34(text: str, lexicon: Lexicon) -> str:
     _idioms33); 'wanted over by' and 'meant for' need one person of the scene after them, the
     object before them (its sentence's start) objects only."""
     for pattern, plain in _IDIOMS34:
-        m = _rx(pattern).search(text)
+        m = re.search(_rx(pattern), text)  # gated (session 53, 12p)
         if m is None:
             continue
         if plain == " wants":

@@ -399,7 +399,7 @@ _IDIOMS27R = (
 
 def _idioms27r(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _IDIOMS27R:
-        text = pattern.sub(repl, text)
+        text = re.sub(pattern, repl, text)  # gated (session 53, 12p)
     return text
 
 
@@ -1232,7 +1232,7 @@ def _remarks28r(text: str, lexicon: Lexicon) -> str:
     orders or points back; the request must read without it."""
     out = text
     for rx in _REMARKS28R:
-        m = rx.search(out)
+        m = re.search(rx, out)  # gated (session 53, 12p)
         if m is None:
             continue
         said = m.group("said")

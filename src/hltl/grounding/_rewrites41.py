@@ -333,7 +333,7 @@ _COURTESY41: tuple[tuple[re.Pattern[str], str], ...] = (
 def _courtesy41(text: str, lexicon: Lexicon) -> str:
     """Session 41: the courtesies above taken off (their words naming nothing of the scene)."""
     for pattern, said in _COURTESY41:
-        for m in list(pattern.finditer(text))[::-1]:
+        for m in list(re.finditer(pattern, text))[::-1]:  # gated (session 53, 12p)
             if _ids(m["w"], lexicon):
                 continue
             text = text[: m.start()] + said.format(w=m["w"]) + text[m.end() :]

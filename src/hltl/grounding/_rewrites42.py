@@ -423,7 +423,7 @@ _COURTESY42: tuple[re.Pattern[str], ...] = (
 def _courtesy42(text: str, lexicon: Lexicon) -> str:
     """Session 42: the courtesies above taken off (a request left after them)."""
     for pattern in _COURTESY42:
-        m = pattern.match(text)
+        m = re.match(pattern, text)  # gated (session 53, 12p)
         if m is None or _ids(m["w"], lexicon) or not _ids(text[m.end() :], lexicon):
             continue
         rest = re.sub(r"^(?:now|so|anyway|right|ok|okay),?\s+", "", text[m.end() :], flags=_F)
@@ -487,7 +487,7 @@ def _ask_forms42(text: str, lexicon: Lexicon) -> str:
     """Session 42: the question forms above said plainly (who is asked is one person of the scene
     or 'you'; the rest is read by the grammar as before)."""
     for pattern, said in _ASK_FORMS42:
-        for m in list(pattern.finditer(text))[::-1]:
+        for m in list(re.finditer(pattern, text))[::-1]:  # gated (session 53, 12p)
             groups = m.groupdict()
             who = groups.get("who")
             if who is not None and who != "you" and not _only_person(who, lexicon):

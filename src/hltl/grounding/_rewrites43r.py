@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 
 from hltl.errors import GroundingError
@@ -1182,14 +1183,23 @@ def _cue_typo43r(text: str, lexicon: Lexicon) -> str:
 
     def fix(m: re.Match[str]) -> str:
         word = m[0]
-        if word.lower() in _NOT_CUE_TYPOS43R:
-            return word
-        for cue in _CUE_WORDS43R:
-            if _one_edit(word.lower(), cue):
-                return cue
-        return word
+        cue = _cue_of_typo43r(word.lower())
+        return word if cue is None else cue
 
     return re.sub(r"\b[a-z]{6,9}\b", fix, text, flags=_F)
+
+
+@functools.lru_cache(maxsize=4096)
+def _cue_of_typo43r(low: str) -> str | None:
+    """The correction word one edit from ``low`` (a lower-cased word), None where there is none
+    or ``low`` is a word of its own (kept per word, session 53, 12p: asked of every word of six
+    to nine letters of every text)."""
+    if low in _NOT_CUE_TYPOS43R:
+        return None
+    for cue in _CUE_WORDS43R:
+        if _one_edit(low, cue):
+            return cue
+    return None
 
 
 # the normaliser's rewrites run before the session-42 ones (wired into normalise._STEPS19)

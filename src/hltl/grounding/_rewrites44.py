@@ -287,7 +287,7 @@ _THANKING44 = re.compile(
 def _courtesy44(text: str, lexicon: Lexicon) -> str:
     """Session 44: the courtesies above taken off."""
     for pattern in _COURTESY44:
-        m = pattern.match(text)
+        m = re.match(pattern, text)  # gated (session 53, 12p)
         if m is None or _ids(m[0], lexicon) or not _ids(text[m.end() :], lexicon):
             continue
         rest = text[m.end() :]
@@ -559,7 +559,7 @@ def _ask_forms44(text: str, lexicon: Lexicon) -> str:
     """Session 44: the question forms and courtesies above said plainly (the person one of the
     scene's; a courtesy taken off only when what follows names something of the scene)."""
     for pattern, said in _ASK_FORMS44:
-        m = pattern.search(text)
+        m = re.search(pattern, text)  # gated (session 53, 12p)
         if m is None:
             continue
         groups = {k: v for k, v in m.groupdict().items() if v is not None}

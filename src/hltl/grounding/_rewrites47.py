@@ -365,7 +365,7 @@ def _asked_said47(text: str) -> str:
     """``text`` with the question forms above said as the grammar's."""
     out = text
     for pattern, said in _ASKED47:
-        out = pattern.sub(said, out, count=1)
+        out = re.sub(pattern, said, out, count=1)  # gated (session 53, 12p)
     return out[:1].upper() + out[1:] if out != text else text
 
 

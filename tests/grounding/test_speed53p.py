@@ -1,0 +1,145 @@
+"""Session 53 (12p): always-run steps that asked compiled patterns raw ask them through the gate,
+and _cue_typo43r's one-edit test is kept per word — each step answers as it did, on every text:
+over corpus sentences and sentences each step rewrites, with the gate and without it."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import cache
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hltl.bench.grounding import CORPUS_DIR, load_corpus
+from hltl.errors import GroundingError
+from hltl.grounding import (
+    _normalise1,
+    _normalise2,
+    _normalise3,
+    _rewrites38s,
+    _rewrites39s,
+    _rewrites41,
+    _rewrites42,
+    _rewrites43r,
+    _rewrites44,
+    _rewrites47,
+    gate,
+)
+from hltl.grounding.lexicon import Lexicon, _one_edit
+from hltl.world.scene import Scene
+from tests.grounding.helpers import CELL, ROOT, WORKSHOP
+
+_Step = Callable[[str, Lexicon], str]
+
+# the steps whose raw pattern calls now go through the gate
+_STEPS: tuple[_Step, ...] = (
+    _normalise3._idioms27r,
+    _normalise3._remarks28r,
+    _normalise2._idioms32,
+    _normalise2._idioms33,
+    _normalise2._idioms34,
+    _rewrites41._courtesy41,
+    _rewrites42._courtesy42,
+    _rewrites42._ask_forms42,
+    _rewrites44._courtesy44,
+    _rewrites44._ask_forms44,
+    _rewrites47._asked47,
+    _rewrites43r._cue_typo43r,
+    _rewrites38s._about_them38s,  # _CUE_ANY38S
+    _rewrites39s._remark39s,  # _CUE_ANY38S (_people39s, _closed39s)
+)
+
+# sentences each of which one of the steps rewrites (from their sessions' tests and docs)
+_REWRITTEN = (
+    "could you see the bottle gets to Person A?",
+    "Give Alice the apple, since first light she's wanted it.",
+    "Would you mind ever so much handing Bob the crisps?",
+    "Could I trouble you to see that Bob gets the bottle?",
+    "Is it too much bother to get Alice the apple?",
+    "Give Bob the cup, no, the apple actulaly.",
+    "Give Bob the cup, insted the apple.",
+    "Bob keeps asking for the apple.",
+    "Person B is asking where the chips have got to.",
+    "The bottle would help Person A a lot.",
+    "Both cups to Alice, the poor thing's shivering.",
+)
+
+
+@cache
+def _sentences() -> tuple[tuple[str, Scene], ...]:
+    out: list[tuple[str, Scene]] = []
+    for part in ("tuning", "blind22", "causes15", "blind45"):
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        out += [(e.text, corpus.scenes[e.scene]) for e in corpus.entries[::2]]
+    out += [(t, CELL) for t in _REWRITTEN] + [(t, WORKSHOP) for t in _REWRITTEN]
+    return tuple(out)
+
+
+def _answer(step: _Step, text: str, scene: Scene) -> str:
+    try:
+        return step(text, Lexicon.of(scene))
+    except GroundingError as refused:
+        return f"refused: {refused}"
+
+
+@pytest.mark.parametrize("step", _STEPS, ids=lambda s: s.__name__)
+def test_the_step_answers_as_without_the_gate(step: _Step, monkeypatch: pytest.MonkeyPatch) -> None:
+    gated = [_answer(step, t, s) for t, s in _sentences()]
+    monkeypatch.setattr(gate, "may_match", lambda pattern, flags, text: True)  # every call raw
+    raw = [_answer(step, t, s) for t, s in _sentences()]
+    assert gated == raw
+
+
+def test_the_steps_rewrite_some_sentences() -> None:
+    """Not vacuous: the sentences above are rewritten by the steps asked."""
+    changed = {
+        step.__name__
+        for step in _STEPS
+        for text, scene in _sentences()
+        if _answer(step, text, scene) != text
+    }
+    assert len(changed) >= 6, changed
+
+
+@pytest.mark.parametrize(
+    "word",
+    [
+        *("actulaly", "acually", "actualy", "insted", "isntead", "instaed", "actually"),
+        *("instead", "factually", "actual", "magazine", "blanket", "ACTULALY", "Insted"),
+        "instant",
+    ],
+)
+def test_cue_of_typo_is_the_loop_it_keeps(word: str) -> None:
+    low = word.lower()
+    want = None
+    if low not in _rewrites43r._NOT_CUE_TYPOS43R:
+        want = next((c for c in _rewrites43r._CUE_WORDS43R if _one_edit(low, c)), None)
+    assert _rewrites43r._cue_of_typo43r(low) == want
+
+
+def _tidy_as_it_was(text: str) -> str:
+    """_tidy19 of session 52 (every rewrite asked)."""
+    out = gate.sub(r"([.!?])[.!?,;:]+", r"\1", text)
+    out = gate.sub(r"\s+([,;:.!?])", r"\1", out)
+    out = gate.sub(r"([,;:])\s*([,;:.!?])", r"\2", out)
+    out = gate.sub(r"^[\s,;:.!]+", "", out)
+    out = gate.sub(r"\s{2,}", " ", out).strip()
+    return gate.sub(r"[,;:]$", "", out).strip()
+
+
+@settings(max_examples=600, deadline=None)
+@given(
+    st.lists(
+        st.sampled_from(["the", "cup", "Bob", " ", "  ", ",", ".", "!", "?", ";", ":", "\n"])
+        | st.sampled_from(["\t", "\u00a0", "\u2003", "...", ", ", ". ", "a"]),
+        max_size=10,
+    ).map("".join)
+)
+def test_tidy19_answers_as_it_did(text: str) -> None:
+    assert _normalise1._tidy19(text) == _tidy_as_it_was(text)
+
+
+@pytest.mark.parametrize("text", [t for t, _ in _sentences()[::7]])
+def test_tidy19_answers_as_it_did_on_corpus_sentences(text: str) -> None:
+    assert _normalise1._tidy19(text) == _tidy_as_it_was(text)
