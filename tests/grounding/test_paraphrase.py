@@ -401,30 +401,18 @@ KNOWN_MISSES = frozenset(
         # blind50 (tuned on in session 52): refusals left at its one measurement (docs/grounding.md)
         "Um, sorry to be a pest, would you pop the red mug up on the shelf? Carol's numerology "
         "lot are in at six.",
-        "Would you be a star and let Person B have the bottle and the cup? Many thanks in advance.",
-        "Sorry, just one teeny thing, Person B's after the bottle, if you could manage it.",
-        "Pardon me butting in, the chips to Person A please, and no rush whatsoever.",
         "Apologies for the fuss, could the stapler go in the box? Priya's clearing the desk for "
         "the cryptographer's visit.",
-        "No pressure, mate, but Tom could do with the work gloves before his shift, cheers.",
         "If you'd be so kind, lay the knife on the worktop, Marco's doing the lemons in a sec.",
-        "Ever so sorry, would you mind getting the teddy to Lily? Grandad's got his hands full.",
-        "Person A has a real fancy for the apple today, whereas Person B could murder the chips "
-        "after his underwater rugby practice.",
         "I reckon Person A would quite like the bottle after her gong bath.",
         "Mr Lee's been on at me about his tablets since ten, and Mrs Khan's thirsty, so she wants "
         "the water jug.",
         "We need the small box sat on the pallet before the lorry pulls in.",
-        "Lena's short of tongs and a white plate for the wedding planner's table.",
-        "Jess needs the torch to have a look behind the bench.",
         "Alice is after the bottle for her open water swim. Bob, same deal with the crisps.",
         "Person A gets the apple as her bit of lunch, and the cup's Person B's, for his tea "
         "before senet.",
         "The chips are Person B's. Oh, and he'll take the apple off your hands as well.",
-        "Person B's getting the bottle, and the chips can go to his colleague, Person A.",
         "That bottle belongs to Person A and she'd like it back before her flint knapping class.",
-        "Mr Lee's been shivering since they opened the window, so he's to have the blue blanket, "
-        "please.",
         "Mrs Ortiz is doing map skills next period, so set the globe on her desk, would you.",
         "Kofi's been hunting high and low for the hammer all morning, give it him before he loses "
         "his rag.",
@@ -485,7 +473,6 @@ KNOWN_MISSES = frozenset(
         "start with the cup for person a and when you've done that the apple's for person b",
         "poor person b's been hanging about for his chips for ages",
         "he's off on a bothy trip so person b wants the bottle and the chips both",
-        "tchoukball starts in ten so person a needs her bottle now",
         "reckon you could hand person a her bottle i've got my hands full",
         "grandad's asked for the teddy to do his silly voices",
         "Bob's waiting on his crispz, could you take them over.",
@@ -495,7 +482,6 @@ KNOWN_MISSES = frozenset(
         "Could you do the bottle for Person A first, and when that's done, the chips for Person B?",
         "Is it possible to get the spoon onto the tray before Dana's round?",
         "Would you leave the bib ready on the high chair for lunchtime?",
-        "Kofi's asking if he can borrow the big spanner, would you take it over?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

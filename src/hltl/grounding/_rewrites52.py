@@ -243,10 +243,10 @@ def _colleague52(text: str, lexicon: Lexicon) -> str:
 # -- "P's been shivering since they opened the window, so …": since when, an event that is over,
 # taken off (the state and its 'so' read)
 _SINCE_EVENT52 = re.compile(
-    r"(?P<p>" + _P52 + r")(?:'s| has) been (?P<v>[a-z]+ing)(?: (?:a lot|all day|all morning|for "
-    r"ages))?(?P<cut> (?:ever )?since (?:they|someone|somebody|we|you|I|the [a-z]+(?: [a-z]+)?) "
-    r"(?:[a-z]+ed|left|came|went|put|let|shut|turned|switched|took|got|brought|made) "
-    r"[^,.;:!?]*?)(?=,\s*(?:so|and so|which is why)\b)"
+    r"(?P<p>" + _P52 + r")(?:'s| has) been (?P<v>[a-z]+ing|cold|hungry|thirsty|grumpy|tired|cross|"
+    r"bored|poorly|restless|sleepy|peckish|parched|freezing|starving)(?: (?:a lot|all day|all "
+    r"morning|for ages))?(?P<cut> (?:ever )?since (?:they|someone|somebody|we|you|I|the [a-z]+(?: "
+    r"[a-z]+)?) [a-z]+(?: [^,.;:!?]*?)?)(?=,\s*(?:so|and so|which is why)\b)"
 )
 
 

@@ -1,0 +1,359 @@
+"""Session-52 phrasings of issue 12 (engineer 12): blind50's politeness and fillers, wants and
+needs, pronouns and ellipsis, lower case and questions, each as a family (docs/grounding.md,
+"Session 52 (engineer 12)"). Each rule with sentences in other words and scenes it reads (refused
+on main and with the rule taken out), and near sentences that must stay refused."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.grounding import _rewrites52
+from hltl.world.scene import load_scene
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    KITCHEN,
+    NURSERY,
+    OFFICE,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    PhrasingCases,
+)
+
+# the example scenes blind50 uses
+DUO, SQ, L24, ONE, F41 = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml")
+    for n in ("2-2", "4-4-square", "2-4-line", "1-1", "4-1")
+)
+
+
+# -- politeness and fillers ---
+
+# 'Would you (be a star and) let P have …?' (_would_let52)
+WOULD_LET = PhrasingCases()
+test_would_let = WOULD_LET.test(
+    (
+        "Would you be a star and let Person B have the bottle and the cup? Many thanks in advance.",
+        "bottle>B & cup>B",
+        F41,
+    ),
+    ("Would you let Bob have the apple?", "apple>B", CELL),
+    ("Would you be a dear and let Marco have the lemon?", "lemon>A", KITCHEN),
+    ("Would you kindly let Mrs Khan have the water jug?", "jug>C", WARD),
+    ("Would you let Bob?", None, CELL),
+    ("Would you let Dave have the apple?", None, CELL),
+    ("Would Bob have the apple?", None, CELL),
+    ("Would you let the apple go?", None, CELL),
+)
+
+
+def test_would_let_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WOULD_LET.refused_without((_rewrites52._would_let52,), monkeypatch)
+
+
+# 'Pardon me butting in,' opening a request (_butting_in52)
+BUTTING_IN = PhrasingCases()
+test_butting_in = BUTTING_IN.test(
+    ("Pardon me butting in, the chips to Person A please.", "chips>A", L24),
+    ("Excuse me barging in, give Bob the apple.", "apple>B", CELL),
+    ("Excuse me barging in, the salt to Lena please.", "salt>B", KITCHEN),
+    ("Pardon us butting in, the water jug to Mrs Khan please.", "jug>C", WARD),
+    ("Excuse me barging in, Jess needs the drill.", "drill>B", WORKSHOP),
+    ("Excuse me butting in.", None, CELL),
+)
+
+
+def test_butting_in_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BUTTING_IN.refused_without((_rewrites52._butting_in52,), monkeypatch)
+
+
+# ', and no rush whatsoever' closing a request (_whatsoever52)
+WHATSOEVER = PhrasingCases()
+test_whatsoever = WHATSOEVER.test(
+    (
+        "Pardon me butting in, the chips to Person A please, and no rush whatsoever.",
+        "chips>A",
+        L24,
+    ),
+    ("Give Bob the apple, and no rush whatsoever.", "apple>B", CELL),
+    ("The lemon to Marco, and no hurry at all.", "lemon>A", KITCHEN),
+    ("The stapler to Sam, and no hurry whatsoever.", "stapler>B", OFFICE),
+    ("Drill to Jess please, and no rush at all.", "drill>B", WORKSHOP),
+    ("No rush whatsoever.", None, CELL),
+    ("Give Bob the apple, no rush at all for Dave.", None, CELL),
+)
+
+
+def test_whatsoever_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHATSOEVER.refused_without((_rewrites52._whatsoever52,), monkeypatch)
+
+
+def test_butting_in_and_whatsoever_both_needed(monkeypatch: pytest.MonkeyPatch) -> None:
+    # blind50's sentence needs both rules
+    both = PhrasingCases()
+    both.test(
+        (
+            "Pardon me butting in, the chips to Person A please, and no rush whatsoever.",
+            "chips>A",
+            L24,
+        ),
+    )
+    both.refused_without((_rewrites52._butting_in52,), monkeypatch)
+
+
+# 'just one teeny thing,' before a request (_teeny52)
+TEENY = PhrasingCases()
+test_teeny = TEENY.test(
+    (
+        "Sorry, just one teeny thing, Person B's after the bottle, if you could manage it.",
+        "bottle>B",
+        DUO,
+    ),
+    ("Sorry, one tiny thing, Lena needs the salt.", "salt>B", KITCHEN),
+    ("Just one teeny weeny thing, could Sam have the stapler?", "stapler>B", OFFICE),
+    ("Sorry, just one tiny thing, give Bob the apple.", "apple>B", CELL),
+    ("Just one teeny thing, the water jug to Mrs Khan please.", "jug>C", WARD),
+    ("One teeny thing.", None, CELL),
+    ("Sorry, one teeny apple for Bob.", None, CELL),
+)
+
+
+def test_teeny_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    TEENY.refused_without((_rewrites52._teeny52,), monkeypatch)
+
+
+# 'No pressure (, mate), but' opening a want (_no_pressure52)
+NO_PRESSURE = PhrasingCases()
+test_no_pressure = NO_PRESSURE.test(
+    (
+        "No pressure, mate, but Tom could do with the work gloves before his shift, cheers.",
+        "gloves>B",
+        load_scene(ROOT / "tests/grounding/paraphrase/scenes/depot.yaml"),
+    ),
+    ("No pressure, but Bob could do with the apple.", "apple>B", CELL),
+    ("No pressure, but could Sam have the stapler?", "stapler>B", OFFICE),
+    ("No pressure, pal, but Jess needs the drill.", "drill>B", WORKSHOP),
+    ("No pressure, Dave, but Bob could do with the apple.", None, CELL),
+    ("No pressure, but Bob doesn't want the apple.", None, CELL),
+    ("No apple, but Bob could do with the crisps.", None, CELL),
+)
+
+
+def test_no_pressure_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NO_PRESSURE.refused_without((_rewrites52._no_pressure52,), monkeypatch)
+
+
+# "P's got his hands full" after a request (_hands_full52)
+HANDS_FULL = PhrasingCases()
+test_hands_full = HANDS_FULL.test(
+    (
+        "Ever so sorry, would you mind getting the teddy to Lily? Grandad's got his hands full.",
+        "teddy>A",
+        NURSERY,
+    ),
+    ("Could you give Bob the apple? Alice has her hands full.", "apple>B", CELL),
+    ("Pass Lena the salt, Marco's got his hands full.", "salt>B", KITCHEN),
+    (
+        "Would you mind taking Priya the notepad? Sam's got his hands full at the moment.",
+        "notebook>A",
+        OFFICE,
+    ),
+    ("Give Kofi the hammer, Jess has her hands full.", "hammer>A", WORKSHOP),
+    ("Alice has her hands full.", None, CELL),
+    ("Give Bob the apple, Alice has his hands full.", None, CELL),
+    ("Give Bob the apple, Dave has his hands full.", None, CELL),
+)
+
+
+def test_hands_full_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    HANDS_FULL.refused_without((_rewrites52._hands_full52,), monkeypatch)
+
+
+# -- wants and needs ---
+
+# ', whereas P …' joining two wants (_whereas52)
+WHEREAS = PhrasingCases()
+test_whereas = WHEREAS.test(
+    (
+        "Person A has a real fancy for the apple today, whereas Person B could murder the chips "
+        "after his underwater rugby practice.",
+        "apple>A & chips>B",
+        SQ,
+    ),
+    ("Bob wants the apple, whereas Alice wants the crisps.", "apple>B & chips>A", CELL),
+    ("Marco needs the lemon, whereas Lena could do with the salt.", "lemon>A & salt>B", KITCHEN),
+    ("Sam's after the stapler, whereas Priya wants the notepad.", "stapler>B & notebook>A", OFFICE),
+    (
+        "Mr Lee wants the magazine, whereas Mrs Khan would like the water jug.",
+        "magazine>B & jug>C",
+        WARD,
+    ),
+    ("Bob wants the apple, whereas Alice doesn't.", None, CELL),
+    ("Give Bob the apple, whereas Alice gets nothing.", None, CELL),
+    ("Bob wants the apple, whereas Dave wants the crisps.", None, CELL),
+    ("Bob had the apple, whereas Alice wants the crisps.", None, CELL),
+)
+
+
+def test_whereas_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHEREAS.refused_without((_rewrites52._whereas52,), monkeypatch)
+
+
+# "P's short of X" (_short_of52)
+SHORT_OF = PhrasingCases()
+test_short_of = SHORT_OF.test(
+    (
+        "Lena's short of tongs and a white plate for the wedding planner's table.",
+        "tongs>B & plate_white>B",
+        KITCHEN,
+    ),
+    ("Jess is a bit short of screws.", "screws>B", WORKSHOP),
+    ("Zoe's short of glue for her collage.", "glue>C", CLASSROOM),
+    ("Ava is a bit short of wipes.", "wipes>C", NURSERY),
+    ("Bob was short of crisps.", None, CELL),
+    ("The shelf's short of crisps.", None, CELL),
+    ("Dave's short of crisps.", None, CELL),
+)
+
+
+def test_short_of_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SHORT_OF.refused_without((_rewrites52._short_of52,), monkeypatch)
+
+
+# 'P needs the X to have a look behind …' (_to_look52)
+TO_LOOK = PhrasingCases()
+test_to_look = TO_LOOK.test(
+    ("Jess needs the torch to have a look behind the bench.", "torch>B", WORKSHOP),
+    ("Bob needs the cup to have a look at the bottle.", "cup>B", CELL),
+    ("Sam wants the stapler to take a look inside it.", "stapler>B", OFFICE),
+    (
+        "Mrs Khan would like the magazine to have a look at the puzzles.",
+        "magazine>C",
+        WARD,
+    ),
+    ("Kofi needs the torch to look for the hammer.", "torch>A", WORKSHOP),
+    ("Bob needs to have a look behind the shelf.", None, CELL),
+    ("Give Bob the apple to have a look.", None, CELL),
+    ("Put the cup on the shelf to have a look.", None, CELL),
+)
+
+
+def test_to_look_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    TO_LOOK.refused_without((_rewrites52._to_look52,), monkeypatch)
+
+
+# -- pronouns and ellipsis ---
+
+# 'his colleague, P' (_colleague52)
+COLLEAGUE = PhrasingCases()
+test_colleague = COLLEAGUE.test(
+    (
+        "Person B's getting the bottle, and the chips can go to his colleague, Person A.",
+        "bottle>B & chips>A",
+        DUO,
+    ),
+    (
+        "Marco's having the lemon, and the salt can go to his colleague, Lena.",
+        "lemon>A & salt>B",
+        KITCHEN,
+    ),
+    (
+        "Priya wants the notepad, and the stapler goes to her assistant, Sam.",
+        "notebook>A & stapler>B",
+        OFFICE,
+    ),
+    (
+        "Kofi's getting the hammer, and the drill can go to his workmate, Jess.",
+        "hammer>A & drill>B",
+        WORKSHOP,
+    ),
+    ("The crisps can go to his colleague, Alice.", None, CELL),
+    ("Bob gets the apple, and the crisps go to his friend, Dave.", None, CELL),
+    ("Bob gets the apple, and the crisps go to his friend, Bob.", None, CELL),
+)
+
+
+def test_colleague_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    COLLEAGUE.refused_without((_rewrites52._colleague52,), monkeypatch)
+
+
+# "P's been shivering since they opened the window, so …" (_since_event52)
+SINCE_EVENT = PhrasingCases()
+test_since_event = SINCE_EVENT.test(
+    (
+        "Mr Lee's been shivering since they opened the window, so he's to have the blue "
+        "blanket, please.",
+        "blanket_blue>B",
+        WARD,
+    ),
+    ("Bob's been starving since the bell rang, so he's to have the apple.", "apple>B", CELL),
+    (
+        "Lena's been sneezing since someone opened the door, so she needs the tongs.",
+        "tongs>B",
+        KITCHEN,
+    ),
+    (
+        "Lily's been grumpy since they turned the lights off, so she wants the teddy.",
+        "teddy>A",
+        NURSERY,
+    ),
+    ("Bob's been starving since the apple arrived, so he's to have the crisps.", None, CELL),
+    ("Bob's been starving since they opened the window.", None, CELL),
+)
+
+
+def test_since_event_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SINCE_EVENT.refused_without((_rewrites52._since_event52,), monkeypatch)
+
+
+# -- lower case ---
+
+# '<pastime> starts in ten so …' opening a want (_starts_in52)
+STARTS_IN = PhrasingCases()
+test_starts_in = STARTS_IN.test(
+    ("tchoukball starts in ten so person a needs her bottle now", "bottle>A", ONE),
+    ("netball starts in five so bob needs the apple now", "apple>B", CELL),
+    ("rounders starts in ten so lena needs the salt", "salt>B", KITCHEN),
+    ("quiz starts in five so sam wants the stapler", "stapler>B", OFFICE),
+    ("bingo starts in ten so mrs khan needs her magazine", "magazine>C", WARD),
+    ("the shelf starts in ten so bob needs the apple", None, CELL),
+    ("netball starts in ten so bob had the apple", None, CELL),
+    ("netball starts in ten", None, CELL),
+)
+
+
+def test_starts_in_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    STARTS_IN.refused_without((_rewrites52._starts_in52,), monkeypatch)
+
+
+# -- questions ---
+
+# "P's asking if he can borrow the X" (_asking_if52)
+ASKING_IF = PhrasingCases()
+test_asking_if = ASKING_IF.test(
+    (
+        "Kofi's asking if he can borrow the big spanner, would you take it over?",
+        "spanner_large>A",
+        WORKSHOP,
+    ),
+    ("Bob's asking if he can have the apple.", "apple>B", CELL),
+    (
+        "Lena's asking if she could borrow the knife, would you take it over?",
+        "knife>B",
+        KITCHEN,
+    ),
+    ("Sam's wondering whether he can borrow the stapler.", "stapler>B", OFFICE),
+    (
+        "Grandad's asking if he can have the teddy, could you take it to him?",
+        "teddy>B",
+        NURSERY,
+    ),
+    ("Bob's asking if she can have the apple.", None, CELL),
+    ("Bob's asking if he can have the shelf.", None, CELL),
+    ("Bob's asking if Alice can have the apple.", None, CELL),
+)
+
+
+def test_asking_if_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ASKING_IF.refused_without((_rewrites52._asking_if52,), monkeypatch)
