@@ -7,8 +7,10 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.errors import GroundingError
 from hltl.grounding import _rewrites52
-from hltl.world.scene import load_scene
+from hltl.grounding.lexicon import Lexicon
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -19,6 +21,8 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_reads,
+    assert_refused,
 )
 
 # the example scenes blind50 uses
@@ -357,3 +361,64 @@ test_asking_if = ASKING_IF.test(
 
 def test_asking_if_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     ASKING_IF.refused_without((_rewrites52._asking_if52,), monkeypatch)
+
+
+# -- refused (12c's fuzz): each read on main ---
+
+# 'Should / Must the X go to P?' (_should52) and 'P had asked for X.' alone (_had_wanted52)
+ASKS_ONLY = [
+    ("Should the apple go to Bob?", CELL),
+    ("Should the apple go on the shelf?", CELL),
+    ("Must the apple go to Bob?", CELL),
+    ("Should the apple go to Bob, do you think?", CELL),
+    ("Should you give Bob the apple?", CELL),
+    ("Should the red mug go to Alice or Bob?", CELL),
+    ("Should the lemon go on the rack?", KITCHEN),
+    ("Must the stapler go in the box?", OFFICE),
+    ("Bob had asked for one of the mugs.", CELL),
+    ("Alice had wanted the apple.", CELL),
+    ("Marco had asked for the lemon.", KITCHEN),
+    ("Mrs Khan had asked for one of the blankets.", WARD),
+]
+MINE = {_rewrites52._should52, _rewrites52._had_wanted52}
+
+
+@pytest.mark.parametrize(("text", "scene"), ASKS_ONLY)
+def test_asks_only_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+
+
+def test_asks_only_refused_by_these_rules() -> None:
+    # each sentence is refused by one of these refusals asked of it alone, and each refusal
+    # refuses one of them (other sessions' refusals may refuse some of them first)
+    used = set()
+    for text, scene in ASKS_ONLY:
+        lexicon = Lexicon.of(scene)
+        hit = set()
+        for rule in MINE:
+            try:
+                rule(text, lexicon)
+            except GroundingError:
+                hit.add(rule)
+        assert hit, text
+        used |= hit
+    assert used == MINE
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Shall Bob get the apple?", "apple>B", CELL),
+        ("Will you give Bob the apple?", "apple>B", CELL),
+        ("Alice should get the cup.", "cup>A", CELL),
+        ("The apple should end up on the shelf.", "apple@shelf", CELL),
+        ("Bob asked for one of the mugs.", "mug_red>B | mug_blue>B", CELL),
+        (
+            "Zoe had asked for the glue, but now she'd rather have the scissors.",
+            "scissors>C",
+            CLASSROOM,
+        ),
+    ],
+)
+def test_asks_only_near_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)

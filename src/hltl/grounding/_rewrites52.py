@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
 from hltl.grounding._rewrites44 import _agrees44
@@ -306,6 +307,54 @@ def _asking_if52(text: str, lexicon: Lexicon) -> str:
     return _read_for(put + text[m.end() :], text, pid, lexicon)
 
 
+# -- refused (12c's fuzz) -------------------------------------------------------------------------
+
+# -- 'Should / Must the X go to P?' ("Should the apple go on the shelf?", "Must the apple go to
+# Bob?", "Should you give Bob the apple?", "Should the red mug go to Alice or Bob?"): a question
+# that only asks what ought to happen, as "Should Bob get the apple?" is (refused)
+_SHOULD52 = re.compile(
+    r"^(?P<said>(?:Should|Must|Ought) (?:the|that|this|these|those|you|u|we|I|it|they|he|she|"
+    r"one|either|both|a|an|my|his|her|their|our)\b[^?,;:.]{1,80}?)(?:,\s*(?:do you think|what do "
+    r"you (?:think|reckon)|or not))?\s*\?\s*$",
+    _F,
+)
+
+
+def _should52(text: str, lexicon: Lexicon) -> None:
+    """Session 52: refuse 'Should the X go to P?' (above)."""
+    if not text[:6].lower().startswith(("should", "must ", "ought ")) or "?" not in text:
+        return
+    m = _SHOULD52.match(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} asks what ought to happen: it asks for nothing; say 'give …' or 'put …'"
+    )
+
+
+# -- 'P had asked for / had wanted X.' said alone ("Bob had asked for one of the mugs.", "Alice had
+# wanted the apple."): a want before some time past, which may be over; refused as session 51's
+# 'had been needing' is ("Zoe had asked for the glue, but now she'd rather have the scissors."
+# says what she wants now and reads)
+_HAD_WANTED52 = re.compile(
+    r"^(?P<said>" + _P52 + r"(?: had|'d) (?:asked for|wanted|requested|been after|been wanting|"
+    r"needed|been needing|fancied)) [^,;:.!?]+[.!]?$"
+)
+
+
+def _had_wanted52(text: str, lexicon: Lexicon) -> None:
+    """Session 52: refuse 'P had asked for X.' said alone (above)."""
+    if " had " not in text and "'d " not in text:
+        return
+    m = _HAD_WANTED52.match(text.strip())
+    if m is None or not _only_person(m["said"].rsplit(" had", 1)[0].split("'d ")[0], lexicon):
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what was wanted before: it may be over; say 'give …' for what is "
+        "wanted now"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _would_let52,
@@ -325,6 +374,6 @@ _STEPS52_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-51 ones)
-REFUSE52: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE52: tuple[Callable[[str, Lexicon], None], ...] = (_should52, _had_wanted52)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-51 ones)
 CHECK52: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
