@@ -404,18 +404,14 @@ KNOWN_MISSES = frozenset(
         "Apologies for the fuss, could the stapler go in the box? Priya's clearing the desk for "
         "the cryptographer's visit.",
         "If you'd be so kind, lay the knife on the worktop, Marco's doing the lemons in a sec.",
-        "I reckon Person A would quite like the bottle after her gong bath.",
         "Mr Lee's been on at me about his tablets since ten, and Mrs Khan's thirsty, so she wants "
         "the water jug.",
         "We need the small box sat on the pallet before the lorry pulls in.",
         "Alice is after the bottle for her open water swim. Bob, same deal with the crisps.",
         "Person A gets the apple as her bit of lunch, and the cup's Person B's, for his tea "
         "before senet.",
-        "The chips are Person B's. Oh, and he'll take the apple off your hands as well.",
         "That bottle belongs to Person A and she'd like it back before her flint knapping class.",
         "Mrs Ortiz is doing map skills next period, so set the globe on her desk, would you.",
-        "Kofi's been hunting high and low for the hammer all morning, give it him before he loses "
-        "his rag.",
         "bottle for Alice crisps for Bob that's your lot cheers",
         "Cup first, it's Person B's. Apple second, that one's Person A's, she's eating it on the "
         "boat.",
@@ -471,17 +467,12 @@ KNOWN_MISSES = frozenset(
         "The notepad should go in the box, no, hang on, Priya wants it left out on the desk.",
         "Leave the hammer on the bench, actually no, lock it away in the locker for the night.",
         "start with the cup for person a and when you've done that the apple's for person b",
-        "poor person b's been hanging about for his chips for ages",
-        "he's off on a bothy trip so person b wants the bottle and the chips both",
-        "reckon you could hand person a her bottle i've got my hands full",
-        "grandad's asked for the teddy to do his silly voices",
         "Bob's waiting on his crispz, could you take them over.",
         "Person B's after the appled for his packed lunch.",
         "Those xchips on the side are meant for Person A.",
         "Grandad's got jam on his hands, get him the baby wipws.",
         "Could you do the bottle for Person A first, and when that's done, the chips for Person B?",
         "Is it possible to get the spoon onto the tray before Dana's round?",
-        "Would you leave the bib ready on the high chair for lunchtime?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

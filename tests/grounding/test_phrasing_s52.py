@@ -15,6 +15,7 @@ from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -26,9 +27,9 @@ from tests.grounding.helpers import (
 )
 
 # the example scenes blind50 uses
-DUO, SQ, L24, ONE, F41 = (
+DUO, SQ, L24, ONE, F41, ONE_TWO = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("2-2", "4-4-square", "2-4-line", "1-1", "4-1")
+    for n in ("2-2", "4-4-square", "2-4-line", "1-1", "4-1", "1-2")
 )
 
 
@@ -361,6 +362,185 @@ test_asking_if = ASKING_IF.test(
 
 def test_asking_if_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     ASKING_IF.refused_without((_rewrites52._asking_if52,), monkeypatch)
+
+
+# -- batch 2 ---
+
+# "he'll take the X off your hands" (_off_your_hands52)
+OFF_YOUR_HANDS = PhrasingCases()
+test_off_your_hands = OFF_YOUR_HANDS.test(
+    (
+        "The chips are Person B's. Oh, and he'll take the apple off your hands as well.",
+        "chips>B & apple>B",
+        F41,
+    ),
+    ("Mrs Khan will happily take the magazine off your hands.", "magazine>C", WARD),
+    ("Lena will gladly take the salt off your hands.", "salt>B", KITCHEN),
+    ("Alice will happily take the crisps off your hands.", "chips>A", CELL),
+    ("Priya will gladly take the notepad off your hands.", "notebook>A", OFFICE),
+    ("Take the apple off your hands.", None, CELL),
+    ("Bob will take the shelf off your hands.", None, CELL),
+)
+
+
+def test_off_your_hands_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    OFF_YOUR_HANDS.refused_without((_rewrites52._off_your_hands52,), monkeypatch)
+
+
+# 'poor (old) P' opening a want (_poor52)
+POOR = PhrasingCases()
+test_poor = POOR.test(
+    ("Poor Bob's been waiting for the apple for ages.", "apple>B", CELL),
+    ("Poor old Lena needs the salt.", "salt>B", KITCHEN),
+    ("poor sam's been after the stapler all morning", "stapler>B", OFFICE),
+    ("Poor Mrs Khan wants the water jug.", "jug>C", WARD),
+    ("Poor Dave wants the apple.", None, CELL),
+    ("Poor Bob.", None, CELL),
+    ("Poor Bob had the apple.", None, CELL),
+)
+
+
+def test_poor_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    POOR.refused_without((_rewrites52._poor52,), monkeypatch)
+
+
+# "P's been hanging about for X" (_hanging_about52)
+HANGING_ABOUT = PhrasingCases()
+test_hanging_about = HANGING_ABOUT.test(
+    ("Bob's been hanging about for the apple for ages.", "apple>B", CELL),
+    ("Lena's been hanging around for the salt all morning.", "salt>B", KITCHEN),
+    ("Sam's been hovering about waiting for the stapler.", "stapler>B", OFFICE),
+    ("Lily's been sitting around for her teddy for ages.", "teddy>A", NURSERY),
+    ("Bob's been hanging about for ages.", None, CELL),
+    ("Bob's been hanging about for Alice.", None, CELL),
+)
+
+
+def test_hanging_about_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    HANGING_ABOUT.refused_without((_rewrites52._hanging_about52,), monkeypatch)
+
+
+def test_poor_and_hanging_about_both_needed(monkeypatch: pytest.MonkeyPatch) -> None:
+    # blind50's sentence needs both rules
+    both = PhrasingCases()
+    both.test(("poor person b's been hanging about for his chips for ages", "chips>B", F41))
+    both.refused_without((_rewrites52._poor52,), monkeypatch)
+    both.refused_without((_rewrites52._hanging_about52,), monkeypatch)
+
+
+# 'hunting high and low for X' (_high_and_low52)
+HIGH_AND_LOW = PhrasingCases()
+test_high_and_low = HIGH_AND_LOW.test(
+    (
+        "Kofi's been hunting high and low for the hammer all morning, give it him before he "
+        "loses his rag.",
+        "hammer>A",
+        WORKSHOP,
+    ),
+    ("Bob's been hunting high and low for the apple.", "apple>B", CELL),
+    ("Lena's been searching everywhere for the salt, pass it her.", "salt>B", KITCHEN),
+    ("Sam's been rummaging all over for the stapler.", "stapler>B", OFFICE),
+    ("Zoe's been hunting high and low for the glue.", "glue>C", CLASSROOM),
+    ("Bob's been hunting high and low for Alice.", None, CELL),
+    ("Bob's been hunting high and low for the apple, but he found it.", None, CELL),
+)
+
+
+def test_high_and_low_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    HIGH_AND_LOW.refused_without((_rewrites52._high_and_low52,), monkeypatch)
+
+
+# "… i've got my hands full" closing a request (_my_hands52)
+MY_HANDS = PhrasingCases()
+test_my_hands = MY_HANDS.test(
+    ("reckon you could hand person a her bottle i've got my hands full", "bottle>A", ONE_TWO),
+    ("could you give bob the apple i've got my hands full", "apple>B", CELL),
+    ("pass lena the salt please im a bit busy", "salt>B", KITCHEN),
+    ("give sam the stapler i've got my hands full at the moment", "stapler>B", OFFICE),
+    ("I've got my hands full.", None, CELL),
+    ("Give Bob the apple, Alice, I've got my hands full.", None, CELL),
+)
+
+
+def test_my_hands_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    MY_HANDS.refused_without((_rewrites52._my_hands52,), monkeypatch)
+
+
+# "P's asked for the X to do his silly voices" (_to_do_his52)
+TO_DO_HIS = PhrasingCases()
+test_to_do_his = TO_DO_HIS.test(
+    ("grandad's asked for the teddy to do his silly voices", "teddy>B", NURSERY),
+    ("Bob's asked for the apple to make his lunch.", "apple>B", CELL),
+    ("mrs khan wants the magazine to do her silly quizzes", "magazine>C", WARD),
+    ("noah wants the ruler to do his silly drawings", "ruler>B", CLASSROOM),
+    ("Omar wants the banana to make his lunch.", "banana>B", LAB),
+    ("Bob's asked for the apple to do her lunch.", None, CELL),
+    ("Bob's asked for the apple to put his cup on the shelf.", None, CELL),
+    ("Give Bob the apple to do his lunch.", None, CELL),
+)
+
+
+def test_to_do_his_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    TO_DO_HIS.refused_without((_rewrites52._to_do_his52,), monkeypatch)
+
+
+# 'after her gong bath' closing a want of one person (_after_care52)
+AFTER_CARE = PhrasingCases()
+test_after_care = AFTER_CARE.test(
+    ("I reckon Person A would quite like the bottle after her gong bath.", "bottle>A", DUO),
+    ("Bob would like the apple after his bath.", "apple>B", CELL),
+    ("Lena needs the salt after her shower.", "salt>B", KITCHEN),
+    ("Mrs Khan wants the water jug after her wash.", "jug>C", WARD),
+    ("Grandad would like the bib after his shave.", "bib>B", NURSERY),
+    ("Bob would like the apple after her bath.", None, CELL),
+    ("Bob would like the apple after Alice's bath.", None, CELL),
+    ("Give Bob the apple after his bath.", None, CELL),
+)
+
+
+def test_after_care_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    AFTER_CARE.refused_without((_rewrites52._after_care52,), monkeypatch)
+
+
+# 'leave the X ready on S (for lunchtime)?' (_ready_on52)
+READY_ON = PhrasingCases()
+test_ready_on = READY_ON.test(
+    ("Would you leave the bib ready on the high chair for lunchtime?", "bib@highchair", NURSERY),
+    ("Would you leave the apple ready on the shelf?", "apple@shelf", CELL),
+    (
+        "Could you leave the plates ready on the rack for dinner?",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    ("Could you leave the bowl ready on the tray for lunch?", "bowl@tray", LAB),
+    ("Can you leave the notepad ready on the desk?", "notebook@desk", OFFICE),
+    ("Would you leave the apple ready?", None, CELL),
+)
+
+
+def test_ready_on_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    READY_ON.refused_without((_rewrites52._ready_on52,), monkeypatch)
+
+
+# "he's off on a trip so P wants …" (_cataphor52)
+CATAPHOR = PhrasingCases()
+test_cataphor = CATAPHOR.test(
+    (
+        "he's off on a bothy trip so person b wants the bottle and the chips both",
+        "bottle>B & chips>B",
+        L24,
+    ),
+    ("he's off to the allotment so grandad wants the teddy", "teddy>B", NURSERY),
+    ("she's off on her break so lena wants the salt", "salt>B", KITCHEN),
+    ("he's off to football so noah wants the ruler", "ruler>B", CLASSROOM),
+    ("she's off to the gym so alice wants the crisps", None, CELL),
+    ("she's off to nursery so ava wants the teddy", None, NURSERY),
+    ("he's off on a trip so bob had the apple", None, CELL),
+)
+
+
+def test_cataphor_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CATAPHOR.refused_without((_rewrites52._cataphor52,), monkeypatch)
 
 
 # -- refused (12c's fuzz): each read on main ---

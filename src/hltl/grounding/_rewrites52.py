@@ -21,6 +21,16 @@ from hltl.grounding.tree import Node
 _P52 = r"(?:[Pp]erson [A-Za-z]|[A-Z]\w*(?: [A-Z]\w*)?)"
 
 
+def _person_at52(text: str, lexicon: Lexicon) -> str | None:
+    """The words opening ``text`` (one to three, the longest) that name one person of the scene
+    and nothing else, however cased ('lena', 'Mrs Khan', 'person b'); None if none do."""
+    words = re.findall(r"[A-Za-z]+", text.split("'")[0])[:3]
+    for k in (3, 2, 1):
+        if len(words) >= k and _only_person(" ".join(words[:k]), lexicon):
+            return " ".join(words[:k])
+    return None
+
+
 # -- politeness and fillers ------------------------------------------------------------------------
 
 # -- 'Would you (be a star and) let P have …?' ("Would you be a star and let Person B have the
@@ -155,7 +165,8 @@ def _hands_full52(text: str, lexicon: Lexicon) -> str:
 _WANTS52 = re.compile(
     r"\b(?:needs?|wants?|could do with|(?:'s|is) after|asked for|(?:'s|is) asking for|(?:'s|is|"
     r"are) waiting for|(?:has|'s got|has got) a (?:[a-z]+ )?(?:fancy|craving|hankering|yen|"
-    r"thirst|hunger|longing) for|would like|'d like|would love|'d love|fancies|needed|wanted)\b",
+    r"thirst|hunger|longing) for|would (?:quite |really |so |very much )?like|'d (?:quite |really "
+    r"|so )?like|would love|'d love|fancies|needed|wanted)\b",
     _F,
 )
 
@@ -307,6 +318,204 @@ def _asking_if52(text: str, lexicon: Lexicon) -> str:
     return _read_for(put + text[m.end() :], text, pid, lexicon)
 
 
+# -- batch 2 ---------------------------------------------------------------------------------------
+
+# -- "he'll take the apple off your hands" ("Oh, and he'll take the apple off your hands as
+# well."): the taking is P's want, said 'take the apple' (read)
+_OFF_YOUR_HANDS52 = re.compile(
+    r"\b(?P<v>take|have|relieve you of) (?P<x>(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?|it|"
+    r"them)(?P<cut> off (?:your|ya|yer|you're) hands)\b"
+)
+
+
+def _off_your_hands52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: 'take the X off your hands' read as 'take the X'."""
+    if " hands" not in text:
+        return text
+    m = _OFF_YOUR_HANDS52.search(text)
+    if m is None or m["v"] != "take":
+        return text
+    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+
+
+# -- 'poor (old) P' opening a want ("poor person b's been hanging about for his chips for ages"):
+# the speaker's pity, taken off
+_POOR52 = re.compile(r"^(?:[Pp]oor old|[Bb]less old|[Pp]oor|[Bb]less) ")
+
+
+def _poor52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: an opening 'poor (old) P' read as 'P'."""
+    if text[:4].lower() not in ("poor", "bles"):
+        return text
+    m = _POOR52.match(text)
+    if m is None or _person_at52(text[m.end() :], lexicon) is None:
+        return text
+    return _cut50(text, 0, m.end(), "", lexicon)
+
+
+# -- "P's been hanging about for his chips" ("… kicking her heels waiting for …"): waiting for
+# them, said "P's been waiting for" (read)
+_HANGING_ABOUT52 = re.compile(
+    r"\b(?:hanging|hangin'?|hovering|loitering|lurking|kicking (?:his|her|their) heels|"
+    r"twiddling (?:his|her|their) thumbs|sat|sitting|standing|stood) (?:about|around|round|on)"
+    r"(?: (?:waiting|here|there))? (?=for\b)"
+)
+
+
+def _hanging_about52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: 'hanging about for' read as 'waiting for'."""
+    if " for " not in text:
+        return text
+    m = _HANGING_ABOUT52.search(text)
+    if m is None:
+        return text
+    return _cut50(text, m.start(), m.end(), "waiting ", lexicon)
+
+
+# -- 'hunting high and low for the X' ("Kofi's been hunting high and low for the hammer all
+# morning"): looking for it, said "been looking for" (read)
+_HIGH_AND_LOW52 = re.compile(
+    r"\b(?:hunting|searching|looking|rummaging|scouring the place|turning the place upside down|"
+    r"turning everything upside down|tearing the place apart|ferreting about|ferreting around)"
+    r"(?: high and low| everywhere| all over| all over the place| far and wide)? "
+    r"(?P<for>(?:looking )?for)\b"
+)
+
+
+def _high_and_low52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: 'hunting high and low for' read as 'looking for'."""
+    if " for " not in text:
+        return text
+    m = _HIGH_AND_LOW52.search(text)
+    if m is None or m.group().startswith("looking for"):
+        return text
+    return _cut50(text, m.start(), m.end(), "looking for", lexicon)
+
+
+# -- "… i've got my hands full" closing a request ("reckon you could hand person a her bottle i've
+# got my hands full"): why the speaker asks, taken off
+_MY_HANDS52 = re.compile(
+    r"(?:[,.;:!?]\s*|\s+(?:as|since|because|cos|'cause|coz)\s+|\s+)(?:[Ii]'ve got|[Ii] have got|"
+    r"[Ii] have|[Ii]'ve|[Ii]ve got|[Ii] got|[Ii]'m|[Ii]m|[Ii] am) (?:got )?(?:my hands (?:full|"
+    r"tied)|(?:a bit |rather |really )?(?:busy|swamped|snowed under|up to my eyes))(?: (?:at the "
+    r"moment|right now|just now|now|here|today))?(?P<end>\s*[.!]?)$"
+)
+
+
+def _my_hands52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: a closing "i've got my hands full" taken off."""
+    if "hands" not in text and "busy" not in text and "snowed" not in text and "eyes" not in text:
+        return text
+    m = _MY_HANDS52.search(text)
+    if m is None or m.start() == 0:
+        return text
+    return _cut50(text, m.start(), m.end(), m["end"], lexicon)
+
+
+# -- 'P's asked for the X to do his silly voices' ("grandad's asked for the teddy to do his silly
+# voices"): what the person wants it for, their own doing, taken off when it names nothing of the
+# scene and the pronoun may be the one person named
+_TO_DO_HIS52 = re.compile(
+    r"(?P<cut>,?\s+(?:so as |in order )?to (?:do|play|make|practise|practice|finish|read|sing|"
+    r"try|show off|work on|get on with|start|carry on with|keep up) (?P<pron>his|her|their) "
+    r"[^,.;:!?]+?)(?=\s*[.!]?$)"
+)
+
+
+def _to_do_his52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: a closing 'to do his silly voices' after a want of one person taken off."""
+    if " to " not in text:
+        return text
+    m = _TO_DO_HIS52.search(text)
+    if m is None or _names(m["cut"], lexicon) or not _WANTS52.search(text[: m.start()]):
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    if len(people) != 1 or not _agrees44(next(iter(people)), m["pron"], lexicon):
+        return text
+    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+
+
+# -- 'after her gong bath' closing a want of one person ("I reckon Person A would quite like the
+# bottle after her gong bath."): a doing of theirs that session 37's list does not hold (a bath,
+# a shower, a haircut …), taken off when it names nothing and the pronoun may be the one person
+_AFTER_CARE52 = re.compile(
+    r"(?P<cut>,?\s+(?:after|following) (?P<pron>his|her|their) (?:[a-z]+ ){0,2}?(?:bath|shower|"
+    r"soak|facial|haircut|manicure|pedicure|trim|meditation|dip|sunbathe|snooze|lie-in|lie down|"
+    r"lie-down|shave|blow-dry|perm|wax|scrub|steam|plunge|bathe|wash)s?)(?=\s*[.!]?$)"
+)
+
+
+def _after_care52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: a closing 'after her gong bath' after a want of one person taken off."""
+    if "after" not in text and "following" not in text:
+        return text
+    m = _AFTER_CARE52.search(text)
+    if m is None or _names(m["cut"], lexicon) or not _WANTS52.search(text[: m.start()]):
+        return text
+    people = _ids(text[: m.start()], lexicon, "human")
+    if len(people) != 1 or not _agrees44(next(iter(people)), m["pron"], lexicon):
+        return text
+    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+
+
+# -- 'Would you leave the X ready on S (for lunchtime)?' ("Would you leave the bib ready on the
+# high chair for lunchtime?"): that it be ready is what a placing does; said 'leave the X on S'
+# and a meal it is ready for taken off (read: "Put the bib on the high chair for lunchtime.")
+_READY_ON52 = re.compile(
+    r"\b(?P<v>leave|put|set|have|get|lay|pop|place)(?P<x> (?:the|that|this|those|these) [a-z]+(?: "
+    r"[a-z]+)?)(?P<ready> (?:all )?(?:ready|set out|ready and waiting|out ready|laid out))(?= "
+    r"(?:on|in|onto|into|by|at) )"
+)
+_FOR_MEAL52 = re.compile(
+    r"(?P<cut> (?:for|ready for|in time for) (?:lunch|lunchtime|dinner|dinnertime|tea|teatime|"
+    r"breakfast|brekkie|supper|snack time|bedtime|bath time|nap time))(?=\s*\?\s*$)"
+)
+
+
+def _ready_on52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: 'leave the X ready on S (for lunchtime)?' read as 'leave the X on S?'."""
+    if "ready" not in text and "set out" not in text and "laid out" not in text:
+        return text
+    m = _READY_ON52.search(text)
+    if m is None:
+        return text
+    out = f"{text[: m.start('ready')]}{text[m.end('ready') :]}"
+    meal = _FOR_MEAL52.search(out)
+    if meal is not None:
+        out = f"{out[: meal.start()]}{out[meal.end() :]}"
+    return _read_for(out, text, None, lexicon)
+
+
+# -- "he's off on a bothy trip so person b wants …" (a pronoun said before the one person it may
+# be): why the person wants it, taken off when it names nothing and the pronoun may be only the
+# person named just after 'so'
+_CATAPHOR52 = re.compile(
+    r"^(?P<pron>[Hh]e|[Ss]he)(?:'s| is|s) (?:off|away|going|heading|out|just back|back) "
+    r"(?P<w>[^,.;:!?]{3,60}?),? (?:so|and so) "
+)
+
+
+def _cataphor52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: an opening "he's off on a trip so P wants …" read as 'P wants …'."""
+    if not text[:3].lower().startswith(("he", "she")):
+        return text
+    m = _CATAPHOR52.match(text)
+    if m is None or _names(m["w"], lexicon):
+        return text
+    rest = text[m.end() :]
+    who = _person_at52(rest, lexicon)
+    if who is None or not _WANTS52.search(rest) or len(_ids(rest, lexicon, "human")) != 1:
+        return text
+    (pid,) = _ids(who, lexicon)
+    if not _agrees44(pid, m["pron"], lexicon):
+        return text
+    # no one else of the scene the pronoun may be
+    others = [h.id for h in lexicon.scene.humans if h.id != pid]
+    if any(_agrees44(o, m["pron"], lexicon) for o in others):
+        return text
+    return _cut50(text, 0, m.end(), "", lexicon)
+
+
 # -- refused (12c's fuzz) -------------------------------------------------------------------------
 
 # -- 'Should / Must the X go to P?' ("Should the apple go on the shelf?", "Must the apple go to
@@ -370,6 +579,15 @@ _STEPS52_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _since_event52,
     _starts_in52,
     _asking_if52,
+    _off_your_hands52,
+    _poor52,
+    _hanging_about52,
+    _high_and_low52,
+    _my_hands52,
+    _to_do_his52,
+    _after_care52,
+    _ready_on52,
+    _cataphor52,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52: tuple[Callable[[str, Lexicon], str], ...] = ()
