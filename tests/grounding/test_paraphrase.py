@@ -399,19 +399,13 @@ KNOWN_MISSES = frozenset(
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
         # blind50 (tuned on in session 52): refusals left at its one measurement (docs/grounding.md)
-        "Um, sorry to be a pest, would you pop the red mug up on the shelf? Carol's numerology "
-        "lot are in at six.",
-        "Apologies for the fuss, could the stapler go in the box? Priya's clearing the desk for "
-        "the cryptographer's visit.",
         "If you'd be so kind, lay the knife on the worktop, Marco's doing the lemons in a sec.",
         "Mr Lee's been on at me about his tablets since ten, and Mrs Khan's thirsty, so she wants "
         "the water jug.",
-        "We need the small box sat on the pallet before the lorry pulls in.",
         "Alice is after the bottle for her open water swim. Bob, same deal with the crisps.",
         "Person A gets the apple as her bit of lunch, and the cup's Person B's, for his tea "
         "before senet.",
         "That bottle belongs to Person A and she'd like it back before her flint knapping class.",
-        "Mrs Ortiz is doing map skills next period, so set the globe on her desk, would you.",
         "bottle for Alice crisps for Bob that's your lot cheers",
         "Cup first, it's Person B's. Apple second, that one's Person A's, she's eating it on the "
         "boat.",
@@ -466,13 +460,10 @@ KNOWN_MISSES = frozenset(
         "Give Person A the, um, the bottle I meant to say.",
         "The notepad should go in the box, no, hang on, Priya wants it left out on the desk.",
         "Leave the hammer on the bench, actually no, lock it away in the locker for the night.",
-        "start with the cup for person a and when you've done that the apple's for person b",
         "Bob's waiting on his crispz, could you take them over.",
         "Person B's after the appled for his packed lunch.",
         "Those xchips on the side are meant for Person A.",
         "Grandad's got jam on his hands, get him the baby wipws.",
-        "Could you do the bottle for Person A first, and when that's done, the chips for Person B?",
-        "Is it possible to get the spoon onto the tray before Dana's round?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

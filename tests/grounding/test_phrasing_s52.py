@@ -14,6 +14,7 @@ from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
     KITCHEN,
     LAB,
     NURSERY,
@@ -27,9 +28,9 @@ from tests.grounding.helpers import (
 )
 
 # the example scenes blind50 uses
-DUO, SQ, L24, ONE, F41, ONE_TWO = (
+DUO, SQ, L24, ONE, F41, ONE_TWO, L44 = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("2-2", "4-4-square", "2-4-line", "1-1", "4-1", "1-2")
+    for n in ("2-2", "4-4-square", "2-4-line", "1-1", "4-1", "1-2", "4-4-line")
 )
 
 
@@ -134,7 +135,7 @@ test_no_pressure = NO_PRESSURE.test(
     (
         "No pressure, mate, but Tom could do with the work gloves before his shift, cheers.",
         "gloves>B",
-        load_scene(ROOT / "tests/grounding/paraphrase/scenes/depot.yaml"),
+        DEPOT,
     ),
     ("No pressure, but Bob could do with the apple.", "apple>B", CELL),
     ("No pressure, but could Sam have the stapler?", "stapler>B", OFFICE),
@@ -541,6 +542,198 @@ test_cataphor = CATAPHOR.test(
 
 def test_cataphor_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     CATAPHOR.refused_without((_rewrites52._cataphor52,), monkeypatch)
+
+
+# -- batch 3 ---
+
+# 'We need the X sat on S' (_sat_on52)
+SAT_ON = PhrasingCases()
+test_sat_on = SAT_ON.test(
+    (
+        "We need the small box sat on the pallet before the lorry pulls in.",
+        "box_small@pallet",
+        DEPOT,
+    ),
+    ("We need the apple sat on the shelf.", "apple@shelf", CELL),
+    ("We need the stapler sat in the box before the audit.", "stapler@box", OFFICE),
+    ("We need the thermometer sat on the trolley.", "thermometer@trolley", WARD),
+    ("We need the teddy sat on the play mat.", "teddy@mat", NURSERY),
+    ("We need the apple sat.", None, CELL),
+    ("We need Bob sat on the shelf.", None, CELL),
+)
+
+
+def test_sat_on_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SAT_ON.refused_without((_rewrites52._sat_on52,), monkeypatch)
+
+
+# "before P's round" closing a request (_before_ps52)
+BEFORE_PS = PhrasingCases()
+test_before_ps = BEFORE_PS.test(
+    ("Is it possible to get the spoon onto the tray before Dana's round?", "spoon@tray", LAB),
+    ("Could you give Bob the apple before Alice's shift?", "apple>B", CELL),
+    ("Is it possible to get the jug to Mrs Khan before Ruth's round?", "jug>C", WARD),
+    ("Could you get the stapler into the box before Sam's round?", "stapler@box", OFFICE),
+    ("Could you give Bob the apple before Alice's apple?", None, CELL),
+)
+
+
+def test_before_ps_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BEFORE_PS.refused_without((_rewrites52._before_ps52,), monkeypatch)
+
+
+# "when you've done that" between two requests (_when_done52)
+WHEN_DONE = PhrasingCases()
+test_when_done = WHEN_DONE.test(
+    (
+        "start with the cup for person a and when you've done that the apple's for person b",
+        "cup>A ; apple>B",
+        L44,
+    ),
+    (
+        "give bob the apple and when you've done that the crisps are for alice",
+        "apple>B ; chips>A",
+        CELL,
+    ),
+    ("lemon to marco and once you've done that the salt's for lena", "lemon>A ; salt>B", KITCHEN),
+    (
+        "Stapler to Sam, and when you've finished that, the notepad to Priya.",
+        "stapler>B ; notebook>A",
+        OFFICE,
+    ),
+    ("when you've done that the crisps are for alice", None, CELL),
+)
+
+
+def test_when_done_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHEN_DONE.refused_without((_rewrites52._when_done52,), monkeypatch)
+
+
+# 'Could you do the X for P …?' (_do_for52)
+DO_FOR = PhrasingCases()
+test_do_for = DO_FOR.test(
+    (
+        "Could you do the bottle for Person A first, and when that's done, the chips for Person B?",
+        "bottle>A ; chips>B",
+        L24,
+    ),
+    (
+        "Could you do the apple for Bob first, and when that's done, the crisps for Alice?",
+        "apple>B ; chips>A",
+        CELL,
+    ),
+    (
+        "Would you do the stapler for Sam first, and then the notepad for Priya?",
+        "stapler>B ; notebook>A",
+        OFFICE,
+    ),
+    ("Can you do the magazine for Mr Lee please?", "magazine>B", WARD),
+    ("Could you do the apple for Dave?", None, CELL),
+    ("Could you do the apple?", None, CELL),
+    ("Could you do the shelf for Bob?", None, CELL),
+)
+
+
+def test_do_for_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DO_FOR.refused_without((_rewrites52._do_for52,), monkeypatch)
+
+
+# 'P is doing map skills next period, so …' (_doing_next52)
+DOING_NEXT = PhrasingCases()
+test_doing_next = DOING_NEXT.test(
+    (
+        "Mrs Ortiz is doing map skills next period, so set the globe on her desk, would you.",
+        "globe@desk",
+        CLASSROOM,
+    ),
+    (
+        "Priya's running a workshop next period, so put the stapler in the box.",
+        "stapler@box",
+        OFFICE,
+    ),
+    (
+        "Ruth is doing her rounds after lunch, so put the thermometer on the trolley.",
+        "thermometer@trolley",
+        WARD,
+    ),
+    (
+        "Mrs Ortiz is doing a spelling test next lesson, so put the scissors on the shelf.",
+        "scissors@shelf",
+        CLASSROOM,
+    ),
+    ("Alice is doing the apple this afternoon, so put the cup on the shelf.", None, CELL),
+    ("Alice is doing her accounts, so.", None, CELL),
+)
+
+
+def test_doing_next_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DOING_NEXT.refused_without((_rewrites52._doing_next52,), monkeypatch)
+
+
+# "P's clearing the desk (for …)." after a placing onto another surface (_clearing52)
+CLEARING = PhrasingCases()
+test_clearing = CLEARING.test(
+    (
+        "Apologies for the fuss, could the stapler go in the box? Priya's clearing the desk for "
+        "the cryptographer's visit.",
+        "stapler@box",
+        OFFICE,
+    ),
+    (
+        "Could you put the apple on the shelf? Bob's clearing the table for his quiz.",
+        "apple@shelf",
+        CELL,
+    ),
+    ("Put the knife on the rack, would you? Lena's tidying the worktop.", "knife@rack", KITCHEN),
+    (
+        "Could the spoon go in the sink? Dana's clearing the tray for the tasting.",
+        "spoon@sink",
+        LAB,
+    ),
+    ("Would you put the drill in the locker? Kofi's clearing the bench.", "drill@locker", WORKSHOP),
+    ("Could you put the apple on the shelf? Bob's clearing the shelf.", None, CELL),
+    ("Could you give Bob the apple? Alice is clearing the table.", None, CELL),
+    ("Bob's clearing the table.", None, CELL),
+    ("Could you put the apple on the shelf? Dave's clearing the table.", None, CELL),
+)
+
+
+def test_clearing_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CLEARING.refused_without((_rewrites52._clearing52,), monkeypatch)
+
+
+# "Carol's numerology lot are in at six." after a placing (_lot_in52)
+LOT_IN = PhrasingCases()
+test_lot_in = LOT_IN.test(
+    (
+        "Um, sorry to be a pest, would you pop the red mug up on the shelf? Carol's numerology "
+        "lot are in at six.",
+        "mug_red@shelf",
+        CELL,
+    ),
+    (
+        "Could you pop the knife on the rack? Marco's supper club are in at eight.",
+        "knife@rack",
+        KITCHEN,
+    ),
+    (
+        "Pop the stapler in the box, please. Priya's book group are in at four.",
+        "stapler@box",
+        OFFICE,
+    ),
+    (
+        "Would you put the bowl on the tray? Dana's tasting lot are coming in at two.",
+        "bowl@tray",
+        LAB,
+    ),
+    ("Could you give Bob the apple? Carol's lot are in at six.", None, CELL),
+    ("Carol's lot are in at six.", None, CELL),
+    ("Would you pop the red mug on the shelf? Carol's apple lot are in at six.", None, CELL),
+)
+
+
+def test_lot_in_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    LOT_IN.refused_without((_rewrites52._lot_in52,), monkeypatch)
 
 
 # -- refused (12c's fuzz): each read on main ---

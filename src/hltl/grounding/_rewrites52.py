@@ -6,12 +6,12 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
 from hltl.grounding._rewrites44 import _agrees44
 from hltl.grounding._rewrites45 import _read_for
 from hltl.grounding._rewrites50 import _cut50
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, tasks
 
 # -- session 52 (engineer 12): blind50's refusals of politeness and fillers, wants and needs,
 # pronouns and ellipsis, questions and lower case, each read as a family. Every rule rewrites to
@@ -56,7 +56,7 @@ def _would_let52(text: str, lexicon: Lexicon) -> str:
 # -- 'Pardon me butting in,' opening a request ("Pardon me butting in, the chips to Person A
 # please"): said 'Sorry for butting in,' (read: session 20's courtesies)
 _BUTTING_IN52 = re.compile(
-    r"^(?:(?:[Oo]h|[Uu]m|[Ee]r|[Ss]o),? )?(?:[Pp]ardon|[Ee]xcuse|[Ff]orgive) (?:me|us)(?: for)? "
+    r"^(?:(?:[Oo]h|[Uu]m|[Ee]r|[Ss]o),? )?(?:[Pp]ardon|[Ee]xcuse|[Ff]orgive) (?:me|us) "
     r"(?:butting|barging|cutting|chipping|jumping|bursting|crashing|breezing) in(?= *,)"
 )
 
@@ -164,9 +164,10 @@ def _hands_full52(text: str, lexicon: Lexicon) -> str:
 # a want said before a rule's words (who wants what)
 _WANTS52 = re.compile(
     r"\b(?:needs?|wants?|could do with|(?:'s|is) after|asked for|(?:'s|is) asking for|(?:'s|is|"
-    r"are) waiting for|(?:has|'s got|has got) a (?:[a-z]+ )?(?:fancy|craving|hankering|yen|"
-    r"thirst|hunger|longing) for|would (?:quite |really |so |very much )?like|'d (?:quite |really "
-    r"|so )?like|would love|'d love|fancies|needed|wanted)\b",
+    r"are|'s been|has been|have been|been) (?:waiting for|after|waiting on)|(?:has|'s got|has "
+    r"got) a (?:[a-z]+ )?(?:fancy|craving|hankering|yen|thirst|hunger|longing) for|would "
+    r"(?:quite |really |so |very much )?like|'d (?:quite |really |so )?like|would love|'d "
+    r"love|fancies|needed|wanted)\b",
     _F,
 )
 
@@ -190,7 +191,7 @@ def _whereas52(text: str, lexicon: Lexicon) -> str:
 # session 51's _short_a51 reads "P's short a glue stick")
 _SHORT_OF52 = re.compile(
     r"(?P<p>" + _P52 + r")(?:'s| is| was)? (?:a (?:bit|little|tad) |rather |running |a touch "
-    r")?short of (?=(?:the |a |an |some |any |her |his |their )?[a-z])"
+    r")?short of (?!a |an )(?=(?:the |some |any |her |his |their )?[a-z])"
 )
 
 
@@ -350,6 +351,8 @@ def _poor52(text: str, lexicon: Lexicon) -> str:
     m = _POOR52.match(text)
     if m is None or _person_at52(text[m.end() :], lexicon) is None:
         return text
+    if not _WANTS52.search(text[m.end() :]):
+        return text  # ("Poor Marco burnt his thumb, so …" is session 43's)
     return _cut50(text, 0, m.end(), "", lexicon)
 
 
@@ -516,6 +519,164 @@ def _cataphor52(text: str, lexicon: Lexicon) -> str:
     return _cut50(text, 0, m.end(), "", lexicon)
 
 
+# -- batch 3 ---------------------------------------------------------------------------------------
+
+# -- 'We need the X sat on S' ("We need the small box sat on the pallet before the lorry pulls
+# in."): where it is to be, said 'the X on S' (read)
+_SAT_ON52 = re.compile(
+    r"\b(?:need|needs|want|wants|'d like|would like|like|have|get|got)(?P<x> (?:the|that|this|"
+    r"those|these) [a-z]+(?: [a-z]+)?)(?P<sat> (?:sat|sitting|stood|standing|perched|parked|"
+    r"plonked|set|placed|put|left|lying|laid|lined up|stacked))(?= (?:on|in|onto|into|by|at|"
+    r"inside|upon) )"
+)
+
+
+def _sat_on52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: 'need the X sat on S' read as 'need the X on S'."""
+    if " on " not in text and " in " not in text and " by " not in text and " at " not in text:
+        return text
+    m = _SAT_ON52.search(text)
+    if m is None:
+        return text
+    return _cut50(text, m.start("sat"), m.end("sat"), "", lexicon)
+
+
+# -- 'before P's round' closing a request ("Is it possible to get the spoon onto the tray before
+# Dana's round?"): by when, a doing of a person of the scene, taken off ("… before her round"
+# reads)
+_BEFORE_PS52 = re.compile(
+    r"(?P<cut>,?\s+(?:before|ahead of|in time for) (?P<p>" + _P52 + r")'s (?P<w>[a-z]+(?: "
+    r"[a-z]+)?))(?=\s*[?.!]?$)"
+)
+
+
+def _before_ps52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: a closing "before P's round" taken off."""
+    if "'s " not in text:
+        return text
+    m = _BEFORE_PS52.search(text)
+    if m is None or not _only_person(m["p"], lexicon) or _names(m["w"], lexicon):
+        return text
+    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+
+
+# -- 'when you've done that' between two requests ("start with the cup for person a and when
+# you've done that the apple's for person b"): said 'when that's done' (read, in order)
+_WHEN_DONE52 = re.compile(
+    r"\b(?:when|once|after) (?:you've|you have|youve|you're|you are|youre) (?:done|finished|"
+    r"sorted|done with|finished with|sorted out) (?:that|that one|it|this)\b"
+)
+
+
+def _when_done52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: "when you've done that" read as "when that's done"."""
+    if "done" not in text and "finished" not in text and "sorted" not in text:
+        return text
+    m = _WHEN_DONE52.search(text)
+    if m is None or not _ids(text[: m.start()], lexicon) or not _ids(text[m.end() :], lexicon):
+        return text
+    return _cut50(text, m.start(), m.end(), "when that's done", lexicon)
+
+
+# -- 'Could you do the X for P …?' ("Could you do the bottle for Person A first, and when that's
+# done, the chips for Person B?"): a handing over, said 'Could you bring the X for P …?' (read)
+_DO_FOR52 = re.compile(
+    r"^(?P<q>(?:[Cc]ould|[Ww]ould|[Cc]an|[Ww]ill) you (?:please |kindly |just )?)do(?= (?:the|that|"
+    r"this) [a-z]+(?: [a-z]+)? for (?P<p>" + _P52 + r")\b)"
+)
+
+
+def _do_for52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: 'Could you do the X for P?' read as 'Could you bring the X for P?'."""
+    if " do " not in text:
+        return text
+    m = _DO_FOR52.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return _cut50(text, 0, m.end(), f"{m['q']}bring", lexicon)
+
+
+# -- 'P is doing map skills next period, so …' ("Mrs Ortiz is doing map skills next period, so set
+# the globe on her desk"): what the person is busy with, said 'P is busy, so' (read)
+_DOING_NEXT52 = re.compile(
+    r"^(?P<p>" + _P52 + r")(?:'s| is) (?P<w>(?:doing|teaching|running|taking|leading|giving|"
+    r"hosting) [^,.;:!?]{3,50}?)(?P<when> (?:next period|next lesson|this afternoon|this "
+    r"morning|after lunch|after break|in a bit|in a minute|shortly|soon|later|today))?,? (?=so\b)"
+)
+
+
+def _doing_next52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: "P is doing map skills next period, so" read as 'P is busy, so'."""
+    if " so " not in text:
+        return text
+    m = _DOING_NEXT52.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or _names(m["w"], lexicon):
+        return text
+    if m["when"] and m["when"].strip() == "later":
+        return text
+    return _cut50(text, 0, m.end(), f"{m['p']} is busy, ", lexicon)
+
+
+# -- a sentence saying someone is clearing a surface, after a placing onto another ("… could the
+# stapler go in the box? Priya's clearing the desk for the cryptographer's visit."): why, taken
+# off when what is left only places things, none on that surface (session 51's _clear51 reads
+# 'P needs the desk clear')
+_CLEARING52 = re.compile(
+    r"(?<=[.?!])\s+(?P<p>" + _P52 + r"|[Ss]he|[Hh]e|[Tt]hey|We)(?:'s| is|'re| are) (?:clearing|"
+    r"tidying|emptying|clearing off|clearing out|sorting out|sorting|wiping down|wiping|"
+    r"cleaning|freeing up|making room on) the (?P<s>[a-z]+(?: [a-z]+)?)(?: (?:for|before|by|"
+    r"ahead of) [^.!?]+)?[.!]?$"
+)
+
+
+def _clearing52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: a closing "P's clearing the desk (for …)." taken off a placing."""
+    if "ing the " not in text:
+        return text
+    m = _CLEARING52.search(text)
+    if m is None:
+        return text
+    if m["p"].lower() not in ("she", "he", "they", "we") and not _only_person(m["p"], lexicon):
+        return text
+    surfaces = _ids(f"the {m['s']}", lexicon, "surface")
+    if not surfaces:
+        return text
+    out = text[: m.start()]
+    read = _reading(out, lexicon)
+    if read is None or any(t.kind != "place" or t.target in surfaces for t in tasks(read)):
+        return text
+    return out
+
+
+# -- a sentence saying a group is in at a time, after a placing ("… would you pop the red mug up on
+# the shelf? Carol's numerology lot are in at six."): why, taken off when what is left only places
+# things
+_LOT_IN52 = re.compile(
+    r"(?<=[.?!])\s+(?:(?P<p>" + _P52 + r")'s|[Tt]he|[Oo]ur|[Mm]y|[Hh]is|[Hh]er|[Tt]heir) "
+    r"(?P<w>(?:[a-z]+ ){0,2})(?:lot|crowd|group|gang|class|folk|people|bunch|party|team|"
+    r"club|guests|visitors) (?:are|is|'re|'s|will be|'ll be) (?:in|coming|coming in|coming "
+    r"over|here|due|due in|arriving|round|over)(?: (?:at|by|around|about) [a-z0-9:.]+(?: "
+    r"(?:o'clock|sharp|ish|pm|am))?| soon| in a bit| shortly| later| tonight| this [a-z]+)?"
+    r"[.!]?$"
+)
+
+
+def _lot_in52(text: str, lexicon: Lexicon) -> str:
+    """Session 52: a closing "Carol's numerology lot are in at six." taken off a placing."""
+    if "lot" not in text and " are " not in text and " is " not in text and "'re " not in text:
+        return text
+    m = _LOT_IN52.search(text)
+    if m is None or _names(m["w"], lexicon):
+        return text
+    if m["p"] and not _only_person(m["p"], lexicon):
+        return text
+    out = text[: m.start()]
+    read = _reading(out, lexicon)
+    if read is None or any(t.kind != "place" for t in tasks(read)):
+        return text
+    return out
+
+
 # -- refused (12c's fuzz) -------------------------------------------------------------------------
 
 # -- 'Should / Must the X go to P?' ("Should the apple go on the shelf?", "Must the apple go to
@@ -580,14 +741,21 @@ _STEPS52_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _starts_in52,
     _asking_if52,
     _off_your_hands52,
-    _poor52,
     _hanging_about52,
+    _poor52,
     _high_and_low52,
     _my_hands52,
     _to_do_his52,
     _after_care52,
     _ready_on52,
     _cataphor52,
+    _sat_on52,
+    _before_ps52,
+    _when_done52,
+    _do_for52,
+    _doing_next52,
+    _clearing52,
+    _lot_in52,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-51 ones)
 _STEPS52: tuple[Callable[[str, Lexicon], str], ...] = ()
