@@ -795,3 +795,37 @@ def test_asks_only_refused_by_these_rules() -> None:
 )
 def test_asks_only_near_read(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
+
+
+# 12c's fuzz of these rules (each refused on main): nothing a rule takes off may unmask a reason
+# to refuse (a past or would-be want, a holding, something said done, a time, a tag question)
+FUZZ_NEAR = [
+    ("Bob wanted the apple, whereas Alice wants the crisps.", CELL),
+    ("Bob wants the apple, whereas Alice wanted the crisps.", CELL),
+    ("Bob wants the apple, whereas Alice has the crisps.", CELL),
+    ("Bob would want the apple, whereas Alice would want the crisps.", CELL),
+    ("Bob's short of crisps, is he?", CELL),
+    ("Bob needed the cup to have a look at the bottle.", CELL),
+    ("Bob needs the cup to have a look at the bottle tomorrow.", CELL),
+    ("Bob's been starving since the bell rang, so he had the apple.", CELL),
+    ("netball starts in ten so bob needed the apple", CELL),
+    ("netball starts in ten so bob needs the apple but hes got it", CELL),
+    ("Bob's asking if he can have the apple, I said no.", CELL),
+    ("Bob's asking if he can have the apple, can he?", CELL),
+    ("No pressure, but Bob could do with the apple, he's had one.", CELL),
+    ("Would you let Bob keep the apple?", CELL),
+    ("Bob's been hunting high and low for the apple; it's in his bag.", CELL),
+    ("bob's got the apple i've got my hands full", CELL),
+    ("Would you leave the apple ready on the shelf? Bob's done it.", CELL),
+    ("We need the apple sat on the shelf, Bob's done it.", CELL),
+    ("Could you give Bob the apple before Alice's shift tomorrow?", CELL),
+    ("apple to bob and once you've done that the crisps were for alice", CELL),
+    ("Bob had been hanging about for the apple.", CELL),
+    ("Should the apple go to Bob, or the cup?", CELL),
+    ("Bob had been asking for the apple.", CELL),
+]
+
+
+@pytest.mark.parametrize("text,scene", FUZZ_NEAR)
+def test_fuzz_near_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)

@@ -33,6 +33,46 @@ def _person_at52(text: str, lexicon: Lexicon) -> str | None:
     return None
 
 
+# what a rewrite of these rules may not leave in what it reads: a rule takes off words that made
+# main refuse the sentence, and must not unmask a refusal's reason elsewhere in it (12c's fuzz:
+# "…, he's had one", "…, Bob's done it", "…, I said no", "…, is he?", "… tomorrow", "it's in his
+# bag", "let Bob keep …", a past or would-be want, a holding)
+_UNSAFE52 = re.compile(
+    r"\b(?:had|has had|'s had|'d had|got|gotten|has got|'s got|'ve got|kept|keep|keeps|wanted|"
+    r"needed|would want|would need|were for|was for|said no|tomorrow|tonight|later|yesterday|"
+    r"next week|next month|already)\b|\bhas (?:the|his|her|their|it|them|one|some)\b|"
+    r"(?:'s|has|have|'ve) (?:done|sorted|seen to) (?:it|that|them)\b|\bdid (?:it|that)\b|"
+    r"\b(?:in|on) (?:his|her|their) (?:bag|pocket|lap|hand)\b|"
+    r",\s*(?:is|isn't|are|aren't|can|can't|does|doesn't|did|didn't|has|hasn't|will|won't|would|"
+    r"wouldn't|was|wasn't|could|couldn't|should|shall)\s+(?:he|she|they|it)\s*\?",
+    _F,
+)
+
+# a time the words a rule takes off may not hold ("… to have a look at the bottle tomorrow")
+_WHEN52 = re.compile(
+    r"\b(?:tomorrow|tonight|later|yesterday|next (?:week|month|year|time)|this evening|on "
+    r"(?:mon|tues|wednes|thurs|fri|satur|sun)day)\b",
+    _F,
+)
+
+
+def _cut52(text: str, start: int, end: int, put: str, lexicon: Lexicon) -> str:
+    """``text`` with ``text[start:end]`` said as ``put`` (first letter upper-cased), when that
+    reads, leaves nothing of _UNSAFE52 and takes off no time (_WHEN52); else ``text``."""
+    out = f"{text[:start]}{put}{text[end:]}"
+    if _UNSAFE52.search(out) or _WHEN52.search(text[start:end]):
+        return text
+    return _cut50(text, start, end, put, lexicon)
+
+
+def _read52(out: str, text: str, pid: str | None, lexicon: Lexicon) -> str:
+    """``out`` when it reads (with ``pid``, handing things to that person only) and holds nothing
+    of _UNSAFE52; else ``text``."""
+    if _UNSAFE52.search(out):
+        return text
+    return _read_for(out, text, pid, lexicon)
+
+
 # -- politeness and fillers ------------------------------------------------------------------------
 
 # -- 'Would you (be a star and) let P have …?' ("Would you be a star and let Person B have the
@@ -52,7 +92,7 @@ def _would_let52(text: str, lexicon: Lexicon) -> str:
     m = _WOULD_LET52.match(text)
     if m is None or (m["q"].lower().startswith("could") and m.end() == m.end("q")):
         return text
-    return _cut50(text, 0, m.end(), "Could you ", lexicon)
+    return _cut52(text, 0, m.end(), "Could you ", lexicon)
 
 
 # -- 'Pardon me butting in,' opening a request ("Pardon me butting in, the chips to Person A
@@ -70,7 +110,7 @@ def _butting_in52(text: str, lexicon: Lexicon) -> str:
     m = _BUTTING_IN52.match(text)
     if m is None:
         return text
-    return _cut50(text, 0, m.end(), "Sorry for butting in", lexicon)
+    return _cut52(text, 0, m.end(), "Sorry for butting in", lexicon)
 
 
 # -- 'no rush whatsoever' / 'no hurry at all' closing a request: said 'no rush' (read)
@@ -88,7 +128,7 @@ def _whatsoever52(text: str, lexicon: Lexicon) -> str:
     m = _WHATSOEVER52.search(text)
     if m is None:
         return text
-    return _cut50(text, m.start("w"), m.end("w"), "", lexicon)
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
 
 
 # -- 'just one teeny thing,' before a request ("Sorry, just one teeny thing, Person B's after the
@@ -108,7 +148,7 @@ def _teeny52(text: str, lexicon: Lexicon) -> str:
     m = _TEENY52.search(text)
     if m is None:
         return text
-    return _cut50(text, m.start("a"), m.end("a"), "little", lexicon)
+    return _cut52(text, m.start("a"), m.end("a"), "little", lexicon)
 
 
 # -- 'No pressure (, mate), but' opening a want ("No pressure, mate, but Tom could do with the work
@@ -133,7 +173,7 @@ def _no_pressure52(text: str, lexicon: Lexicon) -> str:
     m = _NO_PRESSURE52.match(text)
     if m is None or (m["voc"] and m["voc"] not in _VOCATIVES52):
         return text
-    return _cut50(text, 0, m.end(), "", lexicon)
+    return _cut52(text, 0, m.end(), "", lexicon)
 
 
 # -- "P's got his hands full" as a sentence or clause of its own after a request ("… getting the
@@ -158,7 +198,7 @@ def _hands_full52(text: str, lexicon: Lexicon) -> str:
         return text
     stop = m["lead"].strip()[:1]
     out = text[: m.start()] + (stop if stop in ".?!" else m["end"])
-    return _read_for(out, text, None, lexicon)
+    return _read52(out, text, None, lexicon)
 
 
 # -- wants and needs -------------------------------------------------------------------------------
@@ -169,7 +209,7 @@ _WANTS52 = re.compile(
     r"are|'s been|has been|have been|been) (?:waiting for|after|waiting on)|(?:has|'s got|has "
     r"got) a (?:[a-z]+ )?(?:fancy|craving|hankering|yen|thirst|hunger|longing) for|would "
     r"(?:quite |really |so |very much )?like|'d (?:quite |really |so )?like|would love|'d "
-    r"love|fancies|needed|wanted)\b",
+    r"love|fancies)\b",
     _F,
 )
 
@@ -186,7 +226,7 @@ def _whereas52(text: str, lexicon: Lexicon) -> str:
     m = _WHEREAS52.search(text)
     if m is None or not _WANTS52.search(text[: m.start()]) or not _only_person(m["p"], lexicon):
         return text
-    return _cut50(text, m.start("w"), m.end("w"), ", and", lexicon)
+    return _cut52(text, m.start("w"), m.end("w"), ", and", lexicon)
 
 
 # -- "P's short of X" ("Lena's short of tongs and a white plate"): a want, said 'P needs X' (read;
@@ -204,7 +244,7 @@ def _short_of52(text: str, lexicon: Lexicon) -> str:
     m = _SHORT_OF52.search(text)
     if m is None or " was" in m.group() or not _only_person(m["p"], lexicon):
         return text
-    return _cut50(text, m.start(), m.end(), f"{m['p']} needs ", lexicon)
+    return _cut52(text, m.start(), m.end(), f"{m['p']} needs ", lexicon)
 
 
 # -- 'P needs the X to have a look behind the bench' ("Jess needs the torch to have a look behind
@@ -225,7 +265,7 @@ def _to_look52(text: str, lexicon: Lexicon) -> str:
     m = _TO_LOOK52.search(text)
     if m is None or not _WANTS52.search(text[: m.start()]):
         return text
-    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+    return _cut52(text, m.start("cut"), m.end("cut"), "", lexicon)
 
 
 # -- pronouns and ellipsis ----------------------------------------------------------------------
@@ -252,7 +292,7 @@ def _colleague52(text: str, lexicon: Lexicon) -> str:
     (pid,) = _ids(m["p"], lexicon)
     if not before - {pid}:
         return text
-    return _cut50(text, m.start(), m.end(), m["p"], lexicon)
+    return _cut52(text, m.start(), m.end(), m["p"], lexicon)
 
 
 # -- "P's been shivering since they opened the window, so …": since when, an event that is over,
@@ -272,7 +312,7 @@ def _since_event52(text: str, lexicon: Lexicon) -> str:
     m = _SINCE_EVENT52.search(text)
     if m is None or not _only_person(m["p"], lexicon) or _names(m["cut"], lexicon):
         return text
-    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+    return _cut52(text, m.start("cut"), m.end("cut"), "", lexicon)
 
 
 # -- lower case ------------------------------------------------------------------------------------
@@ -293,7 +333,7 @@ def _starts_in52(text: str, lexicon: Lexicon) -> str:
     m = _STARTS_IN52.match(text)
     if m is None or _names(m["w"], lexicon) or not _WANTS52.search(text[m.end() :]):
         return text
-    return _cut50(text, 0, m.end(), "", lexicon)
+    return _cut52(text, 0, m.end(), "", lexicon)
 
 
 # -- questions -------------------------------------------------------------------------------------
@@ -318,7 +358,7 @@ def _asking_if52(text: str, lexicon: Lexicon) -> str:
         return text
     verb = "to borrow" if m["v"] == "borrow" else "to use" if m["v"] == "use" else ""
     put = f"{m['p']} wants {verb} ".replace("  ", " ")
-    return _read_for(put + text[m.end() :], text, pid, lexicon)
+    return _read52(put + text[m.end() :], text, pid, lexicon)
 
 
 # -- batch 2 ---------------------------------------------------------------------------------------
@@ -338,7 +378,7 @@ def _off_your_hands52(text: str, lexicon: Lexicon) -> str:
     m = _OFF_YOUR_HANDS52.search(text)
     if m is None or m["v"] != "take":
         return text
-    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+    return _cut52(text, m.start("cut"), m.end("cut"), "", lexicon)
 
 
 # -- 'poor (old) P' opening a want ("poor person b's been hanging about for his chips for ages"):
@@ -355,7 +395,7 @@ def _poor52(text: str, lexicon: Lexicon) -> str:
         return text
     if not _WANTS52.search(text[m.end() :]):
         return text  # ("Poor Marco burnt his thumb, so …" is session 43's)
-    return _cut50(text, 0, m.end(), "", lexicon)
+    return _cut52(text, 0, m.end(), "", lexicon)
 
 
 # -- "P's been hanging about for his chips" ("… kicking her heels waiting for …"): waiting for
@@ -374,7 +414,7 @@ def _hanging_about52(text: str, lexicon: Lexicon) -> str:
     m = _HANGING_ABOUT52.search(text)
     if m is None:
         return text
-    return _cut50(text, m.start(), m.end(), "waiting ", lexicon)
+    return _cut52(text, m.start(), m.end(), "waiting ", lexicon)
 
 
 # -- 'hunting high and low for the X' ("Kofi's been hunting high and low for the hammer all
@@ -394,7 +434,7 @@ def _high_and_low52(text: str, lexicon: Lexicon) -> str:
     m = _HIGH_AND_LOW52.search(text)
     if m is None or m.group().startswith("looking for"):
         return text
-    return _cut50(text, m.start(), m.end(), "looking for", lexicon)
+    return _cut52(text, m.start(), m.end(), "looking for", lexicon)
 
 
 # -- "… i've got my hands full" closing a request ("reckon you could hand person a her bottle i've
@@ -414,7 +454,7 @@ def _my_hands52(text: str, lexicon: Lexicon) -> str:
     m = _MY_HANDS52.search(text)
     if m is None or m.start() == 0:
         return text
-    return _cut50(text, m.start(), m.end(), m["end"], lexicon)
+    return _cut52(text, m.start(), m.end(), m["end"], lexicon)
 
 
 # -- 'P's asked for the X to do his silly voices' ("grandad's asked for the teddy to do his silly
@@ -437,7 +477,7 @@ def _to_do_his52(text: str, lexicon: Lexicon) -> str:
     people = _ids(text[: m.start()], lexicon, "human")
     if len(people) != 1 or not _agrees44(next(iter(people)), m["pron"], lexicon):
         return text
-    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+    return _cut52(text, m.start("cut"), m.end("cut"), "", lexicon)
 
 
 # -- 'after her gong bath' closing a want of one person ("I reckon Person A would quite like the
@@ -460,7 +500,7 @@ def _after_care52(text: str, lexicon: Lexicon) -> str:
     people = _ids(text[: m.start()], lexicon, "human")
     if len(people) != 1 or not _agrees44(next(iter(people)), m["pron"], lexicon):
         return text
-    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+    return _cut52(text, m.start("cut"), m.end("cut"), "", lexicon)
 
 
 # -- 'Would you leave the X ready on S (for lunchtime)?' ("Would you leave the bib ready on the
@@ -488,7 +528,7 @@ def _ready_on52(text: str, lexicon: Lexicon) -> str:
     meal = _FOR_MEAL52.search(out)
     if meal is not None:
         out = f"{out[: meal.start()]}{out[meal.end() :]}"
-    return _read_for(out, text, None, lexicon)
+    return _read52(out, text, None, lexicon)
 
 
 # -- "he's off on a bothy trip so person b wants …" (a pronoun said before the one person it may
@@ -518,7 +558,7 @@ def _cataphor52(text: str, lexicon: Lexicon) -> str:
     others = [h.id for h in lexicon.scene.humans if h.id != pid]
     if any(_agrees44(o, m["pron"], lexicon) for o in others):
         return text
-    return _cut50(text, 0, m.end(), "", lexicon)
+    return _cut52(text, 0, m.end(), "", lexicon)
 
 
 # -- batch 3 ---------------------------------------------------------------------------------------
@@ -540,7 +580,7 @@ def _sat_on52(text: str, lexicon: Lexicon) -> str:
     m = _SAT_ON52.search(text)
     if m is None:
         return text
-    return _cut50(text, m.start("sat"), m.end("sat"), "", lexicon)
+    return _cut52(text, m.start("sat"), m.end("sat"), "", lexicon)
 
 
 # -- 'before P's round' closing a request ("Is it possible to get the spoon onto the tray before
@@ -561,7 +601,7 @@ def _before_ps52(text: str, lexicon: Lexicon) -> str:
         return text
     if _owned_occasion47(text, lexicon) != text:
         return text  # (session 47's: "… before Lily's nap")
-    return _cut50(text, m.start("cut"), m.end("cut"), "", lexicon)
+    return _cut52(text, m.start("cut"), m.end("cut"), "", lexicon)
 
 
 # -- 'when you've done that' between two requests ("start with the cup for person a and when
@@ -579,7 +619,7 @@ def _when_done52(text: str, lexicon: Lexicon) -> str:
     m = _WHEN_DONE52.search(text)
     if m is None or not _ids(text[: m.start()], lexicon) or not _ids(text[m.end() :], lexicon):
         return text
-    return _cut50(text, m.start(), m.end(), "when that's done", lexicon)
+    return _cut52(text, m.start(), m.end(), "when that's done", lexicon)
 
 
 # -- 'Could you do the X for P …?' ("Could you do the bottle for Person A first, and when that's
@@ -599,7 +639,7 @@ def _do_for52(text: str, lexicon: Lexicon) -> str:
         return text
     if any(step(text, lexicon) != text for step in _STEPS37):
         return text  # (session 37's: "… before anything else, and the bottle for P after?")
-    return _cut50(text, 0, m.end(), f"{m['q']}bring", lexicon)
+    return _cut52(text, 0, m.end(), f"{m['q']}bring", lexicon)
 
 
 # -- 'P is doing map skills next period, so …' ("Mrs Ortiz is doing map skills next period, so set
@@ -620,7 +660,7 @@ def _doing_next52(text: str, lexicon: Lexicon) -> str:
         return text
     if m["when"] and m["when"].strip() == "later":
         return text
-    return _cut50(text, 0, m.end(), f"{m['p']} is busy, ", lexicon)
+    return _cut52(text, 0, m.end(), f"{m['p']} is busy, ", lexicon)
 
 
 # -- a sentence saying someone is clearing a surface, after a placing onto another ("… could the
@@ -648,7 +688,7 @@ def _clearing52(text: str, lexicon: Lexicon) -> str:
     if not surfaces:
         return text
     out = text[: m.start()]
-    read = _reading(out, lexicon)
+    read = None if _UNSAFE52.search(out) else _reading(out, lexicon)
     if read is None or any(t.kind != "place" or t.target in surfaces for t in tasks(read)):
         return text
     return out
@@ -677,7 +717,7 @@ def _lot_in52(text: str, lexicon: Lexicon) -> str:
     if m["p"] and not _only_person(m["p"], lexicon):
         return text
     out = text[: m.start()]
-    read = _reading(out, lexicon)
+    read = None if _UNSAFE52.search(out) else _reading(out, lexicon)
     if read is None or any(t.kind != "place" for t in tasks(read)):
         return text
     return out
@@ -691,7 +731,7 @@ def _lot_in52(text: str, lexicon: Lexicon) -> str:
 _SHOULD52 = re.compile(
     r"^(?P<said>(?:Should|Must|Ought) (?:the|that|this|these|those|you|u|we|I|it|they|he|she|"
     r"one|either|both|a|an|my|his|her|their|our)\b[^?,;:.]{1,80}?)(?:,\s*(?:do you think|what do "
-    r"you (?:think|reckon)|or not))?\s*\?\s*$",
+    r"you (?:think|reckon)|or not|or [^?,;:.]{1,40}))?\s*\?\s*$",
     _F,
 )
 
@@ -714,7 +754,7 @@ def _should52(text: str, lexicon: Lexicon) -> None:
 # says what she wants now and reads)
 _HAD_WANTED52 = re.compile(
     r"^(?P<said>" + _P52 + r"(?: had|'d) (?:asked for|wanted|requested|been after|been wanting|"
-    r"needed|been needing|fancied)) [^,;:.!?]+[.!]?$"
+    r"needed|been needing|fancied|been asking for)) [^,;:.!?]+[.!]?$"
 )
 
 
