@@ -1686,6 +1686,8 @@ _FREE_CHOICE = frozenset(
         "care",
         "pick",
         "call",
+        # session 52: "I'm not fussed which" (session 51's one false wrong reading of `closed`)
+        "fussed",
     )
 )
 FORGET_FORMS = ("closed", "objects", "people", "free")

@@ -715,6 +715,8 @@ def _lots(entry: Entry, seed: int) -> list[fuzz.Variant]:
         ("Give Bob the apple or the cup, I don't care which.", "apple>B | cup>B", ("free",)),
         ("Give Bob the apple or the cup, I'll let you pick.", "apple>B | cup>B", ("free",)),
         ("Give Bob the apple or the cup. Your call which.", "apple>B | cup>B", ("free",)),
+        # ... and 'fussed' (session 51's one false wrong reading)
+        ("Give Bob the apple or the cup, I'm not fussed which.", "apple>B | cup>B", ("free",)),
         # a question, a kind the scene has two of, a pronoun, two handovers, a placing, a refused
         # entry: none
         ("Could you give Bob the apple or the cup?", "apple>B | cup>B", ()),

@@ -248,7 +248,6 @@ KNOWN_MISSES = frozenset(
         "Person A has given up chips for Lent, so the bottle only for her.",
         "Nothing for anyone but Person A: bottle to her.",
         "Person B isn't the one getting the bottle, it's Person A, she's got the long walk home.",
-        "Dana won't drink from the green cup, so take her the white one.",
         "Mr Lee's tablets can wait till the doctor's round; for now just hand him the magazine.",
         "Marco doesn't want the lemon; salt, please.",
         "Zoe's finished cutting out, so no scissors, just pass her the glue stick.",
@@ -362,40 +361,16 @@ KNOWN_MISSES = frozenset(
         "Jess.",
         "Leave the bottle, no, on second thoughts, give it to Person A.",
         # blind49 (tuned on in session 51): refusals left at its one measurement (docs/grounding.md)
-        "Right so the apple goes to Alice who's been at the clay pigeon shooting and the crisps "
-        "go to Carol and I reckon that's us.",
-        "Person A wants the chips. Person B, back from the coarse fishing, wants the bottle. "
-        "Could you sort both of those.",
-        "Take the cup to Person B who's the prompter tonight and once that's done the apple to "
-        "Person A too",
         "Person A. Back from the square dance. She needs the bottle. And the cup, she said.",
         "Chips to Person B first since he's got swing dance in ten minutes, bottle to Person A "
         "next, okay.",
         "Person B has been on the dawn chorus walk since five and he's starving so the chips for "
         "him.",
-        "Person A gets the bottle, Person B gets the chips, and the pair of them can get back to "
-        "their warhammer game.",
         "Omar's finished with the sponge, so into the sink with it, and after that the bowl goes "
         "across to him.",
-        "Marco wants the knife he's doing the fish Lena wants the salt.",
-        "Grandad wants the wipes Lily's made a mess with her yoghurt",
         "The single apple we've got, to Person B, he's the understudy tonight and needs feeding.",
-        "Bob's not fussed about the bottle after the longsword class; he wants the crisps.",
         "Give Person B all of it bar the chips, he's gone off them since the herdsman's barbecue.",
-        "Person A's allergic to apples, so give her the cup instead.",
-        "Person A gets the chips, and not Person B, who's had his at the minigolf.",
-        "Forget the cup, it's only the apple Person B's after.",
-        "Person B, being a nurseryman with simple tastes, wants nothing but the chips.",
-        "Don't hold the bottle back from Person A any longer.",
-        "Not on the tray, the sponge, it'll drip; it goes in the sink.",
-        "Priya'll take a pen, just not the red, she's marking.",
-        "Apart from the medium box, which stays put, the boxes go on the belt.",
-        "Don't bother fetching the globe, Noah's after the ruler and nothing else for his scale "
-        "drawing.",
-        "cup to person b who does the bat detecting and apple to person a",
         "person b fancies the bottle after his epee bout cheers",
-        "gloves to mia her hands are freezing on the dock",
-        "put the scissors on the desk zoes done with her terrarium label",
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
         # blind50 (tuned on in session 52): refusals left at its one measurement (docs/grounding.md)
@@ -417,30 +392,8 @@ KNOWN_MISSES = frozenset(
         "Blue pen to Sam and the notepad to Priya she's got the etymology meeting at two.",
         "Teddy goes down on the play mat where she can reach. After that the bib to Lily, it's "
         "nearly lunch.",
-        "Give each of them something to eat: apple for Person A, chips for Person B.",
-        "One of them gets the bottle, whichever of the two is nearer you.",
-        "Whichever way you look at it, that bottle's going to Person A in the end, so off you go.",
-        "Whatever bottle's knocking about, let Person A have it, she's parched from the egg "
-        "throwing.",
-        "Whichever of the two things you grab first, Person B gets it.",
-        "One blanket apiece for our two patients, so blue goes to Mr Lee and the grey one's for "
-        "Mrs Khan.",
-        "Each student gets a book: red to Noah, green to Zoe.",
-        "The two mugs on the shelf please, the oenologist's tasting needs the table.",
-        "Alice gets the crisps, just the one bag mind.",
-        "Person A's stocking up for the windjammer trip, so she's to have every one of the four "
-        "things.",
-        "Person B wants the pair of drinking things, so that's the cup plus the bottle.",
-        "There's a single cup, which is Person A's, and a single apple, which Person B can have.",
-        "Only the one bottle here and only Person A to give it to, so do that.",
-        "Person A can take the both of them off you, bottle along with the chips.",
-        "The green cup and the white cup are both dirty from the oenologist's tasting, put the "
-        "pair in the sink.",
-        "Sweep the whole lot of pens, black, blue and red, into the box before the "
-        "ethnomusicologist drops by.",
         "Of the boxes, two go on the belt today: the small one and the medium one, the large "
         "stays put.",
-        "Carol doesn't drink from the red mug, she says it's chipped, so give her the blue.",
         "Alice is off crisps this week, so it's the bottle she wants, not those.",
         "Person B's allergic to apples, so let him have everything else you've got.",
         "Person A doesn't eat chips, but any of the other three things will do her, your choice.",
@@ -450,20 +403,120 @@ KNOWN_MISSES = frozenset(
         "Sam can't stand red ink, so one of the other pens for him, you decide which.",
         "Mr Lee has had his medication already; it's only the water jug he's after.",
         "Load the boxes on the belt except for the big one, that's waiting on the pallet.",
-        "Don't put the knife out, just the tongs for Lena.",
         "Lily's bored of the teddy, she wants the red block instead.",
-        "Jess doesn't need the drill after all, she's only after the torch for the crawl space.",
-        "Take the apple to Alice, oh hang on, I've muddled my names, Carol's the one who asked.",
-        "Crisps for Alice, no, hold your horses, they were Bob's.",
-        "Give Person B the chips, hmm, no, he said apple, not chips.",
-        "Stick the bottle down somewhere, no, tell you what, straight into Person A's hand.",
-        "Give Person A the, um, the bottle I meant to say.",
-        "The notepad should go in the box, no, hang on, Priya wants it left out on the desk.",
-        "Leave the hammer on the bench, actually no, lock it away in the locker for the night.",
         "Bob's waiting on his crispz, could you take them over.",
         "Person B's after the appled for his packed lunch.",
         "Those xchips on the side are meant for Person A.",
         "Grandad's got jam on his hands, get him the baby wipws.",
+        # blind51 (tuned on in session 53): refusals left at its one measurement (docs/grounding.md)
+        "Baie dankie in advance, my friend, Person B would really like the chips.",
+        "Right, bit of a ramble, but the bottle, Person A, whenever suits you.",
+        "Whenever's convenient, pal, the packing tape wants to go on the belt.",
+        "Oh, and if it's no bother, the tongs to Lena, she's got the mixologist waiting at the "
+        "pass.",
+        "Sorry to nag, but Zoe still needs the glue stick for her crystal growing poster, could "
+        "you?",
+        "Please, when you've a minute, the torch over to Jess, cheers, the light's awful under "
+        "that van.",
+        "Person A's packing her own lunch box this morning and would be grateful for the cup and "
+        "the apple.",
+        "Person B skipped breakfast and is now eyeing up the chips like a hawk, so they'd better "
+        "go to him.",
+        "If you ask me, the thing Person A has been angling for all along is that bottle.",
+        "Person A has been craving the chips since her shift as a crossing warden ended.",
+        "Person B's gasping, so he ought to have the bottle, and the chips can keep Person A "
+        "going.",
+        "Person A's first in the queue for the bottle, and once she's sorted, Person B's lined up "
+        "for the chips.",
+        "Mr Novak reckons his truffle pasta is crying out for the salt, while Marco's after the "
+        "knife for the fillets.",
+        "Lily's grizzling and reaching out her little arms, she's after her teddy.",
+        "The apple, grab it and pass it along to Carol, and while you're about it, the red mug "
+        "for her as well.",
+        "That bottle's cluttering up the floor, could you lift it onto the shelf?",
+        "Between the two of them it's simple: the cup is what Person A is after, Person B the "
+        "apple.",
+        "Person B's got the chips coming, so take them across, and after those the apple's his as "
+        "well.",
+        "Person A's throat is like sandpaper after the crossing warden shift, so give her the "
+        "bottle.",
+        "That bottle over there, Person A has her eye on it.",
+        "Person B has put in for the chips; as for Person A, the bottle's hers.",
+        "The gloves are Tom's, he left them, bring them to him.",
+        "Bob gets the crisps first. Once he has them, over to Alice goes the cup.",
+        "the bottle needs to go up on the shelf and bob said hed have the crisps so they go to him",
+        "Crisps for Alice, she put her hand up for them. Bob, on the other hand, has picked the "
+        "bottle.",
+        "cup over to person a the apple is for person b oh and the bottle goes to person a as well",
+        "The small box goes on the belt. Stick the medium box on the belt beside it. That's all "
+        "for the belt.",
+        "Lena's got a table of six the white plate to her please and the salt",
+        "Jess has run out of screws. Kofi's going to need the big spanner for the axle. Off you "
+        "go.",
+        "Bob's not bothered about colour, either of the mugs will suit him fine.",
+        "Give Person A whichever of the bottle and the cup is closer.",
+        "Person B says any of the four things will do, he's honestly not fussed which one turns "
+        "up.",
+        "Whichever route you take round the desks, the bottle should finish up in Person A's "
+        "hands.",
+        "Take Person A the bottle, either hand's fine.",
+        "One thing per person: Person A's having the bottle, and the chips are going to Person B.",
+        "Both pens that aren't on the desk, the black and the red, go in the box.",
+        "Pick whichever box you like from the two that aren't on the pallet and set it on the "
+        "belt.",
+        "Marco and Lena each get a plate from you, the white one to Marco and the blue one to "
+        "Lena, service starts soon.",
+        "Bob wants the two things on offer.",
+        "Person B's parched, let him have the two things he can drink out of, that's the cup plus "
+        "the bottle.",
+        "Person A's asking for a bottle, only the one, she won't need more.",
+        "Split them up, would you: Person B takes the bottle, Person A takes the chips.",
+        "The green cup and the white cup have had their lot, stick the pair of them in the sink.",
+        "The plates, both of them, want setting out on the worktop for the specials.",
+        "Lily can have the pair of blocks, the red as well as the green.",
+        "Apart from the mugs, which are staying exactly where they are, everything's going to "
+        "Alice for her picnic.",
+        "It's the cup for Person B, he doesn't want the apple at all.",
+        "One thing for Person A, she doesn't mind what, just so long as it isn't the chips.",
+        "Person A has gone off the bottle, she'd much rather have the cup.",
+        "It isn't Person A who's having the bottle, it's Person B, give it to him.",
+        "Person B's not the one the chips are meant for, it's Person A who gets them.",
+        "Don't put the bottle down, give it straight to Person A.",
+        "The bottle goes to Person A and to nobody else, she put her name on it this morning.",
+        "Omar's the one getting the banana, Emma's already had her fruit.",
+        "Priya wants every pen bar the blue one, so the red and the black go to her.",
+        "Every single thing goes on the belt apart from the work gloves and the barcode scanner.",
+        "Noah's not to have the scissors today, the ruler is what he should get instead.",
+        "Leave the teddy bear, it's the bib Grandad's asking for, Lily's about to have her mashed "
+        "carrot.",
+        "Every tool and bit for Jess, apart from the drill and the torch, she's kitting out her "
+        "van.",
+        "Take the bottle to Alice, oh hang on, it's Bob who wants it, not Alice.",
+        "The crisps up on the shelf, no, actually, I've changed my mind, it's the bottle that "
+        "goes up there.",
+        "Cup to Person B, hmm, no, not the cup, make it the chips for him.",
+        "It's Person A who's after the apple, oh wait, my mistake, it's actually Person B.",
+        "Chips for Person A, then the bottle for Person B, no, sorry, the cup for Person B.",
+        "Take Person A the bottle, sorry, I said chips before, it's the bottle.",
+        "Give the sippy cup to Ava, oops, sorry, it's Lily's, she's the one who's thirsty.",
+        "Torch onto the workbench, actually, rethink, lock it away in the locker instead, it "
+        "walks off otherwise.",
+        "person a has been on the go all afternoon and needs that bottle so over it goes",
+        "the bottle is for person a whenever ur free no rush",
+        "chips are for person b and person a has dibs on the bottle",
+        "pop the tongs down on the worktop please lena wants them there",
+        "Since he sat down Bob hasn't taken his eyes off the xrisps, so let him have them.",
+        "Stash the cheps up on the shelf where the dog can't get them.",
+        "Pirson A left her cup behind at lunch, could it go back to her.",
+        "Persun A hasn't eaten since breakfast and would like the chips.",
+        "Person A is off out, she'll want her bettle handed over before she goes.",
+        "Over to Pesson A with the bottle, and across to Person B with the chips.",
+        "Sam's minuting the budget meeting and needs the notepsd for it.",
+        "Marco's finishing the fish and wants the lrmon to squeeze over it.",
+        "Any chance you could drop the apple off with Person A and swing by Person B with the cup?",
+        "Priya's got a stack of rota packs to clip together, would you be able to bring her the "
+        "stapler?",
+        "Any chance you could run the packing tape over to Mia for the pallets?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -504,9 +557,12 @@ KNOWN_UNCLEAR = frozenset(
         # blind49 (tuned on in session 51)
         # blind50 (tuned on in session 52)
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
-        "Person B said he wanted the chips, or was it the cup? I was only half listening.",
-        "Mia told me one of the boxes goes to Tom but I never noted down which.",
-        "Wipes to Grandad, no, not him, to one of the girls, which one did he say?",
+        # blind51 (tuned on in session 53)
+        "Mr Lee or Mrs Khan asked for the magazine, one of the two, I forget which.",
+        "Tom was very particular about which box he wanted, small, medium or large, and it's gone "
+        "clean out of my head.",
+        "Give Person A the chips, no wait, I've lost track of who asked.",
+        "Did Zoe ask for the glue stick or the red book? I can't remember.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -610,7 +666,9 @@ KNOWN_UNCLEAR = frozenset(
 # measured once at the end of session 50 (0 wrong), tuned on in session 51: asserted now, the rest
 # in KNOWN_MISSES and KNOWN_UNCLEAR; "blind50" written in session 51 by another engineer and
 # committed alone, measured once at the end of session 51 (0 wrong), tuned on in session 52:
-# asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+# asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind51" written in session 52 by
+# another engineer and committed alone, measured once at the end of session 52 (0 wrong), tuned on
+# in session 53: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
 MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
@@ -737,6 +795,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind49"].entries}) >= 3
     assert len(CORPORA["blind50"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind50"].entries}) >= 3
+    assert len(CORPORA["blind51"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind51"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

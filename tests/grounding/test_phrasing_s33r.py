@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import normalise
+from hltl.grounding import _rewrites52r, normalise
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -649,6 +649,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 44 (12r): its rules of the same families read some of these too
             *normalise._STEPS44R_FIRST,
             *normalise._STEPS44R,
+            # session 52 (12r): "Mia's the one who asked" after a correction, the same family
+            _rewrites52r._who_asked52r,
         ),
         monkeypatch,
     )

@@ -6,7 +6,14 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites41r, _rewrites44s, _rewrites45r, _rewrites46r, normalise
+from hltl.grounding import (
+    _rewrites41r,
+    _rewrites44s,
+    _rewrites45r,
+    _rewrites46r,
+    _rewrites52r,
+    normalise,
+)
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
@@ -373,6 +380,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 46 (12r): a closing reason on what a correction took away ("…, no, the tray,
             # sorry, the sink's full") reads by its rule too
             _rewrites46r._fix_why46r,
+            # session 52 (12r): a share-out by a role the people share reads these too
+            _rewrites52r._each_kind52r,
         ),
         monkeypatch,
     )

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import normalise, offline, phrasing
+from hltl.grounding import _rewrites51s, normalise, offline, phrasing
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -526,6 +526,8 @@ def test_the_part2_rules_are_what_reads_them(monkeypatch: pytest.MonkeyPatch) ->
             normalise._STEPS37S
             + normalise._STEPS37S_FIRST
             + normalise._STEPS41S_FIRST
-            + normalise._STEPS43R_FIRST,
+            + normalise._STEPS43R_FIRST
+            # session 51 (12s): its closing 'sort both of those' rule reads 'Sort them out' too
+            + (_rewrites51s._sort_those51s,),
             monkeypatch,
         )

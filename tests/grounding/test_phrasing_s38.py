@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import normalise
+from hltl.grounding import _rewrites51s, normalise
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -247,6 +247,8 @@ def test_refused_without_the_rules(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS40S_FIRST,
             *normalise._STEPS40S,
             *normalise._STEPS41S_FIRST,
+            # session 51 (12s): its run-on rule says these remarks with their stops too
+            _rewrites51s._run_on51s,
         ),
         monkeypatch,
     )

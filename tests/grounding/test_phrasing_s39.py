@@ -16,6 +16,7 @@ from hltl.grounding import (
     _normalise4,
     _rewrites39,
     _rewrites50l,
+    _rewrites51s,
     normalise,
     offline,
 )
@@ -350,6 +351,8 @@ def test_refused_without_the_rules(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS39S_FIRST,
             *normalise._STEPS39S,
             *normalise._STEPS40S_FIRST,
+            # session 51 (12s): its run-on rule says these remarks with their stops too
+            _rewrites51s._run_on51s,
         ),
         monkeypatch,
     )

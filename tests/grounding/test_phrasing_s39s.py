@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites46r, normalise, offline
+from hltl.grounding import _rewrites46r, _rewrites51s, normalise, offline
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -207,6 +207,8 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 46 (12r): a closing remark on what a person is doing after a placing reads
             # by its rule too
             _rewrites46r._placed_remark46r,
+            # session 51 (12s): its run-on rule says these remarks with their stops too
+            _rewrites51s._run_on51s,
         ),
         monkeypatch,
     )

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites40s, _rewrites45s, normalise, offline
+from hltl.grounding import _rewrites40s, _rewrites45s, _rewrites51s, normalise, offline
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -124,6 +124,8 @@ def test_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             *normalise._STEPS40S_FIRST,
             *normalise._STEPS41S_FIRST,
             _rewrites45s._run_on45s,
+            # session 51 (12s): its run-on rule says these with their stops too
+            _rewrites51s._run_on51s,
         ),
         monkeypatch,
     )

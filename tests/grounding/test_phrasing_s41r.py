@@ -15,6 +15,7 @@ from hltl.grounding import (
     _rewrites44r,
     _rewrites44s,
     _rewrites50l,
+    _rewrites52r,
     offline,
 )
 from hltl.world.scene import Scene
@@ -394,6 +395,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             *_rewrites44r._STEPS44R,
             # session 44 (12s): 'last of all' said as 'lastly' reads these too
             _rewrites44s._after_end44s,
+            # session 52 (12r): a share-out by a role the people share reads these too
+            _rewrites52r._each_kind52r,
         ),
         monkeypatch,
     )

@@ -9,6 +9,7 @@ import pytest
 from hltl.grounding import _rewrites42s as r42s
 from hltl.grounding import _rewrites43s as r43s
 from hltl.grounding import _rewrites44s as r44s
+from hltl.grounding import _rewrites51s as r51s
 from hltl.grounding import lexicon as lx
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
@@ -114,7 +115,8 @@ test_run_on_wants_refused = RUN_ON.test(
 
 
 def test_run_on_wants_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    RUN_ON.refused_without((r43s._run_on_wants43s,), monkeypatch)
+    # session 51 (12s): its run-on rule says these wants with their stops too
+    RUN_ON.refused_without((r43s._run_on_wants43s, r51s._run_on51s), monkeypatch)
 
 
 @pytest.mark.parametrize(

@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.grounding import _rewrites45s as r45s
+from hltl.grounding import _rewrites51s as r51s
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -69,7 +70,8 @@ test_run_on_refused = RUN_ON.test(
 
 
 def test_run_on_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    RUN_ON.refused_without((r45s._run_on45s, r45s._they_want45s), monkeypatch)
+    # session 51 (12s): its run-on rule says these with their stops too
+    RUN_ON.refused_without((r45s._run_on45s, r45s._they_want45s, r51s._run_on51s), monkeypatch)
 
 
 # -- 'they both want them' closing a request to two people -------------------------------------
@@ -120,7 +122,8 @@ test_who_remark_refused = WHO.test(
 
 
 def test_who_remark_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    WHO.refused_without((r45s._who_remark45s,), monkeypatch)
+    # session 51 (12s): its 'who' run-on rule says these with their commas too
+    WHO.refused_without((r45s._who_remark45s, r51s._who_run_on51s), monkeypatch)
 
 
 # -- lower case: an opening 'after …' with no comma; a closing courtesy with no comma -----------

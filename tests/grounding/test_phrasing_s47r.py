@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites47r, _rewrites50l
+from hltl.grounding import _rewrites47r, _rewrites50l, _rewrites52r
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -204,9 +204,11 @@ UNCLEAR: list[Unclear] = [
 
 
 # each refusal names its readings; without REFUSE47R none does
-# (session 50, lead: `forgot_which50l` names the readings of a forgotten choice too)
+# (session 50, lead: `forgot_which50l` names the readings of a forgotten choice too; session 52,
+# lead at the merge: so does 12r's `_never_noted52r`, "… and I didn't catch which")
 test_refusals_name_readings, test_refusals_are_these = unclear_tests(
-    UNCLEAR, (*_rewrites47r.REFUSE47R, _rewrites50l.forgot_which50l)
+    UNCLEAR,
+    (*_rewrites47r.REFUSE47R, _rewrites50l.forgot_which50l, _rewrites52r._never_noted52r),
 )
 
 test_doubt_near = CASES.test(

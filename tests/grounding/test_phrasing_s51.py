@@ -834,10 +834,11 @@ def test_past_refused(text: str, scene: Scene) -> None:
 
 def test_past_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
     # (lead at the merge: the lead's `_told_done51l` and 12r's checks refuse some of the same
-    # reports — "you brought Carol the blue mug", "he's had it" — so they are taken out too)
-    from hltl.grounding import _rewrites51l, _rewrites51r
+    # reports — "you brought Carol the blue mug", "he's had it" — so they are taken out too;
+    # session 52: the lead's `_got_it52l` refuses "has received" too)
+    from hltl.grounding import _rewrites51l, _rewrites51r, _rewrites52l
 
-    off = {*MINE, _rewrites51l._told_done51l, *_rewrites51r.REFUSE51R}
+    off = {*MINE, _rewrites51l._told_done51l, *_rewrites51r.REFUSE51R, _rewrites52l._got_it52l}
     monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in off))
     checks = set(_rewrites51r.CHECK51R)
     monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in checks))

@@ -155,7 +155,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # change the grounder before its one measurement at the end of session 50; tuned on in session 51),
 # blind50 (written in session 51 by another engineer and committed alone, never opened by the
 # engineers who change the grounder before its one measurement at the end of session 51; tuned on in
-# session 52).
+# session 52), blind51 (written in session 52 by another engineer and committed alone, never opened
+# by the engineers who change the grounder before its one measurement at the end of session 52;
+# tuned on in session 53).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -223,6 +225,7 @@ PARTS = (
     "blind48",
     "blind49",
     "blind50",
+    "blind51",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -3545,6 +3545,8 @@ def _not_the_other33r(text: str, lexicon: Lexicon) -> str:
     other = _ids(f"the {m['b']} {kind}", lexicon, "object")
     if len(this) != 1 or len(other) != 1 or this == other:
         return text
+    if not (this | other) <= _ids(f"the {kind}", lexicon, "object"):
+        return text  # session 51 (12s): the other is a K too (as _negation22's, normalise2.py)
     return f"{text[:start]}the {m['a']} {kind}{m['end'] or '.'}"
 
 

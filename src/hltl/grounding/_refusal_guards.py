@@ -35,7 +35,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites40s:_owner40s": ("0dc938d10b4ba26f", ((), ("for h",), False), ()),
     "hltl.grounding._rewrites41l:_done41l": (
-        "1fc9d91d09e8a6d4",
+        "a5c568cd1f70b42e",
         ((), ("been", "was", "were"), False),
         (),
     ),
@@ -439,4 +439,58 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites51r:_people_had51r": ("cabf84b5e68f2846", ((), (" or ",), False), ()),
     "hltl.grounding._rewrites51r:_well_again51r": ("6bc8b553a713e7df", ((), ("well",), False), ()),
     "hltl.grounding._rewrites51r:_who_wants51r": ("313b3da0d03e554c", ((), (" or ",), False), ()),
+    "hltl.grounding._rewrites51s:_later_texted51s": (
+        "6a65d9e17a1bd913",
+        ((), ("2m", "2n", "l8", "tm", "tomoz", "tonite"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_done_it52r": (
+        "1d0c1cc33cf3495a",
+        ((), ("dealt", "done", "seen to", "sorted"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_never_noted52r": (
+        "530e2850c9dccb95",
+        ((), ("which",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_one_of_the_girls52r": (
+        "9df382d98be62a2d",
+        ((), ("one of the",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_one_who52r": (
+        "814d5f8343ef8f7f",
+        ((), ("the one",), False),
+        (
+            (
+                "_BACK51R",
+                (
+                    "pattern",
+                    "\\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|actually|i mean|i meant)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites52r:_or_was_it52r": (
+        "04f1a7f95cf24d21",
+        ((), ("or is it", "or was it"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_too_after52r": (
+        "d81fe6eadf5bac6c",
+        ((), (" also", " too", "as well"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52s:_having_done52s": (
+        "a92c14b86eda292f",
+        ((), ("having",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52s:_she_wants_other52s": (
+        "4db9050473262b92",
+        ((), ("he",), False),
+        (),
+    ),
 }

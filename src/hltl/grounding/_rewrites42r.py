@@ -620,7 +620,11 @@ def _owned_mistake42r(text: str, lexicon: Lexicon) -> str:
         said = _fixed42r(m["fix"], m["head"], lexicon)
         if said is None or said == m["fix"].strip():
             return text  # a plain 'no, …' is the grammar's own
-    if re.search(r"\b(?:oh|no|hang|hold|wait|sorry|scratch|actually|correction)\b", m["head"], _F):
+    if re.search(
+        r"\b(?:oh|no|hang|hold|wait|sorry|scratch|actually|correction|i mean|i meant)\b",
+        m["head"],
+        _F,
+    ):
         return text  # a cue in the request before: the older correction rules'
     h = re.match(_I_SAID42R, m["head"].strip(), _F)
     head = _capital40r(h["req"]) if h is not None else m["head"]

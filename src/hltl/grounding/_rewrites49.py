@@ -376,7 +376,7 @@ def _midway49(text: str, lexicon: Lexicon) -> str:
 # -- what has left someone wanting ("An hour on the bongos has left Person A gasping for the
 # bottle."): read as 'P is gasping for the X'
 _LEFT49 = re.compile(
-    r"^(?P<c>[A-Z][^,;]*?) (?:has|have|had) left (?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?P<a>gasping|"
+    r"^(?P<c>[A-Z][^,;.!?]*?) (?:has|have|had) left (?P<p>[A-Z]\w*(?: [A-Z]\w*)?) (?P<a>gasping|"
     r"desperate|dying|parched|longing|crying out|starving|aching|itching|thirsting) for "
 )
 

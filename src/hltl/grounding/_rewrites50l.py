@@ -8,7 +8,7 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites49l import choice_forgotten49l, forgot49l
 from hltl.grounding.lexicon import TITLE_SEX, Lexicon, _kin_sex35s
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Group, Node
 
 # -- the speaker has forgotten which: said by what it means, not by a list of wordings --------
 #
@@ -122,6 +122,19 @@ def forgets50l(text: str) -> re.Match[str] | None:
     return _FORGOT50L.search(text)
 
 
+def _has_choice50l(node: Node) -> bool:
+    """Session 52 (12b): whether the reading holds an 'or' group, the only thing
+    `choice_forgotten49l` refuses (walked as it walks it)."""
+    groups = [node]
+    while groups:
+        g = groups.pop()
+        if isinstance(g, Group):
+            if g.op == "or":
+                return True
+            groups.extend(g.children)
+    return False
+
+
 def _forgot_choice50l(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 50 (lead): session 49's check with the remark recognised by its meaning
     (`forgets50l`): a reading with a choice, of a text in which the speaker says they have
@@ -130,6 +143,8 @@ def _forgot_choice50l(text: str, node: Node, lexicon: Lexicon) -> None:
     attention", "it's on the tip of my tongue"). Session 49's listed wordings (`forgot49l`, not
     all of which `forgets50l` reads: "it's completely gone", "I'd have to ask him") are asked
     here too, so the reading is walked for a choice once (session 51)."""
+    if not _has_choice50l(node):
+        return  # session 52 (12b): no choice to refuse; the remarks need not be looked for
     if forgets50l(text) is not None or forgot49l(text):
         choice_forgotten49l(node, lexicon)
     said = unknowing50l(text, lexicon)

@@ -28,21 +28,26 @@ from hltl.grounding.tree import Node
 # subject ("Bob's gone to lunch", "she was on the phone"), the present and the future ("the apple
 # goes to Alice", "is on the shelf", "has to go to Alice"), and 'you' asked ("could you just put
 # the green cup on the tray": a request, whatever the verb's form).
-_WENT51L = re.compiled(
-    r"(?P<subject>[^,.;:!?]*?)\s*(?P<said>\bwent|(?:\b(?:has|have|had)|(?<=\w)['’]s)\s+"
+_WENT_TAIL51L = (
+    r"\s*(?P<said>\bwent|(?:\b(?:has|have|had)|(?<=\w)['’]s)\s+"
     r"(?:already\s+|just\s+|now\s+)?(?:gone|been)|\b(?:was|were)|\b(?:ended|wound)\s+up|"
     r"\blanded(?:\s+up)?)\s+(?:(?:already|just|all|straight|right|off|over|across|back|up|down|"
-    r"out|away)\s+)*(?P<rest>(?:to|on|onto|in|into|at)\b[^,.;:!?]*)",
-    _F,
+    r"out|away)\s+)*(?P<rest>(?:to|on|onto|in|into|at)\b[^,.;:!?]*)"
 )
-_YOU_GAVE51L = re.compiled(
-    r"(?P<subject>[^,.;:!?]*?)\s*(?P<said>\byou(?:['’]ve|\s+have|\s+had|['’]d)?\s+"
+_WENT51L = re.compiled(r"(?P<subject>[^,.;:!?]*?)" + _WENT_TAIL51L, _F)
+_GAVE_TAIL51L = (
+    r"\s*(?P<said>\byou(?:['’]ve|\s+have|\s+had|['’]d)?\s+"
     r"(?:(?:already|just)\s+)*(?:gave|given|handed|brought|took|taken|sent|delivered|placed|moved|"
     r"carried|fetched|returned|lent)\b|\byou(?:['’]ve|\s+have|\s+had|['’]d)?\s+already\s+"
     r"(?:put|set|passed|dropped|left)\b|\byou(?:['’]ve|\s+have|\s+had)\s+(?:put|set|passed|"
-    r"dropped|left)\b)(?P<rest>[^,.;:!?]*)",
-    _F,
+    r"dropped|left)\b)(?P<rest>[^,.;:!?]*)"
 )
+_YOU_GAVE51L = re.compiled(r"(?P<subject>[^,.;:!?]*?)" + _GAVE_TAIL51L, _F)
+# Session 52 (12p): the two patterns without their subject. Every match of a pattern ends in a
+# match of its tail, so where the tail finds nothing the pattern finds nothing either: asked
+# first, as a lazy subject tried from every letter of a clause costs ~0.1-0.4 ms a text
+_WENT_SAID51L = re.compiled(_WENT_TAIL51L, _F)
+_GAVE_SAID51L = re.compiled(_GAVE_TAIL51L, _F)
 # things said without their names ("Both of them went to Person B, bottle and chips.", 12r's
 # probe; "It went on the shelf.")
 _THINGS51L = re.compiled(
@@ -57,6 +62,15 @@ _ASKED51L = re.compiled(
     _F,
 )
 _GONE_WORDS51L = ("went", "gone", "was", "were", "been", "ended", "wound", "landed", "you")
+# Session 52 (12p): the words each pattern's 'said' needs (one of them is in every match of it,
+# as the text's lower case holds them where the text is ASCII): a pattern whose words the text
+# lacks is not run (its lazy subject tried at every letter cost ~0.4 ms an instruction)
+_WENT_WORDS51L = ("went", "gone", "was", "were", "been", "ended", "wound", "landed")
+_GAVE_WORDS51L = (
+    *("gave", "given", "handed", "brought", "took", "taken", "sent", "delivered", "placed"),
+    *("moved", "carried", "fetched", "returned", "lent", "put", "set", "passed", "dropped"),
+    "left",
+)
 
 
 def _told_done51l(text: str, lexicon: Lexicon) -> None:
@@ -65,7 +79,11 @@ def _told_done51l(text: str, lexicon: Lexicon) -> None:
     low = text.lower()
     if not any(w in low for w in _GONE_WORDS51L):
         return
-    for m in _WENT51L.finditer(text):
+    ascii_ = low.isascii()
+    went = (not ascii_ or any(w in low for w in _WENT_WORDS51L)) and bool(
+        _WENT_SAID51L.search(text)
+    )
+    for m in _WENT51L.finditer(text) if went else ():
         subject = m.group("subject")
         if _SUBORDINATE41L.search(subject):
             continue
@@ -77,7 +95,9 @@ def _told_done51l(text: str, lexicon: Lexicon) -> None:
         if not (_ids(rest, lexicon, "human") or _ids(rest, lexicon, "surface")):
             continue
         said_as_done41l(m)
-    if "you" not in low:
+    if "you" not in low or (ascii_ and not any(w in low for w in _GAVE_WORDS51L)):
+        return
+    if _GAVE_SAID51L.search(text) is None:
         return
     for m in _YOU_GAVE51L.finditer(text):
         subject = m.group("subject")

@@ -734,8 +734,8 @@ def _clearing51r(text: str, lexicon: Lexicon) -> str:
     m = _CLEARING51R.search(text.strip())
     if m is None or _person46r(m["p"], lexicon) is None:
         return text
-    sid = _ids(m["s"], lexicon, "surface")
-    if len(sid) != 1 or _ids(m["s"], lexicon) != sid:
+    sid = one_surface51r(m["s"], lexicon)
+    if sid is None:
         return text
     if m["why"]:
         why = re.sub(r"\b(?:[a-z]+)'s\b", "", m["why"], flags=_F)
@@ -743,6 +743,18 @@ def _clearing51r(text: str, lexicon: Lexicon) -> str:
             return text
     if _DONE_HEAD51R.search(text.strip()[: m.start()]):
         return text
+    return placed_elsewhere51r(text, m, sid, lexicon)
+
+
+def one_surface51r(words: str, lexicon: Lexicon) -> set[str] | None:
+    """The surface ``words`` name, where they name one surface of the scene and nothing else."""
+    sid = _ids(words, lexicon, "surface")
+    return sid if len(sid) == 1 and _ids(words, lexicon) == sid else None
+
+
+def placed_elsewhere51r(text: str, m: re.Match[str], sid: set[str], lexicon: Lexicon) -> str:
+    """``text`` with the closing remark ``m`` taken off (its 'end' kept), where what is left reads
+    as placings only, none on the remark's surface ``sid``; else ``text``."""
     out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
     node = _reading(out, lexicon)
     if node is None or any(t.kind != "place" or t.target in sid for t in tasks(node)):

@@ -1275,63 +1275,6 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
-    "hltl.grounding._normalise2:_courtesy24": (
-        "71d45d0f7a50da2f",
-        (
-            (),
-            (
-                "a",
-                "big up",
-                "bless up",
-                "bun",
-                "cies",
-                "cze",
-                "dzi",
-                "e se",
-                "hei",
-                "hej",
-                "innit",
-                "istuti",
-                "khrub",
-                "kiitti",
-                "krub",
-                "kuji",
-                "kuju",
-                "leh",
-                "meh",
-                "merci",
-                "mersi",
-                "mesi",
-                "milesker",
-                "o",
-                "permisi",
-                "privet",
-                "pryvit",
-                "r ederim",
-                "respect",
-                "sthuthi",
-                "stuthi",
-                "sveiki",
-                "sz",
-                "tenkyu",
-                "tere",
-                "tesekkurler",
-                "umesc",
-                "xie xie",
-            ),
-            True,
-        ),
-        (
-            (
-                "_COURTESY_WORD24",
-                (
-                    "pattern",
-                    "\\b(?:habari(?: yako| gani)?|jambo|hujambo|sawasdee|sawatdee|sawasdi|dobryi den|dobryy den|dobry den|dobriy den|pryvit|vitayu|selamat (?:pagi|petang|siang|malam|datang)|apa khabar|merhaba|yassou|yassas|geia sou|xin chao|kumusta|kamusta|magandang (?:umaga|hapon|gabi)|namaste|namaskar|salaam|salam|as-?salaamu? alaikum|shalom|hola|bonjour|ciao|konnichiwa|ni hao|kia ora|sawubona|ahoj|asante(?: sana)?|khop khun(?: mak)?|khob khun(?: mak)?|kop khun|diakuiu|dyakuyu|diakuyu|spasibo|terima kasih|salamat|tesekkurler|efharisto|efcharisto|cam on|dhanyavaad|dhanyavad|shukriya|shukran|gracias|merci(?: beaucoup)?|grazie(?: mille)?|danke(?: schon)?|arigato(?: gozaimasu)?|xie xie|obrigado|obrigada|dziekuje|diolch|toda|kiitos|mamnoon|mamnun|khahesh mikonam|terima kasih banyak|makasih|köszönöm|koszonom|köszi|koszi|jó napot(?: kívánok)?|jo napot(?: kivanok)?|szia|permisi|sudah|terserah|mas|mbak|bless up|big up|respect|one love|dobrý den|dobry den|děkuji|dekuji|děkuju|dekuju|bună ziua|buna ziua|bună|mulțumesc|mulţumesc|multumesc|mersi(?: mult)?|vanakkam|vanakam|nandri|nanri|chale|medaase|akwaaba|gamarjoba(?:t)?|(?:didi )?madloba|genatsvale|nakhvamdis|labas(?: rytas| vakaras)?|laba diena|ačiū(?: labai)?|aciu(?: labai)?|tena yistilign|tena yistiligne|tena yistilgn|selam(?: new)?|(?:betam )?(?:ameseginalehu|amesegnalehu|ameseginalew)|ayubowan|(?:bohoma )?(?:sthuthi|sthuthiy|stuthi|isthuthi|istuti)|labdien|paldies|sveiki|tere|aitäh|aitah|tänan|tanan|barev(?: dzez)?|shnorhakalutyun|sağ ?ol|sag ?ol|çox sağ ?ol|chox sag ?ol|hvala(?: lijepa| puno| vam)?|zdravo|dobar dan|dzień dobry|dzien dobry|cześć|czesc|dziękuję|privet|zdravstvuyte|blagodaryu|blagodarya|tack(?: så mycket| sa mycket)?|takk|tusen takk|mange tak|hej|hei|dank je(?: wel)?|dank u(?: wel)?|bedankt|goedemorgen|goedemiddag|annyeonghaseyo|annyeong|kamsahamnida|gamsahamnida|gomawo|mingalaba|mingalarba|dhanyabad|dhonnobad|nomoskar|sat sri akal|sannu|na gode|daalu|ndewo|ngiyabonga|siyabonga|enkosi|mahalo(?: nui)?|aloha|toda raba|marhaba|ahlan(?: wa sahlan)?|teşekkür ederim|tesekkur ederim|olá|bom dia|buenos (?:días|dias)|buenas tardes|muchas gracias|e kaaro|e kaasan|e kaale|e ku aaro|e ku irole|e se(?: gan| o)?|o se(?: gan| o)?|ole hyvä|ole hyva|moi|kiitti|faleminderit|grazas|moitas grazas|meur ras|zikomo(?: kwambiri)?|mesi(?: anpil)?|malo aupito|mālō aupito|sulpayki|añay|anay|tenkyu(?: tru)?|kadrinchey(?: la)?|kadrin chhe(?: la)?|natotela(?: sana)?|ua tsaug(?: ntau)?|ke a leboga|kea leboga|kealeboga|eskerrik asko|mila esker|milesker|gràcies|gracies|moltes gràcies|moltes gracies|ďakujem(?: pekne)?|dakujem(?: pekne)?|vďaka|vdaka|bless you|amen(?: to that)?|inshallah|mashallah|pole pole|innit|khrap|khrub|krap|krub|hor|kha|lah|leh|lor|meh|opo|paa|sha|ah|ja|la|po|o)\\b",
-                    34,
-                ),
-            ),
-        ),
-    ),
     "hltl.grounding._normalise2:_courtesy_please33": (
         "cf7cd4de7c73cfb5",
         (
@@ -6853,7 +6796,7 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_not_the_other33r": (
-        "5c6edfbc8888454f",
+        "b9f028143169e743",
         ((), ("not the ",), True),
         (
             (
@@ -10632,7 +10575,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites42r:_only_one42r": ("4ff76ed5172482bf", ((), ("the one",), False), ()),
     "hltl.grounding._rewrites42r:_owned_mistake42r": (
-        "bfc0442609893396",
+        "6deda16f52a2f044",
         (
             (),
             (
@@ -12849,7 +12792,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites51r:_clearing51r": (
-        "01aa1d851547a9b0",
+        "bf338d6d05533be2",
         ((), ("clean", "clear", "empty", "sort", "tidy", "tidying", "wip"), False),
         (),
     ),
@@ -12960,6 +12903,195 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites51r:_yes_again51r": (
         "33f987015a2bb99a",
         ((), ("aye", "correct", "right", "yeah", "yep", "yes"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_and_not_person51s": (
+        "751dbd84360d9cb1",
+        ((), (" not ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_being_a51s": ("da97a909dc016cd7", ((), ("being",), False), ()),
+    "hltl.grounding._rewrites51s:_dont_bother51s": (
+        "4adac59349aac62c",
+        ((), ("bother",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_hold_back51s": ("154aeb1e8a236eeb", ((), ("from",), False), ()),
+    "hltl.grounding._rewrites51s:_itll_why51s": (
+        "d1bb3b6a3442d426",
+        ((), (" will ", "'ll"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_ll_will51s": ("55c966da75da871f", ((), ("'ll",), False), ()),
+    "hltl.grounding._rewrites51s:_not_wanted_when51s": (
+        "048c2e30d37dcbed",
+        ((), ("n't", "never", "not"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_nothing_but51s": (
+        "b057e81b7d402d89",
+        ((), ("nothing",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_only_cleft51s": ("6c3a85f852460b3a", ((), ("only",), False), ()),
+    "hltl.grounding._rewrites51s:_pair_can51s": ("8ae54d3bfe209c60", ((), (" of ",), False), ()),
+    "hltl.grounding._rewrites51s:_reason_instead51s": (
+        "d1fe8a99fad044d1",
+        ((), ("instead",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_sort_those51s": ("f56e6f7887b3e13c", ((), ("sort",), False), ()),
+    "hltl.grounding._rewrites51s:_where_after51s": (
+        "770f3b24aeba6abf",
+        ((", ",), (), False),
+        (("re", ("module", "hltl.grounding.gate")),),
+    ),
+    "hltl.grounding._rewrites51s:_which_stays51s": (
+        "e77c649c20e0b05b",
+        ((), ("that", "which"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites51s:_who_run_on51s": ("b04dd69c52314806", ((), (" who",), False), ()),
+    "hltl.grounding._rewrites52r:_away_in52r": (
+        "35f6e73d72fa12fa",
+        ((), (" it ", " them "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_both_off52r": (
+        "29d5228b1a495993",
+        ((), ("both of them",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_both_state52r": (
+        "5d7d93d19838cf6f",
+        ((), (" both ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_each_kind52r": (
+        "a4905ee152663586",
+        ((), ("apiece", "both", "each", "every"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_every_one52r": ("4c4aa1767f0c31ea", ((), ("every",), False), ()),
+    "hltl.grounding._rewrites52r:_filler_fix52r": (
+        "e58aa42a7d5fff8f",
+        ((), (",",), False),
+        (
+            (
+                "_BACK51R",
+                (
+                    "pattern",
+                    "\\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|actually|i mean|i meant)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites52r:_give_each52r": (
+        "c908ec7ec0f0bcfe",
+        ((), ("both", "each"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_grab_first52r": ("ee26dffef6ddd62c", ((), ("first",), False), ()),
+    "hltl.grounding._rewrites52r:_in_the_end52r": (
+        "a767520e76b8ad8a",
+        ((), (" end", "eventually", "said and done"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_knocking52r": (
+        "2ee220ac1b9a5cf9",
+        ((), ("about", "around"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_left_out52r": (
+        "87dd742be7816868",
+        ((), ("left out",), False),
+        (
+            (
+                "_BACK51R",
+                (
+                    "pattern",
+                    "\\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|actually|i mean|i meant)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites52r:_meant_mine52r": (
+        "f12162f350fec4c4",
+        ((), ("i mean",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_meant_to_say52r": (
+        "802b1312a46678d5",
+        ((), ("mean to", "meant"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_needs_the52r": (
+        "ecd6b81ad03bd270",
+        ((), ("booked the", "need the", "needs the", "using the", "wants the"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_one_bag52r": ("0b27225616730642", ((), ("the one",), False), ()),
+    "hltl.grounding._rewrites52r:_one_of_them52r": (
+        "1e663cff1be73411",
+        ((), ("whichever",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_only_one52r": ("cc95abafc064772c", ((), (" to ",), False), ()),
+    "hltl.grounding._rewrites52r:_pair_of52r": ("d7bbe086cd608917", ((), ("things",), False), ()),
+    "hltl.grounding._rewrites52r:_said_fix52r": ("a013fe209af1bd4e", ((), (" not ",), False), ()),
+    "hltl.grounding._rewrites52r:_single_which52r": (
+        "60fce3654ccabddb",
+        ((), ("which",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52r:_vague_to52r": ("f688d687fcb6f5a8", ((), (",",), False), ()),
+    "hltl.grounding._rewrites52r:_who_asked52r": (
+        "f2d2f8127d1b7d6a",
+        ((), ("the one",), False),
+        (
+            (
+                "_BACK51R",
+                (
+                    "pattern",
+                    "\\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|actually|i mean|i meant)\\b",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites52r:_whole_lot52r": (
+        "6c00918ff2fae2cd",
+        (
+            (),
+            ("bundle", "chuck", "collect", "gather", "lot of", "round up", "scoop", "sweep", "tip"),
+            True,
+        ),
+        (
+            (
+                "_SWEEP52R",
+                (
+                    "pattern",
+                    "^(?P<v>sweep|scoop|gather|bundle|tip|chuck|round up|collect) (?=(?:up )?(?:all |both |the ))",
+                    34,
+                ),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites52s:_after_all52s": (
+        "3a4f5e65e4b0c1a1",
+        ((), ("after all",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52s:_dont_just52s": (
+        "f29124f20ea84563",
+        ((), ("just", "only"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52s:_not_use52s": (
+        "4529d5dd5da352a8",
+        ((), ("drink", "eat", "use"), False),
         (),
     ),
     "hltl.grounding.normalise:_people_then_pronoun": (

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import itertools
 import re
 import sys
 from collections.abc import Callable, Iterator
@@ -42,11 +43,13 @@ __all__ = [
     "escape",
     "findall",
     "finditer",
+    "first_words",
     "fullmatch",
     "match",
     "may_match",
     "required",
     "search",
+    "spelt",
     "split",
     "sub",
 ]
@@ -171,6 +174,83 @@ def _fewest(words: frozenset[str]) -> tuple[str, ...]:
     """``words`` without those holding another of them ('okay' beside 'ok'): a text holds one
     of what is left where it holds one of ``words``."""
     return tuple(sorted(w for w in words if not any(v != w and v in w for v in words)))
+
+
+def first_words(pattern: str, flags: int = 0, limit: int = 4096) -> dict[str, set[str]] | None:
+    """Session 52 (12p): every text ``pattern`` matches by its first word, lower-cased (a text's
+    first word: its letters up to the first that is not a word letter, ``\\w``), where the
+    pattern matches at most ``limit`` texts, each spelt out by literals (alternatives, groups,
+    repeats of at most two) and beginning with a word letter, and no letter of it folds onto an
+    ASCII letter it is not ('ſ', 'K', 'ı', 'İ'); None where not. ``\\b(?:P)\\b`` then matches
+    an ASCII text only where a word of the text (a run of word letters between others) is the
+    first word of a text P matches, and one of those texts is there: the match begins at a
+    word's start and ends at a word's end or at a letter that is not a word letter."""
+    try:
+        parsed = _parser.parse(pattern, flags)
+    except re.error:
+        return None
+    texts = _spelt(list(parsed), limit)
+    if not texts:
+        return None
+    out: dict[str, set[str]] = {}
+    for text in sorted(texts):
+        if not text or not (text[0].isalnum() or text[0] == "_"):
+            return None
+        for c in text:
+            if not c.isascii() and (
+                any(f.isascii() for f in (c.lower(), c.upper(), c.casefold()))
+                or c in "\u0131\u0130\u017f\u212a"
+            ):
+                return None
+        low = text.lower()
+        end = 0
+        while end < len(low) and (low[end].isalnum() or low[end] == "_"):
+            end += 1
+        out.setdefault(low[:end], set()).add(text)
+    return out
+
+
+def spelt(pattern: str, flags: int = 0, limit: int = 4096) -> frozenset[str] | None:
+    """Session 52 (12p): every text ``pattern`` matches, where it is spelt out by literals,
+    alternatives, plain groups and repeats of at most two, and they are at most ``limit``;
+    None where not."""
+    try:
+        parsed = _parser.parse(pattern, flags)
+    except re.error:
+        return None
+    texts = _spelt(list(parsed), limit)
+    return None if texts is None else frozenset(texts)
+
+
+def _spelt(items: list[Any], limit: int) -> set[str] | None:
+    """Every text the parsed sequence ``items`` matches, where it is spelt out by literals,
+    alternatives, plain groups and repeats of at most two, and they are at most ``limit``."""
+    texts = {""}
+    for op, av in items:
+        if op is _LITERAL:
+            more: set[str] | None = {chr(av)}
+        elif op is _BRANCH:
+            more = set()
+            for alt in av[1]:
+                got = _spelt(list(alt), limit)
+                if got is None:
+                    return None
+                more |= got
+        elif op is _SUBPATTERN and not av[1] and not av[2]:
+            more = _spelt(list(av[3]), limit)
+        elif op in _REPEATS and av[1] <= 2:
+            once = _spelt(list(av[2]), limit)
+            if once is None:
+                return None
+            more = set()
+            for n in range(av[0], av[1] + 1):
+                more |= {"".join(t) for t in itertools.product(once, repeat=n)}
+        else:
+            return None
+        if more is None or len(texts) * len(more) > limit:
+            return None
+        texts = {a + b for a in texts for b in more}
+    return texts
 
 
 @functools.lru_cache(maxsize=16384)

@@ -567,6 +567,9 @@ from hltl.grounding._rewrites51s import _STEPS51S, _STEPS51S_FIRST
 from hltl.grounding._rewrites52 import _STEPS52, _STEPS52_FIRST
 from hltl.grounding._rewrites52r import _STEPS52R, _STEPS52R_FIRST
 from hltl.grounding._rewrites52s import _STEPS52S, _STEPS52S_FIRST
+from hltl.grounding._rewrites53 import _STEPS53, _STEPS53_FIRST
+from hltl.grounding._rewrites53r import _STEPS53R, _STEPS53R_FIRST
+from hltl.grounding._rewrites53s import _STEPS53S, _STEPS53S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -898,6 +901,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS53S_FIRST,
+    *_STEPS53R_FIRST,
+    *_STEPS53_FIRST,
     *_STEPS52S_FIRST,
     *_STEPS52R_FIRST,
     *_STEPS52_FIRST,
@@ -954,6 +960,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS53R,
     *_STEPS52R,
     *_STEPS51R,
     *_STEPS50R,
@@ -1000,6 +1007,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS53S,
     *_STEPS52S,
     *_STEPS51S,
     *_STEPS50S,
@@ -1093,6 +1101,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS53,
     *_STEPS52,
     *_STEPS51,
     *_STEPS50,

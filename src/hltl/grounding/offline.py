@@ -61,6 +61,10 @@ from hltl.grounding import (
     _rewrites52l,
     _rewrites52r,
     _rewrites52s,
+    _rewrites53,
+    _rewrites53l,
+    _rewrites53r,
+    _rewrites53s,
     refusalguard,
 )
 from hltl.grounding._normalise1 import _ids, _only
@@ -169,6 +173,10 @@ _REFUSALS = (
     *_rewrites52.REFUSE52,
     *_rewrites52r.REFUSE52R,
     *_rewrites52s.REFUSE52S,
+    *_rewrites53l.REFUSE53L,
+    *_rewrites53.REFUSE53,
+    *_rewrites53r.REFUSE53R,
+    *_rewrites53s.REFUSE53S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -216,6 +224,10 @@ _CHECKS = (
     *_rewrites52.CHECK52,
     *_rewrites52r.CHECK52R,
     *_rewrites52s.CHECK52S,
+    *_rewrites53l.CHECK53L,
+    *_rewrites53.CHECK53,
+    *_rewrites53r.CHECK53R,
+    *_rewrites53s.CHECK53S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
@@ -1674,7 +1686,15 @@ def _held_past36s(sentence: list[Item]) -> tuple[str, str, bool] | None:
     Alice the cup, Bob had the chips." had read cup>A & chips>B): what was, asking nothing."""
     start = 0
     for k, it in enumerate([*sentence, Item("punct", ",", ",")]):
-        if _is(it, ","):
+        # session 51 (12s): or a bare 'and' before another clause's person ("Bob got the apple
+        # and Alice wants the crisps" had read apple>B & chips>A: 12c's fuzz)
+        if _is(it, ",") or (
+            _is(it, "and")
+            and it.text.lower() == "and"
+            and k + 1 < len(sentence)
+            and sentence[k + 1].kind == "ent"
+            and all(r.kind == "human" for r in sentence[k + 1].refs)
+        ):
             said = _held32s(sentence[start:k]) if start > 0 or k < len(sentence) else None
             if said is not None and said[2]:
                 return said

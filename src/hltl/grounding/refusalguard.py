@@ -186,29 +186,7 @@ def asked(fns: tuple[Callable[..., Any], ...], text: str) -> list[Callable[..., 
 
 def read_all(fns: Iterable[Callable[..., Any]]) -> dict[str, Entry]:
     """The entries of every function that has a guard."""
-    out: dict[str, Entry] = {}
-    for fn in fns:
-        entry = read_guard(fn)
-        if entry is not None:
-            out[stepguard.key(fn)] = entry
-    return out
-
-
-def _write(entries: dict[str, Entry]) -> str:
-    lines = [
-        "# ruff: noqa: E501",
-        '"""The refusals\' and checks\' guards (made by python -m hltl.grounding.refusalguard'
-        ' --write)."""',
-        "",
-        "from hltl.grounding.stepguard import Entry",
-        "",
-        "GUARDS: dict[str, Entry | str] = {",
-        f"    {_DERIVATION!r}: {derivation()!r},",
-        *(f"    {name!r}: {entry!r}," for name, entry in sorted(entries.items())),
-        "}",
-        "",
-    ]
-    return "\n".join(lines)
+    return stepguard.read_all(fns, read_guard)
 
 
 def all_refusals() -> tuple[Callable[..., Any], ...]:
@@ -225,10 +203,12 @@ def main(argv: Sequence[str]) -> int:
         print("usage: python -m hltl.grounding.refusalguard --write", file=sys.stderr)
         return 2
     fns = all_refusals()
-    entries = read_all(fns)
     out = Path(__file__).with_name("_refusal_guards.py")
-    out.write_text(_write(entries), encoding="utf-8")
-    print(f"{len(entries)} of {len(fns)} refusals and checks guarded, written to {out}")
+    what = "The refusals' and checks' guards"
+    n = stepguard.write_list(
+        out, fns, read_guard, what, "hltl.grounding.refusalguard", derivation()
+    )
+    print(f"{n} of {len(fns)} refusals and checks guarded, written to {out}")
     return 0
 
 

@@ -1113,30 +1113,54 @@ def may_act(rule: Guard, text: str, low: str, ascii_: bool) -> bool:
 # -- remaking the list ---------------------------------------------------------------------------
 
 
-def read_all(steps: Iterable[Callable[..., Any]]) -> dict[str, Entry]:
-    """The entries of every step that has a guard."""
+# Session 52 (12b): the list writer shared by this module and refusalguard.py (which kept a copy):
+# ``read_all`` with the reader of the list's kind, ``list_text`` the module written, ``write_list``
+# both and the file; each module's ``main`` says what it wrote.
+
+
+def read_all(
+    fns: Iterable[Callable[..., Any]],
+    read: Callable[[Callable[..., Any]], Entry | None] = read_guard,
+) -> dict[str, Entry]:
+    """The entries (by ``key``) of every function ``read`` reads a guard of (a step's, here)."""
     out: dict[str, Entry] = {}
-    for step in steps:
-        entry = read_guard(step)
+    for fn in fns:
+        entry = read(fn)
         if entry is not None:
-            out[key(step)] = entry
+            out[key(fn)] = entry
     return out
 
 
-def _write(entries: dict[str, Entry]) -> str:
+def list_text(what: str, maker: str, made: str, entries: Mapping[str, Entry]) -> str:
+    """A generated list's source: its docstring (``what`` it guards, made by module ``maker``),
+    the entry saying how its guards were read (``made``) and the entries, sorted by name."""
     lines = [
         "# ruff: noqa: E501",
-        '"""The normaliser\'s step guards (made by python -m hltl.grounding.stepguard --write)."""',
+        f'"""{what} (made by python -m {maker} --write)."""',
         "",
         "from hltl.grounding.stepguard import Entry",
         "",
         "GUARDS: dict[str, Entry | str] = {",
-        f"    {_DERIVATION!r}: {derivation()!r},",
+        f"    {_DERIVATION!r}: {made!r},",
         *(f"    {name!r}: {entry!r}," for name, entry in sorted(entries.items())),
         "}",
         "",
     ]
     return "\n".join(lines)
+
+
+def write_list(
+    out: Path,
+    fns: Sequence[Callable[..., Any]],
+    read: Callable[[Callable[..., Any]], Entry | None],
+    what: str,
+    maker: str,
+    made: str,
+) -> int:
+    """Writes the list of ``fns``' guards to ``out`` (``ruff format`` it after); how many."""
+    entries = read_all(fns, read)
+    out.write_text(list_text(what, maker, made, entries), encoding="utf-8")
+    return len(entries)
 
 
 def all_steps() -> tuple[Callable[..., Any], ...]:
@@ -1153,10 +1177,10 @@ def main(argv: Sequence[str]) -> int:
         print("usage: python -m hltl.grounding.stepguard --write", file=sys.stderr)
         return 2
     steps = all_steps()
-    entries = read_all(steps)
     out = Path(__file__).with_name("_step_guards.py")
-    out.write_text(_write(entries), encoding="utf-8")
-    print(f"{len(entries)} of {len(steps)} steps guarded, written to {out}")
+    what = "The normaliser's step guards"
+    n = write_list(out, steps, read_guard, what, "hltl.grounding.stepguard", derivation())
+    print(f"{n} of {len(steps)} steps guarded, written to {out}")
     return 0
 
 
