@@ -752,6 +752,15 @@ ASKS_ONLY = [
     ("Alice had wanted the apple.", CELL),
     ("Marco had asked for the lemon.", KITCHEN),
     ("Mrs Khan had asked for one of the blankets.", WARD),
+    # session 53: beside another request too (it read both), and 'had been given / had got'
+    ("Bob had asked for the apple; Alice wants the crisps.", CELL),
+    ("Alice wants the crisps, and Bob had asked for the apple.", CELL),
+    ("Marco had asked for the lemon; give Lena the salt.", KITCHEN),
+    ("Mr Lee had wanted the jug, and Mrs Khan wants the magazine.", WARD),
+    ("Grandad had been asking for the bib; Ava wants the teddy.", NURSERY),
+    ("Bob had been given the apple.", CELL),
+    ("Bob had got the apple; Alice wants the crisps.", CELL),
+    ("Marco had been given the lemon, so give Lena the salt.", KITCHEN),
 ]
 MINE = {_rewrites52._should52, _rewrites52._had_wanted52}
 
@@ -786,6 +795,10 @@ def test_asks_only_refused_by_these_rules() -> None:
         ("Alice should get the cup.", "cup>A", CELL),
         ("The apple should end up on the shelf.", "apple@shelf", CELL),
         ("Bob asked for one of the mugs.", "mug_red>B | mug_blue>B", CELL),
+        # session 53: the past want said to hold still, or asked for again
+        ("Bob had asked for the apple, so give it to him.", "apple>B", CELL),
+        ("Bob had asked for the apple, and he still wants it.", "apple>B", CELL),
+        ("Alice had asked for the apple but now she'd rather have the cup.", "cup>A", CELL),
         (
             "Zoe had asked for the glue, but now she'd rather have the scissors.",
             "scissors>C",

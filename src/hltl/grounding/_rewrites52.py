@@ -748,27 +748,34 @@ def _should52(text: str, lexicon: Lexicon) -> None:
     )
 
 
-# -- 'P had asked for / had wanted X.' said alone ("Bob had asked for one of the mugs.", "Alice had
-# wanted the apple."): a want before some time past, which may be over; refused as session 51's
-# 'had been needing' is ("Zoe had asked for the glue, but now she'd rather have the scissors."
-# says what she wants now and reads)
+# -- 'P had asked for / had wanted X.' ("Bob had asked for one of the mugs.", "Alice had wanted the
+# apple."): a want before some time past, which may be over; refused as session 51's 'had been
+# needing' is, alone or beside another request ("Bob had asked for the apple; Alice wants the
+# crisps." would read one want and not the other). Left to main when the rest says the want holds
+# or what replaced it ('so give it to him', 'he still wants it', "but now she'd rather have …").
+# 'P had been given / had got X' is a holding said as done, refused with it (read on main).
 _HAD_WANTED52 = re.compile(
-    r"^(?P<said>" + _P52 + r"(?: had|'d) (?:asked for|wanted|requested|been after|been wanting|"
-    r"needed|been needing|fancied|been asking for)) [^,;:.!?]+[.!]?$"
+    r"(?:^|[,;:.!?] (?:and |but |so |then )?)(?P<said>" + _P52 + r"(?: had|'d) (?:asked for|wanted|"
+    r"requested|been after|been wanting|needed|been needing|fancied|been asking for|(?P<got>been "
+    r"(?:given|handed|passed|brought|sent|taken)|got(?! to\b)|gotten))) [^,;:.!?]+"
 )
+# what, after the past want, says it holds or was replaced: main's reading stands
+_HAD_KEPT52 = re.compile(r"\b(?:it|them|still|now|rather|instead|changed)\b", _F)
 
 
 def _had_wanted52(text: str, lexicon: Lexicon) -> None:
-    """Session 52: refuse 'P had asked for X.' said alone (above)."""
+    """Session 52: refuse 'P had asked for X.' and 'P had been given X' (above)."""
     if " had " not in text and "'d " not in text:
         return
-    m = _HAD_WANTED52.match(text.strip())
-    if m is None or not _only_person(m["said"].rsplit(" had", 1)[0].split("'d ")[0], lexicon):
-        return
-    raise GroundingError(
-        f"{m['said']!r} says what was wanted before: it may be over; say 'give …' for what is "
-        "wanted now"
-    )
+    for m in _HAD_WANTED52.finditer(text.strip()):
+        if not _only_person(m["said"].rsplit(" had", 1)[0].split("'d ")[0], lexicon):
+            continue
+        if m["got"] is None and _HAD_KEPT52.search(text.strip()[m.end("said") :]):
+            continue
+        raise GroundingError(
+            f"{m['said']!r} says what was wanted or had before: it may be over; say 'give …' for "
+            "what is wanted now"
+        )
 
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-51 ones)
