@@ -409,9 +409,6 @@ KNOWN_MISSES = frozenset(
         "Those xchips on the side are meant for Person A.",
         "Grandad's got jam on his hands, get him the baby wipws.",
         # blind51 (tuned on in session 53): refusals left at its one measurement (docs/grounding.md)
-        "Baie dankie in advance, my friend, Person B would really like the chips.",
-        "Right, bit of a ramble, but the bottle, Person A, whenever suits you.",
-        "Whenever's convenient, pal, the packing tape wants to go on the belt.",
         "Oh, and if it's no bother, the tongs to Lena, she's got the mixologist waiting at the "
         "pass.",
         "Sorry to nag, but Zoe still needs the glue stick for her crystal growing poster, could "
@@ -422,7 +419,6 @@ KNOWN_MISSES = frozenset(
         "the apple.",
         "Person B skipped breakfast and is now eyeing up the chips like a hawk, so they'd better "
         "go to him.",
-        "If you ask me, the thing Person A has been angling for all along is that bottle.",
         "Person A has been craving the chips since her shift as a crossing warden ended.",
         "Person B's gasping, so he ought to have the bottle, and the chips can keep Person A "
         "going.",
@@ -433,15 +429,10 @@ KNOWN_MISSES = frozenset(
         "Lily's grizzling and reaching out her little arms, she's after her teddy.",
         "The apple, grab it and pass it along to Carol, and while you're about it, the red mug "
         "for her as well.",
-        "That bottle's cluttering up the floor, could you lift it onto the shelf?",
         "Between the two of them it's simple: the cup is what Person A is after, Person B the "
         "apple.",
         "Person B's got the chips coming, so take them across, and after those the apple's his as "
         "well.",
-        "Person A's throat is like sandpaper after the crossing warden shift, so give her the "
-        "bottle.",
-        "That bottle over there, Person A has her eye on it.",
-        "Person B has put in for the chips; as for Person A, the bottle's hers.",
         "The gloves are Tom's, he left them, bring them to him.",
         "Bob gets the crisps first. Once he has them, over to Alice goes the cup.",
         "the bottle needs to go up on the shelf and bob said hed have the crisps so they go to him",
@@ -502,8 +493,6 @@ KNOWN_MISSES = frozenset(
         "Torch onto the workbench, actually, rethink, lock it away in the locker instead, it "
         "walks off otherwise.",
         "person a has been on the go all afternoon and needs that bottle so over it goes",
-        "the bottle is for person a whenever ur free no rush",
-        "chips are for person b and person a has dibs on the bottle",
         "pop the tongs down on the worktop please lena wants them there",
         "Since he sat down Bob hasn't taken his eyes off the xrisps, so let him have them.",
         "Stash the cheps up on the shelf where the dog can't get them.",
@@ -513,7 +502,6 @@ KNOWN_MISSES = frozenset(
         "Over to Pesson A with the bottle, and across to Person B with the chips.",
         "Sam's minuting the budget meeting and needs the notepsd for it.",
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
-        "Any chance you could drop the apple off with Person A and swing by Person B with the cup?",
         "Priya's got a stack of rota packs to clip together, would you be able to bring her the "
         "stapler?",
         "Any chance you could run the packing tape over to Mia for the pallets?",
