@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _unknown_word
 from hltl.grounding._rewrites44 import _agrees44
@@ -278,6 +279,44 @@ def _swing_by53(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), f"take {m['x']} to {m['p']}", lexicon)
 
 
+# -- refused (12c's fuzz) -------------------------------------------------------------------------
+
+# -- an apology opening the text ("Sorry to bother you, but Bob had the crisps. He said they were
+# stale.", "Sorry, but Bob has the apple.", "I'm afraid Bob had the apple."): the apology asks
+# nothing, so what follows it is refused as it would be said alone (a holding, a past: a rewrite
+# took the apology off after the refusals had looked, and the holding read as a handing over)
+_SORRY_BUT53 = re.compile(
+    r"^(?:(?:[Oo]h|[Uu]m|[Ee]r|[Ee]rm|[Ss]o|[Rr]ight|[Ww]ell),?\s+)?(?:(?:(?:[Ii]'m |[Ii] am |"
+    r"[Ii]m )?(?:[Ss]o |[Vv]ery |[Rr]eally |[Tt]erribly |[Aa]wfully )*[Ss]orry|(?:[Mm]y )?"
+    r"[Aa]pologies|[Pp]ardon me|[Ee]xcuse me|[Ff]orgive me)(?: to [a-z]+(?: [a-z]+){0,3}| for "
+    r"[a-z]+(?: [a-z]+){0,3})?,?\s+but,?\s+|(?:[Ii]'m|[Ii] am|[Ii]m) afraid,?\s+(?:but,?\s+)?)"
+    r"(?=\S)"
+)
+
+
+def _sorry_but53(text: str, lexicon: Lexicon) -> None:
+    """Session 53: after an opening apology, what is refused alone is refused (above)."""
+    if "orry" not in text and "pologies" not in text and " me" not in text and "fraid" not in text:
+        return
+    m = _SORRY_BUT53.match(text)
+    if m is None:
+        return
+    # why: offline imports this module (its refusals are offline's)
+    from hltl.grounding import offline
+
+    # what follows is read as said alone (a whole instruction: a reading of a part inside
+    # another lets a present holding through, offline._state_only32s)
+    rest, reading = text[m.end() :], offline._inside()
+    saved = reading[:]
+    reading.clear()
+    try:
+        offline.parse_instruction(rest[:1].upper() + rest[1:], lexicon.scene, lexicon)
+    except GroundingError as alone:
+        raise GroundingError(f"after the apology, {alone}") from None
+    finally:
+        reading[:] = saved
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     # the rewrites inside a clause first, then those of a text's opening (anchored there)
@@ -296,6 +335,6 @@ _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = (_sorry_but53,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
