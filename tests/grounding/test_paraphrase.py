@@ -415,22 +415,14 @@ KNOWN_MISSES = frozenset(
         "you?",
         "Please, when you've a minute, the torch over to Jess, cheers, the light's awful under "
         "that van.",
-        "Person A's packing her own lunch box this morning and would be grateful for the cup and "
-        "the apple.",
         "Person B skipped breakfast and is now eyeing up the chips like a hawk, so they'd better "
         "go to him.",
-        "Person A has been craving the chips since her shift as a crossing warden ended.",
         "Person B's gasping, so he ought to have the bottle, and the chips can keep Person A "
         "going.",
         "Person A's first in the queue for the bottle, and once she's sorted, Person B's lined up "
         "for the chips.",
         "Mr Novak reckons his truffle pasta is crying out for the salt, while Marco's after the "
         "knife for the fillets.",
-        "Lily's grizzling and reaching out her little arms, she's after her teddy.",
-        "The apple, grab it and pass it along to Carol, and while you're about it, the red mug "
-        "for her as well.",
-        "Between the two of them it's simple: the cup is what Person A is after, Person B the "
-        "apple.",
         "Person B's got the chips coming, so take them across, and after those the apple's his as "
         "well.",
         "The gloves are Tom's, he left them, bring them to him.",
@@ -493,7 +485,6 @@ KNOWN_MISSES = frozenset(
         "Torch onto the workbench, actually, rethink, lock it away in the locker instead, it "
         "walks off otherwise.",
         "person a has been on the go all afternoon and needs that bottle so over it goes",
-        "pop the tongs down on the worktop please lena wants them there",
         "Since he sat down Bob hasn't taken his eyes off the xrisps, so let him have them.",
         "Stash the cheps up on the shelf where the dog can't get them.",
         "Pirson A left her cup behind at lunch, could it go back to her.",
@@ -502,8 +493,6 @@ KNOWN_MISSES = frozenset(
         "Over to Pesson A with the bottle, and across to Person B with the chips.",
         "Sam's minuting the budget meeting and needs the notepsd for it.",
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
-        "Priya's got a stack of rota packs to clip together, would you be able to bring her the "
-        "stapler?",
         "Any chance you could run the packing tape over to Mia for the pallets?",
     }
 )

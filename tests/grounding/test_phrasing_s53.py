@@ -27,9 +27,9 @@ from tests.grounding.helpers import (
 )
 
 # the example scenes blind51 uses
-DUO, ONE, F41, T12, T21, FIG1, L44 = (
+DUO, ONE, F41, T12, T21, FIG1, L44, SQ = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("2-2", "1-1", "4-1", "1-2", "2-1", "fig1", "4-4-line")
+    for n in ("2-2", "1-1", "4-1", "1-2", "2-1", "fig1", "4-4-line", "4-4-square")
 )
 
 # -- politeness and fillers ---
@@ -276,6 +276,203 @@ test_swing_by = SWING_BY.test(
 
 def test_swing_by_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     SWING_BY.refused_without((_rewrites53._swing_by53,), monkeypatch)
+
+
+# -- batch 2 ---
+
+# "while you're about it" said "while you're at it" (_about_it53)
+ABOUT_IT = PhrasingCases()
+test_about_it = ABOUT_IT.test(
+    (
+        "The apple, grab it and pass it along to Carol, and while you're about it, the red mug "
+        "for her as well.",
+        "apple>C & mug_red>C",
+        CELL,
+    ),
+    (
+        "Give Bob the apple, and while you're about it, the crisps for Alice.",
+        "apple>B & chips>A",
+        CELL,
+    ),
+    (
+        "Give Marco the lemon, and while you're about it, the salt for Lena.",
+        "lemon>A & salt>B",
+        KITCHEN,
+    ),
+    (
+        "Take Mr Lee the jug, and while you're about it, the magazine for Mrs Khan.",
+        "jug>B & magazine>C",
+        WARD,
+    ),
+    ("Give Bob the apple, and while you're about it, Alice had the crisps.", None, CELL),
+    ("Give Bob the apple, and while you're about it, the crisps for Alice tomorrow.", None, CELL),
+    ("While you're about it, what's Bob doing?", None, CELL),
+)
+
+
+def test_about_it_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ABOUT_IT.refused_without((_rewrites53._about_it53,), monkeypatch)
+
+
+# an opening 'Between the two of them' before "it's simple:" (_between53)
+BETWEEN = PhrasingCases()
+test_between = BETWEEN.test(
+    (
+        "Between the two of them it's simple: the cup is what Person A is after, Person B the "
+        "apple.",
+        "cup>A & apple>B",
+        L44,
+    ),
+    (
+        "Between the two of them it's simple: Alice wants the crisps, Bob the apple.",
+        "chips>A & apple>B",
+        CELL,
+    ),
+    (
+        "Between the two of them it's easy: the crisps for Alice and the apple for Bob.",
+        "chips>A & apple>B",
+        CELL,
+    ),
+    (
+        "Between the pair of them it's simple: Marco wants the lemon, Lena the salt.",
+        "lemon>A & salt>B",
+        KITCHEN,
+    ),
+    ("Between the two of them it's simple: Alice had the crisps, Bob the apple.", None, CELL),
+    ("Between the two of them it's simple: Alice wanted the crisps, Bob the apple.", None, CELL),
+    ("Between the two of them it's simple: they can share the crisps.", None, CELL),
+)
+
+
+def test_between_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BETWEEN.refused_without((_rewrites53._between53,), monkeypatch)
+
+
+# a closing 'since her shift (as a crossing warden) ended' after a want (_since_ended53)
+SINCE_ENDED = PhrasingCases()
+test_since_ended = SINCE_ENDED.test(
+    (
+        "Person A has been craving the chips since her shift as a crossing warden ended.",
+        "chips>A",
+        DUO,
+    ),
+    (
+        "Mr Lee has been craving the magazine since his visit from the vicar ended.",
+        "magazine>B",
+        WARD,
+    ),
+    (
+        "Grandad has been craving the wipes since his walk round the big park finished.",
+        "wipes>B",
+        NURSERY,
+    ),
+    ("Bob's been craving the apple since his walk round the big park finished.", "apple>B", CELL),
+    ("Bob's been craving the apple since his match ended, he's got it now.", None, CELL),
+    ("Marco has been dying for the lemon since his stint as head chef finished.", None, KITCHEN),
+    ("Bob had the apple since his walk round the big park finished.", None, CELL),
+)
+
+
+def test_since_ended_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SINCE_ENDED.refused_without((_rewrites53._since_ended53,), monkeypatch)
+
+
+# a closing "P wants them there" after a placing (_wants_there53)
+WANTS_THERE = PhrasingCases()
+test_wants_there = WANTS_THERE.test(
+    ("pop the tongs down on the worktop please lena wants them there", "tongs@counter", KITCHEN),
+    ("put the apple on the shelf please bob wants it there", "apple@shelf", CELL),
+    ("Put the apple on the shelf, Bob wants it there.", "apple@shelf", CELL),
+    ("put the bib on the high chair please grandad wants it there", "bib@highchair", NURSERY),
+    ("put the apple on the shelf please bob wanted it there", None, CELL),
+    ("give bob the apple please alice wants it there", None, CELL),
+    ("put the apple on the shelf please dave wants it there", None, CELL),
+    ("put the apple on the shelf tomorrow please bob wants it there", None, CELL),
+)
+
+
+def test_wants_there_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WANTS_THERE.refused_without((_rewrites53._wants_there53,), monkeypatch)
+
+
+# "P's got a stack of X to clip together," said "P's busy," (_stack_of53)
+STACK_OF = PhrasingCases()
+test_stack_of = STACK_OF.test(
+    (
+        "Priya's got a stack of rota packs to clip together, would you be able to bring her the "
+        "stapler?",
+        "stapler>A",
+        OFFICE,
+    ),
+    ("Bob's got a pile of homework to get through, could you give him the apple?", "apple>B", CELL),
+    (
+        "Jess has got a load of shelves to put up, could you pass her the drill?",
+        "drill>B",
+        WORKSHOP,
+    ),
+    (
+        "Bob's got a pile of homework to get through, could you give Alice the apple?",
+        "apple>A",
+        CELL,
+    ),
+    ("Bob's got a pile of homework to get through, he had the apple.", None, CELL),
+    ("Lena's got a mountain of plates to wash up, could you pass her the salt?", None, KITCHEN),
+    (
+        "Bob's got a pile of homework to get through, could you give him the apple tomorrow?",
+        None,
+        CELL,
+    ),
+    ("Bob had a pile of homework to get through, could you give him the apple?", None, CELL),
+)
+
+
+def test_stack_of_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    STACK_OF.refused_without((_rewrites53._stack_of53,), monkeypatch)
+
+
+# "P's packing her lunch box and would be grateful for X" (_doing_and53)
+DOING_AND = PhrasingCases()
+test_doing_and = DOING_AND.test(
+    (
+        "Person A's packing her own lunch box this morning and would be grateful for the cup and "
+        "the apple.",
+        "cup>A & apple>A",
+        SQ,
+    ),
+    ("Bob's packing his bag this morning and would be grateful for the apple.", "apple>B", CELL),
+    ("Tom's loading the van this morning and would be grateful for the gloves.", "gloves>B", DEPOT),
+    ("Alice's packing her bag this morning and would be grateful for the crisps.", "chips>A", CELL),
+    ("Bob's doing his homework and would have liked the apple.", None, CELL),
+    ("Bob's eating the apple and wanted the crisps.", None, CELL),
+    ("Bob's doing his homework and needs the apple tomorrow.", None, CELL),
+    ("Bob's doing his homework and would like the apple, he has it.", None, CELL),
+)
+
+
+def test_doing_and_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DOING_AND.refused_without((_rewrites53._doing_and53,), monkeypatch)
+
+
+# "…, she's after her teddy" said "…, she wants her teddy" (_pron_after53)
+PRON_AFTER = PhrasingCases()
+test_pron_after = PRON_AFTER.test(
+    (
+        "Lily's grizzling and reaching out her little arms, she's after her teddy.",
+        "teddy>A",
+        NURSERY,
+    ),
+    ("Alice is hungry, she's after her apple.", "apple>A", CELL),
+    ("Bob's grumpy, he's after his crisps.", "chips>B", CELL),
+    ("Lena's tired, she's after her knife.", "knife>B", KITCHEN),
+    ("Alice is hungry, he's after his apple.", None, CELL),
+    ("Alice is hungry, she was after her apple.", None, CELL),
+    ("Alice and Carol are hungry, she's after her apple.", None, CELL),
+    ("Alice is hungry, she's after her apple, she's had it.", None, CELL),
+)
+
+
+def test_pron_after_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PRON_AFTER.refused_without((_rewrites53._pron_after53,), monkeypatch)
 
 
 # -- refused (12c's fuzz): each read on main ---

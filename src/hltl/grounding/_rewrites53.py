@@ -6,11 +6,11 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _unknown_word
+from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading, _unknown_word
 from hltl.grounding._rewrites44 import _agrees44
-from hltl.grounding._rewrites52 import _P52, _cut52
+from hltl.grounding._rewrites52 import _P52, _UNSAFE52, _WANTS52, _cut52
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, tasks
 
 # -- session 53 (engineer 12): blind51's refusals of politeness and fillers, wants and needs,
 # pronouns and ellipsis, lower case and questions, each read as a family. Every rule rewrites to
@@ -279,6 +279,157 @@ def _swing_by53(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), f"take {m['x']} to {m['p']}", lexicon)
 
 
+# -- batch 2 ---------------------------------------------------------------------------------------
+
+# -- "while you're about it" said "while you're at it" ("The apple, grab it and pass it along to
+# Carol, and while you're about it, the red mug for her as well.", read)
+_ABOUT_IT53 = re.compile(r"\b(?:while|whilst) (?:you're|you are|youre) (?P<a>about it)\b", _F)
+
+
+def _about_it53(text: str, lexicon: Lexicon) -> str:
+    """Session 53: "while you're about it" read as "while you're at it"."""
+    if "about it" not in text:
+        return text
+    m = _ABOUT_IT53.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("a"), m.end("a"), "at it", lexicon)
+
+
+# -- "Between the two of them it's simple:" opening ("Between the two of them it's simple: the cup
+# is what Person A is after, Person B the apple."): who the sharing is between, taken off ("It's
+# simple: …" reads)
+_BETWEEN53 = re.compile(
+    r"^(?P<cut>(?:[Bb]etween|[Ww]ith|[Ff]or) (?:the (?:two|three|pair|both|lot) of them|those "
+    r"two|the pair|them both|the two),?\s+)(?=(?:it's|it is) (?:simple|easy|straightforward|dead "
+    r"simple|dead easy|quite simple)\s*:)"
+)
+
+
+def _between53(text: str, lexicon: Lexicon) -> str:
+    """Session 53: an opening 'Between the two of them' before "it's simple:" taken off."""
+    if not any(w in text for w in (" of them", " two", " both", " pair")):
+        return text
+    m = _BETWEEN53.match(text)
+    if m is None:
+        return text
+    return _cut52(text, 0, m.end("cut"), "", lexicon)
+
+
+# -- a closing 'since her shift (as a crossing warden) ended' after a want ("Person A has been
+# craving the chips since her shift as a crossing warden ended."): since when, an end or start
+# that is over, taken off (the want reads)
+_SINCE_ENDED53 = re.compile(
+    r"(?P<cut>,?\s+(?:ever )?since (?:her|his|their|the) [a-z]+(?: [a-z]+){0,5} (?:ended|finished|"
+    r"began|started|stopped|wrapped up|got going))(?=\s*[.!]?$)"
+)
+
+
+# wants _WANTS52 does not name ("Person A has been craving the chips")
+_CRAVING53 = re.compile(
+    r"\b(?:craving|craves|longing for|dying for|gasping for|desperate for|hankering after|"
+    r"pining for|itching for)\b",
+    _F,
+)
+
+
+def _since_ended53(text: str, lexicon: Lexicon) -> str:
+    """Session 53: a closing 'since her shift ended' after a want taken off."""
+    if "since " not in text:
+        return text
+    m = _SINCE_ENDED53.search(text)
+    if m is None or _names(m["cut"], lexicon):
+        return text
+    if not _WANTS52.search(text[: m.start()]) and not _CRAVING53.search(text[: m.start()]):
+        return text
+    return _cut52(text, m.start("cut"), m.end("cut"), "", lexicon)
+
+
+# -- "P wants them there" closing a placing, run on with 'please' ("pop the tongs down on the
+# worktop please lena wants them there"): why it goes there, taken off when what is left only
+# places things
+_WANTS_THERE53 = re.compile(
+    r"(?P<cut>(?:,\s*|\s+)(?P<p>" + _P52 + r"|[a-z]+(?: [a-z])?) (?:wants|needs|would like|'d "
+    r"like|likes) (?:it|them) (?:there|put there|left there|over there)\s*[.!]?)$",
+    _F,
+)
+
+
+def _wants_there53(text: str, lexicon: Lexicon) -> str:
+    """Session 53: a closing "P wants them there" after a placing taken off."""
+    if " there" not in text:
+        return text
+    m = _WANTS_THERE53.search(text)
+    if m is None:
+        return text
+    who = next((w for w in _tails53(m["p"]) if _only_person(w, lexicon)), None)
+    if who is None or m["p"].lower() not in (who.lower(), f"please {who.lower()}"):
+        return text
+    out = text[: m.start("cut")]
+    if _UNSAFE52.search(out):
+        return text
+    read = _reading(out, lexicon)
+    if read is None or any(t.kind != "place" for t in tasks(read)):
+        return text
+    return out
+
+
+# -- "P's got a stack of X to clip together," before a request ("Priya's got a stack of rota packs
+# to clip together, would you be able to bring her the stapler?"): what keeps the person busy,
+# said "P's busy," (read)
+_STACK_OF53 = re.compile(
+    r"^(?P<p>" + _P52 + r")(?:'s got| has got| has) (?:a (?:big |huge |whole |massive )?(?:stack|"
+    r"pile|heap|load|mountain|bunch|ton|pile-up|backlog|tower)|loads|piles|heaps|stacks|tons) of "
+    r"[a-z]+(?: [a-z]+){0,3} to (?:[a-z]+)(?: (?:together|through|up|out|off|in|done))?(?=,\s)"
+)
+
+
+def _stack_of53(text: str, lexicon: Lexicon) -> str:
+    """Session 53: "P's got a stack of X to clip together," read as "P's busy,"."""
+    if " of " not in text:
+        return text
+    m = _STACK_OF53.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or _names(m.group()[len(m["p"]) :], lexicon):
+        return text
+    return _cut52(text, 0, m.end(), f"{m['p']}'s busy", lexicon)
+
+
+# -- "P's packing her own lunch box this morning and would be grateful for X" (what the person is
+# doing, then a want joined by 'and'): the doing taken off, said "P would be grateful for X"
+_DOING_AND53 = re.compile(
+    r"^(?P<p>" + _P52 + r")(?:'s| is) (?P<w>[a-z]+ing [^,.;:!?]{3,50}?) and (?=(?:would|'d|wants|"
+    r"needs|could do with|is after|fancies|is hoping for)\b)"
+)
+
+
+def _doing_and53(text: str, lexicon: Lexicon) -> str:
+    """Session 53: "P's packing her lunch box and would be grateful for X" read as "P would be
+    grateful for X"."""
+    if "ing " not in text or " and " not in text:
+        return text
+    m = _DOING_AND53.match(text)
+    if m is None or not _only_person(m["p"], lexicon) or _names(m["w"], lexicon):
+        return text
+    return _cut52(text, 0, m.end(), f"{m['p']} ", lexicon)
+
+
+# -- "she's after her teddy" after a clause naming her ("Lily's grizzling and reaching out her
+# little arms, she's after her teddy."): her want, said "she wants her teddy" (read)
+_PRON_AFTER53 = re.compile(
+    r"(?<=[,;]\s)(?P<pron>[Ss]he|[Hh]e)(?:'s| is) after (?=(?:her|his) [a-z]+)"
+)
+
+
+def _pron_after53(text: str, lexicon: Lexicon) -> str:
+    """Session 53: "…, she's after her teddy" read as "…, she wants her teddy"."""
+    if "s after " not in text and " is after " not in text:
+        return text
+    m = _PRON_AFTER53.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start(), m.end(), f"{m['pron']} wants ", lexicon)
+
+
 # -- refused (12c's fuzz) -------------------------------------------------------------------------
 
 # -- an apology opening the text ("Sorry to bother you, but Bob had the crisps. He said they were
@@ -326,11 +477,18 @@ _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _throat53,
     _as_for53,
     _swing_by53,
+    _about_it53,
+    _since_ended53,
+    _pron_after53,
+    _wants_there53,
     _ramble53,
     _ask_me53,
     _cleft53,
     _over_there53,
     _clutter53,
+    _between53,
+    _stack_of53,
+    _doing_and53,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53: tuple[Callable[[str, Lexicon], str], ...] = ()
