@@ -7,10 +7,8 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.errors import GroundingError
 from hltl.grounding import _rewrites53
-from hltl.grounding.lexicon import Lexicon
-from hltl.world.scene import Scene, load_scene
+from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -22,8 +20,6 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
-    assert_reads,
-    assert_refused,
 )
 
 # the example scenes blind51 uses
@@ -123,10 +119,15 @@ test_clutter = CLUTTER.test(
         "bottle@shelf",
         FIG1,
     ),
-    ("That apple's cluttering up the table, could you put it on the shelf?", "apple@shelf", CELL),
-    ("That apple's cluttering up the table, could you give it to Bob?", "apple>B", CELL),
-    ("That stapler's hogging the desk, could you put it in the box?", "stapler@box", OFFICE),
-    ("That hammer's cluttering up the bench, could you give it to Jess?", "hammer>B", WORKSHOP),
+    ("That apple's cluttering up the floor, could you put it on the shelf?", "apple@shelf", CELL),
+    ("That apple's cluttering up the hallway, could you give it to Bob?", "apple>B", CELL),
+    ("That stapler's hogging the windowsill, could you put it in the box?", "stapler@box", OFFICE),
+    ("That hammer's cluttering up the doorway, could you give it to Jess?", "hammer>B", WORKSHOP),
+    # 12c: a surface of the scene named, where the request then puts it
+    ("That apple's cluttering up the table, put it on the table.", None, CELL),
+    ("That cup's hogging the table, put it on the table.", None, CELL),
+    ("That apple's blocking the shelf, put it on the shelf.", None, CELL),
+    ("That apple's cluttering up the shelf, put it on the table.", None, CELL),
     ("That apple's cluttering up the table, Bob has it.", None, CELL),
     ("That apple was cluttering up the table, could you put it on the shelf?", None, CELL),
     ("That apple's cluttering up the table, could you put it on the shelf tomorrow?", None, CELL),
@@ -473,52 +474,3 @@ test_pron_after = PRON_AFTER.test(
 
 def test_pron_after_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     PRON_AFTER.refused_without((_rewrites53._pron_after53,), monkeypatch)
-
-
-# -- refused (12c's fuzz): each read on main ---
-
-# an apology opening the text hid a holding or a past from the refusals (_sorry_but53)
-SORRY_BUT = [
-    ("Sorry to bother you, but person B had the chips. He said they were stale.", L44),
-    ("Sorry to bother you, but Bob had the crisps.", CELL),
-    ("Sorry to bother you, but Bob got the crisps.", CELL),
-    ("Excuse me, but Bob had the crisps. He said they were stale.", CELL),
-    ("Sorry to bother you, but Marco had the lemon. He said it was sour.", KITCHEN),
-    ("Sorry to bother you, but Mr Lee had the jug. He said it was empty.", WARD),
-    ("Sorry, but Bob has the apple.", CELL),
-    ("Sorry, but Bob's got the apple.", CELL),
-    ("Apologies, but Bob had the apple.", CELL),
-    ("Pardon me, but Bob had the apple.", CELL),
-    ("I'm afraid Bob had the apple.", CELL),
-    ("Sorry to interrupt, but Bob had the apple.", CELL),
-    ("Sorry to bother you, but Bob had the apple and Alice wants the crisps.", CELL),
-    ("sorry to bother you but bob had the apple", CELL),
-    ("Sorry, but Bob had the mugs.", CELL),
-]
-
-
-@pytest.mark.parametrize(("text", "scene"), SORRY_BUT)
-def test_sorry_but_refused(text: str, scene: Scene) -> None:
-    assert_refused(text, scene)
-
-
-@pytest.mark.parametrize(("text", "scene"), SORRY_BUT)
-def test_sorry_but_refused_by_this_rule(text: str, scene: Scene) -> None:
-    # the rule asked of the sentence alone refuses it (other refusals may refuse some first)
-    with pytest.raises(GroundingError):
-        _rewrites53._sorry_but53(text, Lexicon.of(scene))
-
-
-@pytest.mark.parametrize(
-    ("text", "want", "scene"),
-    [
-        ("Sorry to bother you, but could you give Bob the apple?", "apple>B", CELL),
-        ("Sorry to bother you, but give Bob the apple.", "apple>B", CELL),
-        ("I'm afraid Bob wants the apple.", "apple>B", CELL),
-        ("Excuse me, but the apple to Bob, please.", "apple>B", CELL),
-        ("Sorry to be a pain, but Marco needs the lemon.", "lemon>A", KITCHEN),
-        ("Apologies, but the lemon goes on the rack.", "lemon@rack", KITCHEN),
-    ],
-)
-def test_sorry_but_near_read(text: str, want: str, scene: Scene) -> None:
-    assert_reads(text, want, scene)

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading, _unknown_word
 from hltl.grounding._rewrites44 import _agrees44
@@ -120,7 +119,8 @@ def _over_there53(text: str, lexicon: Lexicon) -> str:
 
 
 # -- "That bottle's cluttering up the floor, could you …" (a thing said first with what is wrong
-# with where it is): said "That bottle's in the way, …" (read)
+# with where it is, a place that names nothing of the scene): said "That bottle's in the way, …"
+# (read; 12c: "That apple's cluttering up the table, put it on the table." stays refused)
 _CLUTTER53 = re.compile(
     r"^(?P<x>(?:[Tt]hat|[Tt]his|[Tt]he|[Tt]hose|[Tt]hese) [a-z]+(?: [a-z]+)?)(?P<cut>(?:'s| is|"
     r"'re| are) (?:cluttering|clogging|hogging|littering|blocking|messing|taking up (?:room|space)"
@@ -134,8 +134,8 @@ def _clutter53(text: str, lexicon: Lexicon) -> str:
     if "ing " not in text:
         return text
     m = _CLUTTER53.match(text)
-    if m is None:
-        return text
+    if m is None or _names(m["cut"], lexicon):
+        return text  # (a surface of the scene named: where it is may be where it is to go)
     verb = "'re" if m["cut"].startswith(("'re", " are")) else "'s"
     return _cut52(text, m.start("cut"), m.end("cut"), f"{verb} in the way", lexicon)
 
@@ -430,44 +430,6 @@ def _pron_after53(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), f"{m['pron']} wants ", lexicon)
 
 
-# -- refused (12c's fuzz) -------------------------------------------------------------------------
-
-# -- an apology opening the text ("Sorry to bother you, but Bob had the crisps. He said they were
-# stale.", "Sorry, but Bob has the apple.", "I'm afraid Bob had the apple."): the apology asks
-# nothing, so what follows it is refused as it would be said alone (a holding, a past: a rewrite
-# took the apology off after the refusals had looked, and the holding read as a handing over)
-_SORRY_BUT53 = re.compile(
-    r"^(?:(?:[Oo]h|[Uu]m|[Ee]r|[Ee]rm|[Ss]o|[Rr]ight|[Ww]ell),?\s+)?(?:(?:(?:[Ii]'m |[Ii] am |"
-    r"[Ii]m )?(?:[Ss]o |[Vv]ery |[Rr]eally |[Tt]erribly |[Aa]wfully )*[Ss]orry|(?:[Mm]y )?"
-    r"[Aa]pologies|[Pp]ardon me|[Ee]xcuse me|[Ff]orgive me)(?: to [a-z]+(?: [a-z]+){0,3}| for "
-    r"[a-z]+(?: [a-z]+){0,3})?,?\s+but,?\s+|(?:[Ii]'m|[Ii] am|[Ii]m) afraid,?\s+(?:but,?\s+)?)"
-    r"(?=\S)"
-)
-
-
-def _sorry_but53(text: str, lexicon: Lexicon) -> None:
-    """Session 53: after an opening apology, what is refused alone is refused (above)."""
-    if "orry" not in text and "pologies" not in text and " me" not in text and "fraid" not in text:
-        return
-    m = _SORRY_BUT53.match(text)
-    if m is None:
-        return
-    # why: offline imports this module (its refusals are offline's)
-    from hltl.grounding import offline
-
-    # what follows is read as said alone (a whole instruction: a reading of a part inside
-    # another lets a present holding through, offline._state_only32s)
-    rest, reading = text[m.end() :], offline._inside()
-    saved = reading[:]
-    reading.clear()
-    try:
-        offline.parse_instruction(rest[:1].upper() + rest[1:], lexicon.scene, lexicon)
-    except GroundingError as alone:
-        raise GroundingError(f"after the apology, {alone}") from None
-    finally:
-        reading[:] = saved
-
-
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     # the rewrites inside a clause first, then those of a text's opening (anchored there)
@@ -493,6 +455,6 @@ _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = (_sorry_but53,)
+REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
