@@ -7,8 +7,11 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.errors import GroundingError
 from hltl.grounding import _rewrites53
-from hltl.world.scene import load_scene
+from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.offline import parse_instruction
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -20,6 +23,7 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_refused,
 )
 
 # the example scenes blind51 uses
@@ -474,3 +478,48 @@ test_pron_after = PRON_AFTER.test(
 
 def test_pron_after_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     PRON_AFTER.refused_without((_rewrites53._pron_after53,), monkeypatch)
+
+
+# -- refused with its readings ---
+
+# 'Did P ask for X or Y? I can't remember.' (_forgot_which53): both readings named
+FORGOT_WHICH = [
+    (
+        "Did Zoe ask for the glue stick or the red book? I can't remember.",
+        CLASSROOM,
+        ("glue", "book_red"),
+    ),
+    ("Did Bob ask for the apple or the cup? I can't remember.", CELL, ("apple", "cup")),
+    ("Was it the apple or the cup Bob wanted? I forget.", CELL, ("apple", "cup")),
+    ("Did Marco ask for the lemon or the salt? No idea.", KITCHEN, ("lemon", "salt")),
+    ("Did Mrs Khan want the jug or the magazine? I can't recall.", WARD, ("jug", "magazine")),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), FORGOT_WHICH)
+def test_forgot_which_names_both(text: str, scene: Scene, readings: tuple[str, str]) -> None:
+    with pytest.raises(GroundingError) as refused:
+        parse_instruction(text, scene)
+    assert all(f"({r})" in str(refused.value) for r in readings)
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), FORGOT_WHICH)
+def test_forgot_which_is_this_rule(text: str, scene: Scene, readings: tuple[str, str]) -> None:
+    # the rule alone names both (without it the question was refused naming neither)
+    with pytest.raises(GroundingError) as refused:
+        _rewrites53._forgot_which53(text, Lexicon.of(scene))
+    assert all(f"({r})" in str(refused.value) for r in readings)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Did Bob ask for the apple or the cup?",
+        "Did Bob ask for the apple or a mug? I can't remember.",
+        "Did you give Bob the apple or the cup? I can't remember.",
+    ],
+)
+def test_forgot_which_near(text: str) -> None:
+    # still refused, and not by this rule
+    assert_refused(text, CELL)
+    _rewrites53._forgot_which53(text, Lexicon.of(CELL))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading, _unknown_word
 from hltl.grounding._rewrites44 import _agrees44
@@ -430,6 +431,38 @@ def _pron_after53(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), f"{m['pron']} wants ", lexicon)
 
 
+# -- refused with its readings -------------------------------------------------------------------
+
+# -- a question of the speaker's own memory between two things ("Did Zoe ask for the glue stick or
+# the red book? I can't remember."): no choice left to the robot, refused naming both readings (as
+# session 39's doubt_which39 does "…, I can't remember which"; it had been refused as a question
+# naming none)
+_FORGOT_WHICH53 = re.compile(
+    r"^(?![Dd]id you\b)(?P<q>(?:[Dd]id|[Ww]as it|[Hh]as|[Hh]ad|[Ww]as) [^?]{0,60}?"
+    r"(?P<a>\b(?:the|a|an) [a-z]+(?: [a-z]+)?) or (?P<b>(?:the|a|an) [a-z]+(?: [a-z]+)?)"
+    r"[^?]{0,30}\?)\s*(?:(?:[Ii]|[Hh]onestly,? I) (?:can't|cannot|can not|don't|do not|just "
+    r"can't) (?:remember|recall)|I forget|I've forgotten|I'm not sure|[Nn]o idea|[Ii]t's slipped "
+    r"my mind|[Dd]unno)\b"
+)
+
+
+def _forgot_which53(text: str, lexicon: Lexicon) -> None:
+    """Session 53: 'Did P ask for X or Y? I can't remember.' refused naming both readings."""
+    if "?" not in text:
+        return
+    m = _FORGOT_WHICH53.match(text)
+    if m is None:
+        return
+    a, b = _ids(m["a"], lexicon, "object"), _ids(m["b"], lexicon, "object")
+    if len(a) != 1 or len(b) != 1 or a == b:
+        return
+    (x,), (y,) = a, b
+    raise GroundingError(
+        f"{m['q']!r}: the speaker does not know which is meant, {m['a']} ({x}) or {m['b']} ({y}); "
+        "say which"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     # the rewrites inside a clause first, then those of a text's opening (anchored there)
@@ -455,6 +488,6 @@ _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = (_forgot_which53,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
