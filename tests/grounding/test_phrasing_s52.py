@@ -836,6 +836,23 @@ FUZZ_NEAR = [
     ("Bob had been hanging about for the apple.", CELL),
     ("Should the apple go to Bob, or the cup?", CELL),
     ("Bob had been asking for the apple.", CELL),
+    # 12c, session 53: a time in the purpose taken off, a question unmasked, something eaten or
+    # taken, a would-be want, someone gone
+    ("Bob needs the cup to have a look at the bottle in an hour.", CELL),
+    ("Bob needs the cup to have a look at the bottle after lunch.", CELL),
+    ("Bob needs the cup to have a look at the bottle at six.", CELL),
+    ("Bob needs the cup to have a look at the bottle this afternoon.", CELL),
+    ("Bob needs the cup to have a look at the bottle first thing.", CELL),
+    ("Bob needs the cup to have a look at the bottle next period.", CELL),
+    ("Bob wants the apple to do his juggling in an hour.", CELL),
+    ("Bob wants the apple to do his juggling in a bit.", CELL),
+    ("Poor Bob, does he want the apple?", CELL),
+    ("Bob's been starving since the bell rang, so does he want the apple?", CELL),
+    ("Noah is doing map skills next period, so does he want the globe?", CLASSROOM),
+    ("Would you let Bob have the apple? He's eaten two.", CELL),
+    ("Would you let Bob have the apple? He took one.", CELL),
+    ("Bob wants the apple, whereas Alice might want the crisps.", CELL),
+    ("Bob's been hanging about for the apple, he's off now.", CELL),
 ]
 
 

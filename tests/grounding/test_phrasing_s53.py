@@ -23,6 +23,7 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    assert_reads,
     assert_refused,
 )
 
@@ -523,3 +524,28 @@ def test_forgot_which_near(text: str) -> None:
     # still refused, and not by this rule
     assert_refused(text, CELL)
     _rewrites53._forgot_which53(text, Lexicon.of(CELL))
+
+
+# a closing 'so does he want the apple?' (_does_he53): a question that only asks (read on main)
+DOES_HE = [
+    ("Bob's hungry, so does he want the apple?", CELL),
+    ("Bob, does he want the apple?", CELL),
+    ("Bob's hungry, does he want the apple?", CELL),
+    ("Marco's busy, so does he need the knife?", KITCHEN),
+    ("Mr Lee is poorly, so does he want the jug?", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), DOES_HE)
+def test_does_he_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+    with pytest.raises(GroundingError):
+        _rewrites53._does_he53(text, Lexicon.of(scene))
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [("Could you give Bob the apple?", "apple>B"), ("Bob wants the apple, would you?", "apple>B")],
+)
+def test_does_he_near_read(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)

@@ -463,6 +463,30 @@ def _forgot_which53(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# -- a question whether someone wants a thing, closing the text after a clause about them ("Bob's
+# hungry, so does he want the apple?", "Bob, does he want the apple?"; 12c's fuzz: read apple>B
+# on main, while "Bob is tired. Does he want the apple?" is refused as a question): it only asks
+_DOES_HE53 = re.compile(
+    r"(?:^|[,;:]\s*)(?:(?:so|and|but|then)\s+)?(?P<said>(?:does|did|do|would|will) (?:he|she|"
+    r"they) (?:still |really |even |actually )?(?:want|need|fancy|like|mind|wish for|care for)\b"
+    r"[^?.!;]*\?)\s*$",
+    _F,
+)
+
+
+def _does_he53(text: str, lexicon: Lexicon) -> None:
+    """Session 53: refuse a closing 'so does he want the apple?' (above)."""
+    if "?" not in text:
+        return
+    m = _DOES_HE53.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} asks whether it is wanted: it asks for nothing; say 'give …' to have it "
+        "handed over"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     # the rewrites inside a clause first, then those of a text's opening (anchored there)
@@ -488,6 +512,6 @@ _STEPS53_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = (_forgot_which53,)
+REFUSE53: tuple[Callable[[str, Lexicon], None], ...] = (_forgot_which53, _does_he53)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
