@@ -180,6 +180,7 @@ test_dibs = DIBS.test(
     ("The apple, Alice has his eye on it.", None, CELL),
     ("Bob has his eye on the apple, he's got it now.", None, CELL),
     ("Bob has dibs on the apple, but Alice wants it.", None, CELL),
+    ("Sam's got dibs on the stapler at the desk.", None, OFFICE),
 )
 
 

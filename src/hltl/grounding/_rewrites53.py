@@ -7,6 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading, _unknown_word
+from hltl.grounding._rewrites40r import _claim40r
 from hltl.grounding._rewrites44 import _agrees44
 from hltl.grounding._rewrites52 import _P52, _UNSAFE52, _WANTS52, _cut52
 from hltl.grounding.lexicon import Lexicon
@@ -170,7 +171,8 @@ def _as_for53(text: str, lexicon: Lexicon) -> str:
 # "P wants X" (session 40's _claim40r reads a claim opening a clause after a stop)
 _DIBS53 = re.compile(
     r"\b(?P<p>" + _P52 + r")(?:'s got| has got| has) (?:(?:first )?dibs on|(?P<pron>her|his|"
-    r"their) (?:beady )?eyes? on)(?= (?:the|that|this|those|these|it|them)\b)",
+    r"their) (?:beady )?eyes? on)(?= (?:(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?|it|them)"
+    r"\s*(?:[,.;!?]|$|and\b))",
     _F,
 )
 
@@ -196,6 +198,8 @@ def _dibs53(text: str, lexicon: Lexicon) -> str:
     (pid,) = _ids(who, lexicon)
     if m["pron"] and not _agrees44(pid, m["pron"], lexicon):
         return text
+    if _claim40r(text, lexicon) != text:
+        return text  # (session 40's: "Sam's got dibs on the stapler.")
     return _cut52(text, m.end("p") - len(who), m.end(), f"{who} wants", lexicon)
 
 
