@@ -8,6 +8,8 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading, _unknown_word
 from hltl.grounding._rewrites40r import _claim40r
+from hltl.grounding._rewrites42 import _elided_want42
+from hltl.grounding._rewrites42s import _state_and42s
 from hltl.grounding._rewrites44 import _agrees44
 from hltl.grounding._rewrites52 import _P52, _UNSAFE52, _WANTS52, _cut52
 from hltl.grounding.lexicon import Lexicon
@@ -415,6 +417,8 @@ def _doing_and53(text: str, lexicon: Lexicon) -> str:
     m = _DOING_AND53.match(text)
     if m is None or not _only_person(m["p"], lexicon) or _names(m["w"], lexicon):
         return text
+    if _state_and42s(text, lexicon) != text or _elided_want42(text, lexicon) != text:
+        return text  # (session 42's: "Marco is sweating over the stove and would love the lemon.")
     return _cut52(text, 0, m.end(), f"{m['p']} ", lexicon)
 
 
