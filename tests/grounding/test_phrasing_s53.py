@@ -395,6 +395,7 @@ test_wants_there = WANTS_THERE.test(
     ("give bob the apple please alice wants it there", None, CELL),
     ("put the apple on the shelf please dave wants it there", None, CELL),
     ("put the apple on the shelf tomorrow please bob wants it there", None, CELL),
+    ("Put the apple on the shelf, Bob wants it over there.", None, CELL),
 )
 
 

@@ -357,7 +357,7 @@ def _since_ended53(text: str, lexicon: Lexicon) -> str:
 # places things
 _WANTS_THERE53 = re.compile(
     r"(?P<cut>(?:,\s*|\s+)(?P<p>" + _P52 + r"|[a-z]+(?: [a-z])?) (?:wants|needs|would like|'d "
-    r"like|likes) (?:it|them) (?:there|put there|left there|over there)\s*[.!]?)$",
+    r"like|likes) (?:it|them) (?:there|put there|left there)\s*[.!]?)$",
     _F,
 )
 
