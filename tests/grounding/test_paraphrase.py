@@ -374,35 +374,13 @@ KNOWN_MISSES = frozenset(
         "grandad wants the teddy bear for lilys bedtime story",
         "Persxon A wants the bottle after her water aerobics.",
         # blind50 (tuned on in session 52): refusals left at its one measurement (docs/grounding.md)
-        "Um, sorry to be a pest, would you pop the red mug up on the shelf? Carol's numerology "
-        "lot are in at six.",
-        "Would you be a star and let Person B have the bottle and the cup? Many thanks in advance.",
-        "Sorry, just one teeny thing, Person B's after the bottle, if you could manage it.",
-        "Pardon me butting in, the chips to Person A please, and no rush whatsoever.",
-        "Apologies for the fuss, could the stapler go in the box? Priya's clearing the desk for "
-        "the cryptographer's visit.",
-        "No pressure, mate, but Tom could do with the work gloves before his shift, cheers.",
         "If you'd be so kind, lay the knife on the worktop, Marco's doing the lemons in a sec.",
-        "Ever so sorry, would you mind getting the teddy to Lily? Grandad's got his hands full.",
-        "Person A has a real fancy for the apple today, whereas Person B could murder the chips "
-        "after his underwater rugby practice.",
-        "I reckon Person A would quite like the bottle after her gong bath.",
         "Mr Lee's been on at me about his tablets since ten, and Mrs Khan's thirsty, so she wants "
         "the water jug.",
-        "We need the small box sat on the pallet before the lorry pulls in.",
-        "Lena's short of tongs and a white plate for the wedding planner's table.",
-        "Jess needs the torch to have a look behind the bench.",
         "Alice is after the bottle for her open water swim. Bob, same deal with the crisps.",
         "Person A gets the apple as her bit of lunch, and the cup's Person B's, for his tea "
         "before senet.",
-        "The chips are Person B's. Oh, and he'll take the apple off your hands as well.",
-        "Person B's getting the bottle, and the chips can go to his colleague, Person A.",
         "That bottle belongs to Person A and she'd like it back before her flint knapping class.",
-        "Mr Lee's been shivering since they opened the window, so he's to have the blue blanket, "
-        "please.",
-        "Mrs Ortiz is doing map skills next period, so set the globe on her desk, would you.",
-        "Kofi's been hunting high and low for the hammer all morning, give it him before he loses "
-        "his rag.",
         "bottle for Alice crisps for Bob that's your lot cheers",
         "Cup first, it's Person B's. Apple second, that one's Person A's, she's eating it on the "
         "boat.",
@@ -426,54 +404,27 @@ KNOWN_MISSES = frozenset(
         "Mr Lee has had his medication already; it's only the water jug he's after.",
         "Load the boxes on the belt except for the big one, that's waiting on the pallet.",
         "Lily's bored of the teddy, she wants the red block instead.",
-        "start with the cup for person a and when you've done that the apple's for person b",
-        "poor person b's been hanging about for his chips for ages",
-        "he's off on a bothy trip so person b wants the bottle and the chips both",
-        "tchoukball starts in ten so person a needs her bottle now",
-        "reckon you could hand person a her bottle i've got my hands full",
-        "grandad's asked for the teddy to do his silly voices",
         "Bob's waiting on his crispz, could you take them over.",
         "Person B's after the appled for his packed lunch.",
         "Those xchips on the side are meant for Person A.",
         "Grandad's got jam on his hands, get him the baby wipws.",
-        "Could you do the bottle for Person A first, and when that's done, the chips for Person B?",
-        "Is it possible to get the spoon onto the tray before Dana's round?",
-        "Would you leave the bib ready on the high chair for lunchtime?",
-        "Kofi's asking if he can borrow the big spanner, would you take it over?",
         # blind51 (tuned on in session 53): refusals left at its one measurement (docs/grounding.md)
-        "Baie dankie in advance, my friend, Person B would really like the chips.",
-        "Right, bit of a ramble, but the bottle, Person A, whenever suits you.",
-        "Whenever's convenient, pal, the packing tape wants to go on the belt.",
         "Oh, and if it's no bother, the tongs to Lena, she's got the mixologist waiting at the "
         "pass.",
         "Sorry to nag, but Zoe still needs the glue stick for her crystal growing poster, could "
         "you?",
         "Please, when you've a minute, the torch over to Jess, cheers, the light's awful under "
         "that van.",
-        "Person A's packing her own lunch box this morning and would be grateful for the cup and "
-        "the apple.",
         "Person B skipped breakfast and is now eyeing up the chips like a hawk, so they'd better "
         "go to him.",
-        "If you ask me, the thing Person A has been angling for all along is that bottle.",
-        "Person A has been craving the chips since her shift as a crossing warden ended.",
         "Person B's gasping, so he ought to have the bottle, and the chips can keep Person A "
         "going.",
         "Person A's first in the queue for the bottle, and once she's sorted, Person B's lined up "
         "for the chips.",
         "Mr Novak reckons his truffle pasta is crying out for the salt, while Marco's after the "
         "knife for the fillets.",
-        "Lily's grizzling and reaching out her little arms, she's after her teddy.",
-        "The apple, grab it and pass it along to Carol, and while you're about it, the red mug "
-        "for her as well.",
-        "That bottle's cluttering up the floor, could you lift it onto the shelf?",
-        "Between the two of them it's simple: the cup is what Person A is after, Person B the "
-        "apple.",
         "Person B's got the chips coming, so take them across, and after those the apple's his as "
         "well.",
-        "Person A's throat is like sandpaper after the crossing warden shift, so give her the "
-        "bottle.",
-        "That bottle over there, Person A has her eye on it.",
-        "Person B has put in for the chips; as for Person A, the bottle's hers.",
         "The gloves are Tom's, he left them, bring them to him.",
         "Bob gets the crisps first. Once he has them, over to Alice goes the cup.",
         "the bottle needs to go up on the shelf and bob said hed have the crisps so they go to him",
@@ -534,9 +485,6 @@ KNOWN_MISSES = frozenset(
         "Torch onto the workbench, actually, rethink, lock it away in the locker instead, it "
         "walks off otherwise.",
         "person a has been on the go all afternoon and needs that bottle so over it goes",
-        "the bottle is for person a whenever ur free no rush",
-        "chips are for person b and person a has dibs on the bottle",
-        "pop the tongs down on the worktop please lena wants them there",
         "Since he sat down Bob hasn't taken his eyes off the xrisps, so let him have them.",
         "Stash the cheps up on the shelf where the dog can't get them.",
         "Pirson A left her cup behind at lunch, could it go back to her.",
@@ -545,9 +493,6 @@ KNOWN_MISSES = frozenset(
         "Over to Pesson A with the bottle, and across to Person B with the chips.",
         "Sam's minuting the budget meeting and needs the notepsd for it.",
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
-        "Any chance you could drop the apple off with Person A and swing by Person B with the cup?",
-        "Priya's got a stack of rota packs to clip together, would you be able to bring her the "
-        "stapler?",
         "Any chance you could run the packing tape over to Mia for the pallets?",
     }
 )
@@ -594,7 +539,6 @@ KNOWN_UNCLEAR = frozenset(
         "Tom was very particular about which box he wanted, small, medium or large, and it's gone "
         "clean out of my head.",
         "Give Person A the chips, no wait, I've lost track of who asked.",
-        "Did Zoe ask for the glue stick or the red book? I can't remember.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
