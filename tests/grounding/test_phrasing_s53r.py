@@ -106,6 +106,11 @@ def test_each_head_check_is_what_refuses(text: str, scene) -> None:
             "Give everyone something: the crisps for Alice, the apple for Bob, the cup for Carol.",
             "chips>A & apple>B & cup>C",
         ),
+        # a choice of things for one person is still one thing for that person (12c's probe)
+        (
+            "Give each of them something: the crisps or the apple for Alice, the cup for Bob.",
+            "(chips>A | apple>A) & cup>B",
+        ),
     ],
 )
 def test_each_head_kept(text: str, want: str) -> None:

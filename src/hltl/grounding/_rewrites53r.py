@@ -12,7 +12,7 @@ from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites50l import forgets50l
 from hltl.grounding._rewrites51r import _BACK51R, _CUE51R, _one_task51r
 from hltl.grounding.lexicon import Lexicon, person_name
-from hltl.grounding.tree import Node, Task, has_choice, tasks
+from hltl.grounding.tree import Group, Node, Task, has_choice, tasks
 
 # -- 12c's fuzz: a share-out header the list does not meet --------------------------------------
 
@@ -30,6 +30,23 @@ _EACH_HEAD53R = re.compiled(
 )
 
 
+def _shares53r(node: Node) -> list[str] | None:
+    """The person of each share of a reading that is one handover to each person, or a choice of
+    things for one person ("(chips>A | apple>A) & cup>B": A, B), else None."""
+    shares = node.children if isinstance(node, Group) and node.op == "and" else (node,)
+    who = []
+    for share in shares:
+        if isinstance(share, Group) and (
+            share.op != "or" or not all(isinstance(c, Task) for c in share.children)
+        ):
+            return None
+        got = list(tasks(share))
+        if any(t.kind != "deliver" for t in got) or len({t.target for t in got}) != 1:
+            return None
+        who.append(got[0].target)
+    return who
+
+
 def _each_head53r(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 53 (12r): a reading of "Give each of them (all three of them, everyone) something:
     <list>" must give one thing to each of two or more people, all three (every person of the
@@ -42,21 +59,19 @@ def _each_head53r(text: str, node: Node, lexicon: Lexicon) -> None:
     m = _EACH_HEAD53R.match(text)
     if m is None:
         return
-    got = list(tasks(node))
-    who = [t.target for t in got]
+    who = _shares53r(node)
     want = None
     n = m["n"] or m["m"]
     if n is not None:
         want = _COUNTS53R[n.lower()]
     elif m["who"].lower() in ("both of them", "them both", "the two of them"):
         want = 2
-    fits = (
-        not has_choice(node)
-        and all(t.kind == "deliver" for t in got)
-        and len(set(who)) == len(who) >= 2
-        and (want is None or len(who) == want)
-    )
-    if fits and m["who"].lower() in ("everyone", "everybody", "all of them", "them all"):
+    fits = who is not None and len(set(who)) == len(who) >= 2 and (want is None or len(who) == want)
+    if (
+        who is not None
+        and fits
+        and m["who"].lower() in ("everyone", "everybody", "all of them", "them all")
+    ):
         fits = sorted(who) == sorted(h.id for h in lexicon.scene.humans)
     if not fits:
         raise GroundingError(
