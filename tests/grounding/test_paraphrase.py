@@ -436,27 +436,9 @@ KNOWN_MISSES = frozenset(
         "Lena's got a table of six the white plate to her please and the salt",
         "Jess has run out of screws. Kofi's going to need the big spanner for the axle. Off you "
         "go.",
-        "Bob's not bothered about colour, either of the mugs will suit him fine.",
-        "Give Person A whichever of the bottle and the cup is closer.",
-        "Person B says any of the four things will do, he's honestly not fussed which one turns "
-        "up.",
-        "Whichever route you take round the desks, the bottle should finish up in Person A's "
-        "hands.",
-        "Take Person A the bottle, either hand's fine.",
-        "One thing per person: Person A's having the bottle, and the chips are going to Person B.",
         "Both pens that aren't on the desk, the black and the red, go in the box.",
         "Pick whichever box you like from the two that aren't on the pallet and set it on the "
         "belt.",
-        "Marco and Lena each get a plate from you, the white one to Marco and the blue one to "
-        "Lena, service starts soon.",
-        "Bob wants the two things on offer.",
-        "Person B's parched, let him have the two things he can drink out of, that's the cup plus "
-        "the bottle.",
-        "Person A's asking for a bottle, only the one, she won't need more.",
-        "Split them up, would you: Person B takes the bottle, Person A takes the chips.",
-        "The green cup and the white cup have had their lot, stick the pair of them in the sink.",
-        "The plates, both of them, want setting out on the worktop for the specials.",
-        "Lily can have the pair of blocks, the red as well as the green.",
         "Apart from the mugs, which are staying exactly where they are, everything's going to "
         "Alice for her picnic.",
         "It's the cup for Person B, he doesn't want the apple at all.",
@@ -474,16 +456,6 @@ KNOWN_MISSES = frozenset(
         "carrot.",
         "Every tool and bit for Jess, apart from the drill and the torch, she's kitting out her "
         "van.",
-        "Take the bottle to Alice, oh hang on, it's Bob who wants it, not Alice.",
-        "The crisps up on the shelf, no, actually, I've changed my mind, it's the bottle that "
-        "goes up there.",
-        "Cup to Person B, hmm, no, not the cup, make it the chips for him.",
-        "It's Person A who's after the apple, oh wait, my mistake, it's actually Person B.",
-        "Chips for Person A, then the bottle for Person B, no, sorry, the cup for Person B.",
-        "Take Person A the bottle, sorry, I said chips before, it's the bottle.",
-        "Give the sippy cup to Ava, oops, sorry, it's Lily's, she's the one who's thirsty.",
-        "Torch onto the workbench, actually, rethink, lock it away in the locker instead, it "
-        "walks off otherwise.",
         "person a has been on the go all afternoon and needs that bottle so over it goes",
         "Since he sat down Bob hasn't taken his eyes off the xrisps, so let him have them.",
         "Stash the cheps up on the shelf where the dog can't get them.",
@@ -535,10 +507,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind50 (tuned on in session 52)
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
         # blind51 (tuned on in session 53)
-        "Mr Lee or Mrs Khan asked for the magazine, one of the two, I forget which.",
-        "Tom was very particular about which box he wanted, small, medium or large, and it's gone "
-        "clean out of my head.",
-        "Give Person A the chips, no wait, I've lost track of who asked.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -46,7 +46,7 @@ test_whichever_of = CASES.test(
         WARD,
     ),
     # a pick by a property, a thing the scene lacks, a person among the things
-    ("Give Bob whichever of the cup and the apple is nearer.", None, CELL),
+    ("Give Bob whichever of the cup and the apple is cleaner.", None, CELL),
     ("Give Alice whichever of the cup and the pear.", None, CELL),
     ("Give Person A whichever of the apple and Person B.", None, SQ),
 )
