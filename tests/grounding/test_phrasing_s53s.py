@@ -9,18 +9,23 @@ import pytest
 
 from hltl.grounding import _rewrites53s as r53s
 from hltl.grounding import offline
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     DEPOT,
     KITCHEN,
     NURSERY,
     OFFICE,
+    ROOT,
     WARD,
     WORKSHOP,
     PhrasingCases,
     assert_case,
     tree,
+)
+
+FIG1, F41, ONE, T12 = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("fig1", "4-1", "1-1", "1-2")
 )
 
 # -- a he / she after a person left out by 'not' (_not_them53s, a check) ----------------------
@@ -105,3 +110,121 @@ test_goes_to53s_near = GOES_TO.test(
 
 def test_goes_to53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     GOES_TO.refused_without((r53s._goes_to53s,), monkeypatch)
+
+
+# -- a claim said by an idiom (_claimed53s; each refused on main b4e4e6fc) ---------------------
+CLAIMED = PhrasingCases()
+test_claimed53s = CLAIMED.test(
+    (
+        "Crisps for Alice, she put her hand up for them. Bob, on the other hand, has picked the "
+        "bottle.",
+        "chips>A & bottle>B",
+        FIG1,
+    ),
+    ("Knife for Marco, he put his hand up for it.", "knife>A", KITCHEN),
+    ("Mrs Khan put her hand up for the magazine.", "magazine>C", WARD),
+    (
+        "Lena's picked the blue plate, Marco has chosen the white one.",
+        "plate_blue>B & plate_white>A",
+        KITCHEN,
+    ),
+    ("Mr Lee has picked the jug.", "jug>B", WARD),
+    ("Jess has opted for the torch.", "torch>B", WORKSHOP),
+)
+test_claimed53s_near = CLAIMED.test(
+    # picked up / out (a doing), gone for (may be gone to fetch it), a past perfect, a tag, the
+    # pronoun not fitting the request's person, a pick then given to another: refused
+    ("Alice's picked the crisps up.", None, CELL),
+    ("Alice has picked the red mug up.", None, CELL),
+    ("Alice's picked the crisps out.", None, CELL),
+    ("Bob's gone for the apple.", None, CELL),
+    ("Crisps for Alice, she had put her hand up for them.", None, CELL),
+    ("Crisps for Alice, she put her hand up for them, didn't she?", None, CELL),
+    ("Crisps for Alice, he put his hand up for them.", None, CELL),
+    ("Alice has picked the crisps, give them to Bob.", None, CELL),
+    ("Alice has picked the crisps, hasn't she?", None, CELL),
+)
+
+
+def test_claimed53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CLAIMED.refused_without((r53s._claimed53s,), monkeypatch)
+
+
+# -- a negated 'put the X down' before its handover (_dont_down53s; each refused on main) -------
+DONT_DOWN = PhrasingCases()
+test_dont_down53s = DONT_DOWN.test(
+    ("Don't put the bottle down, give it straight to Person A.", "bottle>A", ONE),
+    ("Don't put the knife down, hand it straight to Marco.", "knife>A", KITCHEN),
+    ("Don't set the salt down, Lena wants it.", "salt>B", KITCHEN),
+    ("Don't put the jug down, take it to Mr Lee.", "jug>B", WARD),
+    ("Don't put the drill down, give it to Kofi.", "drill>A", WORKSHOP),
+)
+test_dont_down53s_near = DONT_DOWN.test(
+    # a placing after it, a later time, a holding, a question, a wait: refused as before
+    ("Don't put the cup down, put it on the shelf.", None, CELL),
+    ("Don't put the cup down, give it to Bob tomorrow.", None, CELL),
+    ("Don't put the cup down, Bob had it.", None, CELL),
+    ("Don't put the cup down, did Bob want it?", None, CELL),
+    ("Don't put the cup down, give it to Bob once Alice is back.", None, CELL),
+    ("Don't put the cup down, give it to Bob, he's had one.", None, CELL),
+)
+
+
+def test_dont_down53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DONT_DOWN.refused_without((r53s._dont_down53s,), monkeypatch)
+
+
+# -- 'much rather' (_much_rather53s; each refused on main) --------------------------------------
+MUCH_RATHER = PhrasingCases()
+test_much_rather53s = MUCH_RATHER.test(
+    ("Person A has gone off the bottle, she'd much rather have the cup.", "cup>A", F41),
+    ("Marco has gone off the knife, he'd much rather have the tongs.", "tongs>A", KITCHEN),
+    ("Mr Lee would far rather have the magazine.", "magazine>B", WARD),
+    ("Kofi would much rather have the hammer.", "hammer>A", WORKSHOP),
+)
+test_much_rather53s_near = MUCH_RATHER.test(
+    # what would have been, asked, a tag, 'than', someone else having it: refused as before
+    ("Alice would much rather have had the cup.", None, CELL),
+    ("Would Alice much rather have the cup?", None, CELL),
+    ("Alice would much rather have the cup, wouldn't she?", None, CELL),
+    ("Alice would much rather Bob had the cup.", None, CELL),
+)
+
+
+def test_much_rather53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    MUCH_RATHER.refused_without((r53s._much_rather53s,), monkeypatch)
+
+
+# -- 'and to nobody else' before a remark (_nobody_else53s; each refused on main) ---------------
+NOBODY_ELSE = PhrasingCases()
+test_nobody_else53s = NOBODY_ELSE.test(
+    (
+        "The bottle goes to Person A and to nobody else, she put her name on it this morning.",
+        "bottle>A",
+        T12,
+    ),
+    (
+        "The pills go to Mr Lee and to no one else, he asked for them this morning.",
+        "pills>B",
+        WARD,
+    ),
+    (
+        "The magazine goes to Mrs Khan and nobody else, she asked for it this morning.",
+        "magazine>C",
+        WARD,
+    ),
+    (
+        "The torch goes to Jess and nobody else, she put her hand up for it this morning.",
+        "torch>B",
+        WORKSHOP,
+    ),
+)
+test_nobody_else53s_near = NOBODY_ELSE.test(
+    # another person named after it, a pronoun that does not fit: refused as before
+    ("The cup goes to Alice and to nobody else, Bob wanted it.", None, CELL),
+    ("The cup goes to Alice and to nobody else, he asked for it.", None, CELL),
+)
+
+
+def test_nobody_else53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOBODY_ELSE.refused_without((r53s._nobody_else53s,), monkeypatch)

@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids
+from hltl.grounding._normalise1 import _DONT, _F, _ids, _sub, _tasks_of
 from hltl.grounding._rewrites52s import _other_sex52s
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
@@ -117,8 +117,137 @@ def _goes_to53s(text: str, lexicon: Lexicon) -> str:
     return _GOES_TO53S.sub(turn, text)
 
 
+# -- session 53 (12s): a claim said by an idiom ----------------------------------------------------
+#
+# "Crisps for Alice, she put her hand up for them." (blind51 #62), "The bottle goes to Person A
+# and to nobody else, she put her name on it this morning." (#130), "Bob, on the other hand, has
+# picked the bottle." (#62): putting one's hand up for a thing, one's name on or down for it, and
+# having picked / chosen / opted for it say that one asked for it: said 'asked for' (present
+# perfect 'has asked for'), which the older rules read (a claim by a he / she that fits the
+# request's person; a want of the one named). Not a past perfect ('had put her name on it'), nor
+# 'picked it up / out / over' (a doing, not a choosing), nor 'gone for it' (may be gone to
+# fetch it).
+_CLAIMED53S = re.compile(
+    r"(?P<has>\b(?:has|have) |'s |'ve )?(?<!had )\b(?:put|puts) (?:her|his|their|my|our) "
+    r"(?:hands? up for|names? (?:down )?(?:on|for))\b|(?P<has2>\b(?:has|have) |'s |'ve )"
+    r"(?:picked|chosen|opted for|plumped for)(?= (?:the|that|this|those|these) [a-z]+"
+    r"(?: (?!up\b|out\b|off\b|over\b|back\b|down\b|away\b)[a-z]+)?\s*(?:[,.;:!]|$))",
+    _F,
+)
+
+
+# the gate: words one of which every claim above holds
+_CLAIM_WORDS53S = (
+    *("hand up", "hands up", "name on", "name down", "name for", "names on", "names down"),
+    *("names for", "picked", "chosen", "opted", "plumped"),
+)
+
+
+def _claimed53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): 'put her hand up for / her name on / has picked the X' said 'asked for'
+    (above)."""
+    low = text.lower()
+    if not any(w in low for w in _CLAIM_WORDS53S):
+        return text
+
+    def said(m: re.Match[str]) -> str:
+        has = m["has"] or m["has2"]
+        if not has:
+            return "asked for"
+        return " has asked for" if has.startswith("'") else "has asked for"
+
+    return _CLAIMED53S.sub(said, text)
+
+
+# -- session 53 (12s): a negated 'put the X down' before its handover -----------------------------
+#
+# "Don't put the bottle down, give it straight to Person A." (blind51 #129): not setting the X
+# down anywhere says nothing the handover after it does not (session 31's `_negated` drops a
+# negated command only when the grammar reads it, and 'put the X down' names no place). The
+# negated command is taken off when it names one thing and what follows, with 'it' / 'them' that
+# thing, reads as handovers only, the thing among them.
+_DONT_DOWN53S = re.compile(
+    rf"^{_DONT}(?:put|set|leave|lay|drop|plonk|stick) (?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?|"
+    r"it|them) down(?: anywhere)?\s*[,;.]\s*(?:(?:but|instead|just|rather|please),?\s+)*"
+    r"(?P<rest>.+)$",
+    _F,
+)
+
+
+def _dont_down53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): "Don't put the X down, give it to P" said "Give the X to P" (above)."""
+    low = text.lower()
+    if "down" not in low or ("n't" not in low and "not" not in low and "never" not in low):
+        return text
+    m = _DONT_DOWN53S.match(text.strip())
+    if m is None:
+        return text
+    things = _ids(m["x"], lexicon, "object")
+    if len(things) != 1 or _ids(m["rest"], lexicon, "object"):
+        return text
+    rest = _sub(r"\b(?:it|them)\b", m["x"], m["rest"])
+    if rest == m["rest"]:
+        return text
+    asked = _tasks_of(rest, lexicon)
+    if not asked or any(kind != "deliver" for kind, _, _ in asked):
+        return text
+    if not things & {obj for _, obj, _ in asked}:
+        return text
+    return rest[0].upper() + rest[1:]
+
+
+# -- session 53 (12s): 'much rather' ---------------------------------------------------------------
+#
+# "Person A has gone off the bottle, she'd much rather have the cup." (blind51 #125): 'would
+# rather have' is read, 'would much / far / a lot rather' was not: the word that only weighs the
+# preference is taken off.
+_MUCH_RATHER53S = re.compile(
+    r"(?P<v>\b(?:would|should) |'d )(?:much|far|a lot|a good deal|very much|infinitely) "
+    r"(?=rather\b)",
+    _F,
+)
+
+
+def _much_rather53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): "she'd much rather have the X" said "she'd rather have the X"."""
+    if "rather" not in text.lower():
+        return text
+    return _MUCH_RATHER53S.sub(lambda m: m["v"], text)
+
+
+# -- session 53 (12s): 'and to nobody else' before a remark ---------------------------------------
+#
+# "The bottle goes to Person A and to nobody else, she put her name on it this morning." (blind51
+# #130): session 33's `_nobody_else33r` takes 'and to nobody else' off only where it closes the
+# text; before a comma and a remark naming no person it says what the request says too.
+_NOBODY_ELSE53S = re.compile(
+    r"(?:,\s*|\s+)(?:and |but )?(?:to |for )?(?:nobody|no one|no-one|noone) else(?=\s*[,;])", _F
+)
+
+
+def _nobody_else53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): 'X to P and to nobody else, <remark>' said 'X to P, <remark>' (above)."""
+    if " else" not in text.lower():
+        return text
+    m = _NOBODY_ELSE53S.search(text)
+    if m is None:
+        return text
+    head, rest = text[: m.start()], text[m.end() :]
+    if len(_ids(head, lexicon, "human")) != 1 or not _ids(head, lexicon, "object"):
+        return text
+    if _ids(rest, lexicon, "human"):
+        return text
+    return head + rest
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
-_STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_goes_to53s,)
+_STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _goes_to53s,
+    _claimed53s,
+    _dont_down53s,
+    _much_rather53s,
+    _nobody_else53s,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
