@@ -7,11 +7,13 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.grounding import _rewrites42r as r42r
 from hltl.grounding import _rewrites53s as r53s
 from hltl.grounding import offline
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
     KITCHEN,
     NURSERY,
@@ -24,8 +26,9 @@ from tests.grounding.helpers import (
     tree,
 )
 
-FIG1, F41, ONE, T12 = (
-    load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("fig1", "4-1", "1-1", "1-2")
+FIG1, F41, ONE, T12, SQ = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml")
+    for n in ("fig1", "4-1", "1-1", "1-2", "4-4-square")
 )
 
 # -- a he / she after a person left out by 'not' (_not_them53s, a check) ----------------------
@@ -60,6 +63,9 @@ def test_not_them53s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
     """Without the check each is read (the thing given to the one the request hands to)."""
     kept = tuple(c for c in offline._CHECKS if c is not r53s._not_them53s)
     monkeypatch.setattr(offline, "_CHECKS", kept)
+    # 'he had the apple' is refused before the read too (_pronoun_had53s, below)
+    asked = tuple(r for r in offline._REFUSALS if r is not r53s._pronoun_had53s)
+    monkeypatch.setattr(offline, "_REFUSALS", asked)
     for text, scene in NOT_THEM:
         assert tree(text, scene) is not None, text
 
@@ -228,3 +234,90 @@ test_nobody_else53s_near = NOBODY_ELSE.test(
 
 def test_nobody_else53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     NOBODY_ELSE.refused_without((r53s._nobody_else53s,), monkeypatch)
+
+
+# -- "It's the X for P" and 'at all' after a not-wanting (_its_for53s; each refused on main) ----
+ITS_FOR = PhrasingCases()
+test_its_for53s = ITS_FOR.test(
+    ("It's the cup for Person B, he doesn't want the apple at all.", "cup>B", SQ),
+    ("It's the stapler for Sam, he doesn't want the notepad at all.", "stapler>B", OFFICE),
+    ("It's the jug for Mr Lee, he doesn't need the pills at all.", "jug>B", WARD),
+    ("Give Mrs Khan the magazine, she doesn't want the jug at all.", "magazine>C", WARD),
+    ("It's the tape for Mia, she doesn't want the gloves at all.", "tape>A", DEPOT),
+    ("It's the notepad for Priya.", "notebook>A", OFFICE),
+)
+test_its_for53s_near = ITS_FOR.test(
+    # asked, past, a time, a thing the person has had, the thing not wanted given: refused
+    ("It's the cup for Bob, isn't it?", None, CELL),
+    ("It's the cup for Bob?", None, CELL),
+    ("It was the cup for Bob.", None, CELL),
+    ("It's the cup for Bob tomorrow.", None, CELL),
+    ("It's the cup for Bob, he had the apple.", None, CELL),
+    ("It's the cup for Bob, he doesn't want the cup at all.", None, CELL),
+)
+
+
+def test_its_for53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ITS_FOR.refused_without((r53s._its_for53s,), monkeypatch)
+
+
+# -- a he / she / they who had or got a thing (_pronoun_had53s, a refusal) ---------------------
+#
+# each read on main b4e4e6fc with the thing had handed over too
+PRONOUN_HAD = [
+    ("Give Bob the cup, he had the apple.", CELL),
+    ("Give Bob the cup. He had the apple.", CELL),
+    ("Give Alice the cup and she had the apple.", CELL),
+    ("Give Bob the cup, they had the apple.", CELL),
+    ("Give Marco the salt, he had the lemon.", KITCHEN),
+    ("Give Sam the stapler, he had the notepad.", OFFICE),
+    ("Give Priya the stapler. She got the notepad.", OFFICE),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), PRONOUN_HAD)
+def test_pronoun_had53s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_pronoun_had53s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the refusal each is read (the thing had handed over too)."""
+    kept = tuple(r for r in offline._REFUSALS if r is not r53s._pronoun_had53s)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
+    for text, scene in PRONOUN_HAD:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: 'had it' (the thing of the request), 'had to': read as before
+test_pronoun_had53s_near = PhrasingCases().test(
+    ("Give Bob the apple, he had it first.", "apple>B", CELL),
+    ("Give Bob the apple, he asked for it.", "apple>B", CELL),
+)
+
+
+# -- 'the Y is what P should get' after a not-wanting (session 42's _negated_then42r, widened) --
+SHOULD_GET = PhrasingCases()
+test_should_get42r = SHOULD_GET.test(
+    (
+        "Noah's not to have the scissors today, the ruler is what he should get instead.",
+        "ruler>B",
+        CLASSROOM,
+    ),
+    ("Zoe's not to have the glue stick, the ruler is what she should get.", "ruler>C", CLASSROOM),
+    ("Bob isn't after the apple, the cup is what he should have.", "cup>B", CELL),
+    (
+        "Mr Lee's not to have the pills today, the jug is what he should get instead.",
+        "jug>B",
+        WARD,
+    ),
+)
+test_should_get42r_near = SHOULD_GET.test(
+    # another person, a pronoun that does not fit, what should have been: refused as before
+    ("Bob's not to have the apple, the cup is what Alice should get.", None, CELL),
+    ("Bob's not to have the apple, the cup is what she should get.", None, CELL),
+    ("Bob's not to have the apple, the cup is what he should have had.", None, CELL),
+)
+
+
+def test_should_get42r_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SHOULD_GET.refused_without((r42r._negated_then42r,), monkeypatch)

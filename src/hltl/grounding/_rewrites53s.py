@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _DONT, _F, _ids, _sub, _tasks_of
+from hltl.grounding._normalise1 import _DONT, _F, _ids, _only_person, _sub, _tasks_of
 from hltl.grounding._rewrites52s import _other_sex52s
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
@@ -240,6 +240,78 @@ def _nobody_else53s(text: str, lexicon: Lexicon) -> str:
     return head + rest
 
 
+# -- session 53 (12s): 'It's the X for P' and 'at all' after a not-wanting -------------------------
+#
+# "It's the cup for Person B, he doesn't want the apple at all." (blind51 #123): a sentence opening
+# 'It's the X for P' (a cleft of 'the X for P', which is read) before a stop or comma is said
+# 'The X for P'; and 'at all' after 'doesn't want / need the X' (it only weighs the not-wanting)
+# is taken off, so that session 32's `_not_wanted32r` reads the closing remark as before. Not in
+# a text that asks ('?': "It's the cup for Bob, isn't it?").
+_ITS_FOR53S = re.compile(
+    r"(?P<head>^|(?<=[.;!])\s+)(?:(?:so|well|right|ok|okay),? )?it(?:'s| is) "
+    r"(?P<x>the [a-z]+(?: [a-z]+)?) for (?P<p>[A-Za-z][\w ]*?)(?=\s*(?:[,.;!]|$))",
+    _F,
+)
+_AT_ALL53S = re.compile(
+    r"\b(?P<said>(?:doesn't|does not|don't|do not) (?:want|need) (?:the|a|an|any) [a-z]+"
+    r"(?: [a-z]+)?) at all\b",
+    _F,
+)
+
+
+def _its_for53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): "It's the X for P, …" said "The X for P, …"; 'doesn't want the X at all'
+    said 'doesn't want the X' (above)."""
+    low = text.lower()
+    if "at all" in low:
+        text = _AT_ALL53S.sub(lambda m: m["said"], text)
+    if "it" not in low or " for " not in low or "?" in text:
+        return text  # asked ("It's the cup for Bob, isn't it?"): as before
+
+    def said(m: re.Match[str]) -> str:
+        objects = _ids(m["x"], lexicon, "object")
+        if not objects or _ids(m["x"], lexicon, "human") or _ids(m["x"], lexicon, "surface"):
+            return m.group(0)
+        if not _only_person(m["p"], lexicon):
+            return m.group(0)
+        x = m["x"]
+        return f"{m['head']}{x[0].upper()}{x[1:]} for {m['p']}"
+
+    return _ITS_FOR53S.sub(said, text)
+
+
+# -- session 53 (12s): a he / she / they who had or got a thing ----------------------------------
+#
+# "Give Bob the cup, he had the apple." read `cup>B & apple>B` on main b4e4e6fc ("Give Alice the
+# cup, she had the apple.", "Give Bob the cup. He had the apple.", "…, he got the apple." too):
+# session 32's `_state_only32s` refuses 'Bob had the apple' (a past holding asks for nothing) but
+# not a pronoun that says it. A clause whose subject is he / she / they and whose verb is a past
+# 'had' / 'got' of a thing of the scene, closing the clause (a time word may follow), is refused
+# so ('had to', 'had better', 'had it' are not this; 'had the chips and wants them again' goes on).
+_PRONOUN_HAD53S = re.compile(
+    r"(?:^|[,;.:!?]\s*|\b(?:and|so|but|because|as|since|cos|though)\s+)"
+    r"(?P<said>(?P<pro>he|she|they)(?: (?:already|just|only|even|also|actually))? (?:had|got) "
+    r"(?P<x>(?:the|his|her|their|that|this|those|these|a|an|some) [a-z]+(?: [a-z]+)?))"
+    r"(?=(?: (?:earlier|yesterday|already|before|first|this morning|last night|at lunch|today))?"
+    r"\s*(?:[,.;:!?]|$))",
+    _F,
+)
+
+
+def _pronoun_had53s(text: str, lexicon: Lexicon) -> None:
+    """Session 53 (12s): '…, he had the X' (a past holding said by a pronoun) refused (above)."""
+    low = text.lower()
+    if " had " not in low and " got " not in low:
+        return
+    for m in _PRONOUN_HAD53S.finditer(text):
+        if not _ids(m["x"], lexicon, "object") or _ids(m["x"], lexicon, "human"):
+            continue
+        raise GroundingError(
+            f"{m['said']!r} says what {m['pro'].lower()} had: it asks for nothing; leave it out, "
+            f"or say 'give <person> {m['x']}' to have it handed over"
+        )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _goes_to53s,
@@ -247,10 +319,11 @@ _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _dont_down53s,
     _much_rather53s,
     _nobody_else53s,
+    _its_for53s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53S: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE53S: tuple[Callable[[str, Lexicon], None], ...] = (_pronoun_had53s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_not_them53s,)
