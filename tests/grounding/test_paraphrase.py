@@ -475,10 +475,7 @@ KNOWN_MISSES = frozenset(
         "That bottle over there, Person A has her eye on it.",
         "Person B has put in for the chips; as for Person A, the bottle's hers.",
         "The gloves are Tom's, he left them, bring them to him.",
-        "Bob gets the crisps first. Once he has them, over to Alice goes the cup.",
         "the bottle needs to go up on the shelf and bob said hed have the crisps so they go to him",
-        "Crisps for Alice, she put her hand up for them. Bob, on the other hand, has picked the "
-        "bottle.",
         "cup over to person a the apple is for person b oh and the bottle goes to person a as well",
         "The small box goes on the belt. Stick the medium box on the belt beside it. That's all "
         "for the belt.",
@@ -508,17 +505,12 @@ KNOWN_MISSES = frozenset(
         "Lily can have the pair of blocks, the red as well as the green.",
         "Apart from the mugs, which are staying exactly where they are, everything's going to "
         "Alice for her picnic.",
-        "It's the cup for Person B, he doesn't want the apple at all.",
         "One thing for Person A, she doesn't mind what, just so long as it isn't the chips.",
-        "Person A has gone off the bottle, she'd much rather have the cup.",
         "It isn't Person A who's having the bottle, it's Person B, give it to him.",
         "Person B's not the one the chips are meant for, it's Person A who gets them.",
-        "Don't put the bottle down, give it straight to Person A.",
-        "The bottle goes to Person A and to nobody else, she put her name on it this morning.",
         "Omar's the one getting the banana, Emma's already had her fruit.",
         "Priya wants every pen bar the blue one, so the red and the black go to her.",
         "Every single thing goes on the belt apart from the work gloves and the barcode scanner.",
-        "Noah's not to have the scissors today, the ruler is what he should get instead.",
         "Leave the teddy bear, it's the bib Grandad's asking for, Lily's about to have her mashed "
         "carrot.",
         "Every tool and bit for Jess, apart from the drill and the torch, she's kitting out her "
