@@ -26,9 +26,9 @@ from tests.grounding.helpers import (
     tree,
 )
 
-FIG1, F41, ONE, T12, SQ = (
+FIG1, F41, ONE, T12, SQ, DUO, L24 = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("fig1", "4-1", "1-1", "1-2", "4-4-square")
+    for n in ("fig1", "4-1", "1-1", "1-2", "4-4-square", "2-2", "2-4-line")
 )
 
 # -- a he / she after a person left out by 'not' (_not_them53s, a check) ----------------------
@@ -321,3 +321,77 @@ test_should_get42r_near = SHOULD_GET.test(
 
 def test_should_get42r_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     SHOULD_GET.refused_without((r42r._negated_then42r,), monkeypatch)
+
+
+# -- 'it isn't P who …, it's Q' (_not_who53s; each refused on main b4e4e6fc) --------------------
+NOT_WHO = PhrasingCases()
+test_not_who53s = NOT_WHO.test(
+    ("It isn't Person A who's having the bottle, it's Person B, give it to him.", "bottle>B", DUO),
+    (
+        "Person B's not the one the chips are meant for, it's Person A who gets them.",
+        "chips>A",
+        L24,
+    ),
+    ("It isn't Lena who's having the knife, it's Marco, give it to him.", "knife>A", KITCHEN),
+    ("Marco's not the one the lemon is meant for, it's Lena who gets it.", "lemon>B", KITCHEN),
+    ("Lena isn't the one who's getting the salt, it's Mr Novak.", "salt>C", KITCHEN),
+    (
+        "It isn't Mr Lee who's getting the magazine, it's Mrs Khan, hand it to her.",
+        "magazine>C",
+        WARD,
+    ),
+    ("It's not Sam who's having the stapler, it's Priya.", "stapler>A", OFFICE),
+)
+test_not_who53s_near = NOT_WHO.test(
+    # a tag, a remark, a pronoun that is not Q's, said as past, the same person: refused
+    ("It isn't Alice who's having the apple, it's Bob, is it?", None, CELL),
+    ("It isn't Alice who's having the apple, it's Bob, he had it yesterday.", None, CELL),
+    ("It isn't Alice who's having the apple, it's Bob, give it to her.", None, CELL),
+    ("Alice's not the one the crisps are meant for, it's Carol, she had them.", None, CELL),
+    ("It wasn't Alice who was having the apple, it was Bob.", None, CELL),
+    ("It isn't Alice who's having the apple, it's Alice.", None, CELL),
+    ("It isn't Alice who's getting the apple, it's Bob who wanted it.", None, CELL),
+)
+
+
+def test_not_who53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_WHO.refused_without((r53s._not_who53s,), monkeypatch)
+
+
+# -- 'on the S beside it' and a closing "that's all for the S" (_all_for53s; refused on main) ---
+ALL_FOR = PhrasingCases()
+test_all_for53s = ALL_FOR.test(
+    (
+        "The small box goes on the belt. Stick the medium box on the belt beside it. That's all "
+        "for the belt.",
+        "box_small@conveyor & box_medium@conveyor",
+        DEPOT,
+    ),
+    (
+        "Put the tape on the pallet, and the gloves on the pallet next to it. That's all for the "
+        "pallet.",
+        "tape@pallet & gloves@pallet",
+        DEPOT,
+    ),
+    (
+        "Lemon on the worktop, salt on the worktop beside it, that's everything for the worktop.",
+        "lemon@counter & salt@counter",
+        KITCHEN,
+    ),
+    ("Put the cup on the shelf. That's all for the shelf.", "cup@shelf", CELL),
+    ("Put the cup on the shelf beside the apple.", "cup@shelf", CELL),
+)
+test_all_for53s_near = ALL_FOR.test(
+    # an 'it' with nothing to stand for, beside a person or a surface, a closer naming a surface
+    # nothing goes to, asked, said as done: refused as before
+    ("Put the cup on the shelf next to it.", None, CELL),
+    ("Put the apple on the shelf next to Bob.", None, CELL),
+    ("Put the cup on the shelf beside the table.", None, CELL),
+    ("Put the cup on the shelf. That's all for the table.", None, CELL),
+    ("Put the cup on the shelf. That's all for the shelf?", None, CELL),
+    ("Bob put the cup on the shelf beside it. That's all for the shelf.", None, CELL),
+)
+
+
+def test_all_for53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ALL_FOR.refused_without((r53s._all_for53s,), monkeypatch)

@@ -8,7 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _DONT, _F, _ids, _only_person, _sub, _tasks_of
 from hltl.grounding._rewrites52s import _other_sex52s
-from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, person_name
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, person_name, unnamed_sex44l
 from hltl.grounding.tree import Node, tasks
 
 # -- session 53 (12s): a he / she after a person left out by 'not' ------------------------------
@@ -312,6 +312,121 @@ def _pronoun_had53s(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# -- session 53 (12s): 'it isn't P who …, it's Q' ----------------------------------------------
+#
+# "It isn't Person A who's having the bottle, it's Person B, give it to him." (blind51 #127),
+# "Person B's not the one the chips are meant for, it's Person A who gets them." (#128): a cleft
+# that denies one person the thing and names the other is said as session 42's form, "The X isn't
+# for P, it's for Q, …", which the older rules read (P and Q two people, the X things of the scene;
+# a 'who gets them' after Q, saying the same, taken off). Nothing may follow but the handover to Q
+# said again ('give it to him', the pronoun Q's sex by the scene and not P's): no tag, no remark.
+_WHO53S = r"(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
+_X53S = r"(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?"
+_NOT_WHO53S = re.compile(
+    rf"^(?:it(?: isn't|'s not| is not) (?P<p1>{_WHO53S}) who(?:'s| is) (?:having|getting|"
+    rf"meant to (?:have|get)|to (?:have|get)) (?P<x1>{_X53S})"
+    rf"|(?P<p2>{_WHO53S})(?:'s not| is not| isn't) the one (?:(?P<x2>{_X53S}) (?:is|are|'s|'re) "
+    rf"(?:meant |intended )?for|who(?:'s| is) (?:having|getting|meant to (?:have|get)) "
+    rf"(?P<x3>{_X53S})|who gets (?P<x4>{_X53S})))"
+    rf"\s*,\s*it(?:'s| is) (?P<q>{_WHO53S})(?: (?:who|that) (?:gets|(?:'s|is) (?:having|getting)) "
+    r"(?:it|them))?(?P<rest>\s*(?:[,.;!]|$).*)$",
+    _F,
+)
+
+# what may follow Q: nothing, or the handover to Q said again with a him / her that can be Q only
+_THEN_GIVE53S = re.compile(
+    r"\s*(?:[.!]|,\s*(?:please,? )?(?:give|hand|pass|take|bring) (?:it|them) (?:over |across )?"
+    r"to (?P<pro>him|her)(?:,? please)?\s*[.!]?)?\s*",
+    _F,
+)
+
+
+def _not_who53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): "It isn't P who's having the X, it's Q" said "The X isn't for P, it's for
+    Q" (above)."""
+    low = text.lower()
+    if "who's" not in low and "who is" not in low and "the one" not in low:
+        return text
+    m = _NOT_WHO53S.match(text.strip())
+    if m is None:
+        return text
+    p = m["p1"] or m["p2"]
+    x = m["x1"] or m["x2"] or m["x3"] or m["x4"]
+    q = m["q"]
+    if not (_only_person(p, lexicon) and _only_person(q, lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(q, lexicon):
+        return text
+    if not _ids(x, lexicon, "object") or _ids(x, lexicon, "human") | _ids(x, lexicon, "surface"):
+        return text
+    then = _THEN_GIVE53S.fullmatch(m["rest"])
+    if then is None:
+        return text
+    if then["pro"]:
+        (pid,) = _ids(p, lexicon)
+        (qid,) = _ids(q, lexicon)
+        sex = PRONOUN_SEX[then["pro"].lower()]
+        if unnamed_sex44l(qid, lexicon) != sex or unnamed_sex44l(pid, lexicon) in (sex, None):
+            return text
+    return f"{x[0].upper()}{x[1:]} isn't for {p}, it's for {q}{m['rest']}"
+
+
+# -- session 53 (12s): where on a surface, and a closing 'that's all for the S' --------------------
+#
+# "The small box goes on the belt. Stick the medium box on the belt beside it. That's all for the
+# belt." (blind51 #75): the grounder places on a surface, not beside a thing on it; 'on the S
+# beside it / next to the X' is said 'on the S' (the S a surface of the scene; 'it' / 'them', with
+# two things named before it, or things of the scene after 'beside'). A closing 'That's all / it
+# / everything for the S' (or 'for P') is taken off when what comes before places things on that
+# surface (hands them to that person); else it stays, refused.
+_BESIDE53S = re.compile(
+    r"(?P<on>\b(?:on|onto|on to) the [a-z]+(?: [a-z]+)?) (?:beside|next to|alongside|by|near) "
+    r"(?P<x>it|them|(?:the|that|this) [a-z]+(?: [a-z]+)?)(?=\s*(?:[,.;!]|$))",
+    _F,
+)
+_ALL_FOR53S = re.compile(
+    r"(?:\s*[.,;]\s*|\s+)(?:and |right,? |ok,? |okay,? |so,? )?that(?:'s| is) (?:it|all|everything)"
+    r"(?: for now)? for (?P<w>the [a-z]+(?: [a-z]+)?|[A-Za-z][\w ]*?)(?: for now| then| today)?"
+    r"(?P<end>\s*[.!]?)\s*$",
+    _F,
+)
+
+
+def _all_for53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): 'on the S beside it' said 'on the S'; a closing "That's all for the S"
+    taken off (above)."""
+    low = text.lower()
+    if any(w in low for w in ("beside", "next to", "alongside", " by ", " near ")):
+
+        def on(m: re.Match[str]) -> str:
+            if len(_ids(m["on"], lexicon, "surface")) != 1 or _ids(m["on"], lexicon, "object"):
+                return m.group(0)
+            if m["x"].lower() in ("it", "them"):
+                # 'it' stands for a thing said before, besides the one placed
+                if len(_ids(text[: m.start()], lexicon, "object")) < 2:
+                    return m.group(0)
+            elif not _ids(m["x"], lexicon, "object") or (
+                _ids(m["x"], lexicon, "human") | _ids(m["x"], lexicon, "surface")
+            ):
+                return m.group(0)
+            return m["on"]
+
+        text = _BESIDE53S.sub(on, text)
+    if "that" not in low or " for " not in low:
+        return text
+    m = _ALL_FOR53S.search(text)
+    if m is None:
+        return text
+    where = _ids(m["w"], lexicon, "surface") | _ids(m["w"], lexicon, "human")
+    if len(where) != 1 or _ids(m["w"], lexicon, "object"):
+        return text
+    rest = text[: m.start()]
+    asked = _tasks_of(rest, lexicon)
+    if not asked or not where & {target for _, _, target in asked}:
+        return text
+    return rest + (m["end"].strip() or ".")
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _goes_to53s,
@@ -320,6 +435,8 @@ _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _much_rather53s,
     _nobody_else53s,
     _its_for53s,
+    _not_who53s,
+    _all_for53s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S: tuple[Callable[[str, Lexicon], str], ...] = ()
