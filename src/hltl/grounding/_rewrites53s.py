@@ -124,12 +124,17 @@ def _goes_to53s(text: str, lexicon: Lexicon) -> str:
 # picked the bottle." (#62): putting one's hand up for a thing, one's name on or down for it, and
 # having picked / chosen / opted for it say that one asked for it: said 'asked for' (present
 # perfect 'has asked for'), which the older rules read (a claim by a he / she that fits the
-# request's person; a want of the one named). Not a past perfect ('had put her name on it'), nor
+# request's person; a want of the one named). Putting one's name on it is read so only after a he /
+# she / they (session 40's `_claim40r`, before this step, reads 'P put his name on them' as 'P
+# wants them'). Not a past perfect ('had put her name on it'), nor
 # 'picked it up / out / over' (a doing, not a choosing), nor 'gone for it' (may be gone to
 # fetch it).
 _CLAIMED53S = re.compile(
     r"(?P<has>\b(?:has|have) |'s |'ve )?(?<!had )\b(?:put|puts) (?:her|his|their|my|our) "
-    r"(?:hands? up for|names? (?:down )?(?:on|for))\b|(?P<has2>\b(?:has|have) |'s |'ve )"
+    r"hands? up for\b"
+    r"|(?P<pro3>\b(?:he|she|they))(?P<has3> has| have|'s|'ve)? (?:put|puts) "
+    r"(?:her|his|their|my|our) names? (?:down )?(?:on|for)\b"
+    r"|(?P<has2>\b(?:has|have) |'s |'ve )"
     r"(?:picked|chosen|opted for|plumped for)(?= (?:the|that|this|those|these) [a-z]+"
     r"(?: (?!up\b|out\b|off\b|over\b|back\b|down\b|away\b)[a-z]+)?\s*(?:[,.;:!]|$))",
     _F,
@@ -151,6 +156,8 @@ def _claimed53s(text: str, lexicon: Lexicon) -> str:
         return text
 
     def said(m: re.Match[str]) -> str:
+        if m["pro3"]:
+            return f"{m['pro3']} {'has asked for' if m['has3'] else 'asked for'}"
         has = m["has"] or m["has2"]
         if not has:
             return "asked for"
@@ -430,7 +437,6 @@ def _all_for53s(text: str, lexicon: Lexicon) -> str:
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _goes_to53s,
-    _claimed53s,
     _dont_down53s,
     _much_rather53s,
     _nobody_else53s,
@@ -439,7 +445,7 @@ _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_for53s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
-_STEPS53S: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS53S: tuple[Callable[[str, Lexicon], str], ...] = (_claimed53s,)
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
 REFUSE53S: tuple[Callable[[str, Lexicon], None], ...] = (_pronoun_had53s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
