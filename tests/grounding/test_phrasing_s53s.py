@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import pytest
 
+from hltl.grounding import _rewrites38s as r38s
 from hltl.grounding import _rewrites42r as r42r
 from hltl.grounding import _rewrites53s as r53s
 from hltl.grounding import offline
@@ -16,6 +17,7 @@ from tests.grounding.helpers import (
     CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -395,3 +397,107 @@ test_all_for53s_near = ALL_FOR.test(
 
 def test_all_for53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     ALL_FOR.refused_without((r53s._all_for53s,), monkeypatch)
+
+
+# -- exclusion said with more words (_every_single53s; each refused on main b4e4e6fc) -----------
+EVERY_SINGLE = PhrasingCases()
+test_every_single53s = EVERY_SINGLE.test(
+    (
+        "Every single thing goes on the belt apart from the work gloves and the barcode scanner.",
+        "box_small@conveyor & box_medium@conveyor & box_large@conveyor & tape@conveyor",
+        DEPOT,
+    ),
+    (
+        "Every single thing goes on the bench apart from the drill.",
+        "spanner_small@bench & hammer@bench & screws@bench & torch@bench & spanner_large@bench",
+        WORKSHOP,
+    ),
+    (
+        "Each and every thing goes to Lena apart from the knife.",
+        "plate_white>B & lemon>B & salt>B & plate_blue>B & tongs>B",
+        KITCHEN,
+    ),
+    (
+        "Apart from the mugs, which are staying exactly where they are, everything's going to "
+        "Alice for her picnic.",
+        "cup>A & bottle>A & chips>A & apple>A",
+        CELL,
+    ),
+    (
+        "Except for the plates, which are staying put, everything goes to Marco.",
+        "knife>A & lemon>A & salt>A & tongs>A",
+        KITCHEN,
+    ),
+)
+test_every_single53s_near = EVERY_SINGLE.test(
+    # said as done, asked, what is left out wanted by another: refused
+    (
+        "Apart from the mugs, which are staying where they are, everything went to Alice.",
+        None,
+        CELL,
+    ),
+    ("Every single thing goes to Alice, apart from the mugs?", None, CELL),
+    ("Apart from the mugs, which Bob wants, everything's going to Alice.", None, CELL),
+)
+
+
+def test_every_single53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    EVERY_SINGLE.refused_without((r53s._every_single53s,), monkeypatch)
+
+
+# -- 'everything' said as done or asked (_everything_said53s, a refusal) ------------------------
+#
+# each read on main b4e4e6fc as every thing handed over or placed
+EVERYTHING_SAID = [
+    ("Everything went to Alice.", CELL),
+    ("Everything goes to Alice?", CELL),
+    ("Everything's gone to Alice apart from the mugs.", CELL),
+    ("Everything goes to Alice, apart from the mugs?", CELL),
+    ("Everything went on the shelf.", CELL),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), EVERYTHING_SAID)
+def test_everything_said53s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_everything_said53s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the refusal each is read."""
+    kept = tuple(r for r in offline._REFUSALS if r is not r53s._everything_said53s)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
+    for text, scene in EVERYTHING_SAID:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: a request for everything, asked of the hearer: read as before
+test_everything_said53s_near = PhrasingCases().test(
+    ("Everything goes to Alice apart from the mugs.", "cup>A & bottle>A & chips>A & apple>A", CELL),
+    (
+        "Can you give Alice everything except the mugs?",
+        "cup>A & bottle>A & chips>A & apple>A",
+        CELL,
+    ),
+)
+
+
+# -- a remark of what another has already had (session 38's _about_them38s, widened) ------------
+ALREADY_HAD = PhrasingCases()
+test_already_had38s = ALREADY_HAD.test(
+    ("Omar's the one getting the banana, Emma's already had her fruit.", "banana>B", LAB),
+    (
+        "Mr Lee's the one getting the magazine, Mrs Khan's already had her turn.",
+        "magazine>B",
+        WARD,
+    ),
+    ("Marco's the one getting the lemon, Lena's already had her break.", "lemon>A", KITCHEN),
+    ("Sam's the one getting the stapler, Priya's already had her coffee.", "stapler>B", OFFICE),
+)
+test_already_had38s_near = ALREADY_HAD.test(
+    # the one who gets it has already had theirs: refused
+    ("Give Omar the banana, Omar's already had his fruit.", None, LAB),
+)
+
+
+def test_already_had38s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ALREADY_HAD.refused_without((r38s._about_them38s,), monkeypatch)

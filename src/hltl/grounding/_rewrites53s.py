@@ -434,6 +434,74 @@ def _all_for53s(text: str, lexicon: Lexicon) -> str:
     return rest + (m["end"].strip() or ".")
 
 
+# -- session 53 (12s): exclusion said with more words ---------------------------------------------
+#
+# "Every single thing goes on the belt apart from the work gloves and the barcode scanner."
+# (blind51 #135): 'every single thing' / 'each and every thing' / 'every last thing' said
+# 'everything', which the older rules read with 'apart from'. "Apart from the mugs, which are
+# staying exactly where they are, everything's going to Alice for her picnic." (#120): a 'which'
+# clause after the things left out that says they stay (where they are, put) says what the
+# exclusion does: taken off.
+_EVERY_SINGLE53S = re.compile(r"\b(?:every single|each and every|every last) (?:thing|item)\b", _F)
+_WHICH_STAY53S = re.compile(
+    r"(?P<ex>\b(?:apart from|except(?: for)?|other than|besides|bar) (?:the|those|these) [a-z]+"
+    r"(?: [a-z]+)?),\s*which (?:are|is|'re|'s|will be|can) (?:staying|stopping|remaining|stay|"
+    r"stop|remain)(?: (?:exactly |right )?(?:where (?:they|it) (?:are|is)|put|there|as (?:they|it) "
+    r"(?:are|is)))?\s*,",
+    _F,
+)
+
+
+def _every_single53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): 'every single thing' said 'everything'; 'apart from the X, which are
+    staying where they are,' said 'apart from the X,' (above)."""
+    low = text.lower()
+    if "every" in low and ("single" in low or "each and" in low or "last" in low):
+        text = _EVERY_SINGLE53S.sub("everything", text)
+    if "which" in low and ("stay" in low or "stop" in low or "remain" in low):
+        text = _WHICH_STAY53S.sub(lambda m: f"{m['ex']},", text)
+    return text
+
+
+# -- session 53 (12s): 'everything' said as done or asked ----------------------------------------
+#
+# "Everything went to Alice." and "Everything's gone to Alice apart from the mugs." read every
+# thing of the scene handed to Alice, and "Everything goes to Alice, apart from the mugs?" the same
+# (on main b4e4e6fc): session 41's `_done41l` and the grammar's question refuse 'the apple went to
+# Alice' / 'The apple goes to Alice?' by the thing named, and 'everything' names none. A sentence
+# whose subject is everything (every single thing, the lot, all of it) and whose verb says it done
+# ('went', 'has gone', 'was sent', 'ended up'), or that asks ('?' closing it), is refused.
+_EVERYTHING53S = re.compile(
+    r"(?:^|(?<=[.;!?])\s+|(?<=,)\s+(?:and |so |then |but )?)(?P<said>(?:everything|every single "
+    r"thing|each and every thing|every last thing|the lot|all of it|all of them)(?:'s| has| have)?"
+    r"(?P<done> (?:went|gone|been sent|been given|been taken|ended up|was sent|were sent|was "
+    r"given|were given|was taken|were taken))?[^.;!?]*(?P<ask>\?)?)",
+    _F,
+)
+
+_DONE_WORDS53S = ("went", "gone", "sent", "ended up", "given", "taken")
+
+
+def _everything_said53s(text: str, lexicon: Lexicon) -> None:
+    """Session 53 (12s): 'Everything went to P' / 'Everything goes to P?' refused (above)."""
+    low = text.lower()
+    if "every" not in low and "the lot" not in low and "all of" not in low:
+        return
+    if "?" not in text and not any(w in low for w in _DONE_WORDS53S):
+        return
+    for m in _EVERYTHING53S.finditer(text):
+        if m["done"]:
+            raise GroundingError(
+                f"{m['said'].strip()!r} is said as done ({m['done'].strip()!r}), not as something "
+                "to do: say the request without it, e.g. 'give Bob the chips'"
+            )
+        if m["ask"]:
+            raise GroundingError(
+                f"{m['said'].strip()!r} is a question, not a request: say what to do, e.g. "
+                "'give Bob the chips' or 'put the cup on the shelf'"
+            )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _goes_to53s,
@@ -443,10 +511,11 @@ _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _its_for53s,
     _not_who53s,
     _all_for53s,
+    _every_single53s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S: tuple[Callable[[str, Lexicon], str], ...] = (_claimed53s,)
 # refusals asked of the text before it is read (offline._parse, after the session-52 ones)
-REFUSE53S: tuple[Callable[[str, Lexicon], None], ...] = (_pronoun_had53s,)
+REFUSE53S: tuple[Callable[[str, Lexicon], None], ...] = (_pronoun_had53s, _everything_said53s)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-52 ones)
 CHECK53S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_not_them53s,)
