@@ -381,7 +381,6 @@ test_all_for53s = ALL_FOR.test(
         KITCHEN,
     ),
     ("Put the cup on the shelf. That's all for the shelf.", "cup@shelf", CELL),
-    ("Put the cup on the shelf beside the apple.", "cup@shelf", CELL),
 )
 test_all_for53s_near = ALL_FOR.test(
     # an 'it' with nothing to stand for, beside a person or a surface, a closer naming a surface
@@ -389,6 +388,8 @@ test_all_for53s_near = ALL_FOR.test(
     ("Put the cup on the shelf next to it.", None, CELL),
     ("Put the apple on the shelf next to Bob.", None, CELL),
     ("Put the cup on the shelf beside the table.", None, CELL),
+    ("Put the cup on the shelf beside the apple.", None, CELL),
+    ("Put the cup on the shelf, and the apple on the table beside it.", None, CELL),
     ("Put the cup on the shelf. That's all for the table.", None, CELL),
     ("Put the cup on the shelf. That's all for the shelf?", None, CELL),
     ("Bob put the cup on the shelf beside it. That's all for the shelf.", None, CELL),
@@ -501,3 +502,16 @@ test_already_had38s_near = ALREADY_HAD.test(
 
 def test_already_had38s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     ALREADY_HAD.refused_without((r38s._about_them38s,), monkeypatch)
+
+
+# -- 12c's probes of the batch (session 53, 16:22): each rewrite leaves a holding, a having had
+# or a doing beside its request as it is (_UNSAFE53S): refused
+test_unsafe53s_near = PhrasingCases().test(
+    ("Bob's picked the apple, he's eating it.", None, CELL),
+    ("Bob put his hand up for the apple and got it.", None, CELL),
+    ("It's the apple for Bob, he had it yesterday.", None, CELL),
+    ("Bob has picked the apple, so it's his now.", None, CELL),
+    ("Don't put the cup down, Bob's got it.", None, CELL),
+    ("Over to Alice goes the cup, she's had one.", None, CELL),
+    ("Kofi would much rather have the hammer, he took the drill.", None, WORKSHOP),
+)
