@@ -476,7 +476,7 @@ def _all_for53s(text: str, lexicon: Lexicon) -> str:
 # staying exactly where they are, everything's going to Alice for her picnic." (#120): a 'which'
 # clause after the things left out that says they stay (where they are, put) says what the
 # exclusion does: taken off.
-_EVERY_SINGLE53S = re.compile(r"\b(?:every single|each and every|every last) (?:thing|item)\b", _F)
+_EVERY_SINGLE53S = re.compile(r"\b(?:every single|each and every|every last) thing\b", _F)
 _WHICH_STAY53S = re.compile(
     r"(?P<ex>\b(?:apart from|except(?: for)?|other than|besides|bar) (?:the|those|these) [a-z]+"
     r"(?: [a-z]+)?),\s*which (?:are|is|'re|'s|will be|can) (?:staying|stopping|remaining|stay|"
