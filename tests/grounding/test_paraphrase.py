@@ -526,7 +526,6 @@ KNOWN_MISSES = frozenset(
         "Pirson A left her cup behind at lunch, could it go back to her.",
         "Persun A hasn't eaten since breakfast and would like the chips.",
         "Person A is off out, she'll want her bettle handed over before she goes.",
-        "Over to Pesson A with the bottle, and across to Person B with the chips.",
         "Sam's minuting the budget meeting and needs the notepsd for it.",
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
         "Any chance you could drop the apple off with Person A and swing by Person B with the cup?",

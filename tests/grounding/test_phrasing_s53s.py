@@ -28,9 +28,9 @@ from tests.grounding.helpers import (
     tree,
 )
 
-FIG1, F41, ONE, T12, SQ, DUO, L24 = (
+FIG1, F41, ONE, T12, SQ, DUO, L24, T21 = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("fig1", "4-1", "1-1", "1-2", "4-4-square", "2-2", "2-4-line")
+    for n in ("fig1", "4-1", "1-1", "1-2", "4-4-square", "2-2", "2-4-line", "2-1")
 )
 
 # -- a he / she after a person left out by 'not' (_not_them53s, a check) ----------------------
@@ -515,3 +515,37 @@ test_unsafe53s_near = PhrasingCases().test(
     ("Over to Alice goes the cup, she's had one.", None, CELL),
     ("Kofi would much rather have the hammer, he took the drill.", None, WORKSHOP),
 )
+
+
+# -- 'over to P with the X' in a later clause (_to_with53s; each refused on main b4e4e6fc) -------
+TO_WITH = PhrasingCases()
+test_to_with53s = TO_WITH.test(
+    (
+        "Over to Pesson A with the bottle, and across to Person B with the chips.",
+        "bottle>A & chips>B",
+        T21,
+    ),
+    (
+        "Over to Marco with the knife, and across to Lena with the salt.",
+        "knife>A & salt>B",
+        KITCHEN,
+    ),
+    ("Give Lena the tongs, then over to Mr Novak with the lemon.", "tongs>B ; lemon>C", KITCHEN),
+    (
+        "Over to Mr Lee with the jug, and across to Mrs Khan with the magazine.",
+        "jug>B & magazine>C",
+        WARD,
+    ),
+    ("Over to Alice with the cup, and across to Bob with the crisps.", "cup>A & chips>B", CELL),
+)
+test_to_with53s_near = TO_WITH.test(
+    # asked, 'it' for the thing, a having had, said as done: refused as before
+    ("Over to Alice with the cup, and across to Bob with the crisps?", None, CELL),
+    ("Over to Alice with the cup, and across to Bob with it.", None, CELL),
+    ("Give Alice the cup, and over to Bob with the crisps, he had them.", None, CELL),
+    ("Give Alice the cup, and Bob went over to Carol with the crisps.", None, CELL),
+)
+
+
+def test_to_with53s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    TO_WITH.refused_without((r53s._to_with53s,), monkeypatch)

@@ -540,6 +540,39 @@ def _everything_said53s(text: str, lexicon: Lexicon) -> None:
             )
 
 
+# -- session 53 (12s): 'over to P with the X' in a later clause ----------------------------------
+#
+# "Over to Pesson A with the bottle, and across to Person B with the chips." (blind51 #191, a typo
+# of the name too): session 34's `_frames34t` says an opening 'Over to P with the X' as 'The X over
+# to P'; a later clause of the same frame (after ', and' / ';' / ', then') is said so too (P one
+# person or surface, the X things of the scene).
+_TO_WITH53S = re.compile(
+    r"(?P<head>[,;]\s*(?:and |then |and then )?)(?P<dir>(?:over|across|up|round|back|down) )?to "
+    r"(?P<p>[^,.;:!?]+?) with (?P<x>(?:the|that|this|those|these) [a-z]+(?: [a-z]+)?)"
+    r"(?=\s*(?:[,.;!]|$))",
+    _F,
+)
+
+
+def _to_with53s(text: str, lexicon: Lexicon) -> str:
+    """Session 53 (12s): ', and across to P with the X' said ', and the X across to P' (above)."""
+    low = text.lower()
+    if " with th" not in low:
+        return text
+    if _UNSAFE53S.search(text) or "?" in text:
+        return text  # a holding, a having had, a doing, a question: left as it is (above)
+
+    def said(m: re.Match[str]) -> str:
+        where = _ids(m["p"], lexicon, "human") | _ids(m["p"], lexicon, "surface")
+        if len(where) != 1 or _ids(m["p"], lexicon, "object"):
+            return m.group(0)
+        if not _ids(m["x"], lexicon, "object") or _ids(m["x"], lexicon, "human"):
+            return m.group(0)
+        return f"{m['head']}{m['x']} {m['dir'] or ''}to {m['p']}"
+
+    return _TO_WITH53S.sub(said, text)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _goes_to53s,
@@ -550,6 +583,7 @@ _STEPS53S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _not_who53s,
     _all_for53s,
     _every_single53s,
+    _to_with53s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-52 ones)
 _STEPS53S: tuple[Callable[[str, Lexicon], str], ...] = (_claimed53s,)
