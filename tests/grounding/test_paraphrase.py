@@ -426,32 +426,16 @@ KNOWN_MISSES = frozenset(
         "Person B's got the chips coming, so take them across, and after those the apple's his as "
         "well.",
         "The gloves are Tom's, he left them, bring them to him.",
-        "Bob gets the crisps first. Once he has them, over to Alice goes the cup.",
         "the bottle needs to go up on the shelf and bob said hed have the crisps so they go to him",
-        "Crisps for Alice, she put her hand up for them. Bob, on the other hand, has picked the "
-        "bottle.",
         "cup over to person a the apple is for person b oh and the bottle goes to person a as well",
-        "The small box goes on the belt. Stick the medium box on the belt beside it. That's all "
-        "for the belt.",
         "Lena's got a table of six the white plate to her please and the salt",
         "Jess has run out of screws. Kofi's going to need the big spanner for the axle. Off you "
         "go.",
         "Both pens that aren't on the desk, the black and the red, go in the box.",
         "Pick whichever box you like from the two that aren't on the pallet and set it on the "
         "belt.",
-        "Apart from the mugs, which are staying exactly where they are, everything's going to "
-        "Alice for her picnic.",
-        "It's the cup for Person B, he doesn't want the apple at all.",
         "One thing for Person A, she doesn't mind what, just so long as it isn't the chips.",
-        "Person A has gone off the bottle, she'd much rather have the cup.",
-        "It isn't Person A who's having the bottle, it's Person B, give it to him.",
-        "Person B's not the one the chips are meant for, it's Person A who gets them.",
-        "Don't put the bottle down, give it straight to Person A.",
-        "The bottle goes to Person A and to nobody else, she put her name on it this morning.",
-        "Omar's the one getting the banana, Emma's already had her fruit.",
         "Priya wants every pen bar the blue one, so the red and the black go to her.",
-        "Every single thing goes on the belt apart from the work gloves and the barcode scanner.",
-        "Noah's not to have the scissors today, the ruler is what he should get instead.",
         "Leave the teddy bear, it's the bib Grandad's asking for, Lily's about to have her mashed "
         "carrot.",
         "Every tool and bit for Jess, apart from the drill and the torch, she's kitting out her "
@@ -462,7 +446,6 @@ KNOWN_MISSES = frozenset(
         "Pirson A left her cup behind at lunch, could it go back to her.",
         "Persun A hasn't eaten since breakfast and would like the chips.",
         "Person A is off out, she'll want her bettle handed over before she goes.",
-        "Over to Pesson A with the bottle, and across to Person B with the chips.",
         "Sam's minuting the budget meeting and needs the notepsd for it.",
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
         "Any chance you could run the packing tape over to Mia for the pallets?",

@@ -43,7 +43,7 @@ _GONE_BY38S = re.compile(
     r"\b(?:all (?:day|morning|afternoon|evening|night|week|weekend|shift)(?: long)?|since (?:dawn|"
     r"first thing|breakfast)|for (?:hours|ages|a while|days|weeks|months|years)(?: now)?|"
     r"(?:a|such a|another) (?:long|short|hard|busy|rough|tough|mad|hectic|quiet|slow) (?:day|"
-    r"shift|week|night|morning|afternoon)|home from|only just|just)\b",
+    r"shift|week|night|morning|afternoon)|home from|only just|just|already(?= had\b))\b",
     _F,
 )
 # what a remark may not hold: negation, counts and choices, pointing words, the speaker and the
@@ -154,9 +154,11 @@ def _about_of38s(said: str, lexicon: Lexicon) -> str | None:
 def _about_them38s(text: str, lexicon: Lexicon) -> str:
     """Session 38 (12s): remarks about one person of the scene closing the instruction taken off
     (above), one by one from the end, while what is left names something and reads; a need
-    said only of someone who gets something there."""
+    said only of someone who gets something there; session 53 (12s): 'Q's already had her X'
+    only of someone who gets nothing there."""
     out = text
     needy: set[str] = set()
+    over: set[str] = set()
     while (m := _ABOUT_END38S.search(out)) is not None:
         who = _about_of38s(m["said"], lexicon)
         before = out[: m.start()].rstrip()
@@ -172,11 +174,15 @@ def _about_them38s(text: str, lexicon: Lexicon) -> str:
             break  # "…, scratch that, Mrs Khan does, Mr Lee won the bet": why, of whom taken back
         if _NEEDY38S.search(m["said"]):
             needy.add(who)
+        if re.search(r"\balready had\b", m["said"], _F):
+            over.add(who)  # session 53: what the person has already had says no more of theirs
         out = before if before[-1:] in (".", "!", "?") else before + "."
     if out == text:
         return text
     read = _reading(out, lexicon)
     if read is None or not needy <= {t.target for t in tasks(read)}:
+        return text
+    if over & {t.target for t in tasks(read)}:
         return text
     return out
 

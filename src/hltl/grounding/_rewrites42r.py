@@ -121,7 +121,7 @@ _WANTED42R = (
     r"(?:'s|is) having|'d like|would like|asked for|'s asked for|fancies|(?:'s|is) getting|should "
     r"(?:get|have)|'ll have|will have|(?:'s|is) meant to (?:get|have)|(?:'s|is) wanting)"
     r"|(?P<y2>{T})(?:'s| is) (?:what|all) (?P<w2>{W})(?:'s| is)? (?:after|having|getting|wants|"
-    r"needs|wanted|asked for|'d like|would like|fancies)"
+    r"needs|wanted|asked for|'d like|would like|fancies|should get|should have)"
     r"|(?:just )?(?P<y3>{T})(?: then| instead| please)+"
     r"|(?P<w4>{W}) (?:wants|needs|'d like|would like|(?:'s|is) after|'ll have|will have|can have|"
     r"gets|(?:'s|is) getting|(?:'s|is) having|should (?:get|have)) (?P<y4>{T})(?: instead)?"
