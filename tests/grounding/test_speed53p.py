@@ -188,3 +188,46 @@ def test_heads_answer_as_they_did() -> None:
             assert _normalise1._heads(said, Lexicon.of(scene)) == want
             changed += want != said
     assert changed > 0  # some text says a name by its head
+
+
+def _objects_said_as_it_was(text: str, lexicon: Lexicon) -> str:
+    """_objects_said34t of session 52 (the request read first)."""
+    m = _normalise1._rx(
+        r"(?<=[.!?])\s+(?:(?:sorry|i mean|that is|so|yes|yeah)\s*,?\s+)?(?P<objs>(?:the )?[a-z]+"
+        r"(?:(?:,\s*| and )(?:the )?[a-z]+)*)\s*[.!]?$"
+    ).search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    said = _normalise1._tasks_of(before, lexicon)
+    objs = gate.split(r",\s*| and ", m["objs"], flags=gate.IGNORECASE)
+    named: set[str] = set()
+    for o in objs:
+        if not _normalise1._only_kind(o, lexicon, "object"):
+            return text
+        named |= _normalise1._ids(o, lexicon, "object")
+    if not said or named != {obj for _, obj, _ in said} or len(named) != len(objs):
+        return text
+    return before
+
+
+_SAID_AGAIN = (
+    "Give Bob the cup. Sorry, the cup.",
+    "Give Alice the apple and Bob the crisps. I mean the apple and the crisps.",
+    "Put the apple on the shelf. The apple.",
+    "Give Bob the cup. Sorry, the apple.",
+    "Give Bob the cup. The cup and the cup.",
+    "Give Bob the cup. Bob.",
+    "Give Bob the cup and the apple. The cup.",
+    "Hand Alice the bottle. Thanks.",
+)
+
+
+def test_objects_said_answers_as_it_did() -> None:
+    changed = 0
+    texts = [*_sentences(), *((t, CELL) for t in _SAID_AGAIN)]
+    for text, scene in texts:
+        want = _objects_said_as_it_was(text, Lexicon.of(scene))
+        assert _normalise3._objects_said34t(text, Lexicon.of(scene)) == want, text
+        changed += want != text
+    assert changed > 0
