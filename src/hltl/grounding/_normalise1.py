@@ -1037,7 +1037,30 @@ def _heads(text: str, lexicon: Lexicon) -> str:
     """'the bear' for the object called 'teddy bear': the last word of an object's or a
     surface's name of two or more words, when no other name of the scene has that word, no name
     is that word alone, and it is no word the grammar knows."""
-    scene = lexicon.scene
+    for pattern, name in _heads_of(lexicon.scene):
+        text = _sub(pattern, name, text)
+    return text
+
+
+# each scene's heads (_heads_now), kept by the scene itself as _scene_words (session 53, 12p:
+# they are the scene's alone, and were worked out again for every text)
+_HEADS_KEPT: dict[int, tuple[Scene, tuple[tuple[str, str], ...]]] = {}
+
+
+def _heads_of(scene: Scene) -> tuple[tuple[str, str], ...]:
+    kept = _HEADS_KEPT.get(id(scene))
+    if kept is not None and kept[0] is scene:
+        return kept[1]
+    out = _heads_now(scene)
+    if len(_HEADS_KEPT) > 64:
+        _HEADS_KEPT.clear()
+    _HEADS_KEPT[id(scene)] = (scene, out)
+    return out
+
+
+def _heads_now(scene: Scene) -> tuple[tuple[str, str], ...]:
+    """The (pattern, name) pairs _heads asks in turn: each head said alone, and the name it is
+    the head of."""
     names = [
         *((o.id, n) for o in scene.objects for n in (o.id, o.category, *o.aliases)),
         *((h.id, n) for h in scene.humans for n in (h.id, h.name, *h.aliases)),
@@ -1045,6 +1068,7 @@ def _heads(text: str, lexicon: Lexicon) -> str:
     ]
     said = [(i, n.lower().replace("_", " ").split()) for i, n in names]
     people = {h.id for h in scene.humans}  # a surname is a person's (see _people)
+    out: list[tuple[str, str]] = []
     for oid, name in names:
         words = name.lower().split()
         if len(words) < 2 or name == oid or oid in people:
@@ -1054,8 +1078,8 @@ def _heads(text: str, lexicon: Lexicon) -> str:
         alone = any(ws == [head] for _, ws in said)  # a name of its own already
         if owners != {oid} or alone or head in WORDS or head in VERBS:
             continue
-        text = _sub(rf"(?<!{re.escape(words[-2])} )\b{re.escape(head)}\b", name, text)
-    return text
+        out.append((rf"(?<!{re.escape(words[-2])} )\b{re.escape(head)}\b", name))
+    return tuple(out)
 
 
 def _only_kind(words: str, lexicon: Lexicon, kind: str) -> bool:
@@ -1520,9 +1544,10 @@ def _possessed(text: str, lexicon: Lexicon) -> str:
         return ", ".join(f"the {m.group(2)} for {m.group(1)}" for m in pairs if m is not None)
     for h in lexicon.scene.humans:
         for alias in h.aliases:
-            m = _rx(
-                rf"\b({re.escape(alias)})'s ([\w ]+?)\b(?= (?:is|are|should|must|has|have)\b)"
-            ).search(text)
+            m = re.search(  # gated (session 53, 12p)
+                _rx(rf"\b({re.escape(alias)})'s ([\w ]+?)\b(?= (?:is|are|should|must|has|have)\b)"),
+                text,
+            )
             if m is None or not _only(m.group(2), lexicon, "object"):
                 continue  # "Mr Novak's plate is the blue one" says which (_words)
             pron = re.findall(r"\b(?:him|her)\b", text, _F)

@@ -7515,13 +7515,17 @@ def _objects_said34t(text: str, lexicon: Lexicon) -> str:
     if m is None:
         return text
     before = text[: m.start()]
-    said = _tasks_of(before, lexicon)
     objs = re.split(r",\s*| and ", m["objs"], flags=_F)
     named: set[str] = set()
     for o in objs:
         if not _only_kind(o, lexicon, "object"):
             return text
         named |= _ids(o, lexicon, "object")
-    if not said or named != {obj for _, obj, _ in said} or len(named) != len(objs):
+    if len(named) != len(objs):
+        return text
+    # (session 53, 12p: the request read only where the sentence after it names objects only,
+    # each once: the same answer, without a read of the request wherever it does not)
+    said = _tasks_of(before, lexicon)
+    if not said or named != {obj for _, obj, _ in said}:
         return text
     return before
