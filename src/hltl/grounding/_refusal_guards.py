@@ -444,6 +444,12 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("2m", "2n", "l8", "tm", "tomoz", "tonite"), False),
         (),
     ),
+    "hltl.grounding._rewrites52:_had_wanted52": (
+        "88170edaf40d47fa",
+        ((" had ", "'d "), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites52:_should52": ("64b9ba5f804a9c7b", (("?",), (), False), ()),
     "hltl.grounding._rewrites52r:_done_it52r": (
         "1d0c1cc33cf3495a",
         ((), ("dealt", "done", "seen to", "sorted"), False),
@@ -491,6 +497,35 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites52s:_she_wants_other52s": (
         "4db9050473262b92",
         ((), ("he",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites53:_does_he53": ("5266ca056de313c1", (("?",), (), False), ()),
+    "hltl.grounding._rewrites53:_forgot_which53": ("0a25e216e99e1afb", (("?",), (), False), ()),
+    "hltl.grounding._rewrites53l:_held_request53l": (
+        "c39ac8694347e3bc",
+        (("got", "had", "has"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites53r:_each_head53r": ("35b543b95513fc71", ((), (":",), False), ()),
+    "hltl.grounding._rewrites53r:_lost_who53r": ("40d3699af20016f3", ((), (" who",), False), ()),
+    "hltl.grounding._rewrites53r:_one_of_two53r": (
+        "a2e5e42f2528dc03",
+        ((), ("one of th",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites53s:_everything_said53s": (
+        "918d412996c10614",
+        ((), ("all of", "every", "the lot"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites53s:_not_them53s": (
+        "116038908559c8fe",
+        ((), ("instead of", "not ", "rather than"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites53s:_pronoun_had53s": (
+        "7aadc25bb222f6b0",
+        ((), (" got ", " had "), False),
         (),
     ),
 }

@@ -154,11 +154,27 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("(?:\\s+(?:will|would)|'ll|'d) be needing\\b", 2, True),
     ("(?:\\s+(?:will|would)|'ll|'d) be wanting\\b", 2, True),
+    (
+        "(?:\\s+has|'s) (?:got )?(?:her|his|their) hearts? set on\\b(?= (?:the|that|this|those|these)\\b)",
+        34,
+        False,
+    ),
+    (
+        "(?:\\s+has|'s) (?:got |taken )?a (?:real )?fancy (?:for|to)\\b(?= (?:the|that|this|those|these)\\b)",
+        34,
+        False,
+    ),
     ("(?:\\s+has|'s) (?:had |got )?(?:her|his|their) eyes? on\\b", 2, True),
     (
         "(?:\\s+has|'s) (?:really |more than |well and truly )?earned\\b(?= (?:the|that|this|those|these|her|his|their)\\b)",
         2,
         True,
+    ),
+    ("(?:\\s+has|'s) been asking (?:for|after)\\b(?= (?:the|that|this|those|these)\\b)", 34, False),
+    (
+        "(?:\\s+has|'s)(?: got)? (?:a|such a|a real|a big) craving for\\b(?= (?:the|that|this|those|these)\\b)",
+        34,
+        False,
     ),
     (
         "(?:\\s+has|'s|\\s+is) (?:been )?eyeing(?: up)?\\b(?= (?:the|that|this|those|these)\\b)",
@@ -172,6 +188,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("(?:\\s+is|'s) keen on\\b", 2, True),
+    (
+        "(?:\\s+is|'s|\\s+was) (?:absolutely |just |really )?gasping for\\b(?= (?:the|that|this|those|these)\\b)",
+        34,
+        False,
+    ),
+    ("(?:\\s+is|'s|\\s+was) asking after\\b(?= (?:the|that|this|those|these)\\b)", 34, False),
     (
         "(?:^|(?<=[,.!?] ))(?:(?:i'm|i am) )?(?:so |very |really |terribly )?sorry to (?:bother|trouble|ask|interrupt|disturb|be a pain)(?: you)?(?: again)?,?(?: but,?)?\\s*",
         2,
@@ -230,6 +252,21 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         "(?:^|(?<=[.;!?] ))never mind ([A-Z][\\w ]*?)(?: for (?:now|the moment|today))?,\\s*(?=(?-i:[a-z]|[A-Z]))",
         2,
         True,
+    ),
+    (
+        "(?:^|(?<=[.;!?])\\s*)(?:(?:i )?beg (?:your )?pardon|pardon me|excuse me|forgive me|(?:my )?apologies|sorry|so sorry)(?P<w> for (?:the|all the|this|that|my|our) [a-z]+(?: [a-z]+)?)\\s*,\\s*",
+        34,
+        False,
+    ),
+    (
+        "(?:^|(?<=[.;!?])\\s*)(?:excuse|forgive|pardon) (?P<w>(?:the|all the|this|my|our) [a-z]+(?: [a-z]+)?)\\s*,\\s*",
+        34,
+        False,
+    ),
+    (
+        "(?:^|(?<=[.;!?])\\s*)(?:while|when|whilst|since) you(?:'re| are) (?:on your feet|up|up and about|passing|going past|walking past|nearby|about)\\s*,\\s*|,?\\s+(?:while|when|whilst) you(?:'re| are) (?:on your feet|up|up and about|passing|going past|walking past)(?=\\s*[.!]*\\s*$)",
+        34,
+        False,
     ),
     (
         "(?:^|(?<=[.;!?])\\s*)(?P<keep>)(?:please )?(?:don't|do not) (?:give|hand|send) (?:anything|any of (?:it|them)) to (?P<who>[A-Z][\\w ]*?)\\s*[;,.]\\s*",
@@ -292,6 +329,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("(?<![,;])\\s+now (?=(?:he|she)(?:'s| is) back from\\b)", 34, False),
     (
         "(?<![\\w,] )(?:^|(?<=[.;!?]\\s)|(?<=[;]))\\s*([A-Z][\\w ]*?) ((?:can |will |should |may |could )?(?:each )?)takes?\\b(?=(?:(?!\\b(?:to|on|onto|in|into|over|for|from|out|off|away|back|it|them|him|her)\\b)[^.;!?])*(?:[.;!?]|$))",
         2,
@@ -395,6 +433,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("(?<=\\bto) receive\\b", 34, False),
     ("(?<=\\w) (?:himself|herself)\\b", 2, True),
     (
         "(?<=\\w) also (?=(?:wants|needs|would like|'d like|gets|should get|could have|can have)\\b)",
@@ -1258,6 +1297,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     (",\\s*all (?:of them |of it )?(?:for|to) ([\\w ]+?)\\s*([.!]?)$", 2, True),
     (",\\s*and that ", 2, True),
     (",\\s*any (?:one )?(?:except|but|apart from|other than|besides|bar) (?=the )", 2, True),
+    (
+        ",\\s*as (?:my|our|the|his|her|their|they|we|you|people|folk|one) (?P<w>[a-z' ]{0,40}?)(?:would say|'d say|says|say|used to say|would put it|puts it|put it|likes to say)(?: in [a-z]+)?\\s*,",
+        34,
+        False,
+    ),
     (",\\s*both for ([\\w ]+?)(?=\\s*(?:[.!?,]|$))", 2, True),
     (
         ",\\s*but keep (the [a-z ]+?|it|them) away from (?:him|her|them)(?=\\s*(?:[,.;!?]|$))",
@@ -1364,6 +1408,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         "\\b((?:are|is) going|go|goes) (?:over|across|round) to ((?:the )?[A-Za-z]+(?: [A-Z])?)\\b",
         2,
         True,
+    ),
+    (
+        "\\b((?:could|can|will|would) you|you (?:could|can|will|would)|please) see (?:to it )?(?:that )?(?=(?:the|a|an|this|that|these|those|it|they|both|all)\\b[^,.;!?]*? (?:gets|get) (?:over |across |back )?to\\b)",
+        34,
+        False,
     ),
     (
         "\\b((?:except|but|bar|not|apart from|other than) (?:the )?[a-z]+(?: one)?)\\s*,\\s*which (?=(?:is|makes|has|gives|was|'s)\\b)",
@@ -1498,6 +1547,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("\\b(?:could|can|might|may) I (?:just )?(?:trouble|bother|ask) you to\\b", 34, False),
     ("\\b(?:could|can|should|might|will) be (?:provided|supplied|furnished) with\\b", 2, True),
     (
         "\\b(?:could|can|should|might|will|must) (?:please )?be (?:given|handed|passed|brought|sent)\\b(?!\\s+(?:to|over|across|back|on|onto)\\b)",
@@ -1557,6 +1607,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (
+        "\\b(?:is it|would it be|will it be) (?:too much|a lot|much) (?:of a )?(?:bother|trouble|hassle|to ask)(?: for you)? (?:to|if you could)\\b",
+        34,
+        False,
+    ),
     ("\\b(?:is|'s|are) waiting (?:on|for)\\b", 2, True),
     ("\\b(?:is|are) to (?:receive|get|have)\\b", 2, True),
     ("\\b(?:is|are) to go (on|onto|in|into|to)\\b", 2, True),
@@ -1566,6 +1621,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(?:it|it's)\\b", 2, True),
     ("\\b(?:it|them)\\b", 2, True),
     ("\\b(?:kindly |please )?do the needful,?\\s+and\\s+", 2, True),
+    (
+        "\\b(?:land|end up|wind up|find its way|find a (?:home|place|spot)|make its way) (?=(?:on|onto|in|into|on to) (?:the|my|our|his|her) )",
+        34,
+        False,
+    ),
+    ("\\b(?:make|find|wend) (?:its|their) way (?:over |across )?to\\b", 34, False),
     ("\\b(?:many|big|huge) thanks\\b", 2, True),
     ("\\b(?:middle|mid|sized?)\\b|-size", 2, True),
     (
@@ -1593,6 +1654,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(?:no|not|n't)\\b(?! expert| bother)", 2, True),
+    (
+        "\\b(?:no|sorry|actually|wait|hang on|hold on|hang about|scratch that|i mean|i meant|correction|rather|instead|oops|whoops|my mistake)\\b",
+        34,
+        False,
+    ),
     (
         "\\b(?:no|sorry|i mean|i meant|actually|wait)\\s*,?\\s*(?P<said>(?:the|that) other (?:thing|one|item)(?: (?:she|he|they|you) (?:asked for|wanted|meant|ordered|said|mentioned|wants|needs)))\\b",
         2,
@@ -1686,6 +1752,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\b(?:will|'ll|going to|gonna)\\b", 2, True),
     (
+        "\\b(?:would|will) it be (?:a|too much of a|much of a|a real) (?:pain|bother|hassle|nuisance|faff|drag|chore) (?:for you )?to\\b",
+        34,
+        False,
+    ),
+    (
         "\\b(?:y'?all|ya'?ll|you-all|youse|yous|you guys|you lot|you two)\\b(?=\\s*(?:[,.!:;]|$|(?:mind|hand|pass|give|bring|put|take|pop|grab|get|fetch|be|please|could|can|would|will|need|have|should|must|go|just)\\b))",
         2,
         True,
@@ -1701,6 +1772,26 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         "\\b(?P<all>(?:both|all(?: (?:two|three|four))?) of the (?:things|items|bits))(?: (?:that )?(?:we've got|we have|you've got|you have|there are)(?: here| there)?| here| on offer| about)(?=\\s*[,:])",
         2,
         True,
+    ),
+    (
+        "\\b(?P<ask>(?:could|can|would|will) you (?:please )?)(?:make sure|see to it that|ensure) (?P<p>[A-Za-z][\\w]*(?: [A-Za-z][\\w]*)?) (?:ends up with|winds up with|gets hold of)\\b",
+        34,
+        False,
+    ),
+    (
+        "\\b(?P<ask>(?:could|would|will|can) you)(?: be (?:good|kind) enough to| be so (?:good|kind) as to)? (?:please )?see (?:that |to it that )?(?=[A-Z][\\w]*(?: [A-Z][\\w]*)? (?:gets|has|receives)\\b)",
+        34,
+        False,
+    ),
+    (
+        "\\b(?P<ask>could|can|would|will) (?P<who>[A-Z][\\w]*(?: [A-Z][\\w]*)?) (?:trouble|bother) you for\\b",
+        34,
+        False,
+    ),
+    (
+        "\\b(?P<ask>could|can|would|will) you (?:just )?spare (?:a|one|half a) (?:minute|moment|sec|second|mo|tick|jiffy)(?: or two)? to\\b",
+        34,
+        False,
     ),
     (
         "\\b(?P<cue>no|sorry|actually|wait|hang on|hold on)\\s*,\\s*(?:you know what|on second thoughts?|come to think of it|thinking about it|now i think about it)\\s*[,;]\\s*",
@@ -1804,6 +1895,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(?P<v>to|for) either of them\\b", 2, True),
+    ("\\b(?P<w>(?:would|do) you) mind (?:ever so|so|very|terribly|awfully) much\\b", 34, False),
     ("\\b(?P<w>first|last|next) of all\\b", 2, True),
     ("\\b(?P<w>he|she)'ll (?:have|take)\\b", 2, True),
     (
@@ -1828,7 +1920,9 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\b(?P<x>an? [a-z]+) of (?:their|his|her|his or her) (?:very )?own\\b", 2, True),
     ("\\b(Alice) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
+    ("\\b(Alice)'s ([\\w ]+?)\\b(?= (?:is|are|should|must|has|have)\\b)", 34, False),
     ("\\b(Bob) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
+    ("\\b(Bob)'s ([\\w ]+?)\\b(?= (?:is|are|should|must|has|have)\\b)", 34, False),
     ("\\b(Person\\ A) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
     ("\\b(Person\\ B) (has|had|has had|'s had|gets|got|has got) (?:his|her|their) ", 2, True),
     ("\\b([A-Z][\\w ]*?),\\s*(?:she|he|they) (needs|wants|gets|would like)\\b", 2, True),
@@ -2039,6 +2133,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\ball (two|three|four|five|six|seven|eight|nine|ten|\\d+) of the\\b", 2, True),
     ("\\ball of the (?=[a-z]+s\\b)", 2, True),
+    ("\\balready had\\b", 2, True),
     (
         "\\ban? (?P<kind>[a-z]+),\\s*(?P<any>any (?P=kind) (?:except|but|apart from|other than) )",
         2,
@@ -2201,6 +2296,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\bshall be (given|handed|passed|brought|placed|put|taken)\\b", 2, True),
     ("\\bshelf(?= (?:the )?bottle\\b)", 2, True),
     ("\\bshould go to\\b", 2, True),
+    ("\\bsince first (?:light|thing)\\b", 34, False),
     ("\\bsorry(?: (?:ah|lah|leh))?,?\\s+(?=disturb(?:ing)? you\\b)", 2, True),
     ("\\bsort (the [a-z ]+?|it|them) out for\\b", 2, True),
     ("\\btake delivery of\\b", 2, True),
@@ -2407,6 +2503,16 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "\\s*,\\s*(?:and )?(?P<who>they|it|the [a-z]+)(?:'s| is)? (?:needs?|wants?|could (?:do with|use)) (?P<said>(?:a |an |some )?[a-z][a-z' ]*?)(?=\\s*[.!]?\\s*$)",
+        34,
+        False,
+    ),
+    (
+        "\\s*,\\s*(?:and )?the poor (?:thing|dear|love|soul|lamb|mite|lad|lass)(?:'s| is| has) (?P<said>[a-z][a-z' ]*?)(?=\\s*[.!]?\\s*$)",
+        34,
+        False,
+    ),
+    (
         "\\s*,\\s*(?:he|she|they) (?:told me so|said so|told me|said as much)(?: (?:himself|herself|themselves|earlier|before|just now|this morning|yesterday))?(?:,? (?:while|when|as) i was [a-z]+ing(?: (?:up|out|round|about))?)?(?=\\s*[.!]?\\s*$)",
         2,
         True,
@@ -2505,7 +2611,14 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    (
+        "\\s+(?:keeps|kept) (?:on )?asking (?:for|after)\\b(?= (?:the|that|this|those|these)\\b)",
+        34,
+        False,
+    ),
     ("\\s+(?:right )?about now\\b(?=\\s*(?:[.,;!?]|$))", 2, True),
+    ("\\s+(?P<be>is|are) (?:meant|intended) for\\b(?= [A-Z])", 34, False),
+    ("\\s+(?P<be>is|are) wanted over by\\b(?= [A-Z])", 34, False),
     ("\\s+([,;:.!?])", 0, True),
     ("\\s+and then we're (?:done|finished|good)\\s*([.!]?)$", 2, True),
     (
@@ -2519,6 +2632,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "\\s+could (?:really |happily |easily |just |so )?murder\\b(?= (?:the|that|this|those|these)\\b)",
+        34,
+        False,
+    ),
+    (
         "\\s+for (?:(?:his|her|their|the|my|our) )?(?:lunch|dinner|breakfast|tea|supper|homework|revision|game|repair|meeting|class|lesson|trip|journey|shift|rounds|project|work)(?= *(?:[.,;!?]|$))",
         2,
         True,
@@ -2529,7 +2647,14 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\s+for [a-z]+ing(?: up| out| with)?(?= *(?:[.,;!?]|$))", 2, True),
+    ("\\s+for once\\b(?=\\s*(?:[,.;!?]|$))", 34, False),
     ("\\s+for us\\b(?=\\s*(?:[,.;!?]|please|thanks|$))", 2, True),
+    ("\\s+from over (?:there|here|yonder)(?=\\s*(?:[,.;!?]|$))", 34, False),
+    (
+        "\\s+now (?:that )?(?P<s>the [a-z]+(?: [a-z]+)?)(?:'s| is) (?P<w>finished|done|gone|over|empty|eaten|drunk|used up)\\b",
+        34,
+        False,
+    ),
     (
         "\\s+since (?:her|his|their|my|our|the) [a-z]+(?: [a-z]+)? (?:began|started|opened|came on)(?=\\s*[.!]?\\s*$)",
         2,
@@ -2541,6 +2666,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\s+this time(?: round| around)?(?=\\s*(?:[,.;!?]|$))", 2, True),
+    (
+        "\\s+while (?P<who>he|she) (?:rests|is resting|'s resting|recovers|is recovering|'s recovering)\\b",
+        34,
+        False,
+    ),
     ("\\s+with (?:his|her|their|my|your) [a-z]+(?= *(?:[.,;!?]|$))", 2, True),
     ("\\s{2,}", 0, True),
     ("\\w+(?:-\\w+)+", 0, True),
@@ -2677,6 +2807,16 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("^(?:'[a-z]+|\\s+[a-z]+)", 0, True),
     ("^(?:'s|'re|'ll|'d)?\\s*\\w+", 0, True),
     ("^(?:'s|\\s)\\s*", 0, True),
+    (
+        "^(?:(?:(?:good )?(?:evening|morning|afternoon)|hello|hi|hiya|hey|greetings),?\\s+(?:and\\s+)?)?(?:(?:so |terribly |awfully |very )?sorry|(?:my )?apologies|apologies|pardon me|excuse me|forgive me|beg pardon|i beg your pardon) (?:about|for) (?P<w>[^:;.!?]{1,80}?)(?:\\s*[:;.!?—–]\\s*|,\\s*but\\s+)",
+        34,
+        False,
+    ),
+    (
+        "^(?:(?:I'd|I would|we'd|we would) be )?(?:much|most|very|greatly|ever so) obliged if (?P<p>[A-Za-z][\\w]*(?: [A-Za-z][\\w]*)?) (?:ended up with|could have|got|could get|had|were given|was given)\\b",
+        34,
+        False,
+    ),
     ("^(?:(?:and|so|because|since|as|anyway|well|ok|okay|right),?\\s+)+", 0, True),
     ("^(?:(?:and|so|oh|well),? )?let me (?:think|see)\\s*[.,:;!]+\\s*", 2, True),
     (
@@ -2688,6 +2828,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         "^(?:(?:can|could|may) (?:i|we) (?:get|have|grab|please have|please get)|(?:i|we)'ll have|(?:i|we)'d like|(?:i|we) would like)((?: the| a| an| some) [\\w ]+?) for ((?:the )?[\\w ]+?)(\\s*,?\\s*please)?\\s*([.!?]?)$",
         2,
         True,
+    ),
+    (
+        "^(?:(?:er|erm|um|uh|oh)\\s*,?\\s*)?(?:sorry\\s*,?\\s*)?(?:I )?(?:hate|don't mean|don't want) to (?:interrupt|bother you|butt in|disturb you|be a pain|be a bother),?\\s*but\\s+",
+        34,
+        False,
     ),
     (
         "^(?:(?:hi|hello|hey|hiya|yes|yeah|yep|ok|okay|right|morning|evening|afternoon|good (?:morning|afternoon|evening|day)|ah|oh)(?: there)?\\s*[,!]\\s*|(?:(?:(?:excuse|pardon) me(?:,? (?:so )?sorry)?|(?:so )?sorry,? (?:excuse|pardon) me)(?:,? (?:(?:so )?sorry )?(?:to|for) (?:bother|interrupt|trouble|disturb|rush)(?:ing)?(?: you)?)?|(?:so )?sorry (?:to|for) (?:bother|interrupt|trouble|disturb|rush)(?:ing)?(?: you)?|listen(?: up)?|look|come on(?: then| now)?|lovely|so)\\s*[,.!]\\s*(?=[a-z]))+",
@@ -2750,6 +2895,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         "^(?:(?:up|down|back|over|out) )?(?P<prep>on|onto|in|into|on top of|inside) (?P<s>the [a-z]+(?: [a-z]+)?) with (?:(?:both of them|all of them|the lot|them all|all three of them)\\s*,\\s*)?(?P<list>the [a-z]+(?: [a-z]+)?(?:(?:,| and|, and) the [a-z]+(?: [a-z]+)?)+)(?P<end>\\s*(?:[,;.!]|$))",
         2,
         True,
+    ),
+    (
+        "^(?:(?:with|and) )?(?:(?:many|much|warm|grateful|heartfelt|big|huge) )?(?:thanks|thank yous|gratitude|love|regards|best wishes|greetings|cheers)(?: (?:in advance|again))? from (?P<w>[^:;.!?]{1,80}?)\\s*[:;.!—–]\\s*",
+        34,
+        False,
     ),
     (
         "^(?:(?P<grp>.+?) (?:get|are getting|will get|'ll get|can have|are having|have)|give (?P<grp2>them|the two of them|the pair of them|both of them|the [a-z]+s)) (?:something|one thing|a thing|an? (?P<k>[a-z]+)|one (?P<k2>[a-z]+)) (?:apiece|each)(?:\\s*,\\s*(?:the way they asked|as they asked|like they asked|as asked|as they wanted))?\\s*[,:;-]\\s*(?P<rest>.+?)(?P<end>\\s*[.!]?)$",
@@ -2857,6 +3007,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("^(?:in between|in the middle|second|secondly),?\\s+(.+?)[.;!]?$", 2, True),
+    (
+        "^(?:is there )?(?P<a>any chance of [^,;.?!]+?) (?:landing|ending up|winding up|finding its way|finding a (?:home|place|spot)|making its way) (?=(?:on|onto|in|into|on to) (?:the|my|our|his|her) )",
+        34,
+        False,
+    ),
     ("^(?:is|would be|will be) (?:it )?possible (?:for you )?to (?=[a-z])", 2, True),
     ("^(?:it'?s|its|it|he|she|they|that|this|there)\\b", 0, True),
     ("^(?:it|they) (?:goes|go|belongs?|should go) (?P<on>in|on|into|onto) ", 2, True),
@@ -2884,6 +3039,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("^(?:may|might|can|could) (?:i|we) (?:ask for|request) ", 2, True),
     ("^(?:may|might|can|could) (?:i|we) (?:ask|request) (?:that )?(.+?) be ", 2, True),
+    (
+        "^(?:might|could|can|may) (?P<p>[A-Z]\\w*(?: [A-Z]\\w*)?) be (?:given|handed|passed|brought) (?=(?:the|a|an|some|his|her|their) )",
+        32,
+        False,
+    ),
     ("^(?:miss|sir|madam|ma'am|mister|missus)\\s*[,:]\\s*", 2, True),
     ("^(?:next|new|another) (?:order|ticket|table)\\s*[.!:]\\s*", 2, True),
     (
@@ -3050,6 +3210,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?:with (?:all )?(?:due|the greatest|great) respect|respectfully|if I may)(?:,\\s*|\\s+)(?:(?:friend|robot|machine|mate|pal|buddy|love|dear|my friend|robots|folks|you),\\s*)?(?P<w>)",
+        34,
+        False,
+    ),
+    ("^(?:with (?:many |grateful |warm |all |my |our )?thanks(?: in advance)?),\\s*", 34, False),
+    (
         "^(?:would|could) it be (?:at all |even )?(?:okay|ok|alright|all right|fine|possible) to ",
         2,
         True,
@@ -3070,6 +3236,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?:would|will|is) it (?:be )?(?:a |an )?(?:hardship|imposition|chore|drag|faff|trial|burden|big ask|lot to ask|struggle|headache) to ",
+        34,
+        False,
+    ),
+    (
         "^(?:you asked |you wanted to know )?which (\\w+)\\s*[?:]\\s*(the \\w+ one)\\s*(.*)$",
         2,
         True,
@@ -3080,7 +3251,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "^(?P<head>(?:(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?: (?:says|said|reckons|tells me|told me|mentioned)(?: that)? (?P<pro0>he|she))?(?:(?:'s| is) not after| isn't after| is not after| (?:doesn't|does not|won't|will not|wouldn't|would not) (?:want|need|fancy|like)|(?:'s| is) not to (?:have|get)| isn't to (?:have|get)|(?:'s| is) not (?:having|getting)| isn't (?:having|getting)| (?:can|could) (?:do|manage) without|(?:'s| is) not keen on| isn't keen on| has no (?:use|need) for) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)|(?P<x2>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?:'s| is| are|'re| was| were) (?:no|not any|not much|never any) (?:good|use) (?:to|for) (?P<p2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<x3>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?: isn't| aren't| is not| are not|'s not|'re not| was never| were never|'s never| is never| are never| wasn't| weren't)(?: meant)? (?:for (?P<p3>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<p4>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s(?: to (?:have|keep|take))?)|it(?: was never|'s never| is never| wasn't| isn't|'s not| is not)(?: meant to be)? (?P<x5>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?) for (?P<p5>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)))(?: at all| today| really| any more| anymore| now| after all| this time| either| thanks)?)(?:\\s*[,;]\\s*(?P<why>(?:it's|it is|they're|they are|she's|he's|she has|he has|it has|they've|they have)(?: [a-z']+){1,4}))?\\s*[,;:.]\\s*(?:so |but |then |instead )?(?:(?:it(?:'s| is) (?P<y1>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one) (?:that |which )?(?P<w1>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:wants|needs|(?:'s|is) after|(?:'s|is) having|'d like|would like|asked for|'s asked for|fancies|(?:'s|is) getting|should (?:get|have)|'ll have|will have|(?:'s|is) meant to (?:get|have)|(?:'s|is) wanting)|(?P<y2>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?:'s| is) (?:what|all) (?P<w2>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?:'s| is)? (?:after|having|getting|wants|needs|wanted|asked for|'d like|would like|fancies)|(?:just )?(?P<y3>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: then| instead| please)+|(?P<w4>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:wants|needs|'d like|would like|(?:'s|is) after|'ll have|will have|can have|gets|(?:'s|is) getting|(?:'s|is) having|should (?:get|have)) (?P<y4>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: instead)?|(?:give|pass|hand|bring|take|get) (?P<w5>him|her|(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<y5>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: instead)?)|(?:(?:it's|it is|they're|they are) (?:going|headed|off|to go) to (?P<q1>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?:it's|it is|they're|they are) (?:for (?P<q2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<q3>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s(?: to have)?)|it(?:'s| is) (?P<q4>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s (?:turn|go)(?: today| now| this time)?|(?P<q5>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:gets|can have|is having|'s having|should (?:have|get)|'ll have|will have|is getting|'s getting) (?:it|them)(?: instead)?))(?:,? (?:please|thanks|then|instead|thank you|cheers))?(?P<end>\\s*[.!]?)$",
+        "^(?P<head>(?:(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?: (?:says|said|reckons|tells me|told me|mentioned)(?: that)? (?P<pro0>he|she))?(?:(?:'s| is) not after| isn't after| is not after| (?:doesn't|does not|won't|will not|wouldn't|would not) (?:want|need|fancy|like)|(?:'s| is) not to (?:have|get)| isn't to (?:have|get)|(?:'s| is) not (?:having|getting)| isn't (?:having|getting)| (?:can|could) (?:do|manage) without|(?:'s| is) not keen on| isn't keen on| has no (?:use|need) for) (?P<x>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)|(?P<x2>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?:'s| is| are|'re| was| were) (?:no|not any|not much|never any) (?:good|use) (?:to|for) (?P<p2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<x3>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?)(?: isn't| aren't| is not| are not|'s not|'re not| was never| were never|'s never| is never| are never| wasn't| weren't)(?: meant)? (?:for (?P<p3>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<p4>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s(?: to (?:have|keep|take))?)|it(?: was never|'s never| is never| wasn't| isn't|'s not| is not)(?: meant to be)? (?P<x5>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?) for (?P<p5>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)))(?: at all| today| really| any more| anymore| now| after all| this time| either| thanks)?)(?:\\s*[,;]\\s*(?P<why>(?:it's|it is|they're|they are|she's|he's|she has|he has|it has|they've|they have)(?: [a-z']+){1,4}))?\\s*[,;:.]\\s*(?:so |but |then |instead )?(?:(?:it(?:'s| is) (?P<y1>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one) (?:that |which )?(?P<w1>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:wants|needs|(?:'s|is) after|(?:'s|is) having|'d like|would like|asked for|'s asked for|fancies|(?:'s|is) getting|should (?:get|have)|'ll have|will have|(?:'s|is) meant to (?:get|have)|(?:'s|is) wanting)|(?P<y2>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?:'s| is) (?:what|all) (?P<w2>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))(?:'s| is)? (?:after|having|getting|wants|needs|wanted|asked for|'d like|would like|fancies|should get|should have)|(?:just )?(?P<y3>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: then| instead| please)+|(?P<w4>(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:wants|needs|'d like|would like|(?:'s|is) after|'ll have|will have|can have|gets|(?:'s|is) getting|(?:'s|is) having|should (?:get|have)) (?P<y4>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: instead)?|(?:give|pass|hand|bring|take|get) (?P<w5>him|her|(?:he|she|him|her)|(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?P<y5>(?:the|that|this|those|these) [a-z]+(?: (?!(?:at|all|today|really|then|now|either|anymore|any|after|this|for|to|that|which|who|is|are|was|were|isn|aren)\\b)[a-z]+)?|(?:the|that|this) (?:[a-z]+ )?one)(?: instead)?)|(?:(?:it's|it is|they're|they are) (?:going|headed|off|to go) to (?P<q1>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?:it's|it is|they're|they are) (?:for (?P<q2>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))|(?P<q3>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s(?: to have)?)|it(?:'s| is) (?P<q4>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))'s (?:turn|go)(?: today| now| this time)?|(?P<q5>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:gets|can have|is having|'s having|should (?:have|get)|'ll have|will have|is getting|'s getting) (?:it|them)(?: instead)?))(?:,? (?:please|thanks|then|instead|thank you|cheers))?(?P<end>\\s*[.!]?)$",
         2,
         True,
     ),
@@ -3322,6 +3493,26 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
+        "^(?P<w>(?:the|our|my|your|a|an) [a-z][a-z' ]{0,60}?|[A-Z][a-z]+(?: [A-Z][a-z]+)?) (?:sends|send|says|passes on|passed on|sent) (?:(?:his|her|their|its|warm|kind|best|fond) )?(?:regards|love|best|best wishes|thanks|apologies|greetings|hellos?|compliments)(?: to you| to you all| to all)?\\s*[:;.!—–]\\s*",
+        34,
+        False,
+    ),
+    (
+        "^(?P<w>[A-Za-z][\\w'-]*(?: [A-Za-z][\\w'-]*)?),\\s*(?:(?:friend|robot|machine|mate|pal|buddy|love|dear|my friend|robots|folks|you),\\s*)?(?:that's|that is|which is|which means|it's|it is|it means)(?: (?:just|basically|how you say))? (?:[A-Z][a-z]+ for|(?:the )?[A-Z][a-z]+ (?:word )?for) (?:'(?:thanks|thank you|cheers|hello|hi|please|sorry|good morning|greetings)'|(?:thanks|thank you|cheers|hello|hi|please|sorry|good morning|greetings))(?:,\\s*(?:more or less|roughly|sort of|kind of))?\\s*[.;:!—–]\\s*",
+        34,
+        False,
+    ),
+    (
+        "^(?P<w>[A-Za-z][\\w'-]*(?: [A-Za-z][\\w'-]*)?),\\s*(?:which|that) (?:is|means|'s) (?:thanks|thank you|thank you very much|cheers|hello|please|sorry)(?: in (?:[A-Z][a-z]+))?(?:,\\s*(?:my|our|his|her|their) (?:first|mother|home|native) (?:language|tongue))?\\s*[.;:!—–]\\s*",
+        34,
+        False,
+    ),
+    (
+        "^(?P<w>[A-Za-z][\\w'-]*)(?:,\\s*(?:friend|robot|machine|mate|pal|buddy|love|dear|my friend|robots|folks|you))?,?\\s*[—–]\\s*(?P<a>[^—–]{1,90}?\\b(?:word|words|language|tongue|thanks|thank you)\\b[^—–]{0,30}?)\\s*[—–]\\s*",
+        34,
+        False,
+    ),
+    (
         "^(?P<w>he|she)(?:'s| is) (?:meant|supposed|due) to (?:have|get|be getting|be having) ",
         2,
         True,
@@ -3340,6 +3531,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         "^(?P<what>the [a-z]+(?: [a-z]+)?)(?:'s| is)(?: not|n't) for (?P<p>[A-Za-z][\\w ]*?)\\s*[,;]\\s*(?:but )?(?:it(?:'s| is) (?P<q1>[A-Za-z][\\w ]*?)'s|(?P<q2>[A-Za-z][\\w ]*?)(?:'s| is) the one (?:who|that) (?:asked(?: for it)?|wants it|needs it|ordered it)|(?P<q3>[A-Za-z][\\w ]*?) (?:wants|needs|asked for|has asked for|'s asked for) it)(?P<end>\\s*(?:[,.;!]|$))",
         2,
         True,
+    ),
+    (
+        "^(?P<who>(?:the|my|our) [a-z]+)(?:'s| is| has) (?P<said>gone|left|arrived|finished|off|here|done)(?: (?:now|home|for the day|already))?,? so\\s+",
+        34,
+        False,
     ),
     (
         "^(?P<who>person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+) (?:says|said)(?: that)? (?:she's|she is|he's|he is|they're|they are) (?P<how>[a-z]+(?: [a-z]+)?),",
@@ -3577,6 +3773,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
+    ("^if you(?:'d| would| could) be so (?:good|kind) as to\\b", 34, False),
     ("^is (?:it )?possible (?:you|to|for you to) (?:just |please )*", 2, True),
     ("^is it (?:okay|ok|alright|all right|fine) if (?:you|the robot|we) (?:just )?", 2, True),
     (
