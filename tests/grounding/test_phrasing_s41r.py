@@ -16,6 +16,7 @@ from hltl.grounding import (
     _rewrites44s,
     _rewrites50l,
     _rewrites52r,
+    _rewrites53s,
     offline,
 )
 from hltl.world.scene import Scene
@@ -393,6 +394,9 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 44 (12r): its rules of the same families read some of these too
             *_rewrites44r._STEPS44R_FIRST,
             *_rewrites44r._STEPS44R,
+            # session 53 (12s; at the merge): 'each and every / every last thing' said
+            # 'everything' reads some of these too
+            _rewrites53s._every_single53s,
             # session 44 (12s): 'last of all' said as 'lastly' reads these too
             _rewrites44s._after_end44s,
             # session 52 (12r): a share-out by a role the people share reads these too

@@ -661,6 +661,8 @@ def _do_for52(text: str, lexicon: Lexicon) -> str:
         return text
     if any(step(text, lexicon) != text for step in _STEPS37):
         return text  # (session 37's: "… before anything else, and the bottle for P after?")
+    if _ids(text[m.end() :], lexicon, "surface"):
+        return text  # 'do the apple on the shelf' is not said to be a placing (s37's near)
     return _cut52(text, 0, m.end(), f"{m['q']}bring", lexicon)
 
 

@@ -854,6 +854,8 @@ def _lost_who53r(text: str, lexicon: Lexicon) -> None:
     m = forgets50l(text)
     if m is None or _WHO_ASKED53R.match(text[m.end() :]) is None or m.start() == 0:
         return
+    if re.search(r"\bother\b", text[: m.start()], _F):
+        return  # a correction to 'the other patient': session 37's refusal names who fits
     people = [h.id for h in lexicon.scene.humans]
     if len(people) < 2:
         return
