@@ -507,7 +507,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites53r:_each_head53r": ("35b543b95513fc71", ((), (":",), False), ()),
-    "hltl.grounding._rewrites53r:_lost_who53r": ("40d3699af20016f3", ((), (" who",), False), ()),
+    "hltl.grounding._rewrites53r:_lost_who53r": ("301d7d838067f794", ((), (" who",), False), ()),
     "hltl.grounding._rewrites53r:_one_of_two53r": (
         "a2e5e42f2528dc03",
         ((), ("one of th",), False),

@@ -12967,7 +12967,7 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites52:_cataphor52": ("12cbe8106c2b64f1", ((), ("he", "she"), False), ()),
     "hltl.grounding._rewrites52:_clearing52": ("164b7f5bc62b73cb", (("ing the ",), (), False), ()),
     "hltl.grounding._rewrites52:_colleague52": ("f80bcd5dc7563330", ((", ",), (), False), ()),
-    "hltl.grounding._rewrites52:_do_for52": ("f54f047b4650b63c", ((" do ",), (), False), ()),
+    "hltl.grounding._rewrites52:_do_for52": ("3af8637b1d2c5d12", ((" do ",), (), False), ()),
     "hltl.grounding._rewrites52:_doing_next52": ("a8290b6c0884aa7b", ((" so ",), (), False), ()),
     "hltl.grounding._rewrites52:_hands_full52": ("60c5b4a7f3ddc6cd", ((" hands ",), (), False), ()),
     "hltl.grounding._rewrites52:_hanging_about52": (
