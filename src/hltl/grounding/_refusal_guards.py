@@ -382,7 +382,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites51:_they51": ("b3ea19fc9f100743", ((), ("they",), False), ()),
     "hltl.grounding._rewrites51:_want_now51": (
-        "d7328c40ee432fe6",
+        "459a07fc60f09665",
         (("this time",), ("now", "today"), False),
         (),
     ),

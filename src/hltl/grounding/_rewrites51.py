@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import NoReturn
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
@@ -845,9 +846,14 @@ def _want_now51(text: str, lexicon: Lexicon) -> None:
         m = _WANT_NOW_NAMED51.search(text)
         if m is None or m["p"] != m["q"] or not _only_person(m["p"], lexicon):
             return
+    earlier_and_new51(m.group(0))
+
+
+def earlier_and_new51(said: str) -> NoReturn:
+    """Refuse ``said``, an earlier want and a new one (also session 53's ``_want_over53l``)."""
     raise GroundingError(
-        f"{m.group(0)!r} says an earlier want and a new one: the new one may replace it or add "
-        "to it; say 'instead' or 'too'"
+        f"{said!r} says an earlier want and a new one: the new one may replace it or add to it; "
+        "say 'instead' or 'too'"
     )
 
 

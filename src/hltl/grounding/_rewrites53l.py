@@ -9,6 +9,7 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _objects_only, _only_person
 from hltl.grounding._rewrites42r import _WHO42R
 from hltl.grounding._rewrites44l import _HELD44L, _OWN44L, beside_request44l
+from hltl.grounding._rewrites51 import earlier_and_new51
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -141,11 +142,7 @@ def _want_over53l(text: str, lexicon: Lexicon) -> None:
     if any(w in low for w in _NOW_WORDS53L):
         m = _WANT_NOW53L.search(text)
         if m is not None:
-            said = m.group(0)
-            raise GroundingError(
-                f"{said!r} says an earlier want and a new one: the new one may replace it or "
-                "add to it; say 'instead' or 'too'"
-            )
+            earlier_and_new51(m.group(0))
     if any(w in low for w in _FIRST_WORDS53L):
         m = _FIRST_THEN53L.search(text)
         if m is not None:
