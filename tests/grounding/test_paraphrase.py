@@ -449,6 +449,98 @@ KNOWN_MISSES = frozenset(
         "Sam's minuting the budget meeting and needs the notepsd for it.",
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
         "Any chance you could run the packing tape over to Mia for the pallets?",
+        # blind52 (tuned on in session 54): refusals left at its one measurement (docs/grounding.md)
+        "Um, if it's not too much bother, the bottle up on the shelf would be grand.",
+        "Kop khun ka, the chips are for Person A, could you hand them over?",
+        "Person B's got his heart set on the apple, and the bottle would suit Person A nicely.",
+        "What Person A's after is the chips, so over they go.",
+        "Person A has a craving for chips, the poor thing.",
+        "Omar needs the sponge to wipe down the bench, and Emma needs a spoon.",
+        "Kofi reckons he'll need the power drill to put up the shelving in the office.",
+        "Bob's loitering by the door with nothing to snack on; take him the apple, and Carol can "
+        "have the cup while you're at it.",
+        "Person A's got nothing to drink; pass her the bottle and him the chips.",
+        "Her bottle, Person A's. Fetch it for her please.",
+        "The apprentice has the screws job; pass the tin to Jess.",
+        "Bottle up top on the shelf. Then the crisps go Alice's way. Lovely.",
+        "Person A's thirsty the bottle's hers and Person B's hungry give him the apple",
+        "Person A put her hand up first, so the apple goes her way, and once she's sorted the "
+        "bottle heads to Person B.",
+        "The bottle Person A wants it now she's back from her ice bath",
+        "Green cup: sink. White cup: Dana's. Spoon: Omar, he's stirring something.",
+        "Small box onto the pallet medium box onto the belt leave the big box where it is it's "
+        "fine",
+        "Noah's the one for the ruler and Zoe for the scissors, plus the red book wants putting "
+        "on the desk.",
+        "Ava's changing Lily. So wipes to Ava first. Then once she's got them, bib on the high "
+        "chair.",
+        "Carol says either mug will do her, red or blue, she's not fussed.",
+        "Bob's off on a long drive, so both the bottle and the crisps go in his direction.",
+        "One thing apiece: the bottle's Bob's to have and the crisps are for Alice.",
+        "Each of them is owed something: Person A the bottle, Person B the apple, fair's fair.",
+        "There's just the one bottle going, so Person A gets that, no fuss.",
+        "However you fancy doing it, the bottle needs to end up with Person A.",
+        "Either person can have the chips, Person A or Person B, you choose.",
+        "The bowl to Dana or to Omar, whoever's nearer to you at the time.",
+        "Mrs Khan won't mind which blanket she gets, so take her whichever's closest.",
+        "The small box and the medium one, the pair of them, stacked on the pallet with the big "
+        "one.",
+        "Mr Novak isn't fussy about plates, white or blue, either's fine by him.",
+        "Mrs Ortiz is marking at her desk and wants both the books, red and green, brought to her.",
+        "Both of the blocks onto the high chair, please, Lily likes to bang them together at "
+        "lunch.",
+        "The bottle and the crisps, the pair, up onto the shelf out of the dog's reach.",
+        "Every last one of the four things, Person B's having the lot for his picnic.",
+        "Only one thing wanted by Person B today, and that's the chips.",
+        "Both items go to Person B, bottle and chips alike, for the match.",
+        "The bottle's for Person A; mind, there's only the one, so don't go looking for more.",
+        "A single bottle is all Person A's asking for, nothing on top.",
+        "That lone bottle there, Person A has asked for it.",
+        "Every box we've got, all three, onto the belt for the last run.",
+        "Both spanners, big and small, are wanted by Kofi.",
+        "Alice doesn't want the red mug, she's funny about it; the blue one's the one to take her.",
+        "Bob's after the crisps, but leave the bottle, he's got his own.",
+        "Person A wants anything except the apple, so give her the cup.",
+        "No chips for Person B, he's gone for the apple instead.",
+        "Person B's not having the cup today, hand him the apple instead.",
+        "No point hanging about, Person A's bottle to her now.",
+        "Person A wants the bottle and nothing else, nothing at all.",
+        "It isn't Person A that gets the chips, it's Person B.",
+        "The green cup stays put; it's the white one that wants to go in the sink.",
+        "Leave the jug, Mr Lee's got water; it's his tablets he's after.",
+        "None of the books for Noah, just the ruler.",
+        "The drill can stay, it's the hammer Jess is needing.",
+        "Pass the apple to Carol, ah no, hang fire, Alice is the one who wanted it.",
+        "Bottle for Person B, scrub that, make it the apple for him.",
+        "The bottle to Person A, no hang on, I've got them mixed up, Person B's the thirsty one.",
+        "Bottle to Person A, I mean, yes, to her, sorry, I'm rambling.",
+        "Take the bottle to Person B, or no, wrong thing, it was chips he fancied.",
+        "Spoon over to Emma, whoops, Omar, I mean, Omar's stirring.",
+        "Stapler in the box, oh wait, better on the desk where Priya can reach it.",
+        "Tape for Mia, ah, not her, Tom's the one taping up.",
+        "Marco wants the salt, hang on, no, he said lemon, take him that.",
+        "Globe across to Zoe, wait, got that wrong, Noah's doing the geography.",
+        "the red mug for carol and the blue one for bob since hes on the decaf",
+        "crisps want to go up on the shelf where the dog cant get them",
+        "person b is first in line for the cup and after hes had it the apple can go to person a",
+        "person a keeps looking at the chips so shes having them",
+        "bottle for person a please she has dabke tonight and forgot to drink",
+        "person a asked for the bottle a minute ago can you bring it",
+        "poor mrs khan is shivering under one sheet so pass her the blue blanket",
+        "jess says the small spanners the one she needs",
+        "Alice's been on about the crizps all afternoon, let her have them.",
+        "Pergon B says he'd quite like the chips now, if there's no rush elsewhere.",
+        "Someone left the spojge soaking on the side, into the sink with it.",
+        "Priya's stuck stapling by hand, take her the stzpler.",
+        "Mia needs the Scahner for stock-take, over to her please.",
+        "Would you be a dear and put the bottle up on the shelf before it gets knocked?",
+        "Can Person B have the apple, he's starving after shot put?",
+        "What about the cup going to Person A, she's the only one without a drink?",
+        "Would you mind running the bottle over to Person B while he's on his break?",
+        "Any chance you could drop the chips off with Person A as you go by?",
+        "Is it possible Person A could get her bottle off you now?",
+        "Could you bring the bottle to Person A, she's on the phone and can't get up?",
+        "Could the teddy go down on the play mat for story time?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -490,6 +582,11 @@ KNOWN_UNCLEAR = frozenset(
         # blind50 (tuned on in session 52)
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
         # blind51 (tuned on in session 53)
+        # blind52 (tuned on in session 54)
+        "Priya needs one of the pens for signing, the black or the red, she did tell me but I've "
+        "forgotten.",
+        "Kofi wants a spanner. Which one, he did say. Lost it, sorry.",
+        "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -596,9 +693,10 @@ KNOWN_UNCLEAR = frozenset(
 # asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind51" written in session 52 by
 # another engineer and committed alone, measured once at the end of session 52 (0 wrong), tuned on
 # in session 53: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind52" written in
-# session 53 by another engineer and committed alone, measured once at the end of session 53, not
-# asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind52"})
+# session 53 by another engineer and committed alone, measured once at the end of session 53 (1
+# wrong, refused since session 54), tuned on in session 54: asserted now, the rest in KNOWN_MISSES
+# and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

@@ -159,7 +159,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by the engineers who change the grounder before its one measurement at the end of session 52;
 # tuned on in session 53), blind52 (written in session 53 by another engineer and committed alone,
 # never opened by the engineers who change the grounder before its one measurement at the end of
-# session 53; to be tuned on in session 54).
+# session 53; tuned on in session 54).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
