@@ -570,6 +570,9 @@ from hltl.grounding._rewrites52s import _STEPS52S, _STEPS52S_FIRST
 from hltl.grounding._rewrites53 import _STEPS53, _STEPS53_FIRST
 from hltl.grounding._rewrites53r import _STEPS53R, _STEPS53R_FIRST
 from hltl.grounding._rewrites53s import _STEPS53S, _STEPS53S_FIRST
+from hltl.grounding._rewrites54 import _STEPS54, _STEPS54_FIRST
+from hltl.grounding._rewrites54r import _STEPS54R, _STEPS54R_FIRST
+from hltl.grounding._rewrites54s import _STEPS54S, _STEPS54S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -901,6 +904,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS54S_FIRST,
+    *_STEPS54R_FIRST,
+    *_STEPS54_FIRST,
     *_STEPS53S_FIRST,
     *_STEPS53R_FIRST,
     *_STEPS53_FIRST,
@@ -960,6 +966,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS54R,
     *_STEPS53R,
     *_STEPS52R,
     *_STEPS51R,
@@ -1007,6 +1014,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS54S,
     *_STEPS53S,
     *_STEPS52S,
     *_STEPS51S,
@@ -1101,6 +1109,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS54,
     *_STEPS53,
     *_STEPS52,
     *_STEPS51,

@@ -65,6 +65,10 @@ from hltl.grounding import (
     _rewrites53l,
     _rewrites53r,
     _rewrites53s,
+    _rewrites54,
+    _rewrites54l,
+    _rewrites54r,
+    _rewrites54s,
     refusalguard,
 )
 from hltl.grounding._normalise1 import _ids, _only
@@ -177,6 +181,10 @@ _REFUSALS = (
     *_rewrites53.REFUSE53,
     *_rewrites53r.REFUSE53R,
     *_rewrites53s.REFUSE53S,
+    *_rewrites54l.REFUSE54L,
+    *_rewrites54.REFUSE54,
+    *_rewrites54r.REFUSE54R,
+    *_rewrites54s.REFUSE54S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -228,6 +236,10 @@ _CHECKS = (
     *_rewrites53.CHECK53,
     *_rewrites53r.CHECK53R,
     *_rewrites53s.CHECK53S,
+    *_rewrites54l.CHECK54L,
+    *_rewrites54.CHECK54,
+    *_rewrites54r.CHECK54R,
+    *_rewrites54s.CHECK54S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
