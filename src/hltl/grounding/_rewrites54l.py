@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person
 from hltl.grounding._rewrites42r import _WHO42R
 from hltl.grounding._rewrites44l import beside_request44l
 from hltl.grounding._rewrites53l import _PAST53L, _THEN_THING53L, want_changed53l
@@ -96,7 +96,47 @@ def _want_over54l(text: str, lexicon: Lexicon) -> None:
     want_changed53l(m.group(0).lstrip(".;!? "))
 
 
+# -- a holding corrected ---------------------------------------------------------------------
+#
+# 12r's session-54 find: "Bob has the cup. No, the apple." read `apple>B` (and "Bob's got the cup.
+# Sorry, the apple.", "Alice has the cup. Sorry, I mean Bob." `cup>B`), where "Bob has the apple."
+# alone is refused (session 32: it could say what Bob holds, or allot it). The correction is
+# applied to the holding ('the cup' → 'the apple', or 'Alice' → 'Bob') and the sentence it makes is
+# asked the refusals it would be asked alone; a correction of a request ("Give Bob the cup. No,
+# the apple.") makes a request, which none of them refuses.
+_HELD_FIXED54L = re.compiled(
+    rf"^\s*(?P<who>{_WHO42R})\s*(?P<verb>'s got|’s got|\s*has got|\s*has)\s+"
+    r"(?P<x>(?:the|his|her|their) [a-z]+(?: [a-z]+)?)\s*[.,;!]\s*"
+    r"(?:(?:no|sorry|oops|wait|actually|hang on|my mistake|my bad)\s*[,.!]?\s*)+"
+    r"(?:i mean\s*,?\s*|rather\s*,?\s*)?(?P<y>[^.,;!?]+?)"
+    r"(?:\s+(?:does|has(?: it| them)?|(?:'s|’s|\s*has) got (?:it|them)))?\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _held_corrected54l(text: str, lexicon: Lexicon) -> None:
+    """Session 54 (lead): "Bob has the cup. No, the apple." — a holding corrected — asked the
+    refusals the corrected holding ("Bob has the apple.") is asked alone."""
+    if "has" not in text and "got" not in text:
+        return
+    m = _HELD_FIXED54L.match(text)
+    if m is None:
+        return
+    verb = " ".join(m["verb"].replace("’", "'").split())
+    joined = "" if verb.startswith("'") else " "
+    if _only_person(m["y"], lexicon):
+        fixed = f"{m['y']}{joined}{verb} {m['x']}."
+    elif _objects_only(m["y"], lexicon) and not _ids(m["y"], lexicon, "human"):
+        fixed = f"{m['who']}{joined}{verb} {m['y']}."
+    else:
+        return
+    # why: offline imports this module; its refusals are asked of the corrected holding
+    from hltl.grounding import offline
+
+    offline.asked_before_read(fixed, lexicon)
+
+
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
-REFUSE54L: tuple[Callable[[str, Lexicon], None], ...] = (_want_over54l,)
+REFUSE54L: tuple[Callable[[str, Lexicon], None], ...] = (_want_over54l, _held_corrected54l)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
 CHECK54L: tuple[Callable[[str, Node, Lexicon], None], ...] = (_held_and_more54l,)
