@@ -89,6 +89,37 @@ def test_holding_corrected_read_without_the_rule(monkeypatch: pytest.MonkeyPatch
         assert parse_instruction(text, scene) is not None, text
 
 
+# -- what a person had, read as a hand-over (12r's finds: "That cup there, Bob had it." read
+# cup>B)
+
+HAD = [
+    ("That cup there, Bob had it.", CELL),
+    ("The apple, Bob had it.", CELL),
+    ("Tom had every box, all three.", DEPOT),
+    ("Bob had the cup and the apple alike.", CELL),
+    ("Bob had both mugs, the red and the blue.", CELL),
+    ("Marco had every plate, both of them.", KITCHEN),
+    ("That lemon, Marco had it.", KITCHEN),
+    ("Mrs Khan had the jug and the magazine alike.", WARD),
+    ("Kofi had all the spanners, both.", WORKSHOP),
+    ("Those books, Zoe had them.", CLASSROOM),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HAD)
+def test_what_a_person_had_refused(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError, match=r"says what .* had: it asks for nothing"):
+        parse_instruction(text, scene)
+
+
+def test_what_a_person_had_read_without_the_check(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The check is what refuses them: without it each was read as a hand-over."""
+    rule = _rewrites54l._had_given54l
+    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c is not rule))
+    for text, scene in HAD:
+        assert parse_instruction(text, scene) is not None, text
+
+
 @pytest.mark.parametrize(("text", "scene"), HELD_MORE)
 def test_holding_beside_more_for_the_same_person_refused(text: str, scene: Scene) -> None:
     with pytest.raises(GroundingError, match=r"beside a request could say what .* already holds"):
@@ -143,6 +174,9 @@ def test_want_over_read_without_the_rule(monkeypatch: pytest.MonkeyPatch) -> Non
             CELL,
             "apple>B & chips>A & cup>C",
         ),
+        # no thing after 'had', or what the person had beside a request (sessions 32, 53)
+        ("Bob had to have the cup.", CELL, "cup>B"),
+        ("Bob had a cold, so give him the apple.", CELL, "apple>B"),
         # a correction of a request, or of a want, is read as before
         ("Give Bob the cup. No, the apple.", CELL, "apple>B"),
         ("Bob wants the cup. No, the apple.", CELL, "apple>B"),

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person
 from hltl.grounding._rewrites42r import _WHO42R
@@ -56,6 +57,51 @@ def _held_and_more54l(text: str, node: Node, lexicon: Lexicon) -> None:
         if held <= got and got - held:
             said = text[m.start("who") : m.end("x")].strip()
             beside_request44l(said, who, " ".join(m["x"].split()))
+
+
+# -- what a person had, read as a hand-over -----------------------------------------------------
+#
+# 12r's session-54 finds: "That cup there, Bob had it." read `cup>B`, "Tom had every box, all
+# three." all three boxes to Tom, "Bob had the cup and the apple alike." `cup>B & apple>B`, where
+# "Bob had the cup." and "Bob had the cup and the apple." are refused (session 32: what a person
+# had asks for nothing). Said with a word more the sentence slipped past the refusal's forms, so
+# this is asked of the reading: a reading that hands a person (named) what the words say the
+# person had ('P had the X', 'P had every / all / both …', 'P had it / them'), and nothing said
+# to hand it back, is refused. Kept: "Bob had the cup; give it back to him." (back, again,
+# return), "Bob had to have the cup." / "had better" / "had asked for" (no thing after 'had'),
+# what another person had ("Bob had the cup, give Alice the apple.").
+_HAD54L = re.compiled(
+    rf"(?:^|[.;,:!?]\s*|\b(?:and|but|so)\s+)(?P<who>{_WHO42R})\s+(?:already\s+|just\s+)?had\s+"
+    r"(?:already\s+)?(?P<x>(?:the|every|all|both|each|his|her|their|those|these)\b[^.;:!?]*?|"
+    r"(?:it|them)\b)(?=\s*(?:[.;:!?]|$|,|\b(?:and|but|so|then)\s+(?!(?:the|a|an)\b)))",
+    _F,
+)
+_BACK54L = ("back", "again", "return")
+
+
+def _had_given54l(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 54 (lead): "That cup there, Bob had it." — a reading that hands a person what the
+    words say the person had — refused."""
+    if "had" not in text:
+        return
+    low = text.lower()
+    if any(w in low for w in _BACK54L):
+        return
+    for m in _HAD54L.finditer(text):
+        who = m["who"]
+        if not _only_person(who, lexicon):
+            continue
+        person = next(iter(_ids(who, lexicon)))
+        got = {t.obj for t in tasks(node) if t.kind == "deliver" and t.target == person}
+        x = " ".join(m["x"].split())
+        held = got if x.lower() in ("it", "them") else _ids(x, lexicon, "object")
+        if not held or _ids(x, lexicon, "human") or not held <= got:
+            continue
+        said = text[m.start("who") : m.end("x")].strip()
+        raise GroundingError(
+            f"{said!r} says what {who} had: it asks for nothing; say 'give {who} …' to have "
+            "something handed over"
+        )
 
 
 # -- a want said over by a later one, the later said in full ---------------------------------
@@ -139,4 +185,7 @@ def _held_corrected54l(text: str, lexicon: Lexicon) -> None:
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
 REFUSE54L: tuple[Callable[[str, Lexicon], None], ...] = (_want_over54l, _held_corrected54l)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
-CHECK54L: tuple[Callable[[str, Node, Lexicon], None], ...] = (_held_and_more54l,)
+CHECK54L: tuple[Callable[[str, Node, Lexicon], None], ...] = (
+    _held_and_more54l,
+    _had_given54l,
+)
