@@ -50,6 +50,8 @@ OVER_FULL = [
     ("First Bob wanted the apple and then he wanted the crisps.", CELL),
     ("First Bob wanted the apple. Then the crisps.", CELL),
     ("First Bob wanted the apple, then Bob wanted the crisps.", CELL),
+    ("Bob first wanted the apple, then he wanted the crisps.", CELL),
+    ("Marco originally asked for the lemon, and then the salt.", KITCHEN),
     ("First Marco wanted the lemon, then he asked for the salt.", KITCHEN),
     ("Originally Mr Lee wanted the jug, and then he wanted the magazine.", WARD),
     ("At first Jess needed the hammer. Then the drill.", WORKSHOP),

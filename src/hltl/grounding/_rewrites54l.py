@@ -110,11 +110,13 @@ def _had_given54l(text: str, node: Node, lexicon: Lexicon) -> None:
 # the crisps." (the later want said short); said in full ("…, then he wanted the crisps.", "… and
 # then he wanted the crisps.") or after a full stop ("First Bob wanted the apple. Then the
 # crisps.") it read `apple>B ; chips>B`: the same story of a want that changed, refused alike.
-# Kept: "Kofi asked for the big spanner, then the hammer." (no 'first'), "Bob wanted the apple
+# Said with 'first' after the name ("Bob first wanted the apple, then he wanted the crisps.") the
+# same. Kept: "Kofi asked for the big spanner, then the hammer." (no 'first'), "Bob wanted the apple
 # first, then the crisps." (the order of two wants), a second want by another person.
 _FIRST_THEN54L = re.compiled(
-    r"(?:^|[.;!?]\s*)(?:first(?:ly)?|at first|originally|initially|to begin with|to start with|"
-    rf"in the beginning)\s*,?\s+(?P<who>{_WHO42R})\s+{_PAST53L}\s+[^.;!?]*?"
+    r"(?:^|[.;!?]\s*)(?:(?:first(?:ly)?|at first|originally|initially|to begin with|to start with|"
+    rf"in the beginning)\s*,?\s+(?P<who>{_WHO42R})|(?P<who_b>{_WHO42R})\s+(?:first|at first|"
+    rf"originally|initially))\s+{_PAST53L}\s+[^.;!?]*?"
     r"(?:[,;]\s*(?:and\s+|but\s+)?|\s+(?:and|but)\s+|[.!]\s+)(?:then|later|after that|afterwards)"
     rf"\s*,?\s+(?:(?P<again>he|she|they|[a-z]+(?: [a-z]+)?)\s+{_PAST53L}\s+)?{_THEN_THING53L}",
     _F,
@@ -136,7 +138,7 @@ def _want_over54l(text: str, lexicon: Lexicon) -> None:
     if (
         again is not None
         and again.lower() not in _PRONOUNS54L
-        and _ids(again, lexicon, "human") != _ids(m["who"], lexicon, "human")
+        and _ids(again, lexicon, "human") != _ids(m["who"] or m["who_b"], lexicon, "human")
     ):
         return  # a second want by another person
     want_changed53l(m.group(0).lstrip(".;!? "))
