@@ -144,7 +144,12 @@ def _read_without(
 ) -> int:
     """How many of ``cases`` read with ``rule`` out of the refusals (none refused as ``said``);
     session 54's rules of the same families (the lead's) are taken out too."""
-    same = (rule, _rewrites54l._want_over54l, _rewrites54l._held_and_more54l)
+    same = (
+        rule,
+        _rewrites54l._want_over54l,
+        _rewrites54l._held_and_more54l,
+        _rewrites54l._had_given54l,
+    )
     mp.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in same))
     mp.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in same))
     read = 0
