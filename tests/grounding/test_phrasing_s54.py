@@ -102,3 +102,11 @@ def test_had_why_refused(text: str, scene: Scene) -> None:
 def test_had_why_near_read(text: str, want: str) -> None:
     assert_reads(text, want, CELL)
     _rewrites54._had_why54(text, Lexicon.of(CELL))
+
+
+def test_had_why_leaves_a_want() -> None:
+    # 'had his eye on X since …' is a want (session 45 reads it), not a holding
+    _rewrites54._had_why54(
+        "Kofi's had his eye on the screws since the auction.", Lexicon.of(WORKSHOP)
+    )
+    _rewrites54._had_why54("Carol has had her eye on the red mug ever since.", Lexicon.of(CELL))

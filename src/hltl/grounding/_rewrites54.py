@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _only_person
+from hltl.grounding._normalise1 import _F, _names, _only_person
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -47,6 +47,47 @@ def _days_ago54(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# the words beside the names of things in a list of them ('the apple and his crisps')
+_LIST_WORDS54 = frozenset(
+    (
+        "the",
+        "a",
+        "an",
+        "his",
+        "her",
+        "their",
+        "its",
+        "my",
+        "our",
+        "your",
+        "some",
+        "and",
+        "both",
+        "two",
+        "three",
+        "those",
+        "these",
+        "that",
+        "this",
+        "one",
+        "of",
+        ",",
+    )
+)
+
+
+def _things_only54(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` names objects of the scene and says nothing else ('the apple and the
+    crisps', 'a mug'; not 'her eye on the red mug')."""
+    names = _names(words, lexicon)
+    if not names or any(r.kind != "object" for it in names for r in it.refs):
+        return False
+    rest = words.lower()
+    for it in names:
+        rest = rest.replace(it.text.lower(), " ", 1)
+    return all(w in _LIST_WORDS54 for w in rest.replace(",", " , ").split())
+
+
 # -- a past holding with a reason or time after it ("Bob had the apple since his match ended.",
 # "Lena had the tongs because she was cooking.", "Bob got the apple because he was hungry.", "Bob
 # had the apple first."): the grammar read the clause as a handover (apple>B), while "Bob had the
@@ -81,8 +122,7 @@ def _had_why54(text: str, lexicon: Lexicon) -> None:
     if ("had " not in low and "got " not in low) or not any(w in low for w in _WHY54):
         return
     for m in _HAD_WHY54.finditer(text):
-        objects = _ids(m["x"], lexicon, "object")
-        if not objects or objects != _ids(m["x"], lexicon) or not _only_person(m["p"], lexicon):
+        if not _things_only54(m["x"], lexicon) or not _only_person(m["p"], lexicon):
             continue
         raise GroundingError(
             f"{m['said']!r} says what {m['p']} had: it asks for nothing; say 'give {m['p']} "
