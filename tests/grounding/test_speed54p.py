@@ -6,13 +6,19 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from collections.abc import Callable
+from functools import cache
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from hltl.grounding import _normalise4, gate
+from hltl.bench.grounding import CORPUS_DIR, load_corpus
+from hltl.errors import GroundingError
+from hltl.grounding import _normalise2, _normalise4, gate, offline
 from hltl.grounding.lexicon import Lexicon
 from hltl.world.scene import Scene
-from tests.grounding.helpers import ROOT, SCENES
+from tests.grounding.helpers import CELL, OFFICE, ROOT, SCENES, WORKSHOP, assert_refused
 
 _PRINT_ALTS = (
     "from hltl.grounding._normalise4 import _person_alt35t\n"
@@ -76,3 +82,150 @@ def test_some_scene_has_names_of_one_length() -> None:
         sorted(a[::-1], key=lambda n: -len(_plain(n))) != a
         for a in (_normalise4._person_alt35t(Lexicon.of(s)).split("|") for s in SCENES)
     )
+
+
+# -- the raw pattern calls made cheaper (session 54, 12p) ------------------------------------
+
+_COURTESIES = sorted(gate.spelt(_normalise2._COURTESY24, _normalise2._F) or ())
+
+
+def test_the_courtesies_are_spelt_out() -> None:
+    """Not vacuous: the list the stretch test is checked over."""
+    assert len(_COURTESIES) > 200
+
+
+def _stretch_as_it_was(said: str) -> bool:
+    return _normalise2._COURTESY_STRETCH24.fullmatch(said) is not None
+
+
+@pytest.mark.parametrize("courtesy", _COURTESIES)
+def test_a_courtesy_stretch_is_found_as_before(courtesy: str) -> None:
+    for said in (
+        courtesy,
+        courtesy.upper(),
+        courtesy.title(),
+        f"and {courtesy}",
+        f"And  {courtesy} my friend",
+        f"{courtesy} in advance",
+        f"{courtesy} {courtesy}",
+        f"{courtesy}s",
+        f"{courtesy} the cup",
+        f"x{courtesy}",
+        f"{courtesy[:-1]}",
+        f" {courtesy}",
+        f"{courtesy}, friend",
+    ):
+        assert _normalise2._courtesy_stretch24(said) == _stretch_as_it_was(said), said
+
+
+_PIECES = st.sampled_from(
+    [*_COURTESIES[::7], "and", "And", "the", "cup", "Bob", "friend", "sir", "in advance", "a"]
+) | st.sampled_from([" ", "  ", ",", ".", "!", "'", "-", "\t", "é", "ß", "ſ", "K", "1", "_"])
+
+
+@settings(max_examples=1500, deadline=None)
+@given(st.lists(_PIECES, max_size=6).map("".join))
+def test_the_stretch_test_answers_as_the_pattern(said: str) -> None:
+    assert _normalise2._courtesy_stretch24(said) == _stretch_as_it_was(said)
+
+
+def _translated_as_it_was(text: str, lexicon: Lexicon) -> str:
+    """_translated25 of session 53 (every pattern asked raw)."""
+    n2 = _normalise2
+    if n2._PLEASE25.search(text):
+        text = n2._PLEASE25.sub(lambda m: m[0] if n2._names(m[0], lexicon) else "please", text)
+    if n2._SORRY25.search(text):
+        text = n2._SORRY25.sub("sorry", text)
+    if n2._PATOIS_WORD25.search(text):
+        text = n2._PATOIS_WORD25.sub(lambda m: n2._PATOIS25.get(m[0].lower(), ""), text)
+    if not n2._HONORIFIC25.search(text):
+        return text
+    return n2._HONORIFIC25.sub(
+        lambda m: "" if n2._person_at(m.string[m.end() :], lexicon) else m[0], text
+    )
+
+
+# sentences _translated25 or _courtesy24 rewrite (their sessions' tests)
+_REWRITTEN = (
+    "Permisi, tolong the bottle for Person A",
+    "Bitte, the apple to Bob.",
+    "The cup to Alice, por favor.",
+    "…, ah no, bebakhshid, the apple",
+    "Not di bottle, jus di crisps fi Bob",
+    "Stapler to Bu Priya, then the notepad to Mas Sam",
+    "S'il vous plaît, the crisps to Alice.",
+    "Maaf, the chips to Person B.",
+    "Sawasdee krap. The apple to Bob.",
+    "The cup to Alice, asante.",
+    "Habari, the crisps to Bob.",
+    "Diakuiu, thank you very much. The apple to Alice.",
+    "Eskerrik asko in advance: the cup to Bob.",
+    "Give Bob the apple, as we say, asante sana.",
+)
+
+
+@cache
+def _sentences() -> tuple[tuple[str, Scene], ...]:
+    out: list[tuple[str, Scene]] = []
+    for part in ("tuning", "blind22", "blind52", "causes15"):
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        out += [(e.text, corpus.scenes[e.scene]) for e in corpus.entries[::2]]
+    for scene in (CELL, WORKSHOP, OFFICE):
+        out += [(t, scene) for t in _REWRITTEN]
+    return tuple(out)
+
+
+def _answer(step: Callable[[str, Lexicon], str], text: str, scene: Scene) -> str:
+    try:
+        return step(text, Lexicon.of(scene))
+    except GroundingError as refused:
+        return f"refused: {refused}"
+
+
+@pytest.mark.parametrize(
+    "step",
+    [_normalise2._translated25, _normalise2._courtesy24, _normalise2._as_used_to34],
+    ids=lambda s: s.__name__,
+)
+def test_the_step_answers_as_without_the_gate(
+    step: Callable[[str, Lexicon], str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    gated = [_answer(step, t, s) for t, s in _sentences()]
+    monkeypatch.setattr(gate, "may_match", lambda pattern, flags, text: True)  # every call raw
+    monkeypatch.setattr(_normalise2, "_BY_FIRST24", None)  # the stretch asked at once
+    raw = [_answer(step, t, s) for t, s in _sentences()]
+    assert gated == raw
+
+
+def test_translated25_answers_as_it_did() -> None:
+    for text, scene in _sentences():
+        want = _answer(_translated_as_it_was, text, scene)
+        assert _answer(_normalise2._translated25, text, scene) == want, text
+
+
+def test_the_steps_rewrite_some_sentences() -> None:
+    """Not vacuous: the sentences above are rewritten by the steps asked."""
+    changed = {
+        step.__name__
+        for step in (_normalise2._translated25, _normalise2._courtesy24)
+        for text, scene in _sentences()
+        if _answer(step, text, scene) != text
+    }
+    assert changed == {"_translated25", "_courtesy24"}
+
+
+def test_the_doubts_are_counted_as_before() -> None:
+    """offline._parse counts the speaker's doubts through the gate."""
+    texts = [t for t, _ in _sentences()] + [
+        "I'm not sure, morning! Would you mind passing Bob the crisps?",
+        "The cup to Alice, no, Bob. Ugh, I don't know. Good robot.",
+        "I DUNNO, the apple to Bob, no idea why, I forgot, lost track.",
+        "Before I forget, the apple to Bob; I can't recall his name, I can't decide.",
+    ]
+    counts = [len(offline._DOUBT.findall(t)) for t in texts]
+    assert [len(gate.findall(offline._DOUBT, t)) for t in texts] == counts
+    assert sum(counts) >= 8  # not vacuous
+
+
+def test_a_rewrite_that_drops_a_doubt_is_still_not_read() -> None:
+    assert_refused("I'm not sure, morning! Would you mind passing Bob the crisps?")
