@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from hltl.bench.grounding import CORPUS_DIR, load_corpus
 from hltl.errors import GroundingError
-from hltl.grounding import _normalise2, _normalise4, gate, offline
+from hltl.grounding import _normalise2, _normalise4, gate, offline, stepguard
 from hltl.grounding.lexicon import Lexicon
 from hltl.world.scene import Scene
 from tests.grounding.helpers import CELL, OFFICE, ROOT, SCENES, WORKSHOP, assert_refused
@@ -229,3 +229,51 @@ def test_the_doubts_are_counted_as_before() -> None:
 
 def test_a_rewrite_that_drops_a_doubt_is_still_not_read() -> None:
     assert_refused("I'm not sure, morning! Would you mind passing Bob the crisps?")
+
+
+# -- stepguard reads re's functions called with a module's compiled pattern (session 54) -----
+
+_TOY = gate.compile(r"\bkindly\b", gate.IGNORECASE)
+
+
+def _toy_search(text: str, lexicon: Lexicon) -> str:
+    if gate.search(_TOY, text):
+        return text + "!"
+    return text
+
+
+def _toy_sub(text: str, lexicon: Lexicon) -> str:
+    return gate.sub(_TOY, "please", text)
+
+
+def _toy_flags(text: str, lexicon: Lexicon) -> str:
+    if gate.search(_TOY, text, gate.IGNORECASE):  # flags beside a compiled pattern: not read
+        return text + "!"
+    return text
+
+
+@pytest.mark.parametrize(
+    ("step", "want"),
+    [
+        (_toy_search, ((), ("kindly",), True)),
+        (_toy_sub, ((), ("kindly",), True)),
+        (_toy_flags, None),
+    ],
+)
+def test_a_compiled_pattern_asked_through_re_is_read(
+    step: Callable[[str, Lexicon], str], want: stepguard.Guard | None
+) -> None:
+    entry = stepguard.read_guard(step)
+    assert (entry and entry[1]) == want
+    if entry is not None:
+        assert stepguard.guard(step, entry) == want
+        for text in ("Kindly give Alice the cup", "give Bob the cup", "unkindly"):
+            if not stepguard.may_act(entry[1], text, text.lower(), text.isascii()):
+                assert step(text, Lexicon.of(CELL)) == text
+
+
+def test_translated25_keeps_a_guard_of_its_four_lists() -> None:
+    entry = stepguard.read_guard(_normalise2._translated25)
+    assert entry is not None
+    said, low, _ = entry[1]
+    assert {"tolong", "bitte", "maaf", "tafadhali"} <= set(low) and "u" in said
