@@ -69,6 +69,7 @@ from hltl.grounding import (
     _rewrites54l,
     _rewrites54r,
     _rewrites54s,
+    gate,
     refusalguard,
 )
 from hltl.grounding._normalise1 import _ids, _only
@@ -825,7 +826,8 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
         tried = {said}
         # what the session-24 guards compare each rewrite with (the speaker's doubts, clauses
         # ending on 'is' after an object): the instruction's own, counted once
-        doubts, stubs = len(_DOUBT.findall(text)), _stubs(text, lexicon)
+        # (the gate's findall: [] where no doubt word is in the text, session 54, 12p)
+        doubts, stubs = len(gate.findall(_DOUBT, text)), _stubs(text, lexicon)
         # the session-19 rewrites alone (by word kind: cheap, and most of what a new speaker
         # wraps a request in), then those of every earlier session, then both (every corpus
         # entry reads as it did with the earlier ones first: docs/grounding.md, "Session 19")
@@ -834,7 +836,7 @@ def _parse(text: str, scene: Scene, lexicon: Lexicon, *, normalise: bool) -> Nod
             if plain in tried:
                 continue
             tried.add(plain)
-            if len(_DOUBT.findall(plain)) < doubts:
+            if doubts and len(gate.findall(_DOUBT, plain)) < doubts:
                 # "I'm not sure, morning! Would you mind passing Bob the crisps?", "… No, Tom.
                 # Ugh, I don't know. Good robot.": the speaker says they are unsure; a rewrite
                 # that takes that off would act on what they doubt (session 24: 12c's fuzz)
