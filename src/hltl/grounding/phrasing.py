@@ -1955,10 +1955,17 @@ def _settled48r(items: list[Item]) -> list[Item]:
         e = z + 1
         while e < len(items) and _is(items[e], ",", "filler"):
             e += 1  # "…, so Alice, please."
+        start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
         if e < len(items) and not (items[e].kind == "punct" and items[e].lemma in _END):
+            if _or_chain48r(items, start, k) is not None:
+                # session 54 (12s): "…, or, hmm, Marco, so Marco, not the knife." / "…, so Alice,
+                # then the cup on the shelf." had read the settled name as one more choice
+                raise GroundingError(
+                    f"'so {items[z].text}' after a choice, with more said after it, could settle "
+                    "it or be one more choice: say the whole request again"
+                )
             k += 1
             continue
-        start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
         said = _or_chain48r(items, start, k)
         if said is None:
             if any(_is(items[n], "or") for n in range(start, k)):
