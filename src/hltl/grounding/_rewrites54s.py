@@ -6,8 +6,11 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _names
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
+from hltl.grounding._rewrites44r import _read_without44r
+from hltl.grounding._rewrites51s import _plain51s
+from hltl.grounding._rewrites53s import _WHO53S, _X53S, _not_who53s
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, Task, tasks
 
 # -- session 54 (12s): a thing set against another, moved where the other goes ----------------
@@ -71,10 +74,125 @@ def _not_where54s(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
+# -- session 54 (12s): 'it isn't P that gets the X, it's Q' ----------------------------------
+#
+# "It isn't Person A that gets the chips, it's Person B." (blind52 #131): session 53's
+# `_not_who53s` reads "It isn't P who's having / getting the X, it's Q" and "P's not the one the
+# X is for, it's Q" (each said "The X isn't for P, it's for Q"); said with 'that' or 'who' and a
+# present 'gets' / 'is getting' / 'should get' / 'is to have' …, or "It isn't P that / who the X
+# is for", it is said in that rule's words and read by it (with all it asks: one person each,
+# a thing of the scene, nothing after Q but the handover said again; nothing that says a
+# holding or a doing).
+_NOT_THAT54S = re.compiled(
+    rf"^it(?: isn't|'s not| is not) (?P<p>{_WHO53S}) (?:that|who)(?:(?:(?:'s| is) "
+    r"(?:getting|having|(?:meant |supposed )?to (?:get|have))| gets| should (?:get|have)) "
+    rf"(?P<x>{_X53S})| (?P<x2>{_X53S}) (?:is|are|'s|'re) (?:meant |intended |supposed to be )?for)"
+    r"(?P<rest>\s*,.*)$",
+    _F,
+)
+
+
+def _not_that54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): "It isn't P that gets the X, it's Q" read as session 53's form (above)."""
+    low = text.lower()
+    if "that" not in low and "who" not in low:
+        return text
+    if "isn't" not in low and "not" not in low:
+        return text
+    m = _NOT_THAT54S.match(text.strip())
+    if m is None:
+        return text
+    if m["x"]:
+        said = f"It isn't {m['p']} who's getting {m['x']}{m['rest']}"
+    else:
+        said = f"{m['p']} isn't the one {m['x2']} is for{m['rest']}"
+    out = _not_who53s(said, lexicon)
+    return text if out == said else out
+
+
+# -- session 54 (12s): 'none of the X for P, just the Y' ----------------------------------------
+#
+# "None of the books for Noah, just the ruler." (blind52 #137): a left-out thing said first, as
+# 'none of the X' / 'no X' / 'not the X' for a person, then 'just / only the Y' (nothing after
+# it): said "Just the Y for P, not the X.", which the grammar reads (the Y and the X things of
+# the scene, apart; P one person; the reading hands nothing the X names).
+_NONE_FOR54S = re.compiled(
+    r"^(?:none of|no|not(?: any of)?) (?P<x>(?:the |those |these |any )?[a-z]+(?: [a-z]+)?) "
+    rf"(?:for|to) (?P<p>{_WHO53S})\s*[,;:]\s*(?:just|only|but) (?P<y>(?:the |that |this )?[a-z]+"
+    r"(?: [a-z]+)?)(?:,? please)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _none_for54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): "None of the X for P, just the Y" said "Just the Y for P, not the X"
+    (above)."""
+    low = text.lower()
+    if "no" not in low or ("just" not in low and "only" not in low and "but" not in low):
+        return text
+    m = _NONE_FOR54S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x, y = _ids(m["x"], lexicon), _ids(m["y"], lexicon)
+    if not x or not y or x & y:
+        return text
+    if x != _ids(m["x"], lexicon, "object") or y != _ids(m["y"], lexicon, "object"):
+        return text
+    thing = m["y"] if m["y"].lower().startswith(("the ", "that ", "this ")) else f"the {m['y']}"
+    said = m["x"] if m["x"].lower().startswith(("the ", "those ", "these ")) else f"the {m['x']}"
+    out = f"Just {thing} for {m['p']}, not {said}{m['end']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
+# -- session 54 (12s): 'no X for P, he's gone for the Y instead' -------------------------------
+#
+# "No chips for Person B, he's gone for the apple instead." (blind52 #124): after a thing left
+# out for a person ('no / none of the / not the X for P'), the thing that person chose or wants,
+# said by a he / she that is P's sex by the scene ("he's gone for / he's after / he wants / he'd
+# rather have / she's picked the Y (instead)", nothing after it): said "No X for P, just the Y.",
+# which the grammar reads. A past holding or having ('he had', 'he's got', 'he took') is no
+# choice: left as it is.
+_NO_THEN_WANT54S = re.compiled(
+    r"^(?P<head>(?:none of|no|not) (?P<x>(?:the |any )?[a-z]+(?: [a-z]+)?) (?:for|to) "
+    rf"(?P<p>{_WHO53S}))\s*[,;]\s*(?P<pro>he|she)(?:'s (?:gone for|going for|after|chosen|"
+    r"picked|opted for|asked for)| is (?:going for|after)| has (?:gone for|chosen|picked|opted for|"
+    r"asked for)| (?:wants|prefers|fancies)|(?:'d| would) (?:like|rather have|prefer)) "
+    r"(?P<y>(?:the |that |this )?[a-z]+(?: (?!instead\b|this\b|today\b)[a-z]+)?)"
+    r"(?: instead| this time| today)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_then_want54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): "No X for P, he's gone for the Y instead" said "No X for P, just the Y"
+    (above)."""
+    low = text.lower()
+    if "no" not in low or "he" not in low:
+        return text
+    m = _NO_THEN_WANT54S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x, y = _ids(m["x"], lexicon), _ids(m["y"], lexicon)
+    if not x or not y or x & y:
+        return text
+    if x != _ids(m["x"], lexicon, "object") or y != _ids(m["y"], lexicon, "object"):
+        return text
+    (pid,) = _ids(m["p"], lexicon)
+    if unnamed_sex44l(pid, lexicon) != PRONOUN_SEX[m["pro"].lower()]:
+        return text
+    thing = m["y"] if m["y"].lower().startswith(("the ", "that ", "this ")) else f"the {m['y']}"
+    out = f"{m['head']}, just {thing}{m['end']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
-_STEPS54S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS54S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_no_then_want54s,)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
-_STEPS54S: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS54S: tuple[Callable[[str, Lexicon], str], ...] = (_not_that54s, _none_for54s)
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
 REFUSE54S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
