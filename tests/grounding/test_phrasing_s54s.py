@@ -9,19 +9,24 @@ import pytest
 
 from hltl.grounding import _rewrites54s as r54s
 from hltl.grounding import offline, phrasing
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
+    ROOT,
     WARD,
     WORKSHOP,
     PhrasingCases,
     assert_case,
     tree,
 )
+
+T21, L44 = (load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("2-1", "4-4-line"))
 
 # -- a thing set against another, moved where the other goes (_not_where54s, a check) ---------
 #
@@ -120,4 +125,54 @@ test_more_after_settled54s_near = PhrasingCases().test(
     ("Crisps over to Bob, or, hmm, Alice, so Alice.", "chips>A", CELL),
     ("Crisps over to Bob, or, hmm, Alice, so Alice, please.", "chips>A", CELL),
     ("The tongs for Lena, or Marco, so Marco.", "tongs>A", KITCHEN),
+)
+
+# -- blind52's negation by kind (rewrites: _not_that54s, _none_for54s, _no_then_want54s) -------
+#
+# each refused on main 8977c130
+NEGATION = PhrasingCases()
+test_negation54s_read = NEGATION.test(
+    # 'It isn't P that gets the X, it's Q' (#131)
+    ("It isn't Person A that gets the chips, it's Person B.", "chips>B", T21),
+    ("It isn't Bob that gets the apple, it's Alice.", "apple>A", CELL),
+    ("It's not Carol that the crisps are for, it's Bob.", "chips>B", CELL),
+    ("It isn't Marco that gets the knife, it's Lena.", "knife>B", KITCHEN),
+    ("It isn't Mrs Khan that's to have the pills, it's Mr Lee.", "pills>B", WARD),
+    ("It isn't Tom that gets the scanner, it's Mia.", "scanner>A", DEPOT),
+    ("It is not Sam who should get the stapler, it's Priya.", "stapler>A", OFFICE),
+    # 'None of the X for P, just the Y' (#137)
+    ("None of the books for Noah, just the ruler.", "ruler>B", CLASSROOM),
+    ("None of the mugs for Bob, just the apple.", "apple>B", CELL),
+    ("None of the plates for Lena, just the tongs.", "tongs>B", KITCHEN),
+    ("None of the cups for Dana, only the spoon.", "spoon>A", LAB),
+    ("None of the pens for Sam, just the notepad.", "notebook>B", OFFICE),
+    # 'No X for P, he's gone for the Y instead' (#124)
+    ("No chips for Person B, he's gone for the apple instead.", "apple>B", L44),
+    ("No salt for Marco, he's gone for the lemon instead.", "lemon>A", KITCHEN),
+    ("Not the knife for Lena, she'd rather have the tongs.", "tongs>B", KITCHEN),
+    ("No tape for Mia, she's after the scanner instead.", "scanner>A", DEPOT),
+    ("No stapler for Priya, she wants the black pen instead.", "pen_black>A", OFFICE),
+)
+
+
+def test_negation54s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NEGATION.refused_without(
+        (r54s._not_that54s, r54s._none_for54s, r54s._no_then_want54s), monkeypatch
+    )
+
+
+# near sentences: a past, a question, the same person twice, a holding after, the thing left out
+# among those given, a pronoun of the other sex, a request to someone else after: refused
+test_negation54s_near = PhrasingCases().test(
+    ("It isn't Bob that got the apple, it's Alice.", None, CELL),
+    ("Isn't it Bob that gets the apple, it's Alice?", None, CELL),
+    ("It isn't Bob that gets the apple, it's Bob.", None, CELL),
+    ("It isn't Bob that gets the apple, it's Alice who had it.", None, CELL),
+    ("None of the mugs for Bob, just the apple?", None, CELL),
+    ("None of the mugs for Bob, just the red mug.", None, CELL),
+    ("None of the books for Noah, just the ruler, he had them yesterday.", None, CLASSROOM),
+    ("No salt for Marco, she's gone for the lemon instead.", None, KITCHEN),
+    ("No crisps for Bob, he's gone for the apple instead?", None, CELL),
+    ("No crisps for Bob, he's got the apple.", None, CELL),
+    ("No crisps for Bob, he's after the apple, give it to Carol.", None, CELL),
 )
