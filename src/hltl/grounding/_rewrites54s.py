@@ -9,7 +9,7 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
 from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding._rewrites51s import _plain51s
-from hltl.grounding._rewrites53s import _WHO53S, _X53S, _not_who53s
+from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S, _X53S, _not_who53s
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, Task, tasks
 
@@ -189,10 +189,80 @@ def _no_then_want54s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 54 (12s): 'the Y can stay, it's the X P is needing' --------------------------------
+#
+# "The drill can stay, it's the hammer Jess is needing." and "The green cup stays put; it's the
+# white one that wants to go in the sink." (blind52 #139 #132): a thing left where it is ('the Y
+# can stay / stays (put) / leave the Y'), then a cleft naming what is wanted instead ("it's the X
+# (that) P needs / wants / is after", "it's the X that wants to go / goes in the S"): said "The Y
+# stays put; P needs the X." / "…; the X goes in the S.", which the older rules read (the left
+# thing as a note). The Y and the X things of the scene, apart; P one person; the cleft ends the
+# text; nothing that says a holding or a doing (session 53's `_UNSAFE53S`).
+_DET54S = r"(?:the|that|this|those|these|his|her|their)"
+_Y54S = (
+    rf"{_DET54S} [a-z]+(?: (?!can\b|should\b|will\b|may\b|stays?\b|is\b|are\b|alone\b|be\b|"
+    r"where\b|there\b|here\b)[a-z]+)?"
+)
+_STAYS_CLEFT54S = re.compiled(
+    rf"^(?:(?P<y>{_Y54S}) (?:(?:can|should|will|may) stay|stays|stay|"
+    r"(?:is|are) staying)(?: put| where (?:it is|they are)| there| here)?|leave "
+    rf"(?P<y2>{_Y54S})(?: where (?:it is|they are)| alone| be| there)?)"
+    rf"\s*[,;]\s*(?:but |and )?it(?:'s| is) (?:actually |really )?(?P<x>{_DET54S} [a-z]+"
+    r"(?: [a-z]+)?) (?:(?:that|which) (?:(?:wants?|needs?|has|have) to go|goes|go|"
+    r"(?:'s|is|are|'re) going) "
+    r"(?P<prep>in|on|onto|into|on to) (?P<s>the [a-z]+(?: [a-z]+)?)|(?:that |who )?"
+    rf"(?P<p>{_WHO53S}) (?P<v>is needing|needs|wants|is wanting|is after|'s after|would like|"
+    r"'d like))(?P<end>\s*[.!]?)$",
+    _F,
+)
+_VERB54S = {
+    "is needing": "needs",
+    "is wanting": "wants",
+    "'s after": "is after",
+    "'d like": "would like",
+}
+
+
+def _stays_cleft54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): "The Y can stay, it's the X P is needing" said "The Y stays put; P needs
+    the X" (above)."""
+    low = text.lower()
+    if "it's" not in low and "it is" not in low:
+        return text
+    if "stay" not in low and "leave" not in low:
+        return text
+    if _UNSAFE53S.search(text):
+        return text
+    m = _STAYS_CLEFT54S.match(text.strip())
+    if m is None:
+        return text
+    y, x = m["y"] or m["y2"], m["x"]
+    if x.lower().endswith(" one") and " " in y:
+        x = f"{x[:-4]} {y.split()[-1]}"  # "the white one" after "the green cup": the white cup
+    ys, xs = _ids(y, lexicon), _ids(x, lexicon)
+    if not ys or not xs or ys & xs:
+        return text
+    if ys != _ids(y, lexicon, "object") or xs != _ids(x, lexicon, "object"):
+        return text
+    if m["p"]:
+        if not _only_person(m["p"], lexicon):
+            return text
+        v = m["v"].lower()
+        said = f"{m['p']} {_VERB54S.get(v, v)} {x}"
+    else:
+        if _ids(m["s"], lexicon) != _ids(m["s"], lexicon, "surface") or not _ids(m["s"], lexicon):
+            return text
+        said = f"{x} goes {m['prep']} {m['s']}"
+    out = f"{y[0].upper()}{y[1:]} stays put; {said}{m['end']}"
+    if _read_without44r(out, text, y, lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_no_then_want54s,)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
-_STEPS54S: tuple[Callable[[str, Lexicon], str], ...] = (_not_that54s, _none_for54s)
+_STEPS54S: tuple[Callable[[str, Lexicon], str], ...] = (_not_that54s, _none_for54s, _stays_cleft54s)
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
 REFUSE54S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
