@@ -176,3 +176,52 @@ test_negation54s_near = PhrasingCases().test(
     ("No crisps for Bob, he's got the apple.", None, CELL),
     ("No crisps for Bob, he's after the apple, give it to Carol.", None, CELL),
 )
+
+# -- 'the Y can stay, it's the X P is needing' (_stays_cleft54s; #139 #132) --------------------
+#
+# each refused on main 8977c130
+STAYS = PhrasingCases()
+test_stays_cleft54s_read = STAYS.test(
+    ("The drill can stay, it's the hammer Jess is needing.", "hammer>B", WORKSHOP),
+    (
+        "The green cup stays put; it's the white one that wants to go in the sink.",
+        "cup_white@sink",
+        LAB,
+    ),
+    ("The cup can stay, it's the apple Bob is after.", "apple>B", CELL),
+    ("The jug can stay, it's the magazine Mrs Khan is after.", "magazine>C", WARD),
+    ("Leave the red mug, it's the blue one Alice wants.", "mug_blue>A", CELL),
+    ("The knife stays where it is; it's the tongs Lena needs.", "tongs>B", KITCHEN),
+    (
+        "Leave the teddy alone, it's the bib that wants to go on the high chair.",
+        "bib@highchair",
+        NURSERY,
+    ),
+    ("The stapler can stay, it's the notepad Priya is needing.", "notebook>A", OFFICE),
+    (
+        "Leave the black pen where it is, it's the red pen that goes in the box.",
+        "pen_red@box",
+        OFFICE,
+    ),
+    (
+        "The big box stays put; it's the small box that wants to go on the pallet.",
+        "box_small@pallet",
+        DEPOT,
+    ),
+)
+
+
+def test_stays_cleft54s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    STAYS.refused_without((r54s._stays_cleft54s,), monkeypatch)
+
+
+# near sentences: a past want or holding, a question, the same thing twice, a request before the
+# cleft: refused
+test_stays_cleft54s_near = PhrasingCases().test(
+    ("The drill can stay, it's the hammer Jess needed.", None, WORKSHOP),
+    ("The drill can stay, it's the hammer Jess is needing?", None, WORKSHOP),
+    ("The drill can stay, it's the drill Jess is needing.", None, WORKSHOP),
+    ("The cup can stay, it's the apple Bob had.", None, CELL),
+    ("Give Bob the cup, it's the apple Bob is after.", None, CELL),
+    ("The jug can stay, it's the magazine Mrs Khan is after, she had the jug.", None, WARD),
+)

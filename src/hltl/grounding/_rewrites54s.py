@@ -208,7 +208,7 @@ _STAYS_CLEFT54S = re.compiled(
     r"(?:is|are) staying)(?: put| where (?:it is|they are)| there| here)?|leave "
     rf"(?P<y2>{_Y54S})(?: where (?:it is|they are)| alone| be| there)?)"
     rf"\s*[,;]\s*(?:but |and )?it(?:'s| is) (?:actually |really )?(?P<x>{_DET54S} [a-z]+"
-    r"(?: [a-z]+)?) (?:(?:that|which) (?:(?:wants?|needs?|has|have) to go|goes|go|"
+    r"(?: [a-z]+)??) (?:(?:that|which) (?:(?:wants?|needs?|has|have) to go|goes|go|"
     r"(?:'s|is|are|'re) going) "
     r"(?P<prep>in|on|onto|into|on to) (?P<s>the [a-z]+(?: [a-z]+)?)|(?:that |who )?"
     rf"(?P<p>{_WHO53S}) (?P<v>is needing|needs|wants|is wanting|is after|'s after|would like|"
