@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites54l, offline
+from hltl.grounding import _normalise4, _rewrites54l, offline
 from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
@@ -215,3 +215,40 @@ def test_requests_still_read(text: str, scene: Scene, spec: str) -> None:
 def test_forgetting_without_apostrophes_refused_naming_both(text: str, scene: Scene) -> None:
     with pytest.raises(GroundingError, match=r"(?s)asked for: the \w+ to .* or the \w+ to"):
         parse_instruction(text, scene)
+
+
+# -- a correction's cleft that says why not (12r's find: "Give Alice the apple, no, Bob's the one
+# who's full." read apple>B: session 33's cleft correction took any cleft for the person)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("Give Alice the apple, no, Bob's the one who's full.", CELL),
+        ("Give Alice the apple, no, Bob's the one fasting.", CELL),
+        ("Give Alice the apple, no, Bob's the one on a diet.", CELL),
+        ("Give Alice the apple, no, Bob's the one who's allergic.", CELL),
+        ("The salt to Lena, sorry, Marco's the one who's poorly.", KITCHEN),
+        ("Gloves to Mia, no, Tom's the one who's off sick.", DEPOT),
+    ],
+)
+def test_cleft_saying_why_not_refused(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError):
+        parse_instruction(text, scene)
+
+
+def test_cleft_saying_why_not_read_without_the_words(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The words are what leave them unread: without them the cleft named the person."""
+    monkeypatch.setattr(_normalise4, "_NOT_WANTING54L", frozenset())
+    assert_reads("Give Alice the apple, no, Bob's the one who's full.", "apple>B", CELL)
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "spec"),
+    [
+        ("Give Alice the apple, no, Bob's the one who's hungry.", CELL, "apple>B"),
+        ("Gloves to Mia, no, Tom's the one loading my trailer.", DEPOT, "gloves>B"),
+    ],
+)
+def test_cleft_correction_still_read(text: str, scene: Scene, spec: str) -> None:
+    assert_reads(text, spec, scene)

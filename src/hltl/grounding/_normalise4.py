@@ -1911,7 +1911,23 @@ def _cleft_corrected33s(text: str, lexicon: Lexicon) -> str:
     words = re.findall(r"[a-z]+(?:'[a-z]+)?|n't", m["rest"].lower())
     if any(w in _TRAILING_HELD32S or w.split("'")[0] in _TRAILING_HELD32S for w in words):
         return text
+    if any(w in _NOT_WANTING54L for w in words):
+        return text  # session 54 (lead): "no, Bob's the one who's full" says why not
     return f"{text[: m.start()]}{m['cue']}{m['who']}{m['end'] or '.'}"
+
+
+# Session 54 (lead; 12r's find): a cleft may say why the person is NOT to have it ("Give Alice
+# the apple, no, Bob's the one who's full / fasting / on a diet / allergic" read apple>B): words
+# of not wanting, of being unable or away, leave the correction unread (refused)
+_NOT_WANTING54L = frozenset(
+    {
+        *("full", "stuffed", "fasting", "diet", "allergic", "intolerant", "sick", "ill"),
+        *("poorly", "unwell", "nauseous", "sober", "driving", "leaving", "gone", "away"),
+        *("asleep", "sleeping", "off", "avoiding", "quitting", "vegan", "vegetarian", "picky"),
+        *("fussy", "hates", "hate", "dislikes", "refuses", "refused", "declined", "banned"),
+        *("shouldn't", "can't", "cannot", "won't", "mustn't", "isn't", "doesn't", "done"),
+    }
+)
 
 
 _STEPS33S: tuple[Callable[[str, Lexicon], str], ...] = (
