@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _names, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
+from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -130,8 +131,335 @@ def _had_why54(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# -- politeness and fillers ------------------------------------------------------------------------
+
+# -- "…, would be grand" ("Um, if it's not too much bother, the bottle up on the shelf would be
+# grand."): praise of the request said in other words than session 19's list (great, lovely,
+# brilliant …), said 'would be great' (read)
+_GRAND54 = re.compile(
+    r"\b(?P<w>(?:would|'d|will) be (?:grand|smashing|champion|marvellous|marvelous|splendid|"
+    r"cracking|magic|brill|terrific|tremendous|the business|just the job|spot on|dandy))\b",
+    _F,
+)
+
+
+def _grand54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: 'would be grand' (and the like) said 'would be great'."""
+    if " be " not in text:
+        return text
+    m = _GRAND54.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "would be great", lexicon)
+
+
+# -- a Thai thanks or greeting with its polite particle spelled otherwise than session 24's list
+# ("Kop khun ka, the chips are for Person A, …", "Sawasdee krab, …"): the particle said as the
+# list spells it ('kha', 'krap'), so session 24's _courtesy24 takes the stretch off
+_THAI54 = re.compile(
+    r"\b(?:k(?:h)?o[pb] khun(?: mak)?|sawas(?:dee|di)|sawatdee) (?P<p>ka|kah|krab|khrab|khrap|"
+    r"kub|khub|kap|khap|krub)\b",
+    _F,
+)
+
+
+def _thai54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: a Thai polite particle after thanks or a greeting spelled as session 24's."""
+    if "khun" not in text.lower() and "sawa" not in text.lower():
+        return text
+    m = _THAI54.search(text)
+    if m is None:
+        return text
+    put = "kha" if m["p"].lower().startswith("ka") else "krap"
+    return _cut52(text, m.start("p"), m.end("p"), put, lexicon)
+
+
+# -- wants and needs -------------------------------------------------------------------------------
+
+# -- 'P has a craving for X' with X said without 'the' ("Person A has a craving for chips, the
+# poor thing.", "Bob's got a real hankering for crisps."): said 'P wants X' (read; the grammar and
+# sessions 34, 42 and 51 read 'has a (real) craving for the X')
+_CRAVING54 = re.compile(
+    r"(?P<w>(?:'s| has)(?: got)? (?:a |an )(?:real |big |massive |serious |huge |proper |bit of a "
+    r"|slight |little |sudden )?(?:craving|hankering|yen|longing|hunger|thirst|fancy) for)"
+    r"(?= (?!(?:the|a|an|his|her|their|my|your|our|its|that|this|those|these|some|any|one|"
+    r"two)\b)[a-z])",
+    _F,
+)
+_CRAVING_WORDS54 = ("craving", "hankering", " yen ", "longing", "hunger", "thirst", "fancy")
+
+
+def _craving54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: 'P has a craving for X' (no 'the') said 'P wants X'."""
+    low = text.lower()
+    if not any(w in low for w in _CRAVING_WORDS54):
+        return text
+    m = _CRAVING54.search(text)
+    if m is None or not _person_ends54(text[: m.start()], lexicon):
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), " wants", lexicon)
+
+
+def _person_ends54(said: str, lexicon: Lexicon) -> bool:
+    """Whether the last one to three words of ``said`` (after its last stop or comma) name one
+    person of the scene and nothing else, however cased ('Person A', 'mrs khan', 'Bob')."""
+    words = re.split(r"[,.;:!?]", said)[-1].split()
+    return any(len(words) >= k and _only_person(" ".join(words[-k:]), lexicon) for k in (3, 2, 1))
+
+
+# -- 'the X would suit P (nicely)' ("…, and the bottle would suit Person A nicely."): what would
+# suit the person is what they are to get, said 'the X for P' (read)
+_SUIT54 = re.compile(
+    r"(?P<x>\b(?:the|that|this|a|an) [^,.;!?]+?) would (?:suit|do) (?P<p>[^,.;!?]+?)"
+    r"(?: (?:nicely|fine|just fine|perfectly|well|down to the ground|a treat|to a tee|to a t))?"
+    r"(?=\s*(?:[.,;!?]|$))",
+    _F,
+)
+
+
+def _suit54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: 'the X would suit P (nicely)' said 'the X for P'."""
+    if "would suit" not in text and "would do" not in text:
+        return text
+    m = _SUIT54.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    objects = _ids(m["x"], lexicon, "object")
+    if not objects or objects != _ids(m["x"], lexicon):
+        return text
+    return _cut52(text, m.start(), m.end(), f"{m['x']} for {m['p']}", lexicon)
+
+
+# -- 'so over it goes' / 'so over they go' after a want or an allotment ("What Person A's after is
+# the chips, so over they go.", "person a … needs that bottle so over it goes"): the speaker's
+# word to do it, taken off (what is left reads as the request)
+_OVER_GOES54 = re.compile(
+    r",?\s*(?:so|and|then)? ?(?:over|off|across|round|up) (?:it|they|that|those|these|this|"
+    r"that one) (?:goes|go)\b(?: then)?(?=\s*(?:[.!]|$))",
+    _F,
+)
+
+
+def _over_goes54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: a closing 'so over it goes' taken off."""
+    low = text.lower()
+    if " goes" not in low and " go" not in low:
+        return text
+    m = _OVER_GOES54.search(text)
+    if m is None or m.start() == 0:
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
+# -- pronouns and ellipsis -------------------------------------------------------------------------
+
+# -- 'the Xs are for P, (could you) hand them over' ("Kop khun ka, the chips are for Person A,
+# could you hand them over?"): the allotment said, then the word to do it with 'them' for the
+# things; taken off when the things are plural (sessions before read '…, hand it over' for one)
+_THEM_OVER54 = re.compile(
+    r"^(?P<head>.*\b(?:are|'re) (?:for|going to|meant for) [^,.;!?]+?)\s*,\s*"
+    r"(?:(?:so|and|then)\s+)?(?:(?:could|can|would|will) you (?:please |just )?|please |just )?"
+    r"(?:hand|pass|bring|take|pop|send|give) them (?:over|across|round)(?: to (?:him|her|them))?"
+    r"(?: please)?\s*"
+    r"(?P<end>[.!?]?)\s*$",
+    _F,
+)
+
+
+def _them_over54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: '…, could you hand them over?' after 'the Xs are for P' taken off."""
+    if " them " not in text:
+        return text
+    m = _THEM_OVER54.match(text)
+    if m is None:
+        return text
+    return _cut52(text, m.end("head"), len(text), ".", lexicon)
+
+
+# -- 'P's got nothing to drink' ("Person A's got nothing to drink; pass her the bottle."): said
+# "P's thirsty" ('to eat / to snack on': "hungry"; read as a reason); and 'with nothing to snack
+# on' after what a person is doing ("Bob's loitering by the door with nothing to snack on; take him
+# the apple, …"), taken off
+_NOTHING_TO54 = re.compile(
+    r"(?P<w>(?:'s|'ve| has| have)(?: got)? nothing (?:to|for (?:him|her|them) to) (?P<v>drink|"
+    r"sip|eat|snack on|nibble(?: on)?|munch(?: on)?|chew on))\b",
+    _F,
+)
+_WITH_NOTHING54 = re.compile(
+    r"(?P<w>\s+with nothing to (?:drink|sip|eat|snack on|nibble(?: on)?|munch(?: on)?|chew on|"
+    r"do))(?=\s*[,;.]|\s*$)",
+    _F,
+)
+_LOITER54 = re.compile(r"(?:(?<='s )|(?<='re ))(?P<w>loitering|lurking|skulking)(?= )", _F)
+
+
+def _nothing_to54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: "P's got nothing to drink" said "P's thirsty"; 'with nothing to eat' after a
+    doing taken off; 'loitering' said 'hanging about'."""
+    if "nothing to" not in text and "nothing for" not in text:
+        return text
+    m = _NOTHING_TO54.search(text)
+    before = text[: m.start()] if m is not None else ""
+    if m is not None and (
+        _person_ends54(before, lexicon) or before.split()[-1:] in (["he"], ["she"], ["they"])
+    ):
+        thirst = m["v"].lower() in ("drink", "sip")
+        put = ("'s " if m["w"].startswith("'") else " is ") + ("thirsty" if thirst else "hungry")
+        if m["w"].lower().startswith(("'ve", " have")):
+            put = ("'re " if m["w"].startswith("'") else " are ") + put.split()[-1]
+        return _cut52(text, m.start("w"), m.end("w"), put, lexicon)
+    m = _WITH_NOTHING54.search(text)
+    if m is None:
+        return text
+    out = _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+    if out == text:
+        said = text[: m.start("w")] + text[m.end("w") :]
+        k = _LOITER54.search(said)
+        if k is not None:
+            out = _cut52(said, k.start("w"), k.end("w"), "hanging about", lexicon)
+            out = text if out == said else out
+    return out
+
+
+# -- questions -------------------------------------------------------------------------------------
+
+# -- a request asked as a question with 'she's the only one without a drink' before its question
+# mark ("What about the cup going to Person A, she's the only one without a drink?"): the question
+# mark said as a stop, so session 30's _only_one_who30r takes the remark off (it reads it before a
+# stop only)
+_ONLY_ONE54 = re.compile(
+    r"^(?:what about|how about|could|can|would|will)\b.*,\s*(?:she|he|they)(?:'s| is|'re| are) the "
+    r"only (?:one|ones|person|people)\b[^,.;!?]*(?P<q>\?)\s*$",
+    _F,
+)
+
+
+def _only_one54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: a closing "she's the only one without a drink?" after a request: '?' as '.'."""
+    if "only" not in text or "?" not in text:
+        return text
+    m = _ONLY_ONE54.match(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("q"), m.end("q"), ".", lexicon)
+
+
+# -- "Would you mind running the X over to P?" ("Would you mind running the bottle over to Person B
+# while he's on his break?"): said 'mind taking' (read; sessions 28 and 32 read 'run the X over /
+# up / down to P')
+_RUN54 = re.compile(
+    r"\bmind (?P<v>running)(?= (?:the|this|that|these|those|her|his|their|a|an|"
+    r"some|it|them)\b[^.;!?,]*? (?:over|across|round|up|down|back|along) to\b)",
+    _F,
+)
+
+
+def _run54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: 'mind running the X over to P' said 'mind taking …'."""
+    if "running" not in text:
+        return text
+    m = _RUN54.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("v"), m.end("v"), "taking", lexicon)
+
+
+# -- 'as you go by' ("Any chance you could drop the chips off with Person A as you go by?"): when
+# the hearer passes, not a time the task waits for, taken off (read; session 42s reads "when
+# you're going past")
+_GO_BY54 = re.compile(
+    r",?\s*\b(?:as|when) you (?:go|pass|walk|come|head|wander) (?:by|past)(?: (?:there|here))?\b"
+    r"|,?\s*\bas you(?:'re| are) (?:going|passing|walking|coming|heading) (?:by|past)\b",
+    _F,
+)
+
+
+def _go_by54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: 'as you go by' taken off."""
+    low = text.lower()
+    if " by" not in low and " past" not in low:
+        return text
+    m = _GO_BY54.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
+# -- 'Is it possible (that) P could have / get X?' ("Is it possible Person A could get her bottle
+# off you now?"): a request, said 'Could P have / get X?' (read)
+_POSSIBLE54 = re.compile(
+    r"^(?P<q>(?:is|would) it (?:be )?(?:possible|ok|okay|alright|all right)(?: that)? )(?P<p>[^,"
+    r".;!?]+?) (?:could|can|might) (?=(?:have|get|borrow|take)\b)",
+    _F,
+)
+
+
+def _possible54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: 'Is it possible P could get X?' said 'Could P get X?'."""
+    if "it " not in text.lower():
+        return text
+    m = _POSSIBLE54.match(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return _cut52(text, 0, m.end(), f"Could {m['p']} ", lexicon)
+
+
+# -- 'for story time' after a placing ("Could the teddy go down on the play mat for story time?"):
+# what it is for, naming nothing of the scene, taken off (read)
+_FOR_TIME54 = re.compile(
+    r"\s+for (?!(?:the |a |one |this |that |some |any |each |every )?(?:first|last|next|long|"
+    r"short|some|little|while|time|now|later|tomorrow|today|tonight|being)\b)(?P<w>(?:[a-z]+[ -]"
+    r"){1,2})time\b(?=\s*(?:[.,;!?]|$))",
+    _F,
+)
+
+
+def _for_time54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: a closing 'for story time' taken off."""
+    if " time" not in text:
+        return text
+    m = _FOR_TIME54.search(text)
+    if m is None or _names(m["w"], lexicon):
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
+# -- 'before it gets knocked (over)' ("Would you be a dear and put the bottle up on the shelf
+# before it gets knocked?"): why to do it, taken off (read)
+_BEFORE_GETS54 = re.compile(
+    r",?\s*\bbefore (?:it|they|that|those|someone|somebody|anyone|anybody) (?:gets?|get) "
+    r"(?:[a-z]+ed|broken|stolen|eaten|trodden|spilt|lost|nicked|bitten|taken|sat)(?: (?:over|on|"
+    r"off|down|in|up|into|onto|under))?\b(?: by (?:someone|somebody|anyone|the [a-z]+))?",
+    _F,
+)
+
+
+def _before_gets54(text: str, lexicon: Lexicon) -> str:
+    """Session 54: a closing 'before it gets knocked' taken off."""
+    if "before " not in text.lower():
+        return text
+    m = _BEFORE_GETS54.search(text)
+    if m is None or _names(m.group(0), lexicon):
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
-_STEPS54_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS54_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _grand54,
+    _thai54,
+    _craving54,
+    _suit54,
+    _over_goes54,
+    _run54,
+    _go_by54,
+    _for_time54,
+    _before_gets54,
+    _possible54,
+    _them_over54,
+    _nothing_to54,
+    _only_one54,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
