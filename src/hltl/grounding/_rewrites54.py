@@ -7,6 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
+from hltl.grounding._rewrites43s import _placed_aside43s
 from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
@@ -346,12 +347,13 @@ def _nothing_to54(text: str, lexicon: Lexicon) -> str:
 
 # -- a closing remark of how the person feels after some pastime ("Can Person B have the apple,
 # he's starving after shot put?"): the pastime taken off when it names nothing of the scene
-# (session 19's remarks read "…, he's starving"; a pastime's words may hold a verb: 'shot put')
+# (session 19's remarks read "…, he's starving" and "…, he's tired after his shift"; a pastime
+# said without 'his' / 'the' may hold a verb: 'shot put')
 _AFTER_DOING54 = re.compile(
     r"(?P<r>,\s*(?:he|she|they)(?:'s| is|'re| are) (?:absolutely |really |so |totally |just )?"
     r"(?:starving|famished|ravenous|hungry|peckish|thirsty|parched|gasping|knackered|exhausted|"
     r"shattered|worn out|tired|wiped out|done in|cold|freezing|boiling|roasting))(?P<w> after "
-    r"[^,.;!?]+?)(?=\s*[.!?]?\s*$)",
+    r"(?!(?:his|her|their|the|a|an|my|our|your|its|that|this)\b)[^,.;!?]+?)(?=\s*[.!?]?\s*$)",
     _F,
 )
 
@@ -404,8 +406,11 @@ def _where_cant54(text: str, lexicon: Lexicon) -> str:
     if "where " not in text.lower():
         return text
     m = _WHERE_CANT54.search(text)
-    if m is None or _names(m["w"], lexicon):
-        return text
+    if m is None or _names(m["w"], lexicon) or _placed_aside43s(text, lexicon) != text:
+        return text  # (session 43s's _placed_aside43s reads 'Pop the salt on the rack where …')
+    named = _names(text[: m.start()], lexicon)
+    if not named or any(r.kind != "surface" for r in named[-1].refs):
+        return text  # only after a placing ("Give Lena the salt where the kids can't …")
     return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
 
 
@@ -439,9 +444,9 @@ def _minute_ago54(text: str, lexicon: Lexicon) -> str:
 # -- 'and after he's had it' between two handovers ("person b is first in line for the cup and
 # after hes had it the apple can go to person a"): the order said, as ', then' (read)
 _AFTER_HAD54 = re.compile(
-    r"(?P<w>,?\s+(?:and )?(?:after|once|when) (?:he|she|they)(?:'s|s| has|'ve| have) (?:had|"
-    r"finished with|finished|done with|used) (?:it|them|that|those|his|hers)\s*,?)\s+(?=the |his |"
-    r"her |their )",
+    r"(?<!\band)(?<!\band,)(?P<w>,?\s+(?:and )?(?:after|once|when) (?:he|she|they)(?:'s|s| has|"
+    r"'ve| have) (?:had|finished with|finished|done with|used) (?:it|them|that|those|his|hers)"
+    r"\s*,?)\s+(?=the |his |her |their )",
     _F,
 )
 
