@@ -463,3 +463,36 @@ def test_left_to_older_rules(text: str, want: str, scene: Scene) -> None:
 def test_where_cant_only_after_a_placing() -> None:
     # s43s's near sentence: a handover with 'where …' stays refused
     assert_refused("Give Lena the salt where the kids can't reach it.", KITCHEN)
+
+
+# a closing question whether it was done (_did_you54): main read the request alone
+DID_YOU = [
+    ("Bob wants the apple, did you bring it?", CELL),
+    ("Bob asked for the apple, have you given it to him?", CELL),
+    ("The apple's for Bob, did you give it to him?", CELL),
+    ("Give Bob the apple, did you?", CELL),
+    ("bob asked for the apple a minute ago, did you bring it", CELL),
+    ("Lena wants the salt, did you pass it to her?", KITCHEN),
+    ("The jug's for Mrs Khan; have you taken it over yet?", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), DID_YOU)
+def test_did_you_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+    with pytest.raises(GroundingError):
+        _rewrites54._did_you54(text, Lexicon.of(scene))
+
+
+@pytest.mark.parametrize(
+    "text", ["Give Bob the apple, would you?", "Did you know Bob wants the apple? Give it to him."]
+)
+def test_did_you_near_read(text: str) -> None:
+    assert_reads(text, "apple>B", CELL)
+    _rewrites54._did_you54(text, Lexicon.of(CELL))
+
+
+def test_minute_ago_leaves_a_question() -> None:
+    # what runs on after the time is a question, not a request: not set off as one
+    text = "bob asked for the apple a minute ago did you bring it"
+    assert _rewrites54._minute_ago54(text, Lexicon.of(CELL)) == text

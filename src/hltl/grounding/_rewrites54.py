@@ -132,6 +132,33 @@ def _had_why54(text: str, lexicon: Lexicon) -> None:
         )
 
 
+# -- a request followed by a question whether it was done ("Bob wants the apple, did you bring
+# it?", "The apple's for Bob, did you give it to him?", "Give Bob the apple, did you?"): main read
+# the request alone (apple>B); 'Did you bring it?' as a sentence of its own is refused as a
+# question. It asks whether it was done: refused
+_DID_YOU54 = re.compile(
+    r"[,;:]\s*(?:and\s+|so\s+|but\s+)?(?P<said>(?:did|have|had) you(?: already| ever| actually| "
+    r"even)?(?: (?:bring|brought|give|given|gave|take|taken|took|hand|handed|pass|passed|put|fetch|"
+    r"fetched|get|got|send|sent|drop|dropped|deliver|delivered|move|moved)(?: (?:it|them|that|"
+    r"those|this|these|him|her|one)\b[^.;!?]*)?)?(?:\s+(?:yet|already))?)\s*(?:\?|[.!]?\s*$)",
+    _F,
+)
+
+
+def _did_you54(text: str, lexicon: Lexicon) -> None:
+    """Session 54: a closing 'did you bring it?' after a request refused (above)."""
+    low = text.lower()
+    if "did you" not in low and "have you" not in low and "had you" not in low:
+        return
+    m = _DID_YOU54.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} asks whether it was done: it asks for nothing; say 'give …' to have it "
+        "handed over"
+    )
+
+
 # -- politeness and fillers ------------------------------------------------------------------------
 
 # -- "…, would be grand" ("Um, if it's not too much bother, the bottle up on the shelf would be
@@ -436,8 +463,10 @@ def _minute_ago54(text: str, lexicon: Lexicon) -> str:
     m = _MINUTE_AGO54.search(text)
     if m is None or (m["t"] == "just now" and (m["c"] or m["q"] is None)):
         return text
-    end = m.end("c")
-    put = f"{m['a']} just now" + ("," if m.end() > end or end < len(text) else "")
+    end, rest = m.end("c"), text[m.end("c") :].strip()
+    if m["q"] is None and rest and not m["c"] and rest[0] not in ".;!?":
+        return text  # what runs on is no request ('… a minute ago did you bring it')
+    put = f"{m['a']} just now" + ("," if m["q"] is not None or m["c"] else "")
     return _cut52(text, m.start(), end, put, lexicon)
 
 
@@ -612,6 +641,6 @@ _STEPS54_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
-REFUSE54: tuple[Callable[[str, Lexicon], None], ...] = (_days_ago54, _had_why54)
+REFUSE54: tuple[Callable[[str, Lexicon], None], ...] = (_days_ago54, _had_why54, _did_you54)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
 CHECK54: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
