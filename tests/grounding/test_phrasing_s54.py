@@ -496,3 +496,37 @@ def test_minute_ago_leaves_a_question() -> None:
     # what runs on after the time is a question, not a request: not set off as one
     text = "bob asked for the apple a minute ago did you bring it"
     assert _rewrites54._minute_ago54(text, Lexicon.of(CELL)) == text
+
+
+# a closing past-perfect want of a pronoun after a request (_had_asked54): main read a handover
+HAD_ASKED = [
+    ("Give Bob the cup, he had asked for the apple.", CELL),
+    ("Give Bob the cup, he'd wanted the apple.", CELL),
+    ("Give Bob the cup, he had to have the apple.", CELL),
+    ("Give Bob the cup, he had been asking for the apple.", CELL),
+    ("Pass Marco the knife, he'd wanted the lemon.", KITCHEN),
+    ("Hand Mrs Khan the jug, she'd asked for the magazine.", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HAD_ASKED)
+def test_had_asked_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+    with pytest.raises(GroundingError):
+        _rewrites54._had_asked54(text, Lexicon.of(scene))
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        # a want of now ("'d like"), the thing itself, or the rest saying the want holds
+        ("Give Bob the cup, he'd like the apple.", "cup>B & apple>B"),
+        ("Give Bob the cup, he had asked for it.", "cup>B"),
+        (
+            "Give Alice the cup, she'd been after the apple, and she still wants it.",
+            "cup>A & apple>A",
+        ),
+    ],
+)
+def test_had_asked_near_read(text: str, want: str) -> None:
+    assert_reads(text, want, CELL)

@@ -159,6 +159,35 @@ def _did_you54(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# -- a closing past-perfect want of a pronoun after a request ("Give Bob the cup, he had asked for
+# the apple.", "…, he'd wanted the apple.", "…, he had to have the apple."; 12s's find, 12c): main
+# read the want as a second handover (cup>B & apple>B), while 'Bob had asked for the apple.' alone
+# is refused (session 52's _had_wanted52): a want that may be over, refused
+_HAD_ASKED54 = re.compile(
+    r"[,;]\s*(?:and |but |since |as |because |cos )?(?P<said>(?:he|she|they)(?: had|'d) "
+    r"(?:(?:asked|begged) for|wanted|needed|requested|been (?:after|asking for|wanting|needing|"
+    r"waiting for)|(?:had )?to have|had (?:his|her|their) eye on|set (?:his|her|their) heart on)"
+    r"\b[^,.;!?]*)",
+    _F,
+)
+
+
+def _had_asked54(text: str, lexicon: Lexicon) -> None:
+    """Session 54: a closing "…, he'd wanted the apple." after a request refused (above)."""
+    low = text.lower()
+    if " had " not in low and "'d " not in low:
+        return
+    m = _HAD_ASKED54.search(text)
+    if m is None or not _ids(m["said"], lexicon, "object"):
+        return
+    if re.search(r"\b(?:still|now|so give|so hand|so pass|again)\b", text[m.end() :], _F):
+        return  # the rest says the want holds (session 52's convention)
+    raise GroundingError(
+        f"{m['said']!r} says what was wanted before: it may be over; say 'give …' for what is "
+        "wanted now"
+    )
+
+
 # -- politeness and fillers ------------------------------------------------------------------------
 
 # -- "…, would be grand" ("Um, if it's not too much bother, the bottle up on the shelf would be
@@ -641,6 +670,11 @@ _STEPS54_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
-REFUSE54: tuple[Callable[[str, Lexicon], None], ...] = (_days_ago54, _had_why54, _did_you54)
+REFUSE54: tuple[Callable[[str, Lexicon], None], ...] = (
+    _days_ago54,
+    _had_why54,
+    _did_you54,
+    _had_asked54,
+)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
 CHECK54: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
