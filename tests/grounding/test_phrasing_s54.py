@@ -200,6 +200,7 @@ test_over_goes = OVER_GOES.test(
     ("Bob wanted the apple, so over it goes.", None, CELL),
     ("Bob had the apple, so over it goes.", None, CELL),
     ("Over it goes.", None, CELL),
+    ("Bob wants the apple, so up it goes.", None, CELL),
 )
 
 
@@ -264,6 +265,7 @@ test_minute_ago = MINUTE_AGO.test(
     ("Alice asked for the cup a moment ago, could you bring it over?", "cup>A", CELL),
     ("bob asked for the apple a minute ago bring it", "apple>B", CELL),
     ("bob asked for the apple yesterday can you bring it", None, CELL),
+    ("bob asked for the apple a minute ago can you bring him the cup", None, CELL),
 )
 
 
@@ -286,6 +288,7 @@ test_after_had = AFTER_HAD.test(
         CELL,
     ),
     ("Bob had the cup and after he's had it the apple can go to Alice.", None, CELL),
+    ("Bob gets the cup and after she's had it the apple goes to Alice.", None, CELL),
 )
 
 
@@ -350,6 +353,8 @@ test_possible = POSSIBLE.test(
     ("Would it be possible that Alice could get the cup?", "cup>A", CELL),
     ("Is it ok Mrs Khan could have the jug?", "jug>C", WARD),
     ("Is it possible Bob could have had the apple?", None, CELL),
+    ("Is it possible Bob could have taken the apple?", None, CELL),
+    ("Would it be possible Bob could have taken the apple?", None, CELL),
     ("Is it possible Bob could have the apple tomorrow?", None, CELL),
 )
 
@@ -530,3 +535,24 @@ def test_had_asked_refused(text: str, scene: Scene) -> None:
 )
 def test_had_asked_near_read(text: str, want: str) -> None:
     assert_reads(text, want, CELL)
+
+
+# 'Could P have taken X?' (_could_have54): a question about what was, read on main
+COULD_HAVE = [
+    ("Could Bob have taken the apple?", CELL),
+    ("Might Alice have grabbed the cup?", CELL),
+    ("Could Marco have taken the knife?", KITCHEN),
+    ("Could Mr Lee have taken the pills?", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), COULD_HAVE)
+def test_could_have_refused(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
+    with pytest.raises(GroundingError):
+        _rewrites54._could_have54(text, Lexicon.of(scene))
+
+
+def test_could_have_near_read() -> None:
+    assert_reads("Could Bob have the apple?", "apple>B", CELL)
+    _rewrites54._could_have54("Could Bob have the apple?", Lexicon.of(CELL))

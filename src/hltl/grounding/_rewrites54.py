@@ -8,6 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
 from hltl.grounding._rewrites43s import _placed_aside43s
+from hltl.grounding._rewrites44 import _agrees44
 from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
@@ -188,6 +189,31 @@ def _had_asked54(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# -- a question whether someone could have taken a thing ("Could Bob have taken the apple?", "Is
+# it possible Bob could have taken the apple?"; 12c): main read 'Could Bob have taken the apple?'
+# as apple>B ('could have got / had / eaten' were refused): a question about what was, refused
+_COULD_HAVE54 = re.compile(
+    r"\b(?P<said>(?:could|might|may|would|should|must|can) (?P<p>[^,.;!?]+?) (?:have|'ve) "
+    r"(?:taken|took|grabbed|nicked|pinched|swiped|picked up|snatched|borrowed|used|moved|got|"
+    r"gotten|had|eaten|been given|received)\b[^.;!?]*)\?",
+    _F,
+)
+
+
+def _could_have54(text: str, lexicon: Lexicon) -> None:
+    """Session 54: 'Could P have taken X?' refused (above)."""
+    low = text.lower()
+    if "?" not in low or (" have " not in low and "'ve " not in low):
+        return
+    m = _COULD_HAVE54.search(text)
+    if m is None or not _person_ends54(m["p"], lexicon) or not _ids(m["said"], lexicon, "object"):
+        return
+    raise GroundingError(
+        f"{m['said']!r} asks about what was done: it asks for nothing; say 'give …' to have it "
+        "handed over"
+    )
+
+
 # -- politeness and fillers ------------------------------------------------------------------------
 
 # -- "…, would be grand" ("Um, if it's not too much bother, the bottle up on the shelf would be
@@ -312,7 +338,7 @@ def _suit54(text: str, lexicon: Lexicon) -> str:
 # word to do it, taken off (what is left reads as the request)
 _OVER_WORDS54 = ("it goes", "they go", "that goes", "those go", "these go", "this goes", "one goes")
 _OVER_GOES54 = re.compile(
-    r",?\s*(?:so|and|then)? ?(?:over|off|across|round|up) (?:it|they|that|those|these|this|"
+    r",?\s*(?:so|and|then)? ?(?:over|off|across) (?:it|they|that|those|these|this|"
     r"that one) (?:goes|go)\b(?: then)?(?=\s*(?:[.!]|$))",
     _F,
 )
@@ -495,6 +521,8 @@ def _minute_ago54(text: str, lexicon: Lexicon) -> str:
     end, rest = m.end("c"), text[m.end("c") :].strip()
     if m["q"] is None and rest and not m["c"] and rest[0] not in ".;!?":
         return text  # what runs on is no request ('… a minute ago did you bring it')
+    if rest and rest[0] not in ".;!?" and not re.search(r"\b(?:it|them)\b", rest, _F):
+        return text  # the request after it is for something else ('… bring him the cup')
     put = f"{m['a']} just now" + ("," if m["q"] is not None or m["c"] else "")
     return _cut52(text, m.start(), end, put, lexicon)
 
@@ -517,6 +545,11 @@ def _after_had54(text: str, lexicon: Lexicon) -> str:
     m = _AFTER_HAD54.search(text)
     if m is None or m.start() == 0:
         return text
+    people = [it for it in _names(text[: m.start()], lexicon) if it.refs[0].kind == "human"]
+    if not people or len({r.id for r in people[-1].refs}) != 1:
+        return text
+    if not _agrees44(people[-1].refs[0].id, m["w"], lexicon):
+        return text  # the pronoun cannot be the one named before ('Bob … after she's had it')
     return _cut52(text, m.start("w"), m.end("w"), ", then", lexicon)
 
 
@@ -589,7 +622,8 @@ def _go_by54(text: str, lexicon: Lexicon) -> str:
 # off you now?"): a request, said 'Could P have / get X?' (read)
 _POSSIBLE54 = re.compile(
     r"^(?P<q>(?:is|would) it (?:be )?(?:possible|ok|okay|alright|all right)(?: that)? )(?P<p>[^,"
-    r".;!?]+?) (?:could|can|might) (?=(?:have|get|borrow|take)\b)",
+    r".;!?]+?) (?:could|can|might) (?=(?:have|get|borrow|take) (?:the|a|an|his|her|their|its|my|"
+    r"our|your|some|one|any|that|this|those|these|it|them|both|either)\b)",
     _F,
 )
 
@@ -675,6 +709,7 @@ REFUSE54: tuple[Callable[[str, Lexicon], None], ...] = (
     _had_why54,
     _did_you54,
     _had_asked54,
+    _could_have54,
 )
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
 CHECK54: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
