@@ -195,7 +195,7 @@ def _had_asked54(text: str, lexicon: Lexicon) -> None:
 _COULD_HAVE54 = re.compile(
     r"\b(?P<said>(?:could|might|may|would|should|must|can) (?P<p>[^,.;!?]+?) (?:have|'ve) "
     r"(?:taken|took|grabbed|nicked|pinched|swiped|picked up|snatched|borrowed|used|moved|got|"
-    r"gotten|had|eaten|been given|received)\b[^.;!?]*)\?",
+    r"gotten|had|eaten)\b[^.;!?]*)\?",
     _F,
 )
 
