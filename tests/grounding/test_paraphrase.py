@@ -272,8 +272,6 @@ KNOWN_MISSES = frozenset(
         "Person B's way.",
         "Carry it how you like, on a tray or in your grabber, so long as Person A ends up "
         "holding the bottle.",
-        "There's a sole bottle knocking about; Person A's claimed it for the step dancing, so "
-        "over it goes.",
         "Person A's picnic for the haymakers wants two bits, the bottle plus the chips, so ferry "
         "the pair over.",
         "Line up both blocks on the high chair so Lily can play her stacking game, red and green "
@@ -441,7 +439,6 @@ KNOWN_MISSES = frozenset(
         "van.",
         "person a has been on the go all afternoon and needs that bottle so over it goes",
         "Since he sat down Bob hasn't taken his eyes off the xrisps, so let him have them.",
-        "Stash the cheps up on the shelf where the dog can't get them.",
         "Pirson A left her cup behind at lunch, could it go back to her.",
         "Persun A hasn't eaten since breakfast and would like the chips.",
         "Person A is off out, she'll want her bettle handed over before she goes.",
@@ -449,15 +446,8 @@ KNOWN_MISSES = frozenset(
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
         "Any chance you could run the packing tape over to Mia for the pallets?",
         # blind52 (tuned on in session 54): refusals left at its one measurement (docs/grounding.md)
-        "Um, if it's not too much bother, the bottle up on the shelf would be grand.",
-        "Kop khun ka, the chips are for Person A, could you hand them over?",
-        "Person B's got his heart set on the apple, and the bottle would suit Person A nicely.",
-        "What Person A's after is the chips, so over they go.",
-        "Person A has a craving for chips, the poor thing.",
         "Omar needs the sponge to wipe down the bench, and Emma needs a spoon.",
         "Kofi reckons he'll need the power drill to put up the shelving in the office.",
-        "Bob's loitering by the door with nothing to snack on; take him the apple, and Carol can "
-        "have the cup while you're at it.",
         "Person A's got nothing to drink; pass her the bottle and him the chips.",
         "Her bottle, Person A's. Fetch it for her please.",
         "The apprentice has the screws job; pass the tin to Jess.",
@@ -515,11 +505,8 @@ KNOWN_MISSES = frozenset(
         "Marco wants the salt, hang on, no, he said lemon, take him that.",
         "Globe across to Zoe, wait, got that wrong, Noah's doing the geography.",
         "the red mug for carol and the blue one for bob since hes on the decaf",
-        "crisps want to go up on the shelf where the dog cant get them",
-        "person b is first in line for the cup and after hes had it the apple can go to person a",
         "person a keeps looking at the chips so shes having them",
         "bottle for person a please she has dabke tonight and forgot to drink",
-        "person a asked for the bottle a minute ago can you bring it",
         "poor mrs khan is shivering under one sheet so pass her the blue blanket",
         "jess says the small spanners the one she needs",
         "Alice's been on about the crizps all afternoon, let her have them.",
@@ -527,14 +514,6 @@ KNOWN_MISSES = frozenset(
         "Someone left the spojge soaking on the side, into the sink with it.",
         "Priya's stuck stapling by hand, take her the stzpler.",
         "Mia needs the Scahner for stock-take, over to her please.",
-        "Would you be a dear and put the bottle up on the shelf before it gets knocked?",
-        "Can Person B have the apple, he's starving after shot put?",
-        "What about the cup going to Person A, she's the only one without a drink?",
-        "Would you mind running the bottle over to Person B while he's on his break?",
-        "Any chance you could drop the chips off with Person A as you go by?",
-        "Is it possible Person A could get her bottle off you now?",
-        "Could you bring the bottle to Person A, she's on the phone and can't get up?",
-        "Could the teddy go down on the play mat for story time?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
