@@ -252,19 +252,28 @@ _DONT_BOTHER51S = re.compile(
 )
 
 
+def _not_x_rest51s(m: re.Match[str] | None, text: str, lexicon: Lexicon) -> str | None:
+    """The rewrite "Not <x>, <rest>" of ``m`` (a match of ``text`` with groups ``x`` and
+    ``rest``) when ``x`` names one thing of the scene and nothing else and the rewrite reads
+    without handing it over (session 44's `_read_without44r`); None otherwise (no match included).
+    Shared by `_dont_bother51s` and session 52's `_dont_just52s`, each asking its own `_plain51s`
+    of it."""
+    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
+        return None
+    if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
+        return None
+    out = f"Not {m['x']}, {m['rest']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return None
+    return out
+
+
 def _dont_bother51s(text: str, lexicon: Lexicon) -> str:
     """Session 51 (12s): "Don't bother fetching the X, <request>" said "Not the X, <request>"."""
     if "bother" not in text.lower():
         return text
-    m = _DONT_BOTHER51S.match(text.strip())
-    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
-        return text
-    if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
-        return text
-    out = f"Not {m['x']}, {m['rest']}"
-    if _read_without44r(out, text, m["x"], lexicon) == text:
-        return text
-    return _plain51s(out, text, lexicon)
+    out = _not_x_rest51s(_DONT_BOTHER51S.match(text.strip()), text, lexicon)
+    return text if out is None else _plain51s(out, text, lexicon)
 
 
 # "Apart from the medium box, which stays put, the boxes go on the belt.": what the thing left

@@ -551,13 +551,21 @@ def _both_state52r(text: str, lexicon: Lexicon) -> str:
     why = re.sub(r"\b(?:[a-z]+)'s\b", "", m["why"], flags=_F)
     if _names(why, lexicon) or _names(m["why"], lexicon) or _NOT52R.search(m["why"]):
         return text
+    put = _put_pair52r(m, lexicon)
+    return text if put is None else put[0]
+
+
+def _put_pair52r(m: re.Match[str], lexicon: Lexicon) -> tuple[str, set[str]] | None:
+    """The rewrite "Put <things> <where>" of ``m`` (groups ``things``, ``where``, ``end``) and
+    the two things it places, when it reads as two placings of two things; else None. Shared by
+    `_both_state52r` and session 53's `_had_lot53r`."""
     things = m["things"][:1].lower() + m["things"][1:]
     out = f"Put {things} {m['where']}{m['end'] or '.'}"
     node = _reading(out, lexicon)
     got = [] if node is None else list(tasks(node))
     if len(got) != 2 or any(t.kind != "place" for t in got) or len({t.obj for t in got}) != 2:
-        return text
-    return out
+        return None
+    return out, {t.obj for t in got}
 
 
 _NOT52R = re.compiled(r"\b(?:not|n't|never|no)\b", _F)

@@ -7,7 +7,7 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids
-from hltl.grounding._rewrites44r import _read_without44r
+from hltl.grounding._rewrites51s import _not_x_rest51s
 from hltl.grounding._rewrites51s import _plain51s as _plain51
 from hltl.grounding.lexicon import Lexicon, first_name_sex36s, person_name, said_sex35s
 from hltl.grounding.tree import Node, tasks
@@ -137,15 +137,8 @@ def _dont_just52s(text: str, lexicon: Lexicon) -> str:
     low = text.lower()
     if "just" not in low and "only" not in low:
         return text
-    m = _DONT_JUST52S.match(text.strip())
-    if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
-        return text
-    if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):
-        return text
-    out = f"Not {m['x']}, {m['rest']}"
-    if _read_without44r(out, text, m["x"], lexicon) == text:
-        return text
-    return _plain51s(out, text, lexicon)
+    out = _not_x_rest51s(_DONT_JUST52S.match(text.strip()), text, lexicon)
+    return text if out is None else _plain51s(out, text, lexicon)
 
 
 # -- session 52 (12s): an opening perfect participle (12c's probe) ------------------------------

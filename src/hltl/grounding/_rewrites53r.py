@@ -11,6 +11,7 @@ from hltl.grounding._rewrites44r import _agrees44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites50l import forgets50l
 from hltl.grounding._rewrites51r import _BACK51R, _CUE51R, _one_task51r
+from hltl.grounding._rewrites52r import _put_pair52r
 from hltl.grounding.lexicon import Lexicon, person_name
 from hltl.grounding.tree import Group, Node, Task, has_choice, tasks
 
@@ -629,13 +630,11 @@ def _had_lot53r(text: str, lexicon: Lexicon) -> str:
     m = _HAD_LOT53R.match(text.strip())
     if m is None:
         return text
-    things = m["things"][:1].lower() + m["things"][1:]
-    out = f"Put {things} {m['where']}{m['end'] or '.'}"
-    node = _reading(out, lexicon)
-    got = [] if node is None else list(tasks(node))
-    if len(got) != 2 or any(t.kind != "place" for t in got) or len({t.obj for t in got}) != 2:
+    put = _put_pair52r(m, lexicon)
+    if put is None:
         return text
-    return out if _ids(things, lexicon, "object") == {t.obj for t in got} else text
+    things = m["things"][:1].lower() + m["things"][1:]
+    return put[0] if _ids(things, lexicon, "object") == put[1] else text
 
 
 # "The plates, both of them, want setting out on the worktop for the specials."
