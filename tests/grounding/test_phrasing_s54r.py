@@ -534,3 +534,282 @@ def test_both_things_check_is_what_refuses(text: str, scene, monkeypatch) -> Non
 def test_both_things_kept(text: str, want: str, scene) -> None:
     got = tree(text, scene)
     assert got is not None and show_tree(got) == want
+
+
+# -- blind52: the robot's choice said of the person -----------------------------------------------
+
+# _do_her54r: "P says either mug will do her" is "… will do" ('her' fitting the one person)
+DO_HER = PhrasingCases()
+test_do_her = DO_HER.test(
+    (
+        "Carol says either mug will do her, red or blue, she's not fussed.",
+        "mug_red>C | mug_blue>C",
+        CELL,
+    ),
+    (
+        "Lena says either plate will do her, white or blue, she's not fussed.",
+        "plate_white>B | plate_blue>B",
+        KITCHEN,
+    ),
+    (
+        "Mr Lee says either blanket will do him, he's not bothered.",
+        "blanket_blue>B | blanket_grey>B",
+        WARD,
+    ),
+    ("Bob says either mug will do him, red or blue.", "mug_red>B | mug_blue>B", CELL),
+    # near: the pronoun does not fit, said as past, a time, two people, a question
+    ("Bob says either mug will do her, red or blue.", None, CELL),
+    ("Carol said either mug would do her, red or blue.", None, CELL),
+    ("Carol says either mug will do her, red or blue, tomorrow.", None, CELL),
+    ("Carol and Alice say either mug will do her.", None, CELL),
+    ("Does either mug do her?", None, CELL),
+)
+
+
+def test_do_her_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DO_HER.refused_without((_rewrites54r._do_her54r,), monkeypatch)
+
+
+# _fussy_about54r: "P isn't fussy about plates, white or blue, either's fine (by him)"
+FUSSY_ABOUT = PhrasingCases()
+test_fussy_about = FUSSY_ABOUT.test(
+    (
+        "Mr Novak isn't fussy about plates, white or blue, either's fine by him.",
+        "plate_white>C | plate_blue>C",
+        KITCHEN,
+    ),
+    (
+        "Alice isn't fussy about mugs, red or blue, either's fine by her.",
+        "mug_red>A | mug_blue>A",
+        CELL,
+    ),
+    (
+        "Mrs Khan isn't picky about blankets, blue or grey, either's fine.",
+        "blanket_blue>C | blanket_grey>C",
+        WARD,
+    ),
+    (
+        "Jess isn't fussed about spanners, big or small, either's fine with her.",
+        "spanner_small>B | spanner_large>B",
+        WORKSHOP,
+    ),
+    # near: the pronoun does not fit, said as past, one thing of the kind, a time, a holding
+    ("Alice isn't fussy about mugs, red or blue, either's fine by him.", None, CELL),
+    ("Alice wasn't fussy about mugs, red or blue, either's fine.", None, CELL),
+    ("Alice isn't fussy about apples, either's fine.", None, CELL),
+    ("Alice isn't fussy about mugs, red or blue, either's fine tomorrow.", None, CELL),
+    ("Alice isn't fussy about mugs, she had the red one, either's fine.", None, CELL),
+)
+
+
+def test_fussy_about_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    FUSSY_ABOUT.refused_without((_rewrites54r._fussy_about54r,), monkeypatch)
+
+
+# _mind_which54r: "P won't mind which X she gets, so take her whichever's closest"
+MIND_WHICH = PhrasingCases()
+test_mind_which = MIND_WHICH.test(
+    (
+        "Mrs Khan won't mind which blanket she gets, so take her whichever's closest.",
+        "blanket_blue>C | blanket_grey>C",
+        WARD,
+    ),
+    (
+        "Bob won't mind which mug he gets, so take him whichever's closest.",
+        "mug_red>B | mug_blue>B",
+        CELL,
+    ),
+    (
+        "Lena won't mind which plate she gets, so give her whichever's nearest.",
+        "plate_white>B | plate_blue>B",
+        KITCHEN,
+    ),
+    (
+        "Priya doesn't mind which pen she gets, so bring her whichever one's handiest.",
+        "pen_black>A | pen_blue>A | pen_red>A",
+        OFFICE,
+    ),
+    # near: a pronoun that does not fit, said as past, one thing of the kind, a time
+    ("Bob won't mind which mug she gets, so take him whichever's closest.", None, CELL),
+    ("Bob won't mind which mug he gets, so take her whichever's closest.", None, CELL),
+    ("Bob didn't mind which mug he got, so take him whichever's closest.", None, CELL),
+    ("Bob won't mind which apple he gets, so take him whichever's closest.", None, CELL),
+    ("Bob won't mind which mug he gets, so take him whichever's closest tomorrow.", None, CELL),
+)
+
+
+def test_mind_which_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    MIND_WHICH.refused_without((_rewrites54r._mind_which54r,), monkeypatch)
+
+
+# _either_person54r: "Either person can have X, P or Q, you choose" is "P or Q can have X, …"
+EITHER_PERSON = PhrasingCases()
+test_either_person = EITHER_PERSON.test(
+    (
+        "Either person can have the chips, Person A or Person B, you choose.",
+        "chips>A | chips>B",
+        T21,
+    ),
+    ("Either person can have the apple, Alice or Bob, you choose.", "apple>A | apple>B", CELL),
+    ("Either person can have the salt, Marco or Lena, your call.", "salt>A | salt>B", KITCHEN),
+    ("Either person can have the torch, Kofi or Jess, you choose.", "torch>A | torch>B", WORKSHOP),
+    # near: a surface among the people, said as past, a time, one person twice, a person given
+    ("Either person can have the apple, Alice or the shelf, you choose.", None, CELL),
+    ("Either person had the apple, Alice or Bob.", None, CELL),
+    ("Either person can have the apple, Alice or Bob, tomorrow.", None, CELL),
+    ("Either person can have the apple, Alice or Alice.", None, CELL),
+    ("Either person can have Alice, Bob or Carol.", None, CELL),
+)
+
+
+def test_either_person_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    EITHER_PERSON.refused_without((_rewrites54r._either_person54r,), monkeypatch)
+
+
+# _yes_to_her54r: "X to P, I mean, yes, to her, …" says the request's person again
+YES_TO_HER = PhrasingCases()
+test_yes_to_her = YES_TO_HER.test(
+    ("Bottle to Person A, I mean, yes, to her, sorry, I'm rambling.", "bottle>A", ONE),
+    ("Apple to Bob, I mean, yes, to him, sorry.", "apple>B", CELL),
+    ("Salt to Lena, I mean, yes, to her, sorry, long day.", "salt>B", KITCHEN),
+    ("Jug to Mr Lee, I mean, yes, to him.", "jug>B", WARD),
+    # near: another person, a holding, a time, two tasks
+    ("Apple to Bob, I mean, yes, to her, sorry.", None, CELL),
+    ("Apple to Bob, I mean, yes, to Carol, sorry.", None, CELL),
+    ("Bob had the apple, I mean, yes, to him.", None, CELL),
+    ("Apple to Bob, I mean, yes, to him, tomorrow.", None, CELL),
+    ("Apple to Bob and cup to Carol, I mean, yes, to him.", None, CELL),
+)
+
+
+def test_yes_to_her_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    YES_TO_HER.refused_without((_rewrites54r._yes_to_her54r,), monkeypatch)
+
+
+# -- blind52: counts said of the one thing -------------------------------------------------------
+
+# _one_going54r: "There's just the one X going (left, spare), so P gets that"
+ONE_GOING = PhrasingCases()
+test_one_going = ONE_GOING.test(
+    ("There's just the one bottle going, so Person A gets that, no fuss.", "bottle>A", ONE),
+    ("There's just the one apple going, so Bob gets that, no fuss.", "apple>B", CELL),
+    ("There's just the one jug spare, so Mrs Khan can have that.", "jug>C", WARD),
+    ("There's just the one hammer going, so Jess gets that.", "hammer>B", WORKSHOP),
+    # near: one of two, a holding, a time, said as past, a surface
+    ("There's just the one mug going, so Bob gets that.", None, CELL),
+    ("There's just the one apple going, so Bob had that.", None, CELL),
+    ("There's just the one apple going, so Bob gets that tomorrow.", None, CELL),
+    ("There was just the one apple going, so Bob got that.", None, CELL),
+    ("There's just the one apple going, so the shelf gets that.", None, CELL),
+)
+
+
+def test_one_going_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ONE_GOING.refused_without((_rewrites54r._one_going54r,), monkeypatch)
+
+
+# _no_more54r: "…; there's only the one, so don't go looking for more"
+NO_MORE = PhrasingCases()
+test_no_more = NO_MORE.test(
+    (
+        "The bottle's for Person A; mind, there's only the one, so don't go looking for more.",
+        "bottle>A",
+        L24,
+    ),
+    (
+        "The apple's for Bob; mind, there's only the one, so don't go looking for more.",
+        "apple>B",
+        CELL,
+    ),
+    (
+        "The lemon's for Marco, there's just the one, so don't go hunting for another.",
+        "lemon>A",
+        KITCHEN,
+    ),
+    (
+        "The jug goes to Mr Lee; there's only the one, so no need to look for a second one.",
+        "jug>B",
+        WARD,
+    ),
+    # near: one of two, a holding, a time
+    ("The mug's for Bob; there's only the one, so don't go looking for more.", None, CELL),
+    ("Bob had the apple; there's only the one, so don't go looking for more.", None, CELL),
+    (
+        "The apple's for Bob tomorrow; there's only the one, so don't go looking for more.",
+        None,
+        CELL,
+    ),
+)
+
+
+def test_no_more_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NO_MORE.refused_without((_rewrites54r._no_more54r,), monkeypatch)
+
+
+# _all_asking54r: "A single bottle is all P's asking for (, nothing on top)"
+ALL_ASKING = PhrasingCases()
+test_all_asking = ALL_ASKING.test(
+    ("A single bottle is all Person A's asking for, nothing on top.", "bottle>A", ONE),
+    ("A single apple is all Bob's asking for, nothing on top.", "apple>B", CELL),
+    ("The jug is all Mr Lee's asking for.", "jug>B", WARD),
+    ("The stapler is all Priya's after, nothing more.", "stapler>A", OFFICE),
+    # near: one of two, said as past, a holding, a time
+    ("A single mug is all Bob's asking for.", None, CELL),
+    ("A single apple was all Bob was asking for.", None, CELL),
+    ("A single apple is all Bob had.", None, CELL),
+    ("A single apple is all Bob's asking for tomorrow.", None, CELL),
+)
+
+
+def test_all_asking_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ALL_ASKING.refused_without((_rewrites54r._all_asking54r,), monkeypatch)
+
+
+# _the_pair54r: "X and Y, the pair, …" is "X and Y, both of them, …"
+THE_PAIR = PhrasingCases()
+test_the_pair = THE_PAIR.test(
+    (
+        "The bottle and the crisps, the pair, up onto the shelf out of the dog's reach.",
+        "bottle@shelf & chips@shelf",
+        TWO,
+    ),
+    ("The cup and the apple, the pair, onto the table.", "cup@table & apple@table", CELL),
+    (
+        "The hammer and the drill, the pair, go on the bench.",
+        "hammer@bench & drill@bench",
+        WORKSHOP,
+    ),
+    ("The cup and the apple, the pair, go to Bob.", "cup>B & apple>B", CELL),
+    # near: one thing twice, a person, a time, a holding
+    ("The cup and the cup, the pair, onto the table.", None, CELL),
+    ("The cup and Bob, the pair, onto the table.", None, CELL),
+    ("The cup and the apple, the pair, onto the table tomorrow.", None, CELL),
+    ("The cup and the apple, the pair, Bob had them.", None, CELL),
+)
+
+
+def test_the_pair_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    THE_PAIR.refused_without((_rewrites54r._the_pair54r,), monkeypatch)
+
+
+# _where_reach54r: "… on the desk where Priya can reach it" is why there
+WHERE_REACH = PhrasingCases()
+test_where_reach = WHERE_REACH.test(
+    (
+        "Stapler in the box, oh wait, better on the desk where Priya can reach it.",
+        "stapler@desk",
+        OFFICE,
+    ),
+    ("Cup on the shelf, oh wait, better on the table where Bob can reach it.", "cup@table", CELL),
+    ("Put the salt on the counter where Lena can reach it.", "salt@counter", KITCHEN),
+    ("Put the teddy on the play mat where Lily can reach it.", "teddy@mat", NURSERY),
+    # near: a holding, a time, a thing 'reaching', no surface
+    ("Put the cup on the shelf where Bob had it.", None, CELL),
+    ("Put the cup on the shelf where Bob can reach it tomorrow.", None, CELL),
+    ("Put the cup on the shelf where the apple can reach it.", None, CELL),
+    ("Put the cup where Bob can reach it.", None, CELL),
+)
+
+
+def test_where_reach_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WHERE_REACH.refused_without((_rewrites54r._where_reach54r,), monkeypatch)

@@ -420,6 +420,280 @@ def _both_things54r(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
+# -- blind52: the robot's choice said of the person -----------------------------------------------
+
+# "Carol says either mug will do her, …": 'do her' is 'suit her'
+_DO_HER54R = re.compiled(
+    r"\bwill do (?:for )?(?P<pro>her|him)(?: (?:fine|nicely|just fine|very well|perfectly))?"
+    r"(?=\s*(?:,|[.!]?\s*$))",
+    _F,
+)
+
+
+def _one_before54r(words: str, lexicon: Lexicon) -> str | None:
+    """The one person ``words`` name (and no other), or None."""
+    who = _ids(words, lexicon, "human")
+    return next(iter(who)) if len(who) == 1 else None
+
+
+def _do_her54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "P says either mug will do her (fine)" (session 38's "will do for her")
+    is "… will do": 'her' / 'him' must fit the one person named before it (the choice is P's,
+    as "P says either mug will do" reads)."""
+    if "will do" not in text.lower():
+        return text
+    m = _DO_HER54R.search(text)
+    if m is None or _held54r(text[: m.start()]):
+        return text
+    p = _one_before54r(text[: m.start()], lexicon)
+    if p is None or not _agrees44r(p, m["pro"], lexicon):
+        return text
+    return f"{text[: m.start()]}will do{text[m.end() :]}"
+
+
+# "Mr Novak isn't fussy about plates, white or blue, either's fine by him."
+_FUSSY_ABOUT54R = re.compiled(
+    rf"^(?P<p>{_P46R})(?:'s not|'s n't| is not| isn't) (?:fussy|fussed|picky|particular|"
+    r"bothered) about "
+    r"(?:the |his |her )?(?P<xs>[a-z]+s)\b(?P<rest>\s*,[^;.!?]*?)(?:,? (?:either's|either is|"
+    r"either one's|either one is|both are|each is) (?:fine|ok|okay|good|alright|grand)(?: (?:by|"
+    r"with|for) (?P<pro>him|her))?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _fussy_about54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "P isn't fussy (fussed, picky) about plates, white or blue, either's
+    fine (by him)" is "P can have either of the plates, white or blue, either's fine": the things
+    one kind of the scene, 'him' / 'her' fitting P."""
+    low = text.lower()
+    if " about " not in low or "either" not in low:
+        return text
+    m = _FUSSY_ABOUT54R.match(text.strip())
+    if m is None or _held54r(m["rest"]):
+        return text
+    p = _person46r(m["p"], lexicon)
+    xs = _ids(m["xs"], lexicon, "object")
+    if p is None or len(xs) < 2 or _ids(m["xs"], lexicon, "human"):
+        return text
+    if m["pro"] is not None and not _agrees44r(p, m["pro"], lexicon):
+        return text
+    return f"{m['p']} can have either of the {m['xs']}{m['rest']}, either's fine{m['end'] or '.'}"
+
+
+# "Mrs Khan won't mind which blanket she gets, so take her whichever's closest."
+_MIND_WHICH54R = re.compiled(
+    rf"^(?P<p>{_P46R}) (?:won't|will not|doesn't|does not|wouldn't|would not) (?:mind|care) which "
+    r"(?P<x>[a-z]+) (?P<pro>she|he) (?:gets|has|takes|ends up with), so (?P<v>take|give|bring|hand|"
+    r"pass) (?P<pro2>her|him) whichever(?: one)?(?:'s| is) (?P<q>closest|nearest|nearer|closer|"
+    r"handiest|handier|easiest|easier|to hand)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _mind_which54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "P won't mind which blanket she gets, so take her whichever's closest" is
+    "Take P whichever blanket is closest" (the pronouns fitting P; the kind two or more things of
+    the scene)."""
+    if " which " not in text.lower():
+        return text
+    m = _MIND_WHICH54R.match(text.strip())
+    if m is None:
+        return text
+    p = _person46r(m["p"], lexicon)
+    if p is None or len(_ids(m["x"], lexicon, "object")) < 2 or _ids(m["x"], lexicon, "human"):
+        return text
+    if not _agrees44r(p, m["pro"], lexicon) or not _agrees44r(p, m["pro2"], lexicon):
+        return text
+    verb = m["v"][:1].upper() + m["v"][1:].lower()
+    return f"{verb} {m['p']} whichever {m['x']} is {m['q']}{m['end'] or '.'}"
+
+
+# "Either person can have the chips, Person A or Person B, you choose."
+_EITHER_PERSON54R = re.compiled(
+    rf"^(?:either person|either of them|either one(?: of them)?|either of the two|one or the other)"
+    rf" (?P<v>can have|gets|can take|may have|could have) (?P<x>[^,;.!?]+?),\s*(?P<pq>{_P46R} or "
+    rf"{_P46R})(?P<rest>\s*,[^;.!?]*)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _either_person54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "Either person (either of them) can have the chips, P or Q, (you
+    choose)" is "P or Q can have the chips, …": P and Q two people of the scene, the thing only
+    things."""
+    if "either" not in text.lower() and "one or the other" not in text.lower():
+        return text
+    m = _EITHER_PERSON54R.match(text.strip())
+    if m is None or _held54r(m["rest"] or ""):
+        return text
+    who = _ids(m["pq"], lexicon, "human")
+    if len(who) != 2 or _ids(m["pq"], lexicon) != who or not _ids(m["x"], lexicon, "object"):
+        return text
+    if _ids(m["x"], lexicon, "human"):
+        return text
+    return f"{m['pq']} {m['v']} {m['x']}{m['rest'] or ''}{m['end'] or '.'}"
+
+
+# "Bottle to Person A, I mean, yes, to her, sorry, I'm rambling.": the request said again
+_YES_TO_HER54R = re.compiled(
+    rf"^(?P<head>[^,;]+?)\s*,\s*(?:i mean|i meant|that is),?\s*(?:yes|yeah|yep|right|aye),?\s*"
+    rf"(?:to|for) (?P<who>her|him|{_P46R})(?P<rest>\s*,[^;]*|\s*[.!]?)$",
+    _F,
+)
+
+
+def _yes_to_her54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "X to P, I mean, yes, to her, …" says the request's person again (a
+    'yes' confirming, not a correction): "X to P, …" — 'her' / 'him' fitting P, or P named again,
+    and the request one handover."""
+    if (
+        "yes" not in text.lower()
+        and "yeah" not in text.lower()
+        and "yep" not in text.lower()
+        and ("right" not in text.lower() and "aye" not in text.lower())
+    ):
+        return text
+    m = _YES_TO_HER54R.match(text.strip())
+    if m is None or _held54r(m["head"]):
+        return text
+    first = _one_task51r(f"{m['head']}.", lexicon)
+    if first is None or first[0] != "deliver":
+        return text
+    who = m["who"].lower()
+    if who in ("her", "him"):
+        if not _agrees44r(first[2], who, lexicon):
+            return text
+    elif _person46r(m["who"], lexicon) != first[2]:
+        return text
+    return f"{m['head']}{m['rest']}"
+
+
+# -- blind52: counts said of the one thing -------------------------------------------------------
+
+# "There's just the one bottle going, so Person A gets that, no fuss."
+_ONE_GOING54R = re.compiled(
+    rf"^there(?:'s| is) (?:just |only )?the one (?P<x>[a-z]+) (?:going|left|spare|going spare|"
+    rf"about|around|here),?\s*so (?P<p>{_P46R}) (?:gets|can have|has) (?:that|it|that one)"
+    r"(?P<rest>\s*,[^;.!?]*)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_going54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "There's just the one bottle going (left, spare), so P gets that" is
+    "There's just the one bottle, so P gets it" when the scene holds one bottle (then session
+    35's `_the_one35r` reading)."""
+    if "the one" not in text.lower():
+        return text
+    m = _ONE_GOING54R.match(text.strip())
+    if m is None or _held54r(m["rest"] or "") or _person46r(m["p"], lexicon) is None:
+        return text
+    x = _ids(m["x"], lexicon)
+    if len(x) != 1 or _ids(m["x"], lexicon, "object") != x:
+        return text
+    return f"There's just the one {m['x']}, so {m['p']} gets it{m['rest'] or ''}{m['end'] or '.'}"
+
+
+# "…; mind, there's only the one, so don't go looking for more."
+_NO_MORE54R = re.compiled(
+    r"(?P<keep>(?:there(?:'s| is)|it's|that's) (?:only|just) (?:the )?one(?: of them)?),?\s*so "
+    r"(?:don't|do not|no need to|there's no need to) (?:go )?(?:looking|look|hunting|hunt|search|"
+    r"searching) (?:for|round for|around for) (?:more|another(?: one)?|a second(?: one)?|others|"
+    r"any more)(?=\s*[.!]?\s*$)",
+    _F,
+)
+
+
+def _no_more54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "…; there's only the one, so don't go looking for more" closes with why
+    there is one: "…; there's only the one" (the older rules' reading of that count)."""
+    low = text.lower()
+    if "look" not in low and "hunt" not in low and "search" not in low:
+        return text
+    m = _NO_MORE54R.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m['keep']}{text[m.end() :]}"
+
+
+# "A single bottle is all Person A's asking for, nothing on top."
+_ALL_ASKING54R = re.compiled(
+    r"^(?P<x>(?:a|one|the) (?:single |one )?(?P<n>[a-z]+(?: [a-z]+)?)) is all "
+    rf"(?P<p>{_P46R})(?:'s| is) "
+    r"(?P<v>asking for|after|wanting|requesting)(?:,\s*nothing (?:on top|more|else|extra|besides))?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _all_asking54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "A single bottle is all P's asking for (, nothing on top)" is "P's
+    asking for a single bottle": the thing one of the scene, P one person."""
+    if " is all " not in text.lower():
+        return text
+    m = _ALL_ASKING54R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    x = _ids(m["n"], lexicon)
+    if len(x) != 1 or _ids(m["n"], lexicon, "object") != x:
+        return text
+    thing = m["x"][:1].lower() + m["x"][1:]
+    return f"{m['p']}'s {m['v']} {thing}{m['end'] or '.'}"
+
+
+# "The bottle and the crisps, the pair, up onto the shelf …"
+_THE_PAIR54R = re.compiled(
+    r"^(?P<list>(?:the )?[a-z]+(?: [a-z]+)? and (?:the )?[a-z]+(?: [a-z]+)?),\s*(?:the pair|the "
+    r"pair of them|the two|the two of them|the both of them|the twosome),",
+    _F,
+)
+
+
+def _the_pair54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "X and Y, the pair (the two of them), …" opening the request is "X and Y,
+    both of them, …" when X and Y are two things of the scene."""
+    if (
+        "the pair" not in text.lower()
+        and "the two" not in text.lower()
+        and ("the both" not in text.lower() and "twosome" not in text.lower())
+    ):
+        return text
+    m = _THE_PAIR54R.match(text.strip())
+    if m is None:
+        return text
+    x, y = (_ids(n, lexicon) for n in re.compiled(r" and ", _F).split(m["list"]))
+    if len(x) != 1 or len(y) != 1 or x == y or _ids(m["list"], lexicon, "human"):
+        return text
+    return f"{m['list']}, both of them,{text.strip()[m.end() :]}"
+
+
+# "Stapler in the box, oh wait, better on the desk where Priya can reach it."
+_WHERE_REACH54R = re.compiled(
+    rf"(?P<s>\b(?:on|in|onto|into) the [a-z]+(?: [a-z]+)?) where (?:{_P46R}|she|he|they) can "
+    r"(?:reach|get at|get to|grab|see) (?:it|them)(?=\s*[.!]?\s*$)",
+    _F,
+)
+
+
+def _where_reach54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "… on the desk where Priya can reach it" ending the request is "… on the
+    desk": why there, the surface one of the scene (a scene of one desk: the words pick no other),
+    the person named one of the scene."""
+    if " where " not in text.lower():
+        return text
+    m = _WHERE_REACH54R.search(text)
+    if m is None or _held54r(text[: m.start()]):
+        return text
+    if len(_ids(m["s"], lexicon, "surface")) != 1 or _ids(m["s"], lexicon, "object"):
+        return text
+    said = text[m.end("s") : m.end()]
+    who = _ids(said, lexicon, "human")
+    if _ids(said, lexicon) != who or len(who) > 1:
+        return text
+    return f"{text[: m.end('s')]}{text[m.end() :]}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_cue_idiom54r, _to_have54r)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
@@ -435,6 +709,16 @@ _STEPS54R: tuple[Callable[[str, Lexicon], str], ...] = (
     _lone54r,
     _wanted_by54r,
     _we_have54r,
+    _do_her54r,
+    _fussy_about54r,
+    _mind_which54r,
+    _either_person54r,
+    _yes_to_her54r,
+    _one_going54r,
+    _no_more54r,
+    _all_asking54r,
+    _the_pair54r,
+    _where_reach54r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
 REFUSE54R: tuple[Callable[[str, Lexicon], None], ...] = ()
