@@ -813,3 +813,125 @@ test_where_reach = WHERE_REACH.test(
 
 def test_where_reach_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     WHERE_REACH.refused_without((_rewrites54r._where_reach54r,), monkeypatch)
+
+
+# -- blind52: wants said with what the person is doing -------------------------------------------
+
+# _at_her54r: "P is marking at her desk and wants X" (P's own place, not where X goes)
+AT_HER = PhrasingCases()
+test_at_her = AT_HER.test(
+    (
+        "Mrs Ortiz is marking at her desk and wants both the books, red and green, brought to her.",
+        "book_red>A & book_green>A",
+        CLASSROOM,
+    ),
+    ("Bob is reading at his table and wants the apple.", "apple>B", CELL),
+    ("Mr Lee is resting at his bedside and wants the magazine.", "magazine>B", WARD),
+    ("Priya is typing at her desk and needs the stapler.", "stapler>A", OFFICE),
+    ("Jess is working at her bench and wants the drill.", "drill>B", WORKSHOP),
+    # near: said as past, a holding, a time, someone else's place, a thing, a question
+    ("Bob was reading at his table and wants the apple.", None, CELL),
+    ("Bob is reading at his table and wanted the apple.", None, CELL),
+    ("Bob is reading at his table and had the apple.", None, CELL),
+    ("Bob is reading at his table and wants the apple tomorrow.", None, CELL),
+    ("Bob is reading at her table and wants the apple.", None, CELL),
+    ("Bob is reading at his apple and wants the cup.", None, CELL),
+    ("Is Bob reading at his table and wants the apple?", None, CELL),
+)
+
+
+def test_at_her_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    AT_HER.refused_without((_rewrites54r._at_her54r,), monkeypatch)
+
+
+# _likes_to54r: ", Lily likes to bang them together (at lunch)": why, a habit, taken off
+LIKES_TO = PhrasingCases()
+test_likes_to = LIKES_TO.test(
+    (
+        "Both of the blocks onto the high chair, please, Lily likes to bang them together at "
+        "lunch.",
+        "block_red@highchair & block_green@highchair",
+        NURSERY,
+    ),
+    (
+        "Both mugs onto the shelf, Carol likes to stack them.",
+        "mug_red@shelf & mug_blue@shelf",
+        CELL,
+    ),
+    (
+        "Both plates onto the rack, please, Lena likes to line them up.",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    (
+        "Both spanners onto the bench, Kofi likes to lay them out in order.",
+        "spanner_small@bench & spanner_large@bench",
+        WORKSHOP,
+    ),
+    # near: a time the task waits for, another place or person named, said as past, a holding
+    ("Both mugs onto the shelf, Carol likes to stack them tomorrow.", None, CELL),
+    ("Both mugs onto the shelf, Carol likes to stack them on the table.", None, CELL),
+    ("Both mugs onto the shelf, Carol likes to give them to Bob.", None, CELL),
+    ("Both mugs onto the shelf, Carol liked to stack them.", None, CELL),
+    ("Both mugs onto the shelf, Carol had them.", None, CELL),
+    ("Both mugs onto the shelf, Bob likes to stack them after lunch.", None, CELL),
+)
+
+
+def test_likes_to_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    LIKES_TO.refused_without((_rewrites54r._likes_to54r,), monkeypatch)
+
+
+# _having_lot54r: "Every (last) one of the four things, P's having the lot (for his picnic)"
+HAVING_LOT = PhrasingCases()
+test_having_lot = HAVING_LOT.test(
+    (
+        "Every last one of the four things, Person B's having the lot for his picnic.",
+        "bottle>B & chips>B & cup>B & apple>B",
+        SQ,
+    ),
+    (
+        "Every last one of the things, Bob's having the lot.",
+        "cup>B & bottle>B & chips>B & apple>B & mug_red>B & mug_blue>B",
+        CELL,
+    ),
+    (
+        "All the things, Marco's taking the lot for his stall.",
+        "plate_white>A & knife>A & lemon>A & salt>A & plate_blue>A & tongs>A",
+        KITCHEN,
+    ),
+    (
+        "Every single one of the six things, Carol's getting the lot.",
+        "cup>C & bottle>C & chips>C & apple>C & mug_red>C & mug_blue>C",
+        CELL,
+    ),
+    # near: a holding, a time, a count the scene does not meet, a surface
+    ("Every last one of the things, Bob had the lot.", None, CELL),
+    ("Every last one of the things, Bob's having the lot tomorrow.", None, CELL),
+    ("Every last one of the four things, Bob's having the lot.", None, CELL),
+    ("Every last one of the things, the shelf's having the lot.", None, CELL),
+)
+
+
+def test_having_lot_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    HAVING_LOT.refused_without((_rewrites54r._having_lot54r,), monkeypatch)
+
+
+# _only_one54r: "Only one thing wanted by P (today), and that's the X"
+ONLY_ONE = PhrasingCases()
+test_only_one = ONLY_ONE.test(
+    ("Only one thing wanted by Person B today, and that's the chips.", "chips>B", F41),
+    ("Only one thing wanted by Bob, and that's the apple.", "apple>B", CELL),
+    ("Only one thing needed by Marco today, and that's the lemon.", "lemon>A", KITCHEN),
+    ("Only one thing asked for by Mrs Khan, and it's the magazine.", "magazine>C", WARD),
+    # near: one of two, said as past, a time, a surface
+    ("Only one thing wanted by Bob, and that's the mug.", None, CELL),
+    ("Only one thing was wanted by Bob, and that's the apple.", None, CELL),
+    ("Only one thing wanted by Bob tomorrow, and that's the apple.", None, CELL),
+    ("Only one thing wanted by Bob, and that was the apple.", None, CELL),
+    ("Only one thing wanted by the shelf, and that's the apple.", None, CELL),
+)
+
+
+def test_only_one_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ONLY_ONE.refused_without((_rewrites54r._only_one54r,), monkeypatch)

@@ -6,13 +6,20 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids
+from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites44r import _agrees44r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites51r import _CUE51R, _one_task51r
 from hltl.grounding._rewrites53r import _held53r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node, tasks
+
+
+def _says54r(text: str, *words: str) -> bool:
+    """Whether ``text`` (lower-cased) holds one of ``words``: a rule's cheap word test."""
+    low = text.lower()
+    return any(w in low for w in words)
+
 
 # "Person A has asked for it": a present want, not a holding
 _HAS_ASKED54R = re.compiled(r"\b(?:has|'s) (?:asked|requested|been asking) for\b", _F)
@@ -694,6 +701,126 @@ def _where_reach54r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.end('s')]}{text[m.end() :]}"
 
 
+# -- blind52: wants said with what the person is doing -------------------------------------------
+
+# "Mrs Ortiz is marking at her desk and wants both the books, …": where P is, then the want
+_AT_HER54R = re.compiled(
+    rf"^(?P<p>{_P46R}) (?P<is>is|'s) (?P<v>[a-z]+ing) at (?P<pos>her|his|their) "
+    r"(?P<s>[a-z]+(?: [a-z]+)?) (?P<and>and (?:wants|needs|would like|'d like|is after|is asking "
+    r"for)\b)",
+    _F,
+)
+
+
+def _at_her54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "P is marking at her desk and wants X" is "P is marking and wants X":
+    where P is doing something (her desk, his table: P's own place) is not where X goes; P one
+    person of the scene, the want said now."""
+    if (
+        " at her " not in text.lower()
+        and " at his " not in text.lower()
+        and (" at their " not in text.lower())
+    ):
+        return text
+    m = _AT_HER54R.match(text.strip())
+    p = None if m is None else _person46r(m["p"], lexicon)
+    if m is None or p is None or _held54r(m["v"]):
+        return text
+    pro = {"his": "him", "her": "her"}.get(m["pos"].lower())
+    if pro is not None and not _agrees44r(p, pro, lexicon):
+        return text
+    if _ids(m["s"], lexicon, "object") or _ids(m["s"], lexicon, "human"):
+        return text
+    rest = text.strip()[m.end() :]
+    return f"{m['p']} {m['is']} {m['v']} {m['and']}{rest}"
+
+
+# "Both of the blocks onto the high chair, please, Lily likes to bang them together at lunch."
+_LIKES_TO54R = re.compiled(
+    rf",\s*(?P<p>{_P46R}|she|he|they) (?:likes|loves|enjoys|like|love|enjoy) to (?P<v>[a-z]+) "
+    r"(?:them|it)(?P<tail>(?: [a-z]+){0,4})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _likes_to54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): a placing or handover, then ", Lily likes to bang them together (at
+    lunch)" — why, naming nothing of the scene but the person (what P likes to do with them, a
+    habit, not a time the task waits for): taken off."""
+    if not _says54r(text, " like", " love", " enjoy"):
+        return text
+    m = _LIKES_TO54R.search(text)
+    if m is None or _held54r(text):
+        return text
+    said = f"{m['v']} {m['tail']}"
+    if _ids(said, lexicon) or _DEFER54R.search(m["tail"]):
+        return text
+    if m["p"].lower() not in ("she", "he", "they") and _person46r(m["p"], lexicon) is None:
+        return text
+    head = text[: m.start()]
+    node = _reading(f"{head}.", lexicon)
+    if node is None:
+        return text
+    return f"{head}{m['end'] or '.'}"
+
+
+# a time the task would wait for (a remark ending on one is left to the older rules)
+_DEFER54R = re.compiled(
+    r"\b(?:later|tomorrow|tonight|soon|after|before|when|once|until|till|next|this (?:evening|"
+    r"afternoon|morning))\b",
+    _F,
+)
+
+
+# "Every last one of the four things, Person B's having the lot for his picnic."
+_HAVING_LOT54R = re.compiled(
+    r"^(?P<all>every (?:last |single )?one of the (?:[a-z]+ )?(?:things|items)|all (?:of )?the "
+    rf"(?:[a-z]+ )?(?:things|items)),\s*(?P<p>{_P46R})(?:'s| is) (?:having|taking|getting) (?:the "
+    r"lot|them all|all of them|everything)(?: for (?:his|her|their) [a-z]+)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _having_lot54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "Every (last) one of the four things, P's having the lot (for his
+    picnic)" is "Every one of the four things for P" (the count checked as the older rules check
+    it)."""
+    if (
+        "the lot" not in text.lower()
+        and " all" not in text.lower()
+        and ("everything" not in text.lower())
+    ):
+        return text
+    m = _HAVING_LOT54R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    said = re.compiled(r"\b(?:last|single) ", _F).sub("", m["all"], count=1)
+    return f"{said} for {m['p']}{m['end'] or '.'}"
+
+
+# "Only one thing wanted by Person B today, and that's the chips."
+_ONLY_ONE54R = re.compiled(
+    rf"^only (?:one|the one|a single) thing (?:wanted|needed|asked for) by (?P<p>{_P46R})"
+    r"(?: today| now| this time| at the moment)?,?\s*(?:and )?(?:that's|that is|it's|it is) "
+    r"(?P<x>the [a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "Only one thing wanted by P (today), and that's the X" is "Just the X for
+    P" (P one person, X one thing of the scene; 'today' the speaker's context, read as now)."""
+    if "only" not in text.lower():
+        return text
+    m = _ONLY_ONE54R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    x = _ids(m["x"], lexicon)
+    if len(x) != 1 or _ids(m["x"], lexicon, "object") != x:
+        return text
+    return f"Just {m['x']} for {m['p']}{m['end'] or '.'}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_cue_idiom54r, _to_have54r)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
@@ -719,6 +846,10 @@ _STEPS54R: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_asking54r,
     _the_pair54r,
     _where_reach54r,
+    _at_her54r,
+    _likes_to54r,
+    _having_lot54r,
+    _only_one54r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
 REFUSE54R: tuple[Callable[[str, Lexicon], None], ...] = ()
