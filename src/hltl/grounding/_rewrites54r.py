@@ -716,11 +716,7 @@ def _at_her54r(text: str, lexicon: Lexicon) -> str:
     """Session 54 (12r): "P is marking at her desk and wants X" is "P is marking and wants X":
     where P is doing something (her desk, his table: P's own place) is not where X goes; P one
     person of the scene, the want said now."""
-    if (
-        " at her " not in text.lower()
-        and " at his " not in text.lower()
-        and (" at their " not in text.lower())
-    ):
+    if not _says54r(text, " at her ", " at his ", " at their "):
         return text
     m = _AT_HER54R.match(text.strip())
     p = None if m is None else _person46r(m["p"], lexicon)
@@ -747,7 +743,7 @@ def _likes_to54r(text: str, lexicon: Lexicon) -> str:
     """Session 54 (12r): a placing or handover, then ", Lily likes to bang them together (at
     lunch)" — why, naming nothing of the scene but the person (what P likes to do with them, a
     habit, not a time the task waits for): taken off."""
-    if not _says54r(text, " like", " love", " enjoy"):
+    if not _says54r(text, "like to", "likes to", "love to", "loves to", "enjoy"):
         return text
     m = _LIKES_TO54R.search(text)
     if m is None or _held54r(text):
@@ -785,11 +781,7 @@ def _having_lot54r(text: str, lexicon: Lexicon) -> str:
     """Session 54 (12r): "Every (last) one of the four things, P's having the lot (for his
     picnic)" is "Every one of the four things for P" (the count checked as the older rules check
     it)."""
-    if (
-        "the lot" not in text.lower()
-        and " all" not in text.lower()
-        and ("everything" not in text.lower())
-    ):
+    if not _says54r(text, "the lot", "them all", "all of them", "everything"):
         return text
     m = _HAVING_LOT54R.match(text.strip())
     if m is None or _person46r(m["p"], lexicon) is None:
@@ -810,7 +802,7 @@ _ONLY_ONE54R = re.compiled(
 def _only_one54r(text: str, lexicon: Lexicon) -> str:
     """Session 54 (12r): "Only one thing wanted by P (today), and that's the X" is "Just the X for
     P" (P one person, X one thing of the scene; 'today' the speaker's context, read as now)."""
-    if "only" not in text.lower():
+    if not _says54r(text, "only one thing", "only the one thing", "only a single thing"):
         return text
     m = _ONLY_ONE54R.match(text.strip())
     if m is None or _person46r(m["p"], lexicon) is None:
