@@ -145,7 +145,6 @@ KNOWN_MISSES = frozenset(
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
-        "Both blocks on the high chair, she likes to bang them.",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
