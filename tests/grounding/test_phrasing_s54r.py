@@ -9,6 +9,7 @@ import pytest
 
 from hltl.bench.grounding import show_tree
 from hltl.grounding import _rewrites54r, offline, phrasing
+from hltl.grounding.tree import tasks
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -935,3 +936,33 @@ test_only_one = ONLY_ONE.test(
 
 def test_only_one_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     ONLY_ONE.refused_without((_rewrites54r._only_one54r,), monkeypatch)
+
+
+# -- 12c's wrappers fuzz: the person put right, then the thing ------------------------------------
+
+# _normalise3._cue_reason28r keeps "P's the thirsty one" between a cue and a correction (who it
+# is, as "it's P" is kept): main took it for a reason and read the thing to the first person
+WHO_THEN_THING = [
+    (
+        "The bottle to Person A, no hang on, I've got them mixed up, Person B's the thirsty one, "
+        "scratch that, the chips",
+        L24,
+    ),
+    ("The cup to Alice, no wait, Bob's the thirsty one, scratch that, the apple.", CELL),
+    ("Give Alice the cup, no hang on, Bob's the thirsty one, make that the bottle.", CELL),
+    ("The jug to Ruth, no, wait, Mr Lee's the thirsty one, scratch that, the pills.", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), WHO_THEN_THING)
+def test_who_then_thing_not_to_the_first(text: str, scene) -> None:
+    got = tree(text, scene)
+    assert got is None or "A" not in {t.target for t in tasks(got)}
+
+
+def test_who_then_thing_kept() -> None:
+    # "… Lena's the one who needs it, scratch that, the knife": read by session 41's rule
+    got = tree(
+        "The tongs to Marco, no, Lena's the one who needs it, scratch that, the knife.", KITCHEN
+    )
+    assert got is not None and show_tree(got) == "knife>B"
