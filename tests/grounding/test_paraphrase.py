@@ -473,8 +473,6 @@ KNOWN_MISSES = frozenset(
         "on the desk.",
         "Ava's changing Lily. So wipes to Ava first. Then once she's got them, bib on the high "
         "chair.",
-        "The small box and the medium one, the pair of them, stacked on the pallet with the big "
-        "one.",
         "Alice doesn't want the red mug, she's funny about it; the blue one's the one to take her.",
         "Bob's after the crisps, but leave the bottle, he's got his own.",
         "Person A wants anything except the apple, so give her the cup.",

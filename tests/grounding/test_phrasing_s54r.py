@@ -966,3 +966,51 @@ def test_who_then_thing_kept() -> None:
         "The tongs to Marco, no, Lena's the one who needs it, scratch that, the knife.", KITCHEN
     )
     assert got is not None and show_tree(got) == "knife>B"
+
+
+# _stacked54r: "X and Y, the pair of them, stacked on the pallet (with the big one)"
+STACKED = PhrasingCases()
+test_stacked = STACKED.test(
+    (
+        "The small box and the medium one, the pair of them, stacked on the pallet with the big "
+        "one.",
+        "box_small@pallet & box_medium@pallet",
+        DEPOT,
+    ),
+    ("The white plate, stacked on the rack with the blue one.", "plate_white@rack", KITCHEN),
+    (
+        "The small spanner and the drill, both of them, set on the bench beside the large spanner.",
+        "spanner_small@bench & drill@bench",
+        WORKSHOP,
+    ),
+    (
+        "The black pen and the red pen, the pair, put on the desk next to the blue pen.",
+        "pen_black@desk & pen_red@desk",
+        OFFICE,
+    ),
+    (
+        "The cup and the apple, the pair of them, stacked on the shelf.",
+        "cup@shelf & apple@shelf",
+        CELL,
+    ),
+    # near: the thing beside is not on that surface, a holding, a time, a person, not a surface
+    ("The small box and the medium one, stacked on the belt with the big one.", None, DEPOT),
+    ("The small box, stacked on the pallet with the medium one.", None, DEPOT),
+    (
+        "Tom had the small box and the medium one, stacked on the pallet with the big one.",
+        None,
+        DEPOT,
+    ),
+    (
+        "The small box and the medium one, stacked on the pallet with the big one tomorrow.",
+        None,
+        DEPOT,
+    ),
+    ("The small box and the medium one, stacked on the pallet with Tom.", None, DEPOT),
+    ("The cup and the apple, both of them, set on Bob.", None, CELL),
+    ("The cup and Bob, both of them, set on the table.", None, CELL),
+)
+
+
+def test_stacked_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    STACKED.refused_without((_rewrites54r._stacked54r,), monkeypatch)

@@ -12,6 +12,7 @@ from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites51r import _CUE51R, _one_task51r
 from hltl.grounding._rewrites53r import _held53r
 from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.phrasing import starting_on
 from hltl.grounding.tree import Node, tasks
 
 
@@ -813,6 +814,48 @@ def _only_one54r(text: str, lexicon: Lexicon) -> str:
     return f"Just {m['x']} for {m['p']}{m['end'] or '.'}"
 
 
+# "The small box and the medium one, the pair of them, stacked on the pallet (with the big one)."
+_STACKED54R = re.compiled(
+    r"^(?P<things>[^,;.!?]+?)\s*,?\s*(?:(?:the pair of them|the pair|both of them|the two of "
+    r"them),\s*(?:set|put) |(?:the pair of them|the pair|both of them|the two of them),\s*)?"
+    r"(?:(?:stacked|piled|stood|placed) )?(?:up )?on (?P<s>the [a-z]+(?: [a-z]+)?)"
+    r"(?: (?:with|next to|beside|alongside) (?P<x>the [a-z]+(?: [a-z]+)?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _stacked54r(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12r): "X and Y, the pair of them, stacked (set) on the pallet" is "Stack X and
+    Y on the pallet" (things only, one surface); "… with the big one" only when the big one
+    already stands on that surface in the scene (beside it, not a third thing to move: session
+    35's `_with_one_there35t` takes it off first)."""
+    if not _says54r(text, "stacked", "piled", "stood", "placed", "the pair", "of them,"):
+        return text
+    m = _STACKED54R.match(text.strip())
+    if m is None or _held54r(m["things"]) or m["things"].lower().startswith(("stack", "pile")):
+        return text
+    things, surface = _ids(m["things"], lexicon), _ids(m["s"], lexicon, "surface")
+    if not things or _ids(m["things"], lexicon, "object") != things or len(surface) != 1:
+        return text
+    if _ids(m["s"], lexicon) != surface:
+        return text
+    if m["x"] is not None:
+        x = _ids(m["x"], lexicon, "object")
+        if m["x"].lower().endswith(" one"):
+            kinds = {o.category for o in lexicon.scene.objects if o.id in things}
+            word = m["x"][: -len(" one")]
+            x = {i for c in kinds for i in _ids(f"{word} {c}", lexicon, "object")}
+        if len(x) != 1 or x & things or not starting_on(x, next(iter(surface)), lexicon):
+            return text
+    head = m["things"].strip()
+    out = f"Stack {head[:1].lower() + head[1:]} on {m['s']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    got = [] if node is None else list(tasks(node))
+    if not got or any(t.kind != "place" or t.target not in surface for t in got):
+        return text
+    return out
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_cue_idiom54r, _to_have54r)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
@@ -838,6 +881,7 @@ _STEPS54R: tuple[Callable[[str, Lexicon], str], ...] = (
     _all_asking54r,
     _the_pair54r,
     _where_reach54r,
+    _stacked54r,
     _at_her54r,
     _likes_to54r,
     _having_lot54r,
