@@ -166,8 +166,12 @@ test_who_now = WHO_NOW.test(
     ("Torch for Kofi, ah, not him, Jess is the one working late.", "torch>B", WORKSHOP),
     ("Stapler to Sam, oops, got that wrong, Priya's doing the filing.", "stapler>A", OFFICE),
     ("Scanner for Tom, ah, not him, Mia's the one doing stock.", "scanner>A", DEPOT),
-    # near: why Bob, or why not him? (no 'the one', nothing owned up to)
+    # near: why Bob, or why not him? (no 'the one', nothing owned up to; a word that may say why
+    # not: 12c's probe)
     ("Give the cup to Alice, no, Bob's leaving.", None, CELL),
+    ("Give Alice the crisps, no, Bob's the allergic one.", None, CELL),
+    ("Give Alice the apple, no, Bob's the full one.", None, CELL),
+    ("Give Alice the cup, no, Bob's the sober one.", None, CELL),
     ("Give the cup to Alice, no, Bob's going.", None, CELL),
     # near: the pronoun does not fit the request's person; the same person; no cue
     ("Give the cup to Alice, not him, Bob's the one waiting.", None, CELL),
@@ -838,6 +842,8 @@ test_at_her = AT_HER.test(
     ("Bob is reading at her table and wants the apple.", None, CELL),
     ("Bob is reading at his apple and wants the cup.", None, CELL),
     ("Is Bob reading at his table and wants the apple?", None, CELL),
+    # near: a surface after the want (which books, or where? 12c's probe)
+    ("Mrs Ortiz is marking at her desk and wants both the books on the shelf.", None, CLASSROOM),
 )
 
 

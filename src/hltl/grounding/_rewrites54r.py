@@ -66,10 +66,62 @@ _WHO_NOW54R = re.compiled(
     rf"^(?P<head>[^,;]+?)\s*,\s*(?P<cue>{_CUE51R})?(?P<not>(?:not (?P<pro>her|him),?\s*))?"
     r"(?P<own>(?:i've|i have|i'd|i) got (?:them|those|that|it|the two) (?:mixed up|muddled|wrong|"
     r"the wrong way round),?\s*|got that wrong,?\s*|wrong person,?\s*)?"
-    rf"(?:(?P<p0>{_P46R}),?\s*i mean,?\s*)?(?P<p>{_P46R})(?:'s| is) (?P<why>(?P<one>the [a-z]+ one|"
-    r"the one (?:who's |who is |that's )?[a-z]+ing(?: [a-z]+)?)|[a-z]+ing(?: (?:the |some )?"
-    r"[a-z]+)?)(?P<end>\s*[.!]?)$",
+    rf"(?:(?P<p0>{_P46R}),?\s*i mean,?\s*)?(?P<p>{_P46R})(?:'s| is) (?P<why>(?P<one>the "
+    r"(?P<adj>[a-z]+) one|the one (?:who's |who is |that's )?(?P<ing>[a-z]+ing)(?: [a-z]+)?)|"
+    r"(?P<ing2>[a-z]+ing)(?: (?:the |some )?[a-z]+)?)(?P<end>\s*[.!]?)$",
     _F,
+)
+# why it is Q, said of Q: wanting it ("the thirsty one") or doing what needs it ("the one taping
+# up"); any other word may say why NOT Q ("Bob's the allergic one", "the full one": 12c's probe)
+_WANTING54R = frozenset(
+    [
+        "thirsty",
+        "hungry",
+        "peckish",
+        "starving",
+        "famished",
+        "parched",
+        "cold",
+        "chilly",
+        "freezing",
+    ]
+)
+_DOING54R = frozenset(
+    [
+        "asking",
+        "waiting",
+        "taping",
+        "working",
+        "writing",
+        "cooking",
+        "baking",
+        "reading",
+        "drinking",
+        "eating",
+        "stirring",
+        "using",
+        "doing",
+        "needing",
+        "wanting",
+        "marking",
+        "measuring",
+        "cutting",
+        "cleaning",
+        "signing",
+        "filing",
+        "studying",
+        "painting",
+        "fixing",
+        "building",
+        "serving",
+        "plating",
+        "packing",
+        "feeding",
+        "wiping",
+        "drawing",
+        "sewing",
+        "gluing",
+    ]
 )
 
 
@@ -92,6 +144,10 @@ def _who_now54r(text: str, lexicon: Lexicon) -> str:
         return text
     if not (m["cue"] or m["not"]) or not (m["one"] or m["own"] or m["p0"]):
         return text  # "…, no, Bob's leaving": why Bob, or why not him?
+    if m["adj"] is not None and m["adj"].lower() not in _WANTING54R:
+        return text
+    if (m["ing"] or m["ing2"] or "doing").lower() not in _DOING54R:
+        return text
     p = _person46r(m["p"], lexicon)
     if p is None or (m["p0"] is not None and _person46r(m["p0"], lexicon) != p):
         return text
@@ -729,6 +785,8 @@ def _at_her54r(text: str, lexicon: Lexicon) -> str:
     if _ids(m["s"], lexicon, "object") or _ids(m["s"], lexicon, "human"):
         return text
     rest = text.strip()[m.end() :]
+    if _ids(rest, lexicon, "surface"):
+        return text  # "… and wants both the books on the shelf": which books, or where?
     return f"{m['p']} {m['is']} {m['v']} {m['and']}{rest}"
 
 
