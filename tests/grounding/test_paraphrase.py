@@ -337,7 +337,6 @@ KNOWN_MISSES = frozenset(
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
         # blind48 (tuned on in session 50): refusals left at its one measurement (docs/grounding.md)
-        "The bottle? Oh, that's Person B's to have, he put his hand up for it first.",
         "Cup to Person A first, she's the palm reader at the fete. Then the apple. That one's "
         "Person B's.",
         "Person A gets the bottle and Person B gets the apple and they're both off to the willow "

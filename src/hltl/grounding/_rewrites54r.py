@@ -8,7 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites44r import _agrees44r
-from hltl.grounding._rewrites46r import _P46R, _person46r
+from hltl.grounding._rewrites46r import _CLEAR_BOTH46R, _P46R, _person46r
 from hltl.grounding._rewrites51r import _CUE51R, _one_task51r
 from hltl.grounding._rewrites53r import _held53r
 from hltl.grounding.lexicon import Lexicon
@@ -324,7 +324,7 @@ def _alike54r(text: str, lexicon: Lexicon) -> str:
     if " alike" not in text.lower():
         return text
     m = _ALIKE54R.search(text)
-    if m is None or _held53r(text):
+    if m is None or _held53r(text) or _CLEAR_BOTH46R.match(text.strip()):
         return text
     names = re.compiled(r",? (?:and|as well as|plus) ", _F).split(m["list"])
     if any(len(_ids(n, lexicon, "object")) != 1 or _ids(n, lexicon, "human") for n in names):
@@ -380,12 +380,15 @@ def _at_the_time54r(text: str, lexicon: Lexicon) -> str:
 # -- blind52: counts -----------------------------------------------------------------------------
 
 # "That lone bottle there, …": 'lone' / 'solitary' of the scene's one thing of its kind
-_LONE54R = re.compiled(r"\b(?P<w>lone|solitary|single|sole|one and only) (?P<x>[a-z]+)\b", _F)
+_LONE54R = re.compiled(
+    r"\b(?P<that>that|this) (?P<w>lone|solitary|single|sole|one and only) (?P<x>[a-z]+)\b", _F
+)
 
 
 def _lone54r(text: str, lexicon: Lexicon) -> str:
     """Session 54 (12r): "that lone (solitary) bottle" is "that bottle" when the scene holds one
-    thing of that name (a lone mug of two, left)."""
+    thing of that name (a lone mug of two, left); "a lone bottle" / "the lone bottle" are the
+    older rules' (sessions 30-47 read them as they are)."""
     low = text.lower()
     if "lone" not in low and "solitary" not in low and "sole " not in low:
         return text
@@ -395,7 +398,7 @@ def _lone54r(text: str, lexicon: Lexicon) -> str:
     x = _ids(m["x"], lexicon)
     if len(x) != 1 or _ids(m["x"], lexicon, "object") != x:
         return text
-    return f"{text[: m.start()]}{m['x']}{text[m.end() :]}"
+    return f"{text[: m.start()]}{m['that']} {m['x']}{text[m.end() :]}"
 
 
 # "Both spanners, big and small, are wanted by Kofi.": a want said in the passive
@@ -488,8 +491,8 @@ def _both_things54r(text: str, node: Node, lexicon: Lexicon) -> None:
 
 # "Carol says either mug will do her, …": 'do her' is 'suit her'
 _DO_HER54R = re.compiled(
-    r"\bwill do (?:for )?(?P<pro>her|him)(?: (?:fine|nicely|just fine|very well|perfectly))?"
-    r"(?=\s*(?:,|[.!]?\s*$))",
+    r"\bsays (?:either|any|whichever)\b[^,;.!?]*? will do (?:for )?(?P<pro>her|him)"
+    r"(?: (?:fine|nicely|just fine|very well|perfectly))?(?=\s*(?:,|[.!]?\s*$))",
     _F,
 )
 
@@ -502,8 +505,9 @@ def _one_before54r(words: str, lexicon: Lexicon) -> str | None:
 
 def _do_her54r(text: str, lexicon: Lexicon) -> str:
     """Session 54 (12r): "P says either mug will do her (fine)" (session 38's "will do for her")
-    is "… will do": 'her' / 'him' must fit the one person named before it (the choice is P's,
-    as "P says either mug will do" reads)."""
+    is "P says either mug will do": 'her' / 'him' must fit the one person named before it (the
+    choice is P's, as "P says either mug will do" reads; "any of the pens will do for him" without
+    'says' is session 35's)."""
     if "will do" not in text.lower():
         return text
     m = _DO_HER54R.search(text)
@@ -512,7 +516,9 @@ def _do_her54r(text: str, lexicon: Lexicon) -> str:
     p = _one_before54r(text[: m.start()], lexicon)
     if p is None or not _agrees44r(p, m["pro"], lexicon):
         return text
-    return f"{text[: m.start()]}will do{text[m.end() :]}"
+    said = text[m.start() : m.start("pro")]
+    said = said[: said.lower().rindex(" will do") + len(" will do")]
+    return f"{text[: m.start()]}{said}{text[m.end() :]}"
 
 
 # "Mr Novak isn't fussy about plates, white or blue, either's fine by him."
