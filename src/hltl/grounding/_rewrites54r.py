@@ -194,7 +194,8 @@ def _he_fancied54r(text: str, lexicon: Lexicon) -> str:
 # "Marco wants the salt, hang on, no, he said lemon, take him that."
 _HE_SAID54R = re.compiled(
     r"(?<=,)(?P<sp>\s*)(?:he|she) (?:said|says|told me|meant|asked for|wanted)\s+"
-    r"(?=(?:the )?[a-z]+(?: [a-z]+)?\s*(?:,|[.!]?\s*$))",
+    r"(?=(?:the )?[a-z]+(?: [a-z]+)?\s*(?:,\s*(?:take|give|hand|bring|pass) (?:him|her) (?:that|"
+    r"those|it|them|one)\b|[.!]?\s*$))",
     _F,
 )
 
