@@ -243,7 +243,6 @@ KNOWN_MISSES = frozenset(
         "Carol's allergic to apples, so it's the crisps for her instead.",
         "For Person A, anything going except the cup will do.",
         "Person A isn't hungry for the apple; the chips instead.",
-        "Not the bottle for Person B, he wants chips.",
         "Person A has given up chips for Lent, so the bottle only for her.",
         "Nothing for anyone but Person A: bottle to her.",
         "Person B isn't the one getting the bottle, it's Person A, she's got the long walk home.",
@@ -475,15 +474,10 @@ KNOWN_MISSES = frozenset(
         "Alice doesn't want the red mug, she's funny about it; the blue one's the one to take her.",
         "Bob's after the crisps, but leave the bottle, he's got his own.",
         "Person A wants anything except the apple, so give her the cup.",
-        "No chips for Person B, he's gone for the apple instead.",
         "Person B's not having the cup today, hand him the apple instead.",
         "No point hanging about, Person A's bottle to her now.",
         "Person A wants the bottle and nothing else, nothing at all.",
-        "It isn't Person A that gets the chips, it's Person B.",
-        "The green cup stays put; it's the white one that wants to go in the sink.",
         "Leave the jug, Mr Lee's got water; it's his tablets he's after.",
-        "None of the books for Noah, just the ruler.",
-        "The drill can stay, it's the hammer Jess is needing.",
         "the red mug for carol and the blue one for bob since hes on the decaf",
         "crisps want to go up on the shelf where the dog cant get them",
         "person b is first in line for the cup and after hes had it the apple can go to person a",
@@ -659,8 +653,9 @@ KNOWN_UNCLEAR = frozenset(
 # in session 53: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind52" written in
 # session 53 by another engineer and committed alone, measured once at the end of session 53 (1
 # wrong, refused since session 54), tuned on in session 54: asserted now, the rest in KNOWN_MISSES
-# and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# and KNOWN_UNCLEAR; "blind53" written in session 54 by another engineer and committed alone,
+# measured once at the end of session 54, not asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind53"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -790,6 +785,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind51"].entries}) >= 3
     assert len(CORPORA["blind52"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind52"].entries}) >= 3
+    assert len(CORPORA["blind53"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind53"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

@@ -1955,10 +1955,11 @@ def _settled48r(items: list[Item]) -> list[Item]:
         e = z + 1
         while e < len(items) and _is(items[e], ",", "filler"):
             e += 1  # "…, so Alice, please."
+        start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
         if e < len(items) and not (items[e].kind == "punct" and items[e].lemma in _END):
+            _more_after_settled54s(items, start, k, z)
             k += 1
             continue
-        start = max((n + 1 for n in range(k) if _is(items[n], *_END)), default=0)
         said = _or_chain48r(items, start, k)
         if said is None:
             if any(_is(items[n], "or") for n in range(start, k)):
@@ -1981,6 +1982,18 @@ def _settled48r(items: list[Item]) -> list[Item]:
         items = [*items[:x], items[z], *items[x + 1 : cut], *items[z + 1 :]]
         k = x + 1
     return items
+
+
+def _more_after_settled54s(items: list[Item], start: int, k: int, z: int) -> None:
+    """Session 54 (12s): a name after 'so' (``k``, the name at ``z``) that settles a choice said
+    with 'or' before it in the sentence, with more said after it before the sentence ends ("…,
+    or, hmm, Marco, so Marco, not the knife.", "…, so Alice, then the cup on the shelf."), had
+    been read as one more choice ('tongs>B | tongs>A | tongs>A'): refused."""
+    if _or_chain48r(items, start, k) is not None:
+        raise GroundingError(
+            f"'so {items[z].text}' after a choice, with more said after it, could settle it or "
+            "be one more choice: say the whole request again"
+        )
 
 
 def _or_chain48r(items: list[Item], start: int, k: int) -> tuple[int, int, list[int]] | None:
