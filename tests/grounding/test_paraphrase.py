@@ -145,7 +145,6 @@ KNOWN_MISSES = frozenset(
         "Apple to Person B, and the cup, that one's for Person A, she's been waiting.",
         "Teddy for Lily and wipes for Grandad, the baby's sticky again, ta.",
         # blind25 (tuned on in session 27): refusals left (docs/grounding.md, "Session 27")
-        "Both blocks on the high chair, she likes to bang them.",
         # blind26 (tuned on in session 28): refusals left at its one measurement (docs/grounding.md)
         "Person B would love the bottle after that long lecture on beetles, and Person A fancies "
         "the apple.",
@@ -335,7 +334,6 @@ KNOWN_MISSES = frozenset(
         "Persogn B's throat is dry from all that shouting at twister, so the bottle please.",
         "Persoln A is calling from the hallway for the bottle.",
         # blind48 (tuned on in session 50): refusals left at its one measurement (docs/grounding.md)
-        "The bottle? Oh, that's Person B's to have, he put his hand up for it first.",
         "Cup to Person A first, she's the palm reader at the fete. Then the apple. That one's "
         "Person B's.",
         "Person A gets the bottle and Person B gets the apple and they're both off to the willow "
@@ -463,30 +461,6 @@ KNOWN_MISSES = frozenset(
         "on the desk.",
         "Ava's changing Lily. So wipes to Ava first. Then once she's got them, bib on the high "
         "chair.",
-        "Carol says either mug will do her, red or blue, she's not fussed.",
-        "Bob's off on a long drive, so both the bottle and the crisps go in his direction.",
-        "One thing apiece: the bottle's Bob's to have and the crisps are for Alice.",
-        "Each of them is owed something: Person A the bottle, Person B the apple, fair's fair.",
-        "There's just the one bottle going, so Person A gets that, no fuss.",
-        "However you fancy doing it, the bottle needs to end up with Person A.",
-        "Either person can have the chips, Person A or Person B, you choose.",
-        "The bowl to Dana or to Omar, whoever's nearer to you at the time.",
-        "Mrs Khan won't mind which blanket she gets, so take her whichever's closest.",
-        "The small box and the medium one, the pair of them, stacked on the pallet with the big "
-        "one.",
-        "Mr Novak isn't fussy about plates, white or blue, either's fine by him.",
-        "Mrs Ortiz is marking at her desk and wants both the books, red and green, brought to her.",
-        "Both of the blocks onto the high chair, please, Lily likes to bang them together at "
-        "lunch.",
-        "The bottle and the crisps, the pair, up onto the shelf out of the dog's reach.",
-        "Every last one of the four things, Person B's having the lot for his picnic.",
-        "Only one thing wanted by Person B today, and that's the chips.",
-        "Both items go to Person B, bottle and chips alike, for the match.",
-        "The bottle's for Person A; mind, there's only the one, so don't go looking for more.",
-        "A single bottle is all Person A's asking for, nothing on top.",
-        "That lone bottle there, Person A has asked for it.",
-        "Every box we've got, all three, onto the belt for the last run.",
-        "Both spanners, big and small, are wanted by Kofi.",
         "Alice doesn't want the red mug, she's funny about it; the blue one's the one to take her.",
         "Bob's after the crisps, but leave the bottle, he's got his own.",
         "Person A wants anything except the apple, so give her the cup.",
@@ -494,16 +468,6 @@ KNOWN_MISSES = frozenset(
         "No point hanging about, Person A's bottle to her now.",
         "Person A wants the bottle and nothing else, nothing at all.",
         "Leave the jug, Mr Lee's got water; it's his tablets he's after.",
-        "Pass the apple to Carol, ah no, hang fire, Alice is the one who wanted it.",
-        "Bottle for Person B, scrub that, make it the apple for him.",
-        "The bottle to Person A, no hang on, I've got them mixed up, Person B's the thirsty one.",
-        "Bottle to Person A, I mean, yes, to her, sorry, I'm rambling.",
-        "Take the bottle to Person B, or no, wrong thing, it was chips he fancied.",
-        "Spoon over to Emma, whoops, Omar, I mean, Omar's stirring.",
-        "Stapler in the box, oh wait, better on the desk where Priya can reach it.",
-        "Tape for Mia, ah, not her, Tom's the one taping up.",
-        "Marco wants the salt, hang on, no, he said lemon, take him that.",
-        "Globe across to Zoe, wait, got that wrong, Noah's doing the geography.",
         "the red mug for carol and the blue one for bob since hes on the decaf",
         "person a keeps looking at the chips so shes having them",
         "bottle for person a please she has dabke tonight and forgot to drink",

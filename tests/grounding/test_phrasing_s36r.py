@@ -12,6 +12,7 @@ from hltl.grounding import (
     _rewrites45r,
     _rewrites46r,
     _rewrites52r,
+    _rewrites54r,
     normalise,
 )
 from tests.grounding.helpers import (
@@ -382,6 +383,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             _rewrites46r._fix_why46r,
             # session 52 (12r): a share-out by a role the people share reads these too
             _rewrites52r._each_kind52r,
+            # session 54 (12r): "…, no hang on, it's the salt she wants" reads by its rule too
+            _rewrites54r._he_fancied54r,
         ),
         monkeypatch,
     )

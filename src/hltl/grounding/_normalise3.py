@@ -753,6 +753,8 @@ _PRONOUN28R = re.compile(r"\b(?:he|she|him|her|they|them|his|their)\b", _F)
 
 # "it's Person A", "that was Bob": who it is, said after a correction's cue (_cue_reason28r)
 _IT_IS_WHO31 = re.compile(r"(?:it|that)(?:'s| is| was) ", _F)
+# "Bob's the thirsty one", "Lena is the one": who it is, said of a person (session 54, 12r)
+_THE_ONE_WHO54R = re.compile(r".+?(?:'s| is) the (?:[a-z]+ )?one\b", _F)
 
 
 # a 'reason' that says where the thing goes ("it's meant to go on the shelf", "it belongs in the
@@ -782,11 +784,14 @@ def _cue_reason28r(text: str, lexicon: Lexicon) -> str:
         return text
     if _PLACED_WHY43L.search(why) and _ids(why, lexicon, "surface"):
         return text  # where the thing goes, not a reason (session 43, as _cue_reason29r)
-    if (re.search(r"\bfor\b", why, _F) or _IT_IS_WHO31.match(why)) and _ids(why, lexicon, "human"):
+    said_who = _IT_IS_WHO31.match(why) or _THE_ONE_WHO54R.match(why)
+    if (re.search(r"\bfor\b", why, _F) or said_who) and _ids(why, lexicon, "human"):
         # "…. Sorry, my mistake, it's for Tom, no wait, the gloves": whom it is for is the
         # correction itself, no reason (session 30, engineer 12: the wrappers fuzz had read the
         # gloves to the person before); so is "…, whoops, it's Person A, no wait, the chips"
-        # (session 31, engineer 12: the wrappers fuzz on blind29 had read the chips to Person B)
+        # (session 31, engineer 12: the wrappers fuzz on blind29 had read the chips to Person B);
+        # so is "…, no wait, Bob's the thirsty one, scratch that, the apple" (session 54, 12r:
+        # 12c's wrappers fuzz had read the apple to Alice)
         return text
     return text[: m.start("why")] + after
 

@@ -2103,6 +2103,7 @@ def _corrections(items: list[Item]) -> list[Item]:
             )
         whole = False  # correcting the sentence before, across its full stop
         if before and before[-1].kind == "punct" and before[-1].lemma in _END:
+            _one_stop54r(before)
             # "Give Bob the apple. No, sorry, the cup.": a name alone corrects the sentence before
             r = 0
             while r < len(after) and _is(after[r], "det", "to", "for", "on"):
@@ -3029,7 +3030,17 @@ def _past_thanks42l(before: list[Item]) -> None:
     too, so the request before it is what is corrected (12c's turns fuzz: the crisps had been read
     as added after the question mark)."""
     if before and before[-1].kind == "punct" and before[-1].lemma in _END:
+        _one_stop54r(before)
         before.pop()
+
+
+def _one_stop54r(before: list[Item]) -> None:
+    """Session 54 (12r): stops in a row at the end of ``before`` are one stop. 'Please.' alone
+    is a sentence of words lexing drops, so "Alice. Cup. Please. Sorry, the crisps." came as
+    'Cup . .': the correction across the full stop took one stop off, found another and read
+    nothing to correct (cup>A & chips>A; 12c's fuzz); "Give Bob the cup?! No, the apple." too."""
+    while len(before) > 1 and all(x.kind == "punct" and x.lemma in _END for x in before[-2:]):
+        del before[-2]
 
 
 def _but_after_place(items: list[Item]) -> list[Item]:
