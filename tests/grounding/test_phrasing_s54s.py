@@ -26,9 +26,9 @@ from tests.grounding.helpers import (
     tree,
 )
 
-T21, L44, F42, T12, FIG1 = (
+T21, L44, F42, T12, FIG1, ONE = (
     load_scene(ROOT / f"examples/scenes/{n}.yaml")
-    for n in ("2-1", "4-4-line", "4-2", "1-2", "fig1")
+    for n in ("2-1", "4-4-line", "4-2", "1-2", "fig1", "1-1")
 )
 
 # -- a thing set against another, moved where the other goes (_not_where54s, a check) ---------
@@ -302,4 +302,48 @@ test_splits54s_near = PhrasingCases().test(
     ("Ava's changing Lily. Wipes to Ava once she's got the bib.", None, NURSERY),
     ("Ava's changing Lily. She's got the wipes.", None, NURSERY),
     ("Alice is helping Bob. Cup to Alice, he had the apple.", None, CELL),
+)
+
+# -- 'No point hanging about, Person A's bottle to her now.' (_no_point54s; #129); each refused on
+# main 8977c130
+NO_POINT = PhrasingCases()
+test_no_point54s_read = NO_POINT.test(
+    ("No point hanging about, Person A's bottle to her now.", "bottle>A", ONE),
+    ("Person A's bottle to her now.", "bottle>A", ONE),
+    ("No point hanging about, give Bob the cup.", "cup>B", CELL),
+    ("No time to lose, the crisps to Carol.", "chips>C", CELL),
+    ("No time to waste, Priya's stapler to her.", "stapler>A", OFFICE),
+    ("No point waiting about, Tom's gloves to him.", "gloves>B", DEPOT),
+)
+
+
+def test_no_point54s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NO_POINT.refused_without((r54s._no_point54s,), monkeypatch)
+
+
+# -- "Grandad's teddy to her." (_own_to_other54s, a check): read teddy>B on main 8977c130
+OWN_TO_OTHER = [
+    ("Grandad's teddy to her.", NURSERY),
+    ("Grandad's teddy to her, please.", NURSERY),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), OWN_TO_OTHER)
+def test_own_to_other54s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_own_to_other54s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    kept = tuple(c for c in offline._CHECKS if c is not r54s._own_to_other54s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    for text, scene in OWN_TO_OTHER:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: the pronoun of the owner's sex, another person's sex, no request: as before
+test_no_point54s_near = PhrasingCases().test(
+    ("Grandad's teddy to him, please.", "teddy>B", NURSERY),
+    ("Bob's cup to her.", None, CELL),
+    ("No point hanging about.", None, CELL),
+    ("No point standing around, Lena's plate to her.", None, KITCHEN),
 )

@@ -387,6 +387,70 @@ def _doing_with54s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 54 (12s): 'No point hanging about, Person A's bottle to her now.' -----------------
+#
+# blind52 #129: an opener saying nothing holds the request up ('no point hanging about / around',
+# 'no point dawdling', 'no time to lose') is dropped before the request, as session 41's
+# `_no_wait41r` drops 'no point waiting'; and "P's X to her / him" (the X that is P's, to the
+# pronoun that is P's sex by the scene) said "the X to P".
+_NO_POINT54S = re.compiled(
+    r"^(?:there's |there is )?(?:no point (?:in )?(?:hanging|waiting|dawdling|messing|faffing|"
+    r"standing|sitting)(?: about| around)?|no time to (?:lose|waste))\s*[,;:]\s*(?=[a-z])",
+    _F,
+)
+_OWN_TO_THEM54S = re.compiled(
+    rf"^(?P<p>{_WHO53S})'s (?P<x>[a-z]+(?: [a-z]+)?) (?:to|for|over to|across to) "
+    r"(?P<pro>her|him)\b(?P<rest>[^,;.!?]*(?:,? please)?\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_point54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): 'No point hanging about, …' dropped; "P's X to her" said "The X to P"
+    (above)."""
+    low = text.lower()
+    if "no " not in low and "'s " not in low:
+        return text
+    out = text.strip()
+    m = _NO_POINT54S.match(out)
+    if m is not None:
+        out = out[m.end() :]
+    own = _OWN_TO_THEM54S.match(out)
+    if own is not None and _only_person(own["p"], lexicon):
+        (pid,) = _ids(own["p"], lexicon)
+        x = _ids(f"the {own['x']}", lexicon)
+        if (
+            unnamed_sex44l(pid, lexicon) == PRONOUN_SEX[own["pro"].lower()]
+            and x
+            and x == _ids(f"the {own['x']}", lexicon, "object")
+        ):
+            out = f"The {own['x']} to {own['p']}{own['rest']}"
+    if out == text.strip():
+        return text
+    out = out[:1].upper() + out[1:]
+    return _plain51s(out, text, lexicon)
+
+
+def _own_to_other54s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 54 (12s): "Grandad's teddy to her." read `teddy>B` on main 8977c130: the pronoun
+    that is not P's sex by the scene handed to P all the same. A reading that hands the X to P
+    there is refused."""
+    if "'s " not in text:
+        return
+    own = _OWN_TO_THEM54S.match(text.strip())
+    if own is None or not _only_person(own["p"], lexicon):
+        return
+    (pid,) = _ids(own["p"], lexicon)
+    sex = unnamed_sex44l(pid, lexicon)
+    if sex is None or sex == PRONOUN_SEX[own["pro"].lower()]:
+        return
+    x = _ids(f"the {own['x']}", lexicon, "object")
+    if any(t.kind == "deliver" and t.obj in x and t.target == pid for t in tasks(node)):
+        raise GroundingError(
+            f"{own['pro']!r} cannot be {own['p']}: say who gets {own['p']}'s {own['x']}"
+        )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _no_then_want54s,
@@ -394,10 +458,11 @@ _STEPS54S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _nothing_again54s,
     _where_twice54s,
     _doing_with54s,
+    _no_point54s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54S: tuple[Callable[[str, Lexicon], str], ...] = (_not_that54s, _none_for54s, _stays_cleft54s)
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
 REFUSE54S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
-CHECK54S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_not_where54s,)
+CHECK54S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_not_where54s, _own_to_other54s)
