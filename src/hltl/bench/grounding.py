@@ -159,7 +159,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # by the engineers who change the grounder before its one measurement at the end of session 52;
 # tuned on in session 53), blind52 (written in session 53 by another engineer and committed alone,
 # never opened by the engineers who change the grounder before its one measurement at the end of
-# session 53; tuned on in session 54).
+# session 53; tuned on in session 54), blind53 (written in session 54 by another engineer and
+# committed alone, never opened by the engineers who change the grounder before its one measurement
+# at the end of session 54; to be tuned on in session 55).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -229,6 +231,7 @@ PARTS = (
     "blind50",
     "blind51",
     "blind52",
+    "blind53",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -5802,7 +5802,7 @@ def _as_used_to34(text: str, lexicon: Lexicon) -> str:
     if m is None:
         return text
     court = m["court"].strip()
-    if not (_COURTESY_STRETCH24.fullmatch(court) or _THANKS34.fullmatch(court)):
+    if not (_courtesy_stretch24(court) or _THANKS34.fullmatch(court)):
         return text
     if not _names_nothing(_unmarked27(court), lexicon) or not _names(text[: m.start()], lexicon):
         return text
@@ -6090,6 +6090,21 @@ def _courtesy_word24(text: str) -> bool:
     return bool(firsts) and _courtesies24(frozenset(firsts)).search(text) is not None
 
 
+def _courtesy_stretch24(said: str) -> bool:
+    """Whether _COURTESY_STRETCH24 matches the whole of ``said`` (session 54, 12p): an ASCII text
+    it matches begins with 'and' or with a courtesy's first word (_BY_FIRST24: each courtesy
+    begins with a word letter and is followed by a space or the end), so only there is the
+    pattern asked."""
+    if _BY_FIRST24 is not None and said.isascii():
+        first = _WORD_RUN.match(said)
+        if first is None:
+            return False
+        word = first[0].lower()
+        if word != "and" and word not in _BY_FIRST24:
+            return False
+    return _COURTESY_STRETCH24.fullmatch(said) is not None
+
+
 @functools.lru_cache(maxsize=512)
 def _courtesies24(firsts: frozenset[str]) -> re.Pattern[str]:
     """_COURTESY_WORD24 with only the courtesies whose first word is one of ``firsts``."""
@@ -6107,10 +6122,7 @@ def _courtesy24(text: str, lexicon: Lexicon) -> str:
     # session 29: a colon ends a stretch too ('Eskerrik asko in advance: the cup to …')
     return _stretches_dropped(
         text,
-        lambda c: (
-            bool(_COURTESY_STRETCH24.fullmatch(c.strip()))
-            and _names_nothing(_unmarked27(c), lexicon)
-        ),
+        lambda c: _courtesy_stretch24(c.strip()) and _names_nothing(_unmarked27(c), lexicon),
         lexicon,
     )
 
@@ -6199,12 +6211,13 @@ def _translated25(text: str, lexicon: Lexicon) -> str:
     function words are their English ones ("Not di bottle, jus di crisps fi Bob"), and a title
     of respect of another language before a person's name of the scene is taken off ("Stapler
     to Bu Priya, then the notepad to Mas Sam"), as 'Mr' would be when the scene does not say
-    it."""
-    if _PLEASE25.search(text):
+    it. (Session 54, 12p: the three word lists asked through the gate, which turns a text away
+    that holds none of their words; the titles' pattern asked raw, its words too short to.)"""
+    if re.search(_PLEASE25, text):
         text = _PLEASE25.sub(lambda m: m[0] if _names(m[0], lexicon) else "please", text)
-    if _SORRY25.search(text):
+    if re.search(_SORRY25, text):
         text = _SORRY25.sub("sorry", text)
-    if _PATOIS_WORD25.search(text):
+    if re.search(_PATOIS_WORD25, text):
         text = _PATOIS_WORD25.sub(lambda m: _PATOIS25.get(m[0].lower(), ""), text)
     if not _HONORIFIC25.search(text):
         return text

@@ -771,10 +771,13 @@ def _reason_for_change34t(text: str, lexicon: Lexicon) -> str:
 def _person_alt35t(lexicon: Lexicon) -> str:
     """A pattern of every name or alias that names one person of the scene, longest first (once
     per lexicon, session 46, 12p: the five always-run steps that ask it built it again for each
-    text, ~2 % of an instruction's CPU; it depends on the scene's names alone)."""
+    text, ~2 % of an instruction's CPU; it depends on the scene's names alone). Names of one
+    length in alphabetical order (session 54, 12p): the set's order changed from run to run, and
+    with it the pattern's text (the warm list's), never what it matches — names of one length
+    that match at one place match the same letters."""
     names = {n for h in lexicon.scene.humans for n in (h.name, *h.aliases)}
     alone = [n for n in names if _only_person(n, lexicon)]
-    return "|".join(re.escape(n) for n in sorted(alone, key=len, reverse=True)) or r"(?!)"
+    return "|".join(re.escape(n) for n in sorted(alone, key=lambda n: (-len(n), n))) or r"(?!)"
 
 
 # words for kin of one sex, in a person's names ('Grandad', 'big sister'): like a first name of

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _reading, apostrophes
+from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._rewrites49l import choice_forgotten49l, forgot49l
 from hltl.grounding.lexicon import TITLE_SEX, Lexicon, _kin_sex35s
 from hltl.grounding.tree import Group, Node
@@ -145,9 +145,6 @@ def _forgot_choice50l(text: str, node: Node, lexicon: Lexicon) -> None:
     here too, so the reading is walked for a choice once (session 51)."""
     if not _has_choice50l(node):
         return  # session 52 (12b): no choice to refuse; the remarks need not be looked for
-    # session 54 (lead; blind52 #177 "which one i couldnt tell you"): the remark is looked for
-    # with its apostrophes put back, as the reading was made ('couldnt' is "couldn't")
-    text = apostrophes(text)
     if forgets50l(text) is not None or forgot49l(text):
         choice_forgotten49l(node, lexicon)
     said = unknowing50l(text, lexicon)

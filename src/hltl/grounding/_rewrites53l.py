@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import NoReturn
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
@@ -146,11 +147,15 @@ def _want_over53l(text: str, lexicon: Lexicon) -> None:
     if any(w in low for w in _FIRST_WORDS53L):
         m = _FIRST_THEN53L.search(text)
         if m is not None:
-            said = m.group(0).lstrip(".;!? ")
-            raise GroundingError(
-                f"{said!r} could tell how a want changed (only the later one stands) or ask for "
-                "both in that order: say 'give … instead' or 'give …, then …'"
-            )
+            want_changed53l(m.group(0).lstrip(".;!? "))
+
+
+def want_changed53l(said: str) -> NoReturn:
+    """Refuse "First P wanted X, then Y" (also session 54's `_want_over54l`)."""
+    raise GroundingError(
+        f"{said!r} could tell how a want changed (only the later one stands) or ask for both in "
+        "that order: say 'give … instead' or 'give …, then …'"
+    )
 
 
 # -- an apology opener before what would be refused ----------------------------------------

@@ -196,6 +196,17 @@ class _Reader:
             return "".join(out)
         raise _Unread("not a string")
 
+    def _pattern_of(self, node: ast.expr, flags: ast.expr | None) -> tuple[str, int]:
+        """The pattern and flags of re's function (or the gate's) called with ``node`` and
+        ``flags``: a string, or a module's compiled pattern without flags (session 54, 12p:
+        ``re.search(_P, text)`` with ``re`` the gate, as session 53 made raw calls gated)."""
+        if isinstance(node, ast.Name) and flags is None and node.id not in self.locals:
+            value = self.glob.get(node.id)
+            if isinstance(value, re.Pattern):
+                self._global(node.id)  # kept with what it holds, checked at run time
+                return value.pattern, int(value.flags)
+        return self._str(node), self._flags(flags)
+
     def _flags(self, node: ast.expr | None) -> int:
         if node is None:
             return 0
@@ -306,7 +317,7 @@ class _Reader:
                 raise _Unread("search args")
             kind = self._searched(args[1])
             flags = args[2] if len(args) > 2 else kw.get("flags")
-            return frozenset({(kind, self._str(args[0]), self._flags(flags))})
+            return frozenset({(kind, *self._pattern_of(args[0], flags))})
         if len(args) != 1 or kw:
             raise _Unread("search args")
         kind = self._searched(args[0])
@@ -522,7 +533,7 @@ class _Reader:
             and self._is_text(args[2])
             and not set(kw) - {"flags", "count"}
         ):
-            return ("re", self._str(args[0]), self._flags(kw.get("flags")))
+            return ("re", *self._pattern_of(args[0], kw.get("flags")))
         if (
             isinstance(func, ast.Attribute)
             and func.attr == "sub"
