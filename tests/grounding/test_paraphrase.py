@@ -497,7 +497,6 @@ KNOWN_MISSES = frozenset(
         "Alice doesn't want the red mug, she's funny about it; the blue one's the one to take her.",
         "Bob's after the crisps, but leave the bottle, he's got his own.",
         "Person A wants anything except the apple, so give her the cup.",
-        "No point hanging about, Person A's bottle to her now.",
         "Leave the jug, Mr Lee's got water; it's his tablets he's after.",
         "Pass the apple to Carol, ah no, hang fire, Alice is the one who wanted it.",
         "Bottle for Person B, scrub that, make it the apple for him.",
