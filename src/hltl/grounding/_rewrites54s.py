@@ -391,11 +391,11 @@ def _doing_with54s(text: str, lexicon: Lexicon) -> str:
 #
 # blind52 #129: an opener saying nothing holds the request up ('no point hanging about / around',
 # 'no point dawdling', 'no time to lose') is dropped before the request, as session 41's
-# `_no_wait41r` drops 'no point waiting'; and "P's X to her / him" (the X that is P's, to the
-# pronoun that is P's sex by the scene) said "the X to P".
+# `_no_wait41r` drops 'no point waiting (around)' (left to it); and "P's X to her / him" (the X
+# that is P's, to the pronoun that is P's sex by the scene) said "the X to P".
 _NO_POINT54S = re.compiled(
-    r"^(?:there's |there is )?(?:no point (?:in )?(?:hanging|waiting|dawdling|messing|faffing|"
-    r"standing|sitting)(?: about| around)?|no time to (?:lose|waste))\s*[,;:]\s*(?=[a-z])",
+    r"^(?:there's |there is )?(?:no point (?:in )?(?:(?:hanging|dawdling|messing|faffing|standing|"
+    r"sitting)(?: about| around)?|waiting about)|no time to (?:lose|waste))\s*[,;:]\s*(?=[a-z])",
     _F,
 )
 _OWN_TO_THEM54S = re.compiled(
