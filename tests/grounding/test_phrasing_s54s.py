@@ -297,6 +297,10 @@ def test_splits54s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
 # refused
 test_splits54s_near = PhrasingCases().test(
     ("Up top on the shelf with the apple.", None, CELL),
+    # where a thing is (12c): no placing
+    ("The apple's up there on the shelf, give it to Bob.", None, CELL),
+    ("The cup's up there on the shelf, take it to Alice.", None, CELL),
+    ("The lemon's over there on the worktop, give it to Lena.", None, KITCHEN),
     ("Ava's changing Lily.", None, NURSERY),
     ("Ava's changing Lily. Give her the wipes.", None, NURSERY),
     ("Ava's changing Lily. Wipes to Ava once she's got the bib.", None, NURSERY),

@@ -314,11 +314,19 @@ def _nothing_again54s(text: str, lexicon: Lexicon) -> str:
 # "Bottle up top on the shelf. Then the crisps go Alice's way." (blind52 #62): a word of where
 # said before the surface that says it ('up top / up there / over there / down there / down
 # below on the S') is the surface said twice: taken off before 'on / onto / in / into' and a
-# surface of the scene ('up high on the shelf' is read so already).
+# surface of the scene ('up high on the shelf' is read so already); not after 's / is / sits …,
+# which says where the thing is (12c: "The apple's up there on the shelf, give it to Bob." would
+# read a placing too, as main reads "The apple's on the shelf, give it to Bob.").
 _WHERE_TWICE54S = re.compiled(
     r"\b(?:right )?(?:up top|up there|over there|down there|down below|up above|down low)\s+"
     r"(?=(?:on|onto|on to|in|into|inside) (?P<s>(?:the |that )?[a-z]+(?: [a-z]+)?))",
     _F,
+)
+
+
+# where a thing is ('the apple's / is / sits / was up there on the shelf'): left as it is
+_WHERE_IS54S = re.compiled(
+    r"(?:'s|'re|\b(?:is|are|was|were|sits?|lies|lie|stands?|stays?|remains?|been))\s*$", _F
 )
 
 
@@ -329,6 +337,8 @@ def _where_twice54s(text: str, lexicon: Lexicon) -> str:
         return text
 
     def one(m: re.Match[str]) -> str:
+        if _WHERE_IS54S.search(text[: m.start()]):
+            return m[0]  # "The apple's up there on the shelf": where it is, no placing
         named = _ids(m["s"], lexicon)
         return "" if named and named == _ids(m["s"], lexicon, "surface") else m[0]
 
