@@ -449,7 +449,6 @@ KNOWN_MISSES = frozenset(
         "Person A's got nothing to drink; pass her the bottle and him the chips.",
         "Her bottle, Person A's. Fetch it for her please.",
         "The apprentice has the screws job; pass the tin to Jess.",
-        "Bottle up top on the shelf. Then the crisps go Alice's way. Lovely.",
         "Person A's thirsty the bottle's hers and Person B's hungry give him the apple",
         "Person A put her hand up first, so the apple goes her way, and once she's sorted the "
         "bottle heads to Person B.",
@@ -459,14 +458,9 @@ KNOWN_MISSES = frozenset(
         "fine",
         "Noah's the one for the ruler and Zoe for the scissors, plus the red book wants putting "
         "on the desk.",
-        "Ava's changing Lily. So wipes to Ava first. Then once she's got them, bib on the high "
-        "chair.",
         "Alice doesn't want the red mug, she's funny about it; the blue one's the one to take her.",
         "Bob's after the crisps, but leave the bottle, he's got his own.",
         "Person A wants anything except the apple, so give her the cup.",
-        "Person B's not having the cup today, hand him the apple instead.",
-        "No point hanging about, Person A's bottle to her now.",
-        "Person A wants the bottle and nothing else, nothing at all.",
         "Leave the jug, Mr Lee's got water; it's his tablets he's after.",
         "the red mug for carol and the blue one for bob since hes on the decaf",
         "person a keeps looking at the chips so shes having them",

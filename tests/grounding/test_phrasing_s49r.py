@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites49r
+from hltl.grounding import _rewrites49r, phrasing
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -333,5 +333,8 @@ def test_chains_read_without_the_refusals(
 
     mine = set(_rewrites49r.REFUSE49R)
     monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in mine))
+    # session 54 (12s): 'so P' after a choice with more said after it is refused in the grammar
+    # too (phrasing._more_after_settled54s, the same family as settled_again49r): taken out here
+    monkeypatch.setattr(phrasing, "_more_after_settled54s", lambda *_: None)
     assert want is None
     assert tree(text, scene) is not None  # type: ignore[arg-type]

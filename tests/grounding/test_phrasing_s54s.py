@@ -26,7 +26,10 @@ from tests.grounding.helpers import (
     tree,
 )
 
-T21, L44 = (load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("2-1", "4-4-line"))
+T21, L44, F42, T12, FIG1, ONE = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml")
+    for n in ("2-1", "4-4-line", "4-2", "1-2", "fig1", "1-1")
+)
 
 # -- a thing set against another, moved where the other goes (_not_where54s, a check) ---------
 #
@@ -224,4 +227,127 @@ test_stays_cleft54s_near = PhrasingCases().test(
     ("The cup can stay, it's the apple Bob had.", None, CELL),
     ("Give Bob the cup, it's the apple Bob is after.", None, CELL),
     ("The jug can stay, it's the magazine Mrs Khan is after, she had the jug.", None, WARD),
+)
+
+# -- 'P's not having the X today, …', '… nothing else, nothing at all' (_not_today54s,
+# _nothing_again54s; #126 #130); each refused on main 8977c130
+NOT_TODAY = PhrasingCases()
+test_not_today54s_read = NOT_TODAY.test(
+    ("Person B's not having the cup today, hand him the apple instead.", "apple>B", F42),
+    ("Person B's not having the cup, hand him the apple instead.", "apple>B", F42),
+    ("Bob's not having the cup today, hand him the apple instead.", "apple>B", CELL),
+    ("Marco's not having the knife this time, pass him the tongs instead.", "tongs>A", KITCHEN),
+    ("Lily isn't allowed the teddy today, give her the bib instead.", "bib>A", NURSERY),
+    ("Sam's not getting the stapler today, pass him the notepad instead.", "notebook>B", OFFICE),
+    ("Tom's not having the tape now, hand him the scanner instead.", "scanner>B", DEPOT),
+    # '… and nothing else, nothing at all'
+    ("Person A wants the bottle and nothing else, nothing at all.", "bottle>A", T12),
+    ("Bob wants the apple, nothing more, not a thing.", "apple>B", CELL),
+    ("Lena wants the salt and nothing else, absolutely nothing.", "salt>B", KITCHEN),
+    ("Priya wants the red pen and nothing more, nothing at all.", "pen_red>A", OFFICE),
+    ("Mr Lee wants the jug and nothing else, nothing whatsoever.", "jug>B", WARD),
+)
+
+
+def test_not_today54s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_TODAY.refused_without((r54s._not_today54s, r54s._nothing_again54s), monkeypatch)
+
+
+# near sentences: a time that may be the request's ('tonight', 'tomorrow'), a past after, no
+# request: refused
+test_not_today54s_near = PhrasingCases().test(
+    ("Alice isn't getting the crisps tonight, give her the apple instead.", None, CELL),
+    ("Bob's not having the cup today, hand him the apple tomorrow.", None, CELL),
+    ("Bob's not having the cup today, he had it yesterday.", None, CELL),
+    ("Bob's not having the cup today.", None, CELL),
+)
+
+# -- 'up top on the shelf' (_where_twice54s; #62) and 'Ava's changing Lily.' opening a request
+# (_doing_with54s; #78); each refused on main 8977c130
+SPLITS = PhrasingCases()
+test_splits54s_read = SPLITS.test(
+    (
+        "Bottle up top on the shelf. Then the crisps go Alice's way. Lovely.",
+        "bottle@shelf ; chips>A",
+        FIG1,
+    ),
+    ("Put the bottle up top on the shelf.", "bottle@shelf", CELL),
+    ("The cup goes over there on the table.", "cup@table", CELL),
+    ("Tongs up top on the rack, then the knife to Marco.", "tongs@rack ; knife>A", KITCHEN),
+    ("Pop the teddy down there on the play mat.", "teddy@mat", NURSERY),
+    ("The jug goes down there on the bedside table.", "jug@bedside", WARD),
+    (
+        "Ava's changing Lily. So wipes to Ava first. Then once she's got them, bib on the high "
+        "chair.",
+        "wipes>C ; bib@highchair",
+        NURSERY,
+    ),
+    ("Ava's feeding Lily, so the beaker to Ava.", "beaker>C", NURSERY),
+    ("Marco's helping Lena; pass Marco the tongs.", "tongs>A", KITCHEN),
+    ("Alice is helping Bob. Cup to Alice.", "cup>A", CELL),
+    ("Ruth's checking Mr Lee. Jug to Ruth.", "jug>A", WARD),
+)
+
+
+def test_splits54s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SPLITS.refused_without((r54s._where_twice54s, r54s._doing_with54s), monkeypatch)
+
+
+# near sentences: no request, a pronoun after the remark that may be either person, a holding:
+# refused
+test_splits54s_near = PhrasingCases().test(
+    ("Up top on the shelf with the apple.", None, CELL),
+    # where a thing is (12c): no placing
+    ("The apple's up there on the shelf, give it to Bob.", None, CELL),
+    ("The cup's up there on the shelf, take it to Alice.", None, CELL),
+    ("The lemon's over there on the worktop, give it to Lena.", None, KITCHEN),
+    ("Ava's changing Lily.", None, NURSERY),
+    ("Ava's changing Lily. Give her the wipes.", None, NURSERY),
+    ("Ava's changing Lily. Wipes to Ava once she's got the bib.", None, NURSERY),
+    ("Ava's changing Lily. She's got the wipes.", None, NURSERY),
+    ("Alice is helping Bob. Cup to Alice, he had the apple.", None, CELL),
+)
+
+# -- 'No point hanging about, Person A's bottle to her now.' (_no_point54s; #129); each refused on
+# main 8977c130
+NO_POINT = PhrasingCases()
+test_no_point54s_read = NO_POINT.test(
+    ("No point hanging about, Person A's bottle to her now.", "bottle>A", ONE),
+    ("Person A's bottle to her now.", "bottle>A", ONE),
+    ("No point hanging about, give Bob the cup.", "cup>B", CELL),
+    ("No time to lose, the crisps to Carol.", "chips>C", CELL),
+    ("No time to waste, Priya's stapler to her.", "stapler>A", OFFICE),
+    ("No point waiting about, Tom's gloves to him.", "gloves>B", DEPOT),
+)
+
+
+def test_no_point54s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NO_POINT.refused_without((r54s._no_point54s,), monkeypatch)
+
+
+# -- "Grandad's teddy to her." (_own_to_other54s, a check): read teddy>B on main 8977c130
+OWN_TO_OTHER = [
+    ("Grandad's teddy to her.", NURSERY),
+    ("Grandad's teddy to her, please.", NURSERY),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), OWN_TO_OTHER)
+def test_own_to_other54s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_own_to_other54s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    kept = tuple(c for c in offline._CHECKS if c is not r54s._own_to_other54s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    for text, scene in OWN_TO_OTHER:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: the pronoun of the owner's sex, another person's sex, no request: as before
+test_no_point54s_near = PhrasingCases().test(
+    ("Grandad's teddy to him, please.", "teddy>B", NURSERY),
+    ("Bob's cup to her.", None, CELL),
+    ("No point hanging about.", None, CELL),
+    ("No point standing around, Lena's plate to her.", None, KITCHEN),
 )

@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
+from hltl.grounding._rewrites39r import _not_wanted39r
 from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding._rewrites51s import _plain51s
 from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S, _X53S, _not_who53s
@@ -259,11 +260,219 @@ def _stays_cleft54s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 54 (12s): 'P's not having the X today', '… and nothing else, nothing at all' --------
+#
+# "Person B's not having the cup today, hand him the apple instead." (blind52 #126): session 39's
+# `_not_wanted39r` says "P's not having the X, …" "P doesn't want the X, …" but not with a time of
+# the speaker's day after the thing ('today', 'this time', 'any more'; not 'tonight', which
+# may be when the rest is for), and after
+# session 41's `_instead_of_unwanted41r` has passed ('…, hand him the apple instead' stays
+# refused): the time is said away (the request is for now anyway) and the rule asked first.
+# "Person A wants the bottle and nothing else, nothing at all." (#130): session 43's
+# `_nothing_more43r` takes a closing 'nothing else' off, not one said again ('nothing at all',
+# 'not a thing', 'absolutely nothing'): the second is taken off. Both first (before the older
+# rules that read what is left).
+_NOT_TODAY54S = re.compiled(
+    r"(?P<head>(?:'s| is) (?:not|never) (?:having|getting|allowed)|isn't (?:having|getting|"
+    r"allowed)) (?P<what>the [a-z]+(?: [a-z]+)?) (?:today|this time|right now|now|any ?more)"
+    r"(?=\s*[,;])",
+    _F,
+)
+_NOTHING_AGAIN54S = re.compiled(
+    r"(?P<said>\bnothing (?:else|more|besides))\s*[,;—–-]\s*(?:nothing (?:at all|whatsoever|more)|"
+    r"not a (?:thing|single thing)|absolutely nothing)(?=\s*[.!]?\s*$)",
+    _F,
+)
+
+
+def _not_today54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): 'P's not having the X today, …' said without the time (above)."""
+    low = text.lower()
+    if "not" not in low and "n't" not in low:
+        return text
+    said = _NOT_TODAY54S.sub(lambda m: f"{m['head']} {m['what']}", text)
+    if said == text and "instead" not in low:
+        return text
+    out = _not_wanted39r(said, lexicon)
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+def _nothing_again54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): '… nothing else, nothing at all' said '… nothing else' (above)."""
+    if "nothing" not in text.lower():
+        return text
+    out = _NOTHING_AGAIN54S.sub(lambda m: m["said"], text)
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+# -- session 54 (12s): 'up top on the shelf' -------------------------------------------------
+#
+# "Bottle up top on the shelf. Then the crisps go Alice's way." (blind52 #62): a word of where
+# said before the surface that says it ('up top / up there / over there / down there / down
+# below on the S') is the surface said twice: taken off before 'on / onto / in / into' and a
+# surface of the scene ('up high on the shelf' is read so already); not after 's / is / sits …,
+# which says where the thing is (12c: "The apple's up there on the shelf, give it to Bob." would
+# read a placing too, as main reads "The apple's on the shelf, give it to Bob.").
+_WHERE_TWICE54S = re.compiled(
+    r"\b(?:right )?(?:up top|up there|over there|down there|down below|up above|down low)\s+"
+    r"(?=(?:on|onto|on to|in|into|inside) (?P<s>(?:the |that )?[a-z]+(?: [a-z]+)?))",
+    _F,
+)
+
+
+# where a thing is ('the apple's / is / sits / was up there on the shelf'): left as it is
+_WHERE_IS54S = re.compiled(
+    r"(?:'s|'re|\b(?:is|are|was|were|sits?|lies|lie|stands?|stays?|remains?|been))\s*$", _F
+)
+
+
+def _where_twice54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): 'up top on the S' said 'on the S' (above)."""
+    low = text.lower()
+    if "up " not in low and "over there" not in low and "down " not in low:
+        return text
+
+    def one(m: re.Match[str]) -> str:
+        if _WHERE_IS54S.search(text[: m.start()]):
+            return m[0]  # "The apple's up there on the shelf": where it is, no placing
+        named = _ids(m["s"], lexicon)
+        return "" if named and named == _ids(m["s"], lexicon, "surface") else m[0]
+
+    out = _WHERE_TWICE54S.sub(one, text)
+    if out == text:
+        return text
+    return out if _reading(out, lexicon) is not None else text
+
+
+# -- session 54 (12s): 'Ava's changing Lily.' opening a request -------------------------------
+#
+# "Ava's changing Lily. So wipes to Ava first. Then once she's got them, bib on the high chair."
+# (blind52 #78): the lexer takes an unknown word and the first name after it for one unknown name
+# ('changing Lily'), so the opening remark of what one person is doing with another is refused
+# ("Ava is changing the baby." and "Marco's serving Mr Novak." are read as remarks). Said "P's busy
+# with Q", which the older rules read as a remark naming both (a he / she after it may be either:
+# refused naming both). Only a clause opening the text, P and Q one person each, the -ing word no
+# verb of a task or a want ('giving', 'wanting', 'getting' …), a request after it, and no he /
+# she after it that may be Q (but 'once she's got them', the one just handed them).
+_DOING_WITH54S = re.compiled(
+    rf"^(?P<p>{_WHO53S})(?:'s| is) (?P<v>[a-z]+ing) (?P<q>(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)"
+    r"(?P<sep>\s*[.;,]\s*(?:so |and |but )?)(?P<rest>\S.*)$",
+    _F,
+)
+_PRONOUN54S = re.compiled(r"\b(he|she|him|her|his|hers)\b", _F)
+_GOT_BACK54S = re.compiled(
+    r"\b(?:once|when|after|as soon as) (?:he|she)(?:'s| has) got (?:them|it)\b", _F
+)
+_NOT_DOING54S = frozenset(
+    {
+        "giving", "handing", "passing", "bringing", "taking", "fetching", "putting", "placing",
+        "sending", "getting", "asking", "wanting", "needing", "expecting", "waiting", "calling",
+        "telling", "having", "holding", "keeping", "carrying", "grabbing", "eating", "drinking",
+        "using", "missing", "bring", "seeing", "meeting", "leaving", "owing", "paying", "letting",
+    }
+)  # fmt: skip
+
+
+def _doing_with54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): "Ava's changing Lily. …" said "Ava's busy with Lily. …" (above)."""
+    if "ing " not in text:
+        return text
+    m = _DOING_WITH54S.match(text.strip())
+    if m is None or m["v"].lower() in _NOT_DOING54S:
+        return text
+    if not (_only_person(m["p"], lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(m["p"], lexicon) == _ids(m["q"], lexicon):
+        return text
+    (qid,) = _ids(m["q"], lexicon)
+    sex = unnamed_sex44l(qid, lexicon)
+    rest = _GOT_BACK54S.sub("", m["rest"])  # 'once she's got them': the one just handed them
+    if any(sex in (None, PRONOUN_SEX[w.lower()]) for w in _PRONOUN54S.findall(rest)):
+        return text  # a he / she after it that may be Q: left as it is
+    out = f"{m['p']}'s busy with {m['q']}{m['sep']}{m['rest']}"
+    return _plain51s(out, text, lexicon)
+
+
+# -- session 54 (12s): 'No point hanging about, Person A's bottle to her now.' -----------------
+#
+# blind52 #129: an opener saying nothing holds the request up ('no point hanging about / around',
+# 'no point dawdling', 'no time to lose') is dropped before the request, as session 41's
+# `_no_wait41r` drops 'no point waiting (around)' (left to it); and "P's X to her / him" (the X
+# that is P's, to the pronoun that is P's sex by the scene) said "the X to P".
+_NO_POINT54S = re.compiled(
+    r"^(?:there's |there is )?(?:no point (?:in )?(?:(?:hanging|dawdling|messing|faffing|standing|"
+    r"sitting)(?: about| around)?|waiting about)|no time to (?:lose|waste))\s*[,;:]\s*(?=[a-z])",
+    _F,
+)
+_OWN_TO_THEM54S = re.compiled(
+    rf"^(?P<p>{_WHO53S})'s (?P<x>[a-z]+(?: [a-z]+)?) (?:to|for|over to|across to) "
+    r"(?P<pro>her|him)\b(?P<rest>[^,;.!?]*(?:,? please)?\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_point54s(text: str, lexicon: Lexicon) -> str:
+    """Session 54 (12s): 'No point hanging about, …' dropped; "P's X to her" said "The X to P"
+    (above)."""
+    low = text.lower()
+    if "no " not in low and "'s " not in low:
+        return text
+    out = text.strip()
+    m = _NO_POINT54S.match(out)
+    if m is not None:
+        out = out[m.end() :]
+    own = _OWN_TO_THEM54S.match(out)
+    if own is not None and _only_person(own["p"], lexicon):
+        (pid,) = _ids(own["p"], lexicon)
+        x = _ids(f"the {own['x']}", lexicon)
+        if (
+            unnamed_sex44l(pid, lexicon) == PRONOUN_SEX[own["pro"].lower()]
+            and x
+            and x == _ids(f"the {own['x']}", lexicon, "object")
+        ):
+            out = f"The {own['x']} to {own['p']}{own['rest']}"
+    if out == text.strip():
+        return text
+    out = out[:1].upper() + out[1:]
+    return _plain51s(out, text, lexicon)
+
+
+def _own_to_other54s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 54 (12s): "Grandad's teddy to her." read `teddy>B` on main 8977c130: the pronoun
+    that is not P's sex by the scene handed to P all the same. A reading that hands the X to P
+    there is refused."""
+    if "'s " not in text:
+        return
+    own = _OWN_TO_THEM54S.match(text.strip())
+    if own is None or not _only_person(own["p"], lexicon):
+        return
+    (pid,) = _ids(own["p"], lexicon)
+    sex = unnamed_sex44l(pid, lexicon)
+    if sex is None or sex == PRONOUN_SEX[own["pro"].lower()]:
+        return
+    x = _ids(f"the {own['x']}", lexicon, "object")
+    if any(t.kind == "deliver" and t.obj in x and t.target == pid for t in tasks(node)):
+        raise GroundingError(
+            f"{own['pro']!r} cannot be {own['p']}: say who gets {own['p']}'s {own['x']}"
+        )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-53 ones)
-_STEPS54S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_no_then_want54s,)
+_STEPS54S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _no_then_want54s,
+    _not_today54s,
+    _nothing_again54s,
+    _where_twice54s,
+    _doing_with54s,
+    _no_point54s,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-53 ones)
 _STEPS54S: tuple[Callable[[str, Lexicon], str], ...] = (_not_that54s, _none_for54s, _stays_cleft54s)
 # refusals asked of the text before it is read (offline._parse, after the session-53 ones)
 REFUSE54S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-53 ones)
-CHECK54S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_not_where54s,)
+CHECK54S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_not_where54s, _own_to_other54s)
