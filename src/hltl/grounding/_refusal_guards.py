@@ -528,4 +528,33 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" got ", " had "), False),
         (),
     ),
+    "hltl.grounding._rewrites54:_could_have54": ("5b4a53610fbbc758", ((), ("?",), False), ()),
+    "hltl.grounding._rewrites54:_did_you54": (
+        "a2e8784c640e9bfb",
+        ((), ("did you", "had you", "have you"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_had_asked54": (
+        "67fbb5d3305c7c7a",
+        ((), (" had ", "'d "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_had_why54": (
+        "d306486a0141109a",
+        ((), ("got ", "had "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54l:_had_given54l": ("92e2a55734259c36", (("had",), (), False), ()),
+    "hltl.grounding._rewrites54l:_held_and_more54l": (
+        "e2dd5415a91435b9",
+        (("got", "has"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54l:_held_corrected54l": (
+        "3e9480485bdca49f",
+        (("got", "has"), (), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_both_things54r": ("eeff56a3abbe8a49", ((), ("both",), False), ()),
+    "hltl.grounding._rewrites54s:_own_to_other54s": ("cc2b3bf2ebacd293", (("'s ",), (), False), ()),
 }

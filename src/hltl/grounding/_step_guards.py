@@ -1065,7 +1065,7 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
-    "hltl.grounding._normalise2:_as_used_to34": ("ea2826d793973b3d", ((" say",), (), False), ()),
+    "hltl.grounding._normalise2:_as_used_to34": ("ca5bcf9bc9ed58c5", ((" say",), (), False), ()),
     "hltl.grounding._normalise2:_as_we_say31": ("1aa6e947dee5b5cf", ((), (" say ",), False), ()),
     "hltl.grounding._normalise2:_asked36": (
         "a16347420987853f",
@@ -2447,7 +2447,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._normalise2:_trades31": ("d9118d4503c0654c", ((",",), (), False), ()),
     "hltl.grounding._normalise2:_translated25": (
-        "09ff1b95f43e3ef6",
+        "bd327425f4e99305",
         (
             ("ak", "as", "u"),
             (
@@ -2518,6 +2518,7 @@ GUARDS: dict[str, Entry | str] = {
                 ),
             ),
             ("_SORRY25", ("pattern", "\\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\\b", 34)),
+            ("re", ("module", "hltl.grounding.gate")),
         ),
     ),
     "hltl.grounding._normalise2:_up_on31": ("efb5be3d96628325", ((), (" in", " on"), False), ()),
@@ -3137,7 +3138,7 @@ GUARDS: dict[str, Entry | str] = {
         (("_sub", ("function", "hltl.grounding._normalise1:_sub", "eb004bf21c503e77")),),
     ),
     "hltl.grounding._normalise3:_cue_reason28r": (
-        "0f1a010a7a5bc691",
+        "fc6d21f0e94c08e5",
         (
             (),
             (
@@ -5354,7 +5355,7 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._normalise4:_cleft_corrected33s": (
-        "c3aaf73f74763a62",
+        "480dfa825c0dcdf4",
         ((" the one",), (), True),
         (
             (
@@ -12912,7 +12913,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites51s:_being_a51s": ("da97a909dc016cd7", ((), ("being",), False), ()),
     "hltl.grounding._rewrites51s:_dont_bother51s": (
-        "4adac59349aac62c",
+        "9dc0b1ce7b42a133",
         ((), ("bother",), False),
         (),
     ),
@@ -13027,7 +13028,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites52r:_both_state52r": (
-        "5d7d93d19838cf6f",
+        "448fd6028a2f735e",
         ((), (" both ",), False),
         (),
     ),
@@ -13149,7 +13150,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites52s:_dont_just52s": (
-        "f29124f20ea84563",
+        "837cdcb163ec3541",
         ((), ("just", "only"), False),
         (),
     ),
@@ -13231,7 +13232,7 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" it", "there"), False),
         (),
     ),
-    "hltl.grounding._rewrites53r:_had_lot53r": ("4884ccedfbd7c66a", ((), (" and ",), False), ()),
+    "hltl.grounding._rewrites53r:_had_lot53r": ("68040d4cb8603d61", ((), (" and ",), False), ()),
     "hltl.grounding._rewrites53r:_its_actually53r": (
         "06b9e8e772f9cb47",
         ((), ("actually", "in fact", "really"), False),
@@ -13352,6 +13353,192 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites53s:_to_with53s": ("7c2927715b4a1946", ((), (" with th",), False), ()),
+    "hltl.grounding._rewrites54:_after_doing54": (
+        "c996c1fbf026a0b8",
+        ((), (" after ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_after_had54": (
+        "1d01440e2cd13b45",
+        ((), ("done with", "finished", "had ", "used "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_cant_get_up54": (
+        "15596a96d50e6ff7",
+        ((), ("can not", "can't", "cannot", "cant", "couldn't"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_for_time54": ("ed2864590a211873", ((), (" time",), False), ()),
+    "hltl.grounding._rewrites54:_go_by54": (
+        "c10e593a1932c5c4",
+        ((), ("as you", "when you"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_minute_ago54": (
+        "9ea2d99ade18a432",
+        ((), (" ago", "just now"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_nothing_to54": (
+        "b04856b879052972",
+        ((), ("nothing for", "nothing to"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_only_one54": ("19fef7c520de9fab", ((), ("?",), False), ()),
+    "hltl.grounding._rewrites54:_possible54": (
+        "9529e19e9c427866",
+        ((), (" ok ", " okay ", "all right", "alright", "possible"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_run54": ("e8526eddae042a50", ((), ("running",), False), ()),
+    "hltl.grounding._rewrites54:_suit54": (
+        "d1c39786bfeb2bb0",
+        ((), ("would do", "would suit"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_thai54": ("5c91981fa0aa3b8d", ((), ("khun", "sawa"), False), ()),
+    "hltl.grounding._rewrites54:_them_over54": (
+        "eed74faca250e2f4",
+        ((), ("them across", "them over", "them round"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_where_cant54": ("897791b073ccc4be", ((), ("where ",), False), ()),
+    "hltl.grounding._rewrites54r:_alike54r": ("c758157dfc2f40cd", ((), (" alike",), False), ()),
+    "hltl.grounding._rewrites54r:_all_asking54r": (
+        "767134ae31780ab0",
+        ((), (" is all ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_at_the_time54r": (
+        "474f8af1c13ced35",
+        ((), (" at th", " then"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_cue_idiom54r": (
+        "6506688a15496033",
+        ((), ("cross that", "fire", "horses", "rub that", "wipe that"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_direction54r": (
+        "4c2205e962d3c6b7",
+        ((), ("direction",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_do_her54r": ("f8b461f19df74207", ((), ("will do",), False), ()),
+    "hltl.grounding._rewrites54r:_either_person54r": (
+        "f8266374555cb358",
+        ((), ("either", "one or the other"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_fussy_about54r": (
+        "e254c44c58f539bf",
+        ((), (" about ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_he_fancied54r": (
+        "7c6d786ff13a37df",
+        ((), ("it is", "it was", "it's"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_he_said54r": (
+        "21789cb5d8b435a2",
+        ((), ("he asked", "he meant", "he said", "he says", "he told", "he wanted"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_however54r": (
+        "2062c990c22c9cfb",
+        ((), ("however", "way"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_lone54r": (
+        "9c21a3fe08e6239c",
+        ((), ("lone", "sole ", "solitary"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_mind_which54r": (
+        "59667a2f27ae6573",
+        ((), (" which ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_no_more54r": (
+        "fa6c99d0ede40546",
+        ((), ("hunt", "look", "search"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_one_going54r": (
+        "a6395a30cf9304ef",
+        ((), ("the one",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_owed54r": ("77c36b563e8d616c", ((), (":",), False), ()),
+    "hltl.grounding._rewrites54r:_the_pair54r": (
+        "2d4f470419d4908f",
+        ((), ("the both", "the pair", "the two", "twosome"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_to_have54r": (
+        "5b108d7bb88c2de7",
+        ((), (" to hang on", " to have", " to keep", " to take home"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_wanted_by54r": (
+        "53cffbe467ab0250",
+        ((), ("asked for by", "needed by", "requested by", "wanted by"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_we_have54r": (
+        "d1dff9456a7f2391",
+        ((), ("there are", "there is", "we"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_where_reach54r": (
+        "72bdb233935242f4",
+        ((), (" where ",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_who_now54r": (
+        "a40b1f5a40efd636",
+        ((), (" one", "i mean", "mixed", "muddled", "wrong"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54r:_yes_to_her54r": (
+        "f19c61d895b11e6d",
+        ((), ("aye", "right", "yeah", "yep", "yes"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54s:_doing_with54s": ("7aaea4826e8b2740", (("ing ",), (), False), ()),
+    "hltl.grounding._rewrites54s:_no_point54s": (
+        "400137e5c39cdcfc",
+        ((), ("'s ", "no "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54s:_no_then_want54s": ("3f274e46c48d3727", ((), ("no",), False), ()),
+    "hltl.grounding._rewrites54s:_none_for54s": ("665382099e951461", ((), ("no",), False), ()),
+    "hltl.grounding._rewrites54s:_not_that54s": (
+        "8f30c9f6fa8cb978",
+        ((), ("that", "who"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54s:_not_today54s": (
+        "97fc6045a1b5235d",
+        ((), ("n't", "not"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54s:_nothing_again54s": (
+        "eb133bd6d04d5471",
+        ((), ("nothing",), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54s:_stays_cleft54s": (
+        "5bb6bf4c6788d9b0",
+        ((), ("it is", "it's"), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54s:_where_twice54s": (
+        "89856288cf7e4d26",
+        ((), ("down ", "over there", "up "), False),
+        (),
+    ),
     "hltl.grounding.normalise:_people_then_pronoun": (
         "b9a19a7f46080ecd",
         ((), (",",), True),

@@ -1534,6 +1534,12 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("\\b(?:back )?(?:in|into|onto) (?=the )", 2, True),
     ("\\b(?:bar|barring|save|but|except|apart)\\b", 2, True),
+    ("\\b(?:bebakhshid|bebakhshin|bebakhsheed|maaf)\\b", 34, False),
+    (
+        "\\b(?:bisa tolong|tolong|lotfan|bitte|por favor|prosím|prosim|vă rog|va rog|prašau|prasau|prašom|prasom|gtkhovt|ebakih|ebakish|ebakachihu|karunakarala|lūdzu|ludzu|palun|proszę|prosze|molim|alstublieft|alsjeblieft|lütfen|lutfen|pozhaluysta|pozhaluista|parakalo|tafadhali|kripya|s'il vous pla[iî]t|sil vous plait|per favore|onegaishimasu|si us plau|mesedez)(?!\\w)",
+        34,
+        False,
+    ),
     (
         "\\b(?:both|all (?:two|three|four|five|six)) of (?:them|these|those)\\b([^,.;!?]*),\\s*((?:the |a |an )?[^,.;!?]+?(?:,\\s*(?:and\\s+)?|\\s+and\\s+)(?:the |a |an )?[^.;!?]+?)\\s*([.!]?)$",
         2,
@@ -1555,6 +1561,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(?:craveth|desireth|wanteth)\\b", 2, True),
+    (
+        "\\b(?:di|dat|dis|fi mi|fi|jus|mek|pon|wid|mi mean|nuh matter)\\b(?=[\\s',.;!?]|$)|\\s*\\bnuh\\b(?=\\s*[,.;!?])",
+        34,
+        False,
+    ),
     ("\\b(?:do you|d'you|d you|did you) reckon (?:that )?you (could|can)\\b", 2, True),
     ("\\b(?:done|finished|complete|completed)\\b", 2, True),
     ("\\b(?:each|every)\\b", 2, True),
@@ -1645,6 +1656,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         "\\b(?:neither|not) the (?P<a>[a-z]+) one,? (?:nor|or) the (?P<b>[a-z]+) one\\s*[,;]\\s*(?:it's |it is |but |just )?the other (?:one|of them|one of them)\\b",
         2,
         True,
+    ),
+    (
+        "\\b(?:not (?:sure|certain)|unsure|(?:don't|do not|didn't|did not) know(?! (?:his|her|their|the other (?:one|person|guy|lady|man|woman)'s) names?\\b)|dunno|no idea|(?:can't|cannot|can not|couldn't) (?:remember|recall|decide)(?! (?:his|her|their|the other (?:one|person|guy|lady|man|woman)'s) names?\\b)|(?<!\\bbefore )i forget|i forgot|lost track)\\b",
+        34,
+        False,
     ),
     ("\\b(?:not|never|no)\\b|n't\\b", 2, True),
     ("\\b(?:not|never|no|it|them|want|wants|need|needs)\\b|n't", 2, True),
