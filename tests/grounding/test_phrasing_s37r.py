@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites53s, normalise
+from hltl.grounding import _rewrites53s, _rewrites54s, normalise
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
@@ -395,6 +395,11 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             # session 50 (12r; lead at the merge): its 'any … at all' rule reads one of these too
             *normalise._STEPS50R_FIRST,
             *normalise._STEPS50R,
+            # session 54 (12s, 12r; lead at the merge): 'the X can stay / leave … alone, it's the
+            # Y', '…, no, sorry, she wanted the Y' read some of these too
+            _rewrites54s._stays_cleft54s,
+            *normalise._STEPS54R_FIRST,
+            *normalise._STEPS54R,
         ),
         monkeypatch,
     )

@@ -741,7 +741,8 @@ def _the_pair54r(text: str, lexicon: Lexicon) -> str:
 
 # "Stapler in the box, oh wait, better on the desk where Priya can reach it."
 _WHERE_REACH54R = re.compiled(
-    rf"(?P<s>\b(?:on|in|onto|into) the [a-z]+(?: [a-z]+)?) where (?:{_P46R}|she|he|they) can "
+    rf"(?P<s>\b(?:on|in|onto|into) the [a-z]+(?: [a-z]+)?) where (?!(?:i|we|you)\b)"
+    rf"(?:{_P46R}|she|he|they) can "
     r"(?:reach|get at|get to|grab|see) (?:it|them)(?=\s*[.!]?\s*$)",
     _F,
 )
