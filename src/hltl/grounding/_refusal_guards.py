@@ -544,9 +544,9 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("got ", "had "), False),
         (),
     ),
-    "hltl.grounding._rewrites54l:_had_given54l": ("92e2a55734259c36", (("had",), (), False), ()),
+    "hltl.grounding._rewrites54l:_had_given54l": ("e71907cea550ea54", (("had",), (), False), ()),
     "hltl.grounding._rewrites54l:_held_and_more54l": (
-        "e2dd5415a91435b9",
+        "195f862eda749571",
         (("got", "has"), (), False),
         (),
     ),

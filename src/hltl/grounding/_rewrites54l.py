@@ -40,6 +40,12 @@ _CONDITION54L = re.compiled(
 )
 
 
+def _handed54l(node: Node, who: str, lexicon: Lexicon) -> set[str]:
+    """The objects the reading hands ``who`` (one person of the scene, by a name)."""
+    person = next(iter(_ids(who, lexicon)))
+    return {t.obj for t in tasks(node) if t.kind == "deliver" and t.target == person}
+
+
 def _held_and_more54l(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 54 (lead): "Bob has the apple; the crisps to him as well." — a holding read as an
     allotment beside more for the same person — refused naming both readings."""
@@ -49,11 +55,10 @@ def _held_and_more54l(text: str, node: Node, lexicon: Lexicon) -> None:
         who = m["who"]
         if _CONDITION54L.search(text[: m.start("who")]) or not _only_person(who, lexicon):
             continue
-        person = next(iter(_ids(who, lexicon)))
         held = _ids(m["x"], lexicon, "object")
         if not held or _ids(m["x"], lexicon, "human") or _ids(m["x"], lexicon, "surface"):
             continue
-        got = {t.obj for t in tasks(node) if t.kind == "deliver" and t.target == person}
+        got = _handed54l(node, who, lexicon)
         if held <= got and got - held:
             said = text[m.start("who") : m.end("x")].strip()
             beside_request44l(said, who, " ".join(m["x"].split()))
@@ -91,8 +96,7 @@ def _had_given54l(text: str, node: Node, lexicon: Lexicon) -> None:
         who = m["who"]
         if not _only_person(who, lexicon):
             continue
-        person = next(iter(_ids(who, lexicon)))
-        got = {t.obj for t in tasks(node) if t.kind == "deliver" and t.target == person}
+        got = _handed54l(node, who, lexicon)
         x = " ".join(m["x"].split())
         held = got if x.lower() in ("it", "them") else _ids(x, lexicon, "object")
         if not held or _ids(x, lexicon, "human") or not held <= got:

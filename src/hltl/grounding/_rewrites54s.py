@@ -6,9 +6,9 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _only_person, _reading
+from hltl.grounding._normalise1 import _F, _ids, _names, _only_person
 from hltl.grounding._rewrites39r import _not_wanted39r
-from hltl.grounding._rewrites44r import _read_without44r
+from hltl.grounding._rewrites44r import _read_or44r, _read_without44r
 from hltl.grounding._rewrites51s import _plain51s
 from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S, _X53S, _not_who53s
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
@@ -294,9 +294,7 @@ def _not_today54s(text: str, lexicon: Lexicon) -> str:
     if said == text and "instead" not in low:
         return text
     out = _not_wanted39r(said, lexicon)
-    if out == text:
-        return text
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 def _nothing_again54s(text: str, lexicon: Lexicon) -> str:
@@ -304,9 +302,7 @@ def _nothing_again54s(text: str, lexicon: Lexicon) -> str:
     if "nothing" not in text.lower():
         return text
     out = _NOTHING_AGAIN54S.sub(lambda m: m["said"], text)
-    if out == text:
-        return text
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # -- session 54 (12s): 'up top on the shelf' -------------------------------------------------
@@ -343,9 +339,7 @@ def _where_twice54s(text: str, lexicon: Lexicon) -> str:
         return "" if named and named == _ids(m["s"], lexicon, "surface") else m[0]
 
     out = _WHERE_TWICE54S.sub(one, text)
-    if out == text:
-        return text
-    return out if _reading(out, lexicon) is not None else text
+    return _read_or44r(out, text, lexicon)
 
 
 # -- session 54 (12s): 'Ava's changing Lily.' opening a request -------------------------------

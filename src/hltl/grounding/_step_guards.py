@@ -13520,12 +13520,12 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites54s:_not_today54s": (
-        "97fc6045a1b5235d",
+        "175bb9c138e8edc3",
         ((), ("n't", "not"), False),
         (),
     ),
     "hltl.grounding._rewrites54s:_nothing_again54s": (
-        "eb133bd6d04d5471",
+        "acda2d9f19850e02",
         ((), ("nothing",), False),
         (),
     ),
@@ -13535,7 +13535,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites54s:_where_twice54s": (
-        "89856288cf7e4d26",
+        "f74f848f4abf9bcb",
         ((), ("down ", "over there", "up "), False),
         (),
     ),
