@@ -161,7 +161,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # never opened by the engineers who change the grounder before its one measurement at the end of
 # session 53; tuned on in session 54), blind53 (written in session 54 by another engineer and
 # committed alone, never opened by the engineers who change the grounder before its one measurement
-# at the end of session 54; to be tuned on in session 55).
+# at the end of session 54; tuned on in session 55).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",

@@ -549,9 +549,11 @@ _WORDS_LATE: tuple[tuple[str, str], ...] = (
         r"[^.;!?])*(?:[.;!?]|$))",
         r"\1 ",
     ),
-    # "Noah is wanting the ruler for his maths": what it is for, when no name is in it
+    # "Noah is wanting the ruler for his maths": what it is for, when no name is in it; not what a
+    # person cries or asks for ("Lily's been crying for her teddy": a want, session 55)
     (
-        r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
+        r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)(?<!\bcrying)(?<!\basking)(?<!\basked)(?<!\bcalling)"
+        r"(?<!\bbegging)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
         r"([a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$))",
         "",
     ),

@@ -719,8 +719,9 @@ _IDIOMS30: tuple[tuple[str, str], ...] = (
      r"sarnie)\b|\bcould eat a horse\b", "is hungry"),
     # "Person A has had her eye on that bottle": she wants it
     (r"(?:\s+has|'s) (?:had |got )?(?:her|his|their) eyes? on\b", " wants"),
-    # "Lily's grizzling for her teddy": she wants it
-    (r"(?:\s+is|'s) (?:grizzling|crying|crying out|pining|gasping|begging) for\b", " wants"),
+    # "Lily's grizzling for her teddy", "Lily's been crying for her teddy" (s55): she wants it
+    (r"(?:\s+is|'s|\s+has been|'s been) (?:grizzling|crying|crying out|pining|gasping|begging) "
+     r"for\b", " wants"),
 )  # fmt: skip
 
 

@@ -1500,7 +1500,7 @@ GUARDS: dict[str, Entry | str] = {
                         "\\bcould (?:murder|kill for|really murder) an? (?:drink|cuppa|brew|coffee|tea|pint|cold one)\\b",
                         "\\bcould (?:murder|kill for|really murder) an? (?:sandwich|snack|bite|biscuit|butty|sarnie)\\b|\\bcould eat a horse\\b",
                         "(?:\\s+has|'s) (?:had |got )?(?:her|his|their) eyes? on\\b",
-                        "(?:\\s+is|'s) (?:grizzling|crying|crying out|pining|gasping|begging) for\\b",
+                        "(?:\\s+is|'s|\\s+has been|'s been) (?:grizzling|crying|crying out|pining|gasping|begging) for\\b",
                     ),
                 ),
             ),

@@ -181,13 +181,17 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         2,
         True,
     ),
-    ("(?:\\s+is|'s) (?:grizzling|crying|crying out|pining|gasping|begging) for\\b", 2, True),
     (
         "(?:\\s+is|'s) (?:still )?owed\\b(?= (?:the|that|this|those|these|her|his|their)\\b)",
         2,
         True,
     ),
     ("(?:\\s+is|'s) keen on\\b", 2, True),
+    (
+        "(?:\\s+is|'s|\\s+has been|'s been) (?:grizzling|crying|crying out|pining|gasping|begging) for\\b",
+        2,
+        True,
+    ),
     (
         "(?:\\s+is|'s|\\s+was) (?:absolutely |just |really )?gasping for\\b(?= (?:the|that|this|those|these)\\b)",
         34,
@@ -346,7 +350,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     (
-        "(?<!\\bits)(?<!it's)(?<!\\bis)(?<!\\bare)\\s+for (?:his|her|their|my|our) (?!(?:own)\\b)([a-z]+(?: [a-z]+)?)(?=\\s*(?:[.,;!?]|$))",
+        "(?<!\\bits)(?<!it's)(?<!\\bis)(?<!\\bare)(?<!\\bcrying)(?<!\\basking)(?<!\\basked)(?<!\\bcalling)(?<!\\bbegging)\\s+for (?:his|her|their|my|our) (?!(?:own)\\b)([a-z]+(?: [a-z]+)?)(?=\\s*(?:[.,;!?]|$))",
         2,
         True,
     ),
