@@ -573,6 +573,9 @@ from hltl.grounding._rewrites53s import _STEPS53S, _STEPS53S_FIRST
 from hltl.grounding._rewrites54 import _STEPS54, _STEPS54_FIRST
 from hltl.grounding._rewrites54r import _STEPS54R, _STEPS54R_FIRST
 from hltl.grounding._rewrites54s import _STEPS54S, _STEPS54S_FIRST
+from hltl.grounding._rewrites55 import _STEPS55, _STEPS55_FIRST
+from hltl.grounding._rewrites55r import _STEPS55R, _STEPS55R_FIRST
+from hltl.grounding._rewrites55s import _STEPS55S, _STEPS55S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -904,6 +907,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS55S_FIRST,
+    *_STEPS55R_FIRST,
+    *_STEPS55_FIRST,
     *_STEPS54S_FIRST,
     *_STEPS54R_FIRST,
     *_STEPS54_FIRST,
@@ -966,6 +972,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS55R,
     *_STEPS54R,
     *_STEPS53R,
     *_STEPS52R,
@@ -1014,6 +1021,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS55S,
     *_STEPS54S,
     *_STEPS53S,
     *_STEPS52S,
@@ -1109,6 +1117,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS55,
     *_STEPS54,
     *_STEPS53,
     *_STEPS52,

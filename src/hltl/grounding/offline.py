@@ -69,6 +69,10 @@ from hltl.grounding import (
     _rewrites54l,
     _rewrites54r,
     _rewrites54s,
+    _rewrites55,
+    _rewrites55l,
+    _rewrites55r,
+    _rewrites55s,
     gate,
     refusalguard,
 )
@@ -186,6 +190,10 @@ _REFUSALS = (
     *_rewrites54.REFUSE54,
     *_rewrites54r.REFUSE54R,
     *_rewrites54s.REFUSE54S,
+    *_rewrites55l.REFUSE55L,
+    *_rewrites55.REFUSE55,
+    *_rewrites55r.REFUSE55R,
+    *_rewrites55s.REFUSE55S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -241,6 +249,10 @@ _CHECKS = (
     *_rewrites54.CHECK54,
     *_rewrites54r.CHECK54R,
     *_rewrites54s.CHECK54S,
+    *_rewrites55l.CHECK55L,
+    *_rewrites55.CHECK55,
+    *_rewrites55r.CHECK55R,
+    *_rewrites55s.CHECK55S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
