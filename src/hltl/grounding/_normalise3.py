@@ -96,8 +96,8 @@ from hltl.grounding._normalise2 import (
     _mid_aside34,
     _mind_if34,
     _one_name,
+    _opens_with_person,
     _over_and34,
-    _person_at,
     _questions34,
     _run_on_remarks34,
     _see_the34,
@@ -1349,7 +1349,10 @@ def _verb_last27(text: str, lexicon: Lexicon) -> str:
         who, what, verb = m["who"], m["what"], m["verb"]
         if verb.lower() in ("put", "place", "set", "leave"):
             return m[0]
-        if not _person_at(who, lexicon) or _names(who, lexicon)[0].text.lower() != who.lower():
+        if (
+            not _opens_with_person(who, lexicon)
+            or _names(who, lexicon)[0].text.lower() != who.lower()
+        ):
             return m[0]
         if not _objects_only(what, lexicon) or len(_names(who, lexicon)) != 1:
             return m[0]

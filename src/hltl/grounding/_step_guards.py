@@ -2447,7 +2447,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._normalise2:_trades31": ("d9118d4503c0654c", ((",",), (), False), ()),
     "hltl.grounding._normalise2:_translated25": (
-        "bd327425f4e99305",
+        "9a1f4fb92200164a",
         (
             ("ak", "as", "u"),
             (
@@ -4748,7 +4748,7 @@ GUARDS: dict[str, Entry | str] = {
         (("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),),
     ),
     "hltl.grounding._normalise3:_verb_last27": (
-        "dc5dc02d1de26e7e",
+        "5afcd25c9a970d7b",
         ((), ("bring", "deliver", "give", "hand", "leave", "pass", "place", "put", "set"), True),
         (
             ("_LAST_VERB27", ("value", "'(give|hand|pass|bring|deliver|put|place|set|leave)'")),
@@ -9923,7 +9923,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites41:_asked_that41": (
-        "e6e7b73670677114",
+        "0efeee7e4bcd7b33",
         ((), ("ask", "request"), False),
         (),
     ),
@@ -9942,7 +9942,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites41:_said_want41": (
-        "c4f88767ac57ffc3",
+        "ae523439c44578c8",
         ((), ("mention", "reckon", "said", "says", "thin", "thought", "told"), False),
         (),
     ),
@@ -9953,7 +9953,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites41:_take_off41": ("4e017e8c372f6136", ((), ("take",), False), ()),
     "hltl.grounding._rewrites41:_want_idiom41": (
-        "644c794d10ad649b",
+        "4ee398d8d6eda952",
         (
             (),
             (
@@ -9999,7 +9999,7 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
-    "hltl.grounding._rewrites41:_will_do41": ("c6aaa6ebc5242797", ((), (" do",), False), ()),
+    "hltl.grounding._rewrites41:_will_do41": ("77e94526b0d66977", ((), (" do",), False), ()),
     "hltl.grounding._rewrites41r:_a_kind_said41r": (
         "b14a1bcff00c2f4c",
         ((" or the ",), (), False),
@@ -10394,12 +10394,12 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites42:_get_one42": ("30be8a22fb58c216", ((), (" one",), False), ()),
     "hltl.grounding._rewrites42:_left_behind42": ("def013d89a53f46a", ((), (" back",), False), ()),
     "hltl.grounding._rewrites42:_more_than42": (
-        "3086b7a965b3ff76",
+        "249d92f125eb8743",
         ((), ("more than",), False),
         (),
     ),
     "hltl.grounding._rewrites42:_own_thing42": (
-        "2a1ebbdd0f8e9bfd",
+        "8e3dadf9fbc9e24d",
         ((), (" her ", " his ", " their "), False),
         (),
     ),
@@ -11273,7 +11273,7 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
-    "hltl.grounding._rewrites44:_all_state44": ("5ba913c12e293473", ((), (" all ",), False), ()),
+    "hltl.grounding._rewrites44:_all_state44": ("0213513e4ac39497", ((), (" all ",), False), ()),
     "hltl.grounding._rewrites44:_body_state44": ("38b9aa9ec76eca8b", (("'s ",), (), False), ()),
     "hltl.grounding._rewrites44:_cleft_tail44": (
         "57c8363934b3c895",
@@ -11321,7 +11321,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites44:_it_named44": ("0ddc3cdae8b2e197", ((), ("it ",), False), ()),
     "hltl.grounding._rewrites44:_kind_want44": (
-        "ef954bfb1667705b",
+        "12fc923c70113916",
         ((), ("bite", "drink", "eat", "munch", "nibble", "snack", "water"), False),
         (),
     ),
@@ -11350,7 +11350,7 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._rewrites44:_want_words44": (
-        "675505fcf5d6fc64",
+        "ec298a23a3698638",
         ((), (" about ", " for ", " of "), False),
         (),
     ),
@@ -12965,7 +12965,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites52:_before_ps52": ("3ca3a67ccc6fa559", (("'s ",), (), False), ()),
     "hltl.grounding._rewrites52:_butting_in52": ("c72b5049c08ed370", ((" in",), (), False), ()),
-    "hltl.grounding._rewrites52:_cataphor52": ("12cbe8106c2b64f1", ((), ("he", "she"), False), ()),
+    "hltl.grounding._rewrites52:_cataphor52": ("cb0ac932ec2c2c11", ((), ("he", "she"), False), ()),
     "hltl.grounding._rewrites52:_clearing52": ("164b7f5bc62b73cb", (("ing the ",), (), False), ()),
     "hltl.grounding._rewrites52:_colleague52": ("f80bcd5dc7563330", ((", ",), (), False), ()),
     "hltl.grounding._rewrites52:_do_for52": ("3af8637b1d2c5d12", ((" do ",), (), False), ()),
@@ -13145,17 +13145,17 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._rewrites52s:_after_all52s": (
-        "3a4f5e65e4b0c1a1",
+        "fc5bbc0cce5890a0",
         ((), ("after all",), False),
         (),
     ),
     "hltl.grounding._rewrites52s:_dont_just52s": (
-        "837cdcb163ec3541",
+        "ebd7cfe29f993d4d",
         ((), ("just", "only"), False),
         (),
     ),
     "hltl.grounding._rewrites52s:_not_use52s": (
-        "4529d5dd5da352a8",
+        "ce8a679b5a784da6",
         ((), ("drink", "eat", "use"), False),
         (),
     ),
