@@ -11,10 +11,14 @@ from hltl.grounding._rewrites51s import _not_x_rest51s, _plain51s
 from hltl.grounding.lexicon import Lexicon, first_name_sex36s, person_name, said_sex35s
 from hltl.grounding.tree import Node, tasks
 
-# a past holding or taking said after the negation ("…, so he had the blue one", "he had the
-# pills"): a report, which the rewrite would leave to be read as a handover (12c 13:43)
+# what a person holds, held, was handed or wanted once ("…, so he had the blue one", "he had the
+# pills", "Bob has …", "Lily's got …"): a report, which a rewrite would leave to be read as a
+# handover (12c 13:43). One list for session 52's rules here (12s) and session 53's `_held53r` (12r)
 _HELD52S = re.compile(
-    r"\b(?:had|got|took|received|was given|were given|was handed|has had|'s had|has got)\b", _F
+    r"\b(?:has|had|'s got|'ve got|have got|got|gotten|took|taken|received|wanted|needed|was "
+    r"after|were after|went|given|was handed|already|ended up|finished up|wound up|kept|keeps|"
+    r"holds|holding|held)\b",
+    _F,
 )
 
 
