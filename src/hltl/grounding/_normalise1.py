@@ -2156,6 +2156,13 @@ def _courtesy(text: str, lexicon: Lexicon) -> str:
         ),
         text,
     )
+    return text
+
+
+# Session 55 (12p): the single spacing that closed _courtesy, _courtesy14 and _courtesy_frames,
+# a step of its own after each (the same text out): what is left of each is read by its words,
+# so stepguard guards it.
+def _spaced55p(text: str, _lexicon: Lexicon) -> str:
     return " ".join(text.split())
 
 
@@ -2963,7 +2970,7 @@ def _courtesy14(text: str, lexicon: Lexicon) -> str:
             and _names_nothing(m.group(1), lexicon)
         ):
             text = text[: m.start()] + m.group(2)
-    return " ".join(text.split())
+    return text
 
 
 # a sentence only of the speaker saying it is them again ("Sorry, me again.", "It's me again!",
@@ -4791,7 +4798,7 @@ def _courtesy_frames(text: str, lexicon: Lexicon) -> str:
         and (_ids(m.group(1), lexicon) <= _ids(text[m.end() :], lexicon))
     ):
         text = text[m.end() :]
-    return " ".join(text.split())
+    return text
 
 
 # -- wants and purposes --------------------------------------------------------------------------
@@ -6656,6 +6663,13 @@ def _ends_object(chunk: str, lexicon: Lexicon) -> bool:
     return any(r.kind == "object" for r in last.refs) and tail.endswith(last.text.lower())
 
 
+# the words after which _fillers19 asks whether a word is 'loose' between a thing and where it goes
+_LOOSE_BEFORE19 = ("on", "onto", "to", "in", "into", "over")
+# the interjections that are not address (session 55, 12p: the difference had been made at every
+# call)
+_INTERJECTION_ONLY19 = _INTERJECTION19 - _ADDRESS
+
+
 def _fillers19(text: str, lexicon: Lexicon) -> str:
     """The speaker's own words taken off by kind (above): manner adverbs, particles and words of
     immediacy wherever they stand (not between a determiner and its noun: 'the woolly hat'), and
@@ -6666,7 +6680,7 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
     words = out.split(" ")
     # interjections said first without a comma ('aye aye the bottle's going …')
     lead = 0
-    while lead < len(words) - 2 and words[lead].lower() in _INTERJECTION19 - _ADDRESS:
+    while lead < len(words) - 2 and words[lead].lower() in _INTERJECTION_ONLY19:
         if _held_word(words[lead], lexicon) or words[lead].lower() in ("please", "and", "so"):
             break
         lead += 1
@@ -6676,12 +6690,22 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
     for k, w in enumerate(words):
         core = w.strip('.,;:!?"')
         low = core.lower()
+        if (
+            low not in _PARTICLES
+            and (len(low) < 5 or not low.endswith("ly"))
+            and not (0 < k < len(words) - 1 and words[k + 1].lower() in _LOOSE_BEFORE19)
+        ):
+            # session 55 (12p): a word none of the three tests below can take off (not a
+            # particle, not an -ly word, as _manner asks first, nor before a word 'loose' asks
+            # for), kept at once: most words are
+            kept.append(w)
+            continue
         prev = words[k - 1].lower().strip(",;:") if k else ""
         last = k + 1 == len(words) or w[-1:] in ",;:.!?"
         glued = low in _PARTICLES and k > 0 and prev[-1:] not in (",", ";", ":")
         loose = (  # the cheap tests first (session 44, 12b): the same value, not asked of most
             0 < k < len(words) - 1
-            and words[k + 1].lower() in ("on", "onto", "to", "in", "into", "over")
+            and words[k + 1].lower() in _LOOSE_BEFORE19
             and _unknown_word(core, lexicon)
             and _ends_object(" ".join(words[:k]), lexicon)
         )  # 'the sippy cup aloft on the high chair': a word between a thing and where it goes
