@@ -1,0 +1,220 @@
+"""Session 55 (12p): steps split so that stepguard guards them, and _fillers19's word test, each
+answering as the code it replaced, on every text."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import cache
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hltl.bench.grounding import CORPUS_DIR, load_corpus
+from hltl.errors import GroundingError
+from hltl.grounding import _normalise1 as n1
+from hltl.grounding import _step_guards, normalise, stepguard
+from hltl.grounding.lexicon import Lexicon
+from hltl.world.scene import Scene
+from tests.grounding.helpers import CELL, OFFICE, ROOT, WARD, WORKSHOP
+
+_Step = Callable[[str, Lexicon], str]
+
+# the steps whose single spacing is now the step after them (_spaced55p)
+_SPLIT: tuple[_Step, ...] = (n1._courtesy, n1._courtesy14, n1._courtesy_frames)
+
+# sentences the three steps rewrite (their sessions' tests), some spaced oddly
+_REWRITTEN = (
+    "Be an angel and give Bob the apple, thanks so much.",
+    "If you wouldn't mind, the cup to Alice.",
+    "No rush, but  the crisps to Bob.",
+    "Is it possible for Alice to have the apple?",
+    "Alice is on the phone but she needs the cup",
+    "If it's no bother, the bottle to Alice, nice one.",
+    "Sorry to interrupt, you're a lifesaver, the apple to Bob.",
+    "Love, the cup for Alice",
+    "The chips to Bob , good man .",
+    "Next one on my list: the apple to Alice.",
+    "Yes chef! The cup to Bob.",
+    "Two apples up! Apple to Alice, apple to Bob.",
+    "  thanks a million,   the   cup to Alice  ",
+    "Cheers, pal.",
+)
+
+
+@cache
+def _sentences() -> tuple[tuple[str, Scene], ...]:
+    out: list[tuple[str, Scene]] = []
+    for part in ("tuning", "blind22", "blind52", "blind53", "causes15"):
+        corpus = load_corpus(ROOT / CORPUS_DIR / f"{part}.yaml", ROOT)
+        out += [(e.text, corpus.scenes[e.scene]) for e in corpus.entries[::2]]
+    for scene in (CELL, WORKSHOP, OFFICE):
+        out += [(t, scene) for t in _REWRITTEN]
+    return tuple(out)
+
+
+def _answer(step: _Step, text: str, scene: Scene) -> str:
+    try:
+        return step(text, Lexicon.of(scene))
+    except GroundingError as refused:
+        return f"refused: {refused}"
+
+
+def _canonical(text: str, lexicon: Lexicon) -> str:
+    """normalise.canonical of ``text``, nothing kept from a text before (as a new instruction)."""
+    lexicon.forget()
+    return normalise.canonical(text, lexicon)
+
+
+def _spaced_as_it_was(step: _Step) -> _Step:
+    """``step`` as it was before session 55: its text single-spaced at the end."""
+
+    def joined(text: str, lexicon: Lexicon) -> str:
+        return " ".join(step(text, lexicon).split())
+
+    return joined
+
+
+def test_each_split_step_has_its_spacing_after_it() -> None:
+    steps = normalise._STEPS
+    for step in _SPLIT:
+        assert steps[steps.index(step) + 1] is n1._spaced55p
+    assert steps.count(n1._spaced55p) == len(_SPLIT)
+
+
+@pytest.mark.parametrize("step", _SPLIT, ids=lambda s: s.__name__)
+def test_the_split_step_is_guarded(step: _Step) -> None:
+    entry = stepguard.read_guard(step)
+    assert entry is not None
+    assert stepguard.guards((step,), _step_guards.GUARDS) == (entry[1],)
+
+
+@pytest.mark.parametrize("step", _SPLIT, ids=lambda s: s.__name__)
+def test_the_split_step_changes_nothing_its_guard_turns_away(step: _Step) -> None:
+    entry = stepguard.read_guard(step)
+    assert entry is not None
+    away = 0
+    for text, scene in _sentences():
+        if not stepguard.may_act(entry[1], text, text.lower(), text.isascii()):
+            away += 1
+            assert _answer(step, text, scene) == text
+    assert away > 50  # not vacuous
+
+
+def test_the_canonical_rewrite_answers_as_before(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The rewrites of _STEPS (their guards asked) with each split step and its spacing as one
+    step again (unguarded, as before)."""
+    new = [_answer(_canonical, t, s) for t, s in _sentences()]
+    old: list[_Step] = []
+    for step in normalise._STEPS:
+        if step is n1._spaced55p:
+            continue
+        old.append(_spaced_as_it_was(step) if step in _SPLIT else step)
+    monkeypatch.setattr(normalise, "_STEPS", tuple(old))
+    assert [_answer(_canonical, t, s) for t, s in _sentences()] == new
+    assert sum(a != t for a, (t, _) in zip(new, _sentences(), strict=True)) > 50  # not vacuous
+
+
+def test_the_split_steps_rewrite_some_sentences() -> None:
+    """Not vacuous: each split step rewrites some of the sentences above."""
+    for step in _SPLIT:
+        assert any(_answer(step, t, s) != t for t, s in _sentences()), step.__name__
+
+
+# -- _fillers19: a word none of its tests can take off, kept at once (session 55) ---------------
+
+
+def _fillers19_as_it_was(text: str, lexicon: Lexicon) -> str:
+    """_fillers19 of session 54."""
+    re = n1.re
+    out = text
+    if not n1._TIMED19.search(out):
+        out = n1._NOW19.sub("", out)
+    words = out.split(" ")
+    lead = 0
+    while lead < len(words) - 2 and words[lead].lower() in n1._INTERJECTION19 - n1._ADDRESS:
+        if n1._held_word(words[lead], lexicon) or words[lead].lower() in ("please", "and", "so"):
+            break
+        lead += 1
+    if lead and (words[lead].lower() in n1._DETERMINER19 or words[lead].lower() in n1.VERBS):
+        words = words[lead:]
+    kept: list[str] = []
+    for k, w in enumerate(words):
+        core = w.strip('.,;:!?"')
+        low = core.lower()
+        prev = words[k - 1].lower().strip(",;:") if k else ""
+        last = k + 1 == len(words) or w[-1:] in ",;:.!?"
+        glued = low in n1._PARTICLES and k > 0 and prev[-1:] not in (",", ";", ":")
+        loose = (
+            0 < k < len(words) - 1
+            and words[k + 1].lower() in ("on", "onto", "to", "in", "into", "over")
+            and n1._unknown_word(core, lexicon)
+            and n1._ends_object(" ".join(words[:k]), lexicon)
+        )
+        if (
+            core
+            and (glued or loose or n1._manner(core, lexicon))
+            and (prev not in n1._DETERMINER19 or last)
+        ):
+            tail = w[len(w.rstrip('.,;:!?"')) :]
+            if tail and kept:
+                kept[-1] = kept[-1].rstrip(",;:") + tail
+            continue
+        kept.append(w)
+    out = " ".join(kept)
+    parts = n1._STRETCH.split(out.strip())
+    chunks, seps = parts[0::2], parts[1::2]
+    asks = "?" in out and not re.match(r"^(?:could|can|would|will|may|might|is it)\b", out, n1._F)
+    if (
+        len(chunks) < 2
+        or asks
+        or n1._rx(
+            r"\b(?:no|sorry|actually|wait|i mean|hang on|hold on|scratch|strike|correction|rather|"
+            r"oops|whoops|i tell a lie|my mistake|my bad)\b"
+        ).search(out)
+    ):
+        return n1._tidy19(out)
+    drop = []
+    for k, c in enumerate(chunks):
+        prev = chunks[k - 1] if k else ""
+        prev_sep = seps[k - 1] if k else "."
+        after_object = (
+            k > 0 and prev_sep.strip()[:1] not in (".", "!", "?") and n1._ends_object(prev, lexicon)
+        )
+        drop.append(bool(c.strip()) and n1._filler_stretch(c, after_object, lexicon))
+    if not any(drop) or all(d or not c.strip() for d, c in zip(drop, chunks, strict=True)):
+        return n1._tidy19(out)
+    return n1._joined19(chunks, seps, drop)
+
+
+def test_fillers19_answers_as_it_did() -> None:
+    for text, scene in _sentences():
+        want = _answer(_fillers19_as_it_was, text, scene)
+        assert _answer(n1._fillers19, text, scene) == want, text
+
+
+def test_fillers19_rewrites_some_sentences() -> None:
+    """Not vacuous."""
+    assert sum(_answer(n1._fillers19, t, s) != t for t, s in _sentences()) > 20
+
+
+_WORDS = st.sampled_from(
+    [
+        *("the", "a", "my", "cup", "apple", "Bob", "Alice", "Person", "B", "give", "pass", "to"),
+        *("on", "onto", "in", "into", "over", "shelf", "table", "gently", "quickly", "Kindly"),
+        *("only", "ugly", "early", "holly", "lah", "la", "innit", "ah", "po", "aye", "oi", "yo"),
+        *("right", "now", "asap", "cheers", "blorp", "aloft", "please", "and", "so", "sorry"),
+        *("Ly", "ly", "LAH", "bed", "ward", "nurse", "Ruth", "Mr", "Lee"),
+    ]
+)
+_MARKS = st.sampled_from(["", "", "", ",", ".", "!", "?", ";", ":", '"', "'s"])
+
+
+@settings(max_examples=1500, deadline=None)
+@given(
+    st.lists(st.tuples(_WORDS, _MARKS).map("".join), min_size=1, max_size=9),
+    st.sampled_from([CELL, WARD, WORKSHOP]),
+)
+def test_fillers19_answers_as_it_did_on_any_words(words: list[str], scene: Scene) -> None:
+    text = " ".join(words)
+    assert _answer(n1._fillers19, text, scene) == _answer(_fillers19_as_it_was, text, scene)
