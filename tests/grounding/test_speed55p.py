@@ -1,5 +1,5 @@
-"""Session 55 (12p): steps split so that stepguard guards them, and _fillers19's word test, each
-answering as the code it replaced, on every text."""
+"""Session 55 (12p): steps split so that stepguard guards them, steps guarded by their tuples of
+words, and _fillers19's word test, each answering as the code it replaced, on every text."""
 
 from __future__ import annotations
 
@@ -13,7 +13,15 @@ from hypothesis import strategies as st
 from hltl.bench.grounding import CORPUS_DIR, load_corpus
 from hltl.errors import GroundingError
 from hltl.grounding import _normalise1 as n1
-from hltl.grounding import _step_guards, normalise, stepguard
+from hltl.grounding import (
+    _rewrites53s,
+    _rewrites54,
+    _rewrites54r,
+    _step_guards,
+    normalise,
+    stepguard,
+)
+from hltl.grounding._rewrites54r import _says54r
 from hltl.grounding.lexicon import Lexicon
 from hltl.world.scene import Scene
 from tests.grounding.helpers import CELL, OFFICE, ROOT, WARD, WORKSHOP
@@ -218,3 +226,105 @@ _MARKS = st.sampled_from(["", "", "", ",", ".", "!", "?", ";", ":", '"', "'s"])
 def test_fillers19_answers_as_it_did_on_any_words(words: list[str], scene: Scene) -> None:
     text = " ".join(words)
     assert _answer(n1._fillers19, text, scene) == _answer(_fillers19_as_it_was, text, scene)
+
+
+# -- stepguard reads a module's tuple of words and _says54r (session 55) ------------------------
+
+_TOY_WORDS = ("kindly", "gently")
+_TOY_MIXED = ("kindly", 3)
+
+
+def _toy_any(text: str, lexicon: Lexicon) -> str:
+    low = text.lower()
+    if not any(w in low for w in _TOY_WORDS):
+        return text
+    return text + "!"
+
+
+def _toy_any_local(text: str, lexicon: Lexicon) -> str:
+    words = ("kindly", "gently")
+    low = text.lower()
+    if not any(w in low for w in words):  # a tuple of the step's own: not read
+        return text
+    return text + "!"
+
+
+def _toy_any_mixed(text: str, lexicon: Lexicon) -> str:
+    low = text.lower()
+    if not any(w in low for w in _TOY_MIXED):  # not only strings: not read
+        return text
+    return text + "!"
+
+
+def _toy_says(text: str, lexicon: Lexicon) -> str:
+    if not _rewrites54r._says54r(text, "kindly", " gently "):  # a module's attribute: not read
+        return text
+    return text + "!"
+
+
+def _toy_says_named(text: str, lexicon: Lexicon) -> str:
+    if not _says54r(text, "kindly", " gently "):
+        return text
+    return text + "!"
+
+
+def _toy_says_starred(text: str, lexicon: Lexicon) -> str:
+    if not _says54r(text, *_TOY_WORDS):  # starred: not read
+        return text
+    return text + "!"
+
+
+@pytest.mark.parametrize(
+    ("step", "want"),
+    [
+        (_toy_any, ((), ("gently", "kindly"), False)),
+        (_toy_any_local, None),
+        (_toy_any_mixed, None),
+        (_toy_says, None),
+        (_toy_says_named, ((), (" gently ", "kindly"), False)),
+        (_toy_says_starred, None),
+    ],
+    ids=lambda x: getattr(x, "__name__", "want"),
+)
+def test_a_tuple_of_words_and_says54r_are_read(step: _Step, want: stepguard.Guard | None) -> None:
+    entry = stepguard.read_guard(step)
+    assert (entry and entry[1]) == want
+    if entry is not None:
+        assert stepguard.guard(step, entry) == want
+        for text in ("Kindly give Alice the cup", "give Bob the cup", "go gently now", "KINDLY"):
+            if not stepguard.may_act(entry[1], text, text.lower(), text.isascii()):
+                assert step(text, Lexicon.of(CELL)) == text
+            else:
+                assert step(text, Lexicon.of(CELL)) != text
+
+
+def test_a_changed_tuple_of_words_drops_the_guard(monkeypatch: pytest.MonkeyPatch) -> None:
+    entry = stepguard.read_guard(_toy_any)
+    assert entry is not None
+    monkeypatch.setitem(globals(), "_TOY_WORDS", ("kindly",))
+    assert stepguard.guard(_toy_any, entry) is None
+
+
+# the steps guarded since the reader reads their words (session 53 and 54 rules)
+_NOW_GUARDED = (
+    _rewrites54._grand54,
+    _rewrites54._craving54,
+    _rewrites54._over_goes54,
+    _rewrites53s._all_for53s,
+    _rewrites53s._claimed53s,
+    _rewrites54r._stacked54r,
+    _rewrites54r._at_her54r,
+    _rewrites54r._likes_to54r,
+    _rewrites54r._having_lot54r,
+    _rewrites54r._only_one54r,
+)
+
+
+@pytest.mark.parametrize("step", _NOW_GUARDED, ids=lambda s: s.__name__)
+def test_the_step_is_guarded_and_changes_nothing_its_guard_turns_away(step: _Step) -> None:
+    entry = stepguard.read_guard(step)
+    assert entry is not None
+    assert stepguard.guards((step,), _step_guards.GUARDS) == (entry[1],)
+    for text, scene in _sentences():
+        if not stepguard.may_act(entry[1], text, text.lower(), text.isascii()):
+            assert _answer(step, text, scene) == text

@@ -13606,6 +13606,60 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" do ", " good", " ok", "alright", "fine", "keep", "please", "suit"), False),
         (),
     ),
+    "hltl.grounding._rewrites53s:_all_for53s": (
+        "2c8ccb564b79b3fc",
+        ((), (" by ", " for ", " near ", "alongside", "beside", "next to"), False),
+        (
+            (
+                "_BESIDE_WORDS53S",
+                ("patterns", "strings", ("beside", "next to", "alongside", " by ", " near ")),
+            ),
+        ),
+    ),
+    "hltl.grounding._rewrites53s:_claimed53s": (
+        "fde067c9c348c94f",
+        (
+            (),
+            (
+                "chosen",
+                "hand up",
+                "hands up",
+                "name down",
+                "name for",
+                "name on",
+                "names down",
+                "names for",
+                "names on",
+                "opted",
+                "picked",
+                "plumped",
+            ),
+            False,
+        ),
+        (
+            (
+                "_CLAIM_WORDS53S",
+                (
+                    "patterns",
+                    "strings",
+                    (
+                        "hand up",
+                        "hands up",
+                        "name on",
+                        "name down",
+                        "name for",
+                        "names on",
+                        "names down",
+                        "names for",
+                        "picked",
+                        "chosen",
+                        "opted",
+                        "plumped",
+                    ),
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites53s:_dont_down53s": ("b06986c731172647", ((), ("down",), False), ()),
     "hltl.grounding._rewrites53s:_every_single53s": (
         "edb5ad9d36019eaf",
@@ -13688,11 +13742,86 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("can not", "can't", "cannot", "cant", "couldn't"), False),
         (),
     ),
+    "hltl.grounding._rewrites54:_craving54": (
+        "36463622024fb79f",
+        (
+            (),
+            (" yen ", "craving", "fancy", "hankering", "heart", "hunger", "longing", "thirst"),
+            False,
+        ),
+        (
+            (
+                "_CRAVING_WORDS54",
+                (
+                    "patterns",
+                    "strings",
+                    (
+                        "craving",
+                        "hankering",
+                        " yen ",
+                        "longing",
+                        "hunger",
+                        "thirst",
+                        "fancy",
+                        "heart",
+                    ),
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites54:_for_time54": ("ed2864590a211873", ((), (" time",), False), ()),
     "hltl.grounding._rewrites54:_go_by54": (
         "c10e593a1932c5c4",
         ((), ("as you", "when you"), False),
         (),
+    ),
+    "hltl.grounding._rewrites54:_grand54": (
+        "3800e83ba953391f",
+        (
+            (),
+            (
+                "brill",
+                "business",
+                "champion",
+                "cracking",
+                "dandy",
+                "grand",
+                "just the job",
+                "magic",
+                "marvel",
+                "smashing",
+                "splendid",
+                "spot on",
+                "terrific",
+                "tremendous",
+            ),
+            False,
+        ),
+        (
+            (
+                "_GRAND_WORDS54",
+                (
+                    "patterns",
+                    "strings",
+                    (
+                        "grand",
+                        "smashing",
+                        "champion",
+                        "marvel",
+                        "splendid",
+                        "cracking",
+                        "magic",
+                        "brill",
+                        "terrific",
+                        "tremendous",
+                        "business",
+                        "just the job",
+                        "spot on",
+                        "dandy",
+                    ),
+                ),
+            ),
+        ),
     ),
     "hltl.grounding._rewrites54:_minute_ago54": (
         "9ea2d99ade18a432",
@@ -13705,6 +13834,32 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites54:_only_one54": ("19fef7c520de9fab", ((), ("?",), False), ()),
+    "hltl.grounding._rewrites54:_over_goes54": (
+        "950591888644300a",
+        (
+            (),
+            ("it goes", "one goes", "that goes", "these go", "they go", "this goes", "those go"),
+            False,
+        ),
+        (
+            (
+                "_OVER_WORDS54",
+                (
+                    "patterns",
+                    "strings",
+                    (
+                        "it goes",
+                        "they go",
+                        "that goes",
+                        "those go",
+                        "these go",
+                        "this goes",
+                        "one goes",
+                    ),
+                ),
+            ),
+        ),
+    ),
     "hltl.grounding._rewrites54:_possible54": (
         "9529e19e9c427866",
         ((), (" ok ", " okay ", "all right", "alright", "possible"), False),
@@ -13728,6 +13883,11 @@ GUARDS: dict[str, Entry | str] = {
         "767134ae31780ab0",
         ((), (" is all ",), False),
         (),
+    ),
+    "hltl.grounding._rewrites54r:_at_her54r": (
+        "6426e673b36b7ccf",
+        ((), (" at her ", " at his ", " at their "), False),
+        (("_says54r", ("function", "hltl.grounding._rewrites54r:_says54r", "38a603163a1d9b8e")),),
     ),
     "hltl.grounding._rewrites54r:_at_the_time54r": (
         "474f8af1c13ced35",
@@ -13755,6 +13915,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), (" about ",), False),
         (),
     ),
+    "hltl.grounding._rewrites54r:_having_lot54r": (
+        "0ed1487bd58c5c77",
+        ((), ("all of them", "everything", "the lot", "them all"), False),
+        (("_says54r", ("function", "hltl.grounding._rewrites54r:_says54r", "38a603163a1d9b8e")),),
+    ),
     "hltl.grounding._rewrites54r:_he_fancied54r": (
         "7c6d786ff13a37df",
         ((), ("it is", "it was", "it's"), False),
@@ -13769,6 +13934,11 @@ GUARDS: dict[str, Entry | str] = {
         "2062c990c22c9cfb",
         ((), ("however", "way"), False),
         (),
+    ),
+    "hltl.grounding._rewrites54r:_likes_to54r": (
+        "41fa6742fd9b5326",
+        ((), ("enjoy", "like to", "likes to", "love to", "loves to"), False),
+        (("_says54r", ("function", "hltl.grounding._rewrites54r:_says54r", "38a603163a1d9b8e")),),
     ),
     "hltl.grounding._rewrites54r:_lone54r": (
         "9c21a3fe08e6239c",
@@ -13790,7 +13960,17 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("the one",), False),
         (),
     ),
+    "hltl.grounding._rewrites54r:_only_one54r": (
+        "684f3cb9f92d8430",
+        ((), ("only a single thing", "only one thing", "only the one thing"), False),
+        (("_says54r", ("function", "hltl.grounding._rewrites54r:_says54r", "38a603163a1d9b8e")),),
+    ),
     "hltl.grounding._rewrites54r:_owed54r": ("77c36b563e8d616c", ((), (":",), False), ()),
+    "hltl.grounding._rewrites54r:_stacked54r": (
+        "625f4994cbb31f36",
+        ((), ("of them,", "piled", "placed", "stacked", "stood", "the pair"), False),
+        (("_says54r", ("function", "hltl.grounding._rewrites54r:_says54r", "38a603163a1d9b8e")),),
+    ),
     "hltl.grounding._rewrites54r:_the_pair54r": (
         "2d4f470419d4908f",
         ((), ("the both", "the pair", "the two", "twosome"), False),
