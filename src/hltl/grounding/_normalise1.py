@@ -781,16 +781,38 @@ def _words(text: str, lexicon: Lexicon) -> str:
     text = _sub(_REFLEXIVE, lambda m: "" if _person_before(m, lexicon) else m[0], text)
     for pattern, repl in _WORDS_LATE:
         text = _sub(pattern, repl, text)
-    # "X should end up with Carol, and Y with Bob": goes to (each 'with' of the sentence)
+    return text
+
+
+# Session 55 (12p): _words was one step ending with two rewrites and a spacing of its sentences,
+# run on every text; each is a step of its own after it (the same text out of the four), the
+# rewrites asked only where their words are (so stepguard guards _words and them).
+def _words_spaced55p(text: str, _lexicon: Lexicon) -> str:
+    """_words' sentences joined by one space."""
+    return " ".join(re.split(r"(?<=[.;!?])\s+", text))
+
+
+def _ends_up_with55p(text: str, lexicon: Lexicon) -> str:
+    """_words' "X should end up with Carol, and Y with Bob": goes to (each 'with' of the
+    sentence). A sentence of the text matches only where the text does; the text comes spaced by
+    _words_spaced55p, so its sentences joined again are the text."""
+    if not re.search(r"\bends? up with\b", text, _F):
+        return text
     sentences = re.split(r"(?<=[.;!?])\s+", text)
     for n, s in enumerate(sentences):
         m = re.search(r"\bends? up with\b", s, _F)
         if m is not None and not _person_ends_up36s(s[m.end() :], lexicon):
             s = _sub(r"\bends? up with\b", "go to", s)
             sentences[n] = _sub(r"\bwith\b", "to", s)
-    text = " ".join(sentences)
-    # "…, and the apple with Carol": an object left with a person goes to that person (in a
-    # list of what goes where; after 'give P' it could be a second recipient or company)
+    return " ".join(sentences)
+
+
+def _left_with55p(text: str, lexicon: Lexicon) -> str:
+    """_words' "…, and the apple with Carol": an object left with a person goes to that person
+    (in a list of what goes where; after 'give P' it could be a second recipient or company).
+    Each pattern holds ' with '."""
+    if not re.search(r"\bwith\b", text, _F):
+        return text
     given = re.search(r"\b(?:give|hand|pass|bring|take|fetch|get)\b", text, _F)
     for h in [] if given else lexicon.scene.humans:
         for alias in (*h.aliases, h.name):
@@ -5791,6 +5813,13 @@ def _near_verb(word: str) -> bool:
 def _word_idiom(words: str, lexicon: Lexicon) -> bool:
     plain = re.sub(r"\s+", " ", words.strip(" .!?,'\"").lower())
     return bool(plain) and bool(_WORD_IDIOM18.match(plain)) and _names_nothing(words, lexicon)
+
+
+def _word_idiom_may(said: str) -> bool:
+    """Session 55 (12p): False only where _word_idiom is false of every stretch of ``said`` (words
+    joined by single spaces): the gate finds none of _WORD_IDIOM18's words in it lower-cased, and
+    a stretch's plain form is a piece of that."""
+    return re.may_match(_WORD_IDIOM18.pattern, int(_WORD_IDIOM18.flags), said.lower())
 
 
 _P = r"([A-Za-z][\w ]*?)"  # a person's name (checked by the rewrite)

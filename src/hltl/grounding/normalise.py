@@ -91,6 +91,7 @@ from hltl.grounding._normalise1 import (
     _either_of,
     _either_one,
     _elided,
+    _ends_up_with55p,
     _excluded_count,
     _exclusion_frames,
     _exclusions17,
@@ -109,6 +110,7 @@ from hltl.grounding._normalise1 import (
     _labels,
     _lacks,
     _leave_it,
+    _left_with55p,
     _likewise,
     _listed,
     _me_again,
@@ -181,6 +183,7 @@ from hltl.grounding._normalise1 import (
     _where_they_are,
     _why_said_first,
     _words,
+    _words_spaced55p,
     _wrappers,
 )
 from hltl.grounding._normalise1 import (
@@ -853,6 +856,9 @@ _STEPS: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_kind,
     _wrappers,
     _words,
+    _words_spaced55p,
+    _ends_up_with55p,
+    _left_with55p,
     _topic,
     _passive,
     _heads,
