@@ -62,6 +62,7 @@ from hltl.grounding._normalise1 import (
     _surface_only,
     _tasks_of,
     _word_idiom,
+    _word_idiom_may,
 )
 from hltl.grounding._normalise2 import (
     _ASKS29,
@@ -2607,24 +2608,27 @@ def _word_edges18(text: str, lexicon: Lexicon) -> str:
     words = text.split()
     if len(words) < 3:
         return text
+    # session 55 (12p): where no stretch can be an idiom (the gate finds none of their words in
+    # the words joined), only a chat token of one word is asked for
+    idioms = _word_idiom_may(" ".join(words))
     start, stop = 0, len(words)
     for _ in range(4):
         moved = False
         for n in (5, 4, 3, 2, 1):
-            if stop - start - n < 2:
+            if stop - start - n < 2 or (n > 1 and not idioms):
                 continue
             tail = " ".join(words[stop - n : stop])
             bare = tail.strip(" .!?,").lower()
-            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(tail, lexicon):
+            if (n == 1 and _chat_token(bare, lexicon)) or (idioms and _word_idiom(tail, lexicon)):
                 stop -= n
                 moved = True
                 break
         for n in (5, 4, 3, 2, 1):
-            if stop - start - n < 2:
+            if stop - start - n < 2 or (n > 1 and not idioms):
                 continue
             head = " ".join(words[start : start + n])
             bare = head.strip(" .!?,").lower()
-            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(head, lexicon):
+            if (n == 1 and _chat_token(bare, lexicon)) or (idioms and _word_idiom(head, lexicon)):
                 start += n
                 moved = True
                 break
