@@ -2788,6 +2788,13 @@ _UNAPOSTROPHED = {
     "theyve": "they've",
     "youll": "you'll",
     "theyll": "they'll",
+    # session 55 (12c's fuzz: 'i cant remember which', 'he wont mind'): an English 'cant' / 'wont'
+    # is not said to a robot
+    "cant": "can't",
+    "wont": "won't",
+    "mustnt": "mustn't",
+    "neednt": "needn't",
+    "hadnt": "hadn't",
 }
 
 
