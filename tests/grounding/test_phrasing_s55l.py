@@ -6,6 +6,7 @@ import pytest
 
 from hltl.bench.grounding import show_tree
 from hltl.errors import GroundingError
+from hltl.grounding import _rewrites51r, offline
 from hltl.grounding.offline import parse_instruction
 from hltl.world.scene import Scene
 from tests.grounding.helpers import (
@@ -14,6 +15,7 @@ from tests.grounding.helpers import (
     KITCHEN,
     NURSERY,
     WARD,
+    WORKSHOP,
     assert_names_readings,
     assert_reads,
     assert_refused,
@@ -121,3 +123,44 @@ def test_forgotten_choice_unapostrophed_names_its_readings(
     text: str, scene: Scene, readings: tuple[str, ...]
 ) -> None:
     assert_names_readings(text, scene, readings)
+
+
+# -- the speaker says it was given already (12c's fuzz: "Bob wants the apple, I gave it to him."
+# read apple>B: the want is over)
+
+GIVEN_ALREADY = [
+    ("Bob wants the apple, I gave it to him.", CELL),
+    ("Bob wants the apple, I've already given it to him.", CELL),
+    ("Bob wanted the apple and I gave it to him.", CELL),
+    ("Bob wants the crisps, I gave them to him.", CELL),
+    ("Lily's been crying for her teddy, I gave it to her.", NURSERY),
+    ("Marco wants the lemon, I handed it to him.", KITCHEN),
+    ("Mr Lee wants his jug, I brought it to him.", WARD),
+    ("Jess needs the drill; I just passed it to her.", WORKSHOP),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), GIVEN_ALREADY)
+def test_given_already_by_the_speaker_refused(text: str, scene: Scene) -> None:
+    with pytest.raises(GroundingError, match=r"says the want is over"):
+        parse_instruction(text, scene)
+
+
+def test_given_already_read_without_the_check(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The check is what refuses them: without it each was read as the want."""
+    rule = _rewrites51r._done_after51r
+    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c is not rule))
+    for text, scene in GIVEN_ALREADY:
+        assert parse_instruction(text, scene) is not None, text
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "spec"),
+    [
+        ("Bob's been asking for his apple.", CELL, "apple>B"),
+        ("Alice wants the apple, Bob's after the crisps.", CELL, "apple>A & chips>B"),
+        ("Bob wants the apple, give it to him.", CELL, "apple>B"),
+    ],
+)
+def test_asking_and_handing_still_read(text: str, scene: Scene, spec: str) -> None:
+    assert_reads(text, spec, scene)

@@ -437,14 +437,18 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
 
 
 # "…, and she's had it.", "…, she's had it already.", "…, and he's eaten it.", "…, I gave him the
-# red.": the thing a reading hands over is already had, or already given
+# red.", "…, I gave it to him." (session 55): the thing a reading hands over is already had, or
+# already given
 _DONE51R = re.compiled(
     r"(?:^|[,;.:!?]|\b(?:and|but|so|though)\b)\s*(?:(?:and|but|so|though|oh)\s+)?"
     rf"(?P<who>she|he|they|{_P46R})(?:'s| has|'ve| have)(?: already| just| since)? (?:had|eaten|"
     r"drunk|finished|used|taken|received|got|been given) (?:it|them|one|that|hers|his)"
     r"(?: already| now| by now| earlier| just now)?\s*(?=[,;.!?]|$)|"
     r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took) "
-    r"(?P<to>him|her|them)\b",
+    # session 55 (lead; 12c's fuzz: "Bob wants the apple, I gave it to him." read apple>B): the
+    # thing said as 'it' / 'them' and the person after 'to'
+    r"(?:(?:it|them|that|those|one) (?:back |over |across |round )?to )?"
+    rf"(?P<to>him|her|them|{_P46R})\b",
     _F,
 )
 
