@@ -137,6 +137,13 @@ GIVEN_ALREADY = [
     ("Marco wants the lemon, I handed it to him.", KITCHEN),
     ("Mr Lee wants his jug, I brought it to him.", WARD),
     ("Jess needs the drill; I just passed it to her.", WORKSHOP),
+    ("Bob wants the apple, I've already handed it over.", CELL),
+    ("Bob wants the apple. I gave it over already.", CELL),
+    ("Bob's been asking for the apple, it's been handed over.", CELL),
+    ("Bob wants the apple, it's been given to him already.", CELL),
+    ("Grandad wants the sippy cup, I gave it him.", NURSERY),
+    ("Mrs Khan needs her magazine, I handed it over earlier.", WARD),
+    ("Give Bob the apple, I've already handed it over.", CELL),
 ]
 
 
@@ -160,6 +167,10 @@ def test_given_already_read_without_the_check(monkeypatch: pytest.MonkeyPatch) -
         ("Bob's been asking for his apple.", CELL, "apple>B"),
         ("Alice wants the apple, Bob's after the crisps.", CELL, "apple>A & chips>B"),
         ("Bob wants the apple, give it to him.", CELL, "apple>B"),
+        # what was done to the thing, not handing it over
+        ("Give Bob the apple, it's been washed.", CELL, "apple>B"),
+        ("Give Bob the crisps, they've been opened.", CELL, "chips>B"),
+        ("Bob wants the apple, I brought it in this morning.", CELL, "apple>B"),
     ],
 )
 def test_asking_and_handing_still_read(text: str, scene: Scene, spec: str) -> None:
