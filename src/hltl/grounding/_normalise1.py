@@ -465,6 +465,14 @@ _WORDS: tuple[tuple[str, str], ...] = (
 # "the foreman himself", "Bob herself": a person said with emphasis (after anything else, "Ava
 # can get it herself", the person does it themself: see _words)
 _REFLEXIVE = r"(?<=\w) (?:himself|herself)\b"
+# "Noah is wanting the ruler for his maths": what it is for, taken off unless it is a thing of
+# the scene (_a_thing; session 55: "Lily's been whining for her teddy, and …" lost the teddy, 12b's
+# review); not what a person cries or asks for ("Lily's been crying for her teddy": a want)
+_FOR_THEIRS = (
+    r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)(?<!\bcrying)(?<!\basking)(?<!\basked)(?<!\bcalling)"
+    r"(?<!\bbegging)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
+    r"([a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$))"
+)
 _WORDS_LATE: tuple[tuple[str, str], ...] = (
     # "Give Bob the chips and then when he's got them give Alice the cup": the condition ends
     # at the command
@@ -549,14 +557,8 @@ _WORDS_LATE: tuple[tuple[str, str], ...] = (
         r"[^.;!?])*(?:[.;!?]|$))",
         r"\1 ",
     ),
-    # "Noah is wanting the ruler for his maths": what it is for, when no name is in it; not what a
-    # person cries or asks for ("Lily's been crying for her teddy": a want, session 55)
-    (
-        r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)(?<!\bcrying)(?<!\basking)(?<!\basked)(?<!\bcalling)"
-        r"(?<!\bbegging)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
-        r"([a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$))",
-        "",
-    ),
+    # "Noah is wanting the ruler for his maths": what it is for (_FOR_THEIRS, asked in _words)
+    (_FOR_THEIRS, ""),
     # "The magazine, Mrs Khan asked it, please bring to her": 'asked it' is asked for it
     (r"\basked (it|them|that)(?=\s*[,;.])", r"asked for \1"),
     # "the white plate, then the blue one, both to Lena"
@@ -772,6 +774,14 @@ def _only(words: str, lexicon: Lexicon, kind: str) -> bool:
     )
 
 
+def _a_thing(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` are a scene object's name, or end in a word that names one ('teddy',
+    'teddy bear'; not 'water polo', whose 'water' is only a bottle's alias word)."""
+    said = words.lower()
+    names = {n.lower() for o in lexicon.scene.objects for n in (o.id, o.category, *o.aliases)}
+    return said in names or bool(_ids(said.split()[-1], lexicon, "object"))
+
+
 def _words(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _WORDS:
         text = _sub(pattern, repl, text)
@@ -780,7 +790,10 @@ def _words(text: str, lexicon: Lexicon) -> str:
     # clause is refused (session 25)
     text = _sub(_REFLEXIVE, lambda m: "" if _person_before(m, lexicon) else m[0], text)
     for pattern, repl in _WORDS_LATE:
-        text = _sub(pattern, repl, text)
+        if pattern is _FOR_THEIRS:
+            text = _sub(pattern, lambda m: m[0] if _a_thing(m[1], lexicon) else "", text)
+        else:
+            text = _sub(pattern, repl, text)
     return text
 
 
@@ -2817,6 +2830,13 @@ _UNAPOSTROPHED = {
     "theyve": "they've",
     "youll": "you'll",
     "theyll": "they'll",
+    # session 55 (12c's fuzz: 'i cant remember which', 'he wont mind'): an English 'cant' / 'wont'
+    # is not said to a robot
+    "cant": "can't",
+    "wont": "won't",
+    "mustnt": "mustn't",
+    "neednt": "needn't",
+    "hadnt": "hadn't",
 }
 
 

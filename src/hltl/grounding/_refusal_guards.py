@@ -398,7 +398,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites51r:_done_after51r": (
-        "eba968adfc007661",
+        "b7f5d951ece1ed50",
         (
             (),
             (
@@ -412,6 +412,7 @@ GUARDS: dict[str, Entry | str] = {
                 "had",
                 "handed",
                 "passed",
+                "sent",
                 "taken",
                 "took",
                 "used",

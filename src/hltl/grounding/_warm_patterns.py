@@ -2055,7 +2055,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(take|bring|pass|carry) ([a-z][\\w ]*?)'s ([a-z ]+?) over to (him|her)\\b", 2, True),
     ("\\b(that's|that is) (everything|all|it) from (?:me|us)(?=\\s*(?:[.!]|$))", 2, True),
     (
-        "\\b(thats|whats|theres|isnt|doesnt|didnt|wouldnt|couldnt|shouldnt|youre|theyre|hasnt|havent|arent|wasnt|shes|hes|im|ive|dont|werent|youve|weve|theyve|youll|theyll)\\b",
+        "\\b(thats|whats|theres|isnt|doesnt|didnt|wouldnt|couldnt|shouldnt|youre|theyre|hasnt|havent|arent|wasnt|shes|hes|im|ive|dont|werent|youve|weve|theyve|youll|theyll|cant|wont|mustnt|neednt|hadnt)\\b",
         2,
         True,
     ),
