@@ -4,8 +4,121 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
+from hltl.grounding.tree import Node, Task, tasks
+
+# -- session 55 (12s): where a thing is, read as a placing beside a request for it --------------
+#
+# "The apple's on the shelf, give it to Bob." read `apple@shelf & apple>B` (12c, session 54): the
+# grammar reads a goal said as a state ("The apple is on the shelf." is a placing, session 51),
+# and the 'it' after it takes the apple. Said beside another task on the same thing, 'the X's /
+# is / are (up / still / sat …) on the S' says where the thing is (where to find it), not where
+# it goes: a reading that places the X there AND does something else with it is refused ('The
+# apple's on the shelf, Bob wants it.' is refused so already). 'Once / after / when the X is on
+# the S' (an order) is no such clause: the clause must open the text or follow a stop, a comma or
+# 'and / but / so'.
+_STATE55S = re.compiled(
+    r"(?:(?P<stop>^|[;:.!?—–-]\s*)|,\s*|\b(?:and|but|so)\s+)(?P<x>(?:(?:the|that|this|these|those|"
+    r"my|your|his|her|their|our) )?(?:[a-z]+ ){0,2}?[a-z]+)(?P<be>'s|'re| is| are|"
+    r"(?=,? (?:up |down |over |back )?(?:on|in) the ))(?: (?:still|already|just|now|"
+    r"currently|all|right|up|down|over|back|there|here|high|top|sat|sitting|lying|stood|standing|"
+    r"out|safe|somewhere)){0,3} (?:on|in|inside|on top of|at|by|onto|into) "
+    r"(?P<s>the (?:[a-z]+ ){0,2}?[a-z]+?)(?=\s*(?:[,;:.!?—–-]|$|\b(?:and|but|so|give|hand|pass|"
+    r"take|bring|get)\b))",
+    _F,
+)
+_BE55S = ("'s ", " is ", " are ", "'re ", " on the ", " in the ")
+_DET55S = frozenset(
+    {"the", "that", "this", "these", "those", "my", "your", "his", "her", "their", "our"}
+)
+
+
+def _unordered55s(node: Node) -> list[Task]:
+    """The placings in ``node`` whose object another task of an ``and`` or an ``or`` with them
+    moves too (no order between them)."""
+    if isinstance(node, Task):
+        return []
+    out = [t for c in node.children for t in _unordered55s(c)]
+    if node.op != "seq":
+        per = [list(tasks(c)) for c in node.children]
+        for i, mine in enumerate(per):
+            others = {u.obj for j, theirs in enumerate(per) if j != i for u in theirs}
+            out.extend(t for t in mine if t.kind == "place" and t.obj in others)
+    return out
+
+
+def _where_is55s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12s): where a thing is, read as a placing beside another task on it (above)."""
+    if isinstance(node, Task):
+        return
+    low = text.lower()
+    if not any(w in low for w in _BE55S):
+        return
+    placed = _unordered55s(node)
+    if not placed:
+        return
+    for m in _STATE55S.finditer(text):
+        if not m["be"] and m["stop"] is None:
+            continue  # '…, and the apple on the table': a placing said with the verb before
+        named = _names(m["x"], lexicon)
+        said = m["x"].lower().split(" ", 1)
+        bare = said[1] if said[0] in _DET55S and len(said) > 1 else m["x"].lower()
+        if len(named) != 1 or named[0].text.lower() != bare or not _objects_only(bare, lexicon):
+            continue  # 'Once the apple', 'Bob and the apple': not one thing's name alone
+        xs, ss = _ids(m["x"], lexicon), _ids(m["s"], lexicon, "surface")
+        for t in placed:
+            if t.obj in xs and t.target in ss:
+                raise GroundingError(
+                    f"{m.group(0).lstrip(',;:.!?—–- ')!r} may say where the {t.obj} is (to find "
+                    "it), and the reading would place it there and do more with it (no order "
+                    f"said): say 'put the {t.obj} on …, then …' to have it placed, or ask only "
+                    "for the rest"
+                )
+
+
+# -- session 55 (12s): 'he had it yesterday' beside a handover of it to him --------------------
+#
+# "The apple for Bob, he had it yesterday." / "Bob's apple to him, he had it yesterday." read
+# `apple>B` (12c, session 53: want refused): 'had it' of the one who gets it says he has had the
+# thing already (or, of food, eaten it) — the handover may be done or no longer meant. A clause
+# 'he / she / P had / 'd had / has had / 's had it / them / that' (not after 'after / once /
+# when …', which orders; not 'I had it', the speaker), whose he / she may be a person the
+# reading hands something to, beside that handover, is refused.
+_HAD_IT55S = re.compiled(
+    r"(?:^|[,;:.!?—–-]\s*|\b(?:and|but|as|since|because|cos|'cause)\s+)(?P<p>he|she|they|"
+    r"(?:mr|mrs|ms|miss|dr|person) [a-z]+|[a-z]+)(?:'s|'d| has| had)?(?: (?:already|just|only|"
+    r"even|actually|definitely))? had (?:it|them|that|those)\b",
+    _F,
+)
+
+
+def _had_it55s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12s): 'he had it yesterday' beside a handover of it to him (above)."""
+    low = text.lower()
+    if "had " not in low:
+        return
+    given = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not given:
+        return
+    for m in _HAD_IT55S.finditer(text):
+        p = m["p"].lower()
+        if p == "they":
+            may = given
+        elif p in PRONOUN_SEX:
+            sex = PRONOUN_SEX[p]
+            may = {g for g in given if unnamed_sex44l(g, lexicon) in (None, sex)}
+        else:
+            may = given & _ids(m["p"], lexicon, "human")
+        if may:
+            raise GroundingError(
+                f"{m.group(0).lstrip(',;:.!?—–- ')!r}: the one who gets it has had it already "
+                "(or used it up), so whether it is still to be handed over is not said: say "
+                "the request again"
+            )
+
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
@@ -14,4 +127,4 @@ _STEPS55S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
-CHECK55S: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK55S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_where_is55s, _had_it55s)
