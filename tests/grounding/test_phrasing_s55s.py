@@ -10,18 +10,21 @@ import pytest
 
 from hltl.grounding import _rewrites55s as r55s
 from hltl.grounding import offline
-from hltl.world.scene import Scene
+from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     KITCHEN,
     NURSERY,
     OFFICE,
+    ROOT,
     WARD,
     WORKSHOP,
     PhrasingCases,
     assert_case,
     tree,
 )
+
+L44, T21 = (load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("4-4-line", "2-1"))
 
 # -- where a thing is, read as a placing beside another task on it (_where_is55s, a check) -----
 #
@@ -114,4 +117,46 @@ def test_had_it55s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
 test_had_it55s_near = PhrasingCases().test(
     ("Give Bob the apple, I had it yesterday.", "apple>B", CELL),
     ("Give Alice the cup, and after she's had it, give Bob the apple.", "cup>A ; apple>B", CELL),
+)
+
+# -- 'scrap the X for P, it's the Y she's after' (_scrap_for55s) --------------------------------
+#
+# blind53 #124 #131 #133 and fresh ones, each refused on main ceed68bd ('Scrap' / 'Skip' changes
+# a running task, or 'Ditch' is no verb)
+SCRAP = PhrasingCases()
+test_scrap_for55s = SCRAP.test(
+    ("Scrap the chips for Person A, it's the apple she's actually after.", "apple>A", L44),
+    ("Skip the chips for Person B, it's only the bottle he's needing.", "bottle>B", T21),
+    ("Forget pens for Sam, it's the stapler he's after.", "stapler>B", OFFICE),
+    ("Scrap the crisps for Bob, it's the apple he's after.", "apple>B", CELL),
+    ("Skip the cup for Alice, just the apple.", "apple>A", CELL),
+    ("Forget the apple for Carol, it's the red mug she wants.", "mug_red>C", CELL),
+    ("Never mind the cup for Bob, it's the apple he's needing.", "apple>B", CELL),
+    ("Scrap the red mug for Carol, it's the blue one she needs.", "mug_blue>C", CELL),
+    ("Drop the red pen for Priya, she's after the blue one.", "pen_blue>A", OFFICE),
+    ("Scrap the stapler for Priya, it's the notepad she's after.", "notebook>A", OFFICE),
+    ("Ditch the lemon for Lena, it's the salt she's after.", "salt>B", KITCHEN),
+    ("Forget about the knife for Marco, he's after the tongs.", "tongs>A", KITCHEN),
+    ("Skip the wipes for Grandad, it's only the teddy he's needing.", "teddy>B", NURSERY),
+    ("Scrap the magazine for Mrs Khan, it's the water jug she's after.", "jug>C", WARD),
+)
+
+
+def test_scrap_for55s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SCRAP.refused_without((r55s._scrap_for55s,), monkeypatch)
+
+
+# near sentences: the other sex, a past want or a holding, a question, a time, more after, the
+# same thing, someone else after it, the strike alone: refused
+test_scrap_for55s_near = PhrasingCases().test(
+    ("Scrap the crisps for Bob, it's the apple she's after.", None, CELL),
+    ("Scrap the crisps for Bob, it's the apple he was after.", None, CELL),
+    ("Scrap the crisps for Bob, it's the apple he had.", None, CELL),
+    ("Scrap the crisps for Bob, it's the apple he's after?", None, CELL),
+    ("Scrap the crisps for Bob, it's the apple he's after tomorrow.", None, CELL),
+    ("Scrap the crisps for Bob, it's the apple he's after, and the cup to Alice.", None, CELL),
+    ("Scrap the crisps for Bob, it's the crisps he's after.", None, CELL),
+    ("Scrap the crisps for Bob, it's the apple Alice is after.", None, CELL),
+    ("Scrap the crisps for Bob.", None, CELL),
+    ("Forget pens for Sam, it's the stapler she's after.", None, OFFICE),
 )

@@ -6,7 +6,10 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person
+from hltl.grounding._rewrites44r import _read_without44r
+from hltl.grounding._rewrites51s import _plain51s
+from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, Task, tasks
 
@@ -120,8 +123,93 @@ def _had_it55s(text: str, node: Node, lexicon: Lexicon) -> None:
             )
 
 
+# -- session 55 (12s): 'scrap the X for P, it's the Y she's after' ----------------------------
+#
+# "Scrap the chips for Person A, it's the apple she's actually after.", "Skip the chips for Person
+# B, it's only the bottle he's needing.", "Forget pens for Sam, it's the stapler he's after."
+# (blind53 #124 #131 #133): a thing struck off a person's request before it is given ('scrap /
+# skip / forget (about) / ditch / drop / never mind the X for P'), then what that person wants
+# instead ("it's (only / actually) the Y (that) he's after / needing / wants", "he's after the
+# Y", "just / only the Y"), nothing after it: said "No X for P, just the Y.", which the grammar
+# reads (alone 'Scrap the chips.' changes a running task and stays refused). The he / she P's
+# sex by the scene; the X and the Y things of the scene, apart; P one person; nothing that says a
+# holding or a doing (session 53's `_UNSAFE53S`).
+_Y55S = (
+    r"(?:(?:the|that|this|those|these|his|her) )?[a-z]+(?: (?!that\b|which\b|he\b|she\b)[a-z]+)?"
+)
+_SCRAP_FOR55S = re.compiled(
+    r"^(?:(?:ok|okay|right|oh|actually|sorry|hmm|no)\s*,?\s*)*(?:scrap|skip|forget(?: about)?|"
+    r"ditch|drop|never mind(?: about)?|cross off|strike off|cancel that,?) "
+    rf"(?P<x>(?:the |any |those |these |that )?[a-z]+(?: [a-z]+)?) (?:for|to) (?P<p>{_WHO53S})"
+    r"\s*[,;:—–-]\s*(?:(?:it's|it is|it was) (?:only |actually |really |just )?"
+    rf"(?P<y>{_Y55S}) (?:(?:that|which) )?(?P<pro>he|she)(?:(?:'s| is) (?:actually |really |only )?"
+    r"(?:after|needing|wanting|on about)| (?:really |actually )?(?:wants|needs|would like)|'d like)"
+    r"|(?P<pro2>he|she)(?:'s| is) (?:actually |really |only )?"
+    rf"(?:after|wanting|needing) (?P<y2>{_Y55S})|(?:just|only) (?P<y3>{_Y55S}))"
+    r"(?: instead)?(?:,? please)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_one55s(pid: str, sex: str, lexicon: Lexicon) -> bool:
+    """Whether a he / she of ``sex`` can be person ``pid`` alone: ``pid`` that sex by the scene,
+    or of no sex the scene says while everyone else is of the other."""
+    mine = unnamed_sex44l(pid, lexicon)
+    if mine == sex:
+        return True
+    others = [h.id for h in lexicon.scene.humans if h.id != pid]
+    return mine is None and all(unnamed_sex44l(o, lexicon) not in (None, sex) for o in others)
+
+
+def _scrap_for55s(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12s): "Scrap the X for P, it's the Y she's after" said "No X for P, just the
+    Y" (above)."""
+    low = text.lower()
+    if not any(w in low for w in _SCRAP55S):
+        return text
+    if _UNSAFE53S.search(text):
+        return text
+    m = _SCRAP_FOR55S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    y = m["y"] or m["y2"] or m["y3"]
+    if y.lower().endswith(" one") and " " in m["x"]:
+        y = f"{y[:-4]} {m['x'].split()[-1]}"  # "the blue one" after "the red pen": the blue pen
+    x, ys = _ids(m["x"], lexicon), _ids(y, lexicon)
+    if not x or not ys or x & ys:
+        return text
+    if x != _ids(m["x"], lexicon, "object") or ys != _ids(y, lexicon, "object"):
+        return text
+    pro = m["pro"] or m["pro2"]
+    if pro is not None:
+        (pid,) = _ids(m["p"], lexicon)
+        if not _only_one55s(pid, PRONOUN_SEX[pro.lower()], lexicon):
+            return text
+    said = m["x"].removeprefix("that ").removeprefix("any ")
+    thing = (
+        y if y.lower().startswith(("the ", "that ", "this ", "those ", "these ")) else f"the {y}"
+    )
+    out = f"No {said} for {m['p']}, just {thing}{m['end']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
+_SCRAP55S = (
+    "scrap",
+    "skip",
+    "forget",
+    "ditch",
+    "drop",
+    "never mind",
+    "cross off",
+    "strike off",
+    "cancel that",
+)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
-_STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_scrap_for55s,)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
