@@ -532,7 +532,6 @@ KNOWN_MISSES = frozenset(
         "The bottle isn't Person A's to have; Person B's getting it.",
         "Person B's off chips this week, so they go to Person A.",
         "No one but Person A gets that bottle, so over it goes to her.",
-        "Emma's not having the green cup, she's having the white.",
         "It's Mrs Khan wanting the water jug, not Mr Lee, he's fine.",
         "Noah's the one the glue stick is for, Zoe can wait her turn.",
         "Give the bottle to Alice, argh, my brain, Bob I meant.",

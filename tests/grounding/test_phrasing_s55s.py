@@ -13,7 +13,9 @@ from hltl.grounding import offline
 from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
+    CLASSROOM,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -159,4 +161,85 @@ test_scrap_for55s_near = PhrasingCases().test(
     ("Scrap the crisps for Bob, it's the apple Alice is after.", None, CELL),
     ("Scrap the crisps for Bob.", None, CELL),
     ("Forget pens for Sam, it's the stapler she's after.", None, OFFICE),
+)
+
+# -- 'not the green cup, … the white' (_bare_adj55s) -------------------------------------------
+#
+# blind53 #132 and fresh ones, each refused on main ceed68bd (the clause naming 'the white'
+# dropped as a remark, the negation left alone)
+BARE_ADJ = PhrasingCases()
+test_bare_adj55s = BARE_ADJ.test(
+    ("Emma's not having the green cup, she's having the white.", "cup_white>C", LAB),
+    ("Dana's not having the white cup, she's having the green.", "cup_green>A", LAB),
+    ("Bob's not having the red mug, he's having the blue.", "mug_blue>B", CELL),
+    ("Lena's not having the white plate, she's having the blue.", "plate_blue>B", KITCHEN),
+    ("Sam's not having the red pen, he's having the black.", "pen_black>B", OFFICE),
+    ("Priya isn't getting the black pen, she's getting the red.", "pen_red>A", OFFICE),
+    ("Zoe's not having the red book, she's having the green.", "book_green>C", CLASSROOM),
+)
+
+# 12c (blind53 #132's fuzz): with the same person's want after it the first sentence was dropped
+# (each read as the want alone on main ceed68bd); 'the white one' so too
+test_bare_adj55s_then_want = PhrasingCases().test(
+    (
+        "Emma's not having the green cup, she's having the white. Emma is dying for the bowl.",
+        "cup_white>C & bowl>C",
+        LAB,
+    ),
+    (
+        "Emma's not having the green cup, she's having the white one. Emma wants the bowl.",
+        "cup_white>C & bowl>C",
+        LAB,
+    ),
+    (
+        "Bob's not having the red mug, he's having the blue. Bob is dying for the apple.",
+        "mug_blue>B & apple>B",
+        CELL,
+    ),
+)
+
+
+def test_bare_adj55s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BARE_ADJ.refused_without((r55s._bare_adj55s,), monkeypatch)
+
+
+# near sentences: the same colour again, the other sex, a past, a time: refused; the thing set
+# aside after a request: read as before
+test_bare_adj55s_near = PhrasingCases().test(
+    ("Emma's not having the green cup, she's having the green.", None, LAB),
+    ("Bob's not having the red mug, she's having the blue.", None, CELL),
+    ("Bob's not having the red mug, he had the blue.", None, CELL),
+    ("Bob's not having the red mug, he's having the blue tomorrow.", None, CELL),
+    ("Give Bob the red mug, not the blue.", "mug_red>B", CELL),
+    ("Give Bob the red mug, not the blue one.", "mug_red>B", CELL),
+    ("Put the red mug on the shelf, not the blue.", "mug_red@shelf", CELL),
+)
+
+# -- '…, is he having the blue mug?' (_asks_if55s, a check) --------------------------------------
+#
+# each read on main ceed68bd (the closing question read as the want)
+ASKS_IF = [
+    ("Bob's not having the red mug, is he having the blue mug?", CELL),
+    ("Bob isn't having the red mug, is he having the blue one?", CELL),
+    ("Bob's not having the red mug, is he having the blue?", CELL),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), ASKS_IF)
+def test_asks_if55s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_asks_if55s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the check each is read (the question read as the want)."""
+    kept = tuple(c for c in offline._CHECKS if c is not r55s._asks_if55s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    for text, scene in ASKS_IF:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: a question that asks for it ('could he have …?'): read as before
+test_asks_if55s_near = PhrasingCases().test(
+    ("Could Carol have the apple?", "apple>C", CELL),
+    ("Bob's not having the red mug, could he have the blue one?", "mug_blue>B", CELL),
 )

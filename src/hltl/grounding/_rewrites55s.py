@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only, _only_person
 from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding._rewrites51s import _plain51s
 from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S
@@ -208,11 +208,94 @@ _SCRAP55S = (
 )
 
 
+# -- session 55 (12s): 'not the green cup, … the white' --------------------------------------
+#
+# "Emma's not having the green cup, she's having the white." (blind53 #132): the kind left out
+# after a colour or size word ('the white' for the white cup) after a thing of that kind named
+# whole and set aside ('not / isn't / doesn't … the green cup'): an older remark rule drops "she's
+# having the white" (naming, to it, nothing) and the negation is left alone. 'the ADJ' ending a
+# clause, after 'the ADJ2 N' said before it in a text that sets a thing aside, is said 'the ADJ
+# N' when that names one object of the scene, not the one before ('the ADJ' alone naming nothing
+# else); 'the ADJ one' so too (12c: "…, she's having the white one. Emma wants the bowl." read
+# only the bowl: the clause was dropped when the next sentence is the same person's want).
+_KIND_BEFORE55S = re.compiled(r"\bthe (?P<adj>[a-z]+) (?P<n>[a-z]+)\b", _F)
+_BARE_ADJ55S = re.compiled(
+    r"\bthe (?P<adj>[a-z]+)(?: one)?(?=\s*(?:[,;.!]|$|\b(?:please|instead|then|now|thanks)\b))",
+    _F,
+)
+_SET_ASIDE55S = ("not ", "n't ", "instead", "rather", "no ")
+
+
+def _bare_adj55s(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12s): 'not the green cup, … the white' said '… the white cup' (above)."""
+    low = text.lower()
+    if not any(w in low for w in _SET_ASIDE55S):
+        return text
+    before = [
+        (m.end(), m["adj"], m["n"], _ids(m[0], lexicon, "object"))
+        for m in _KIND_BEFORE55S.finditer(text)
+        if _only(m[0], lexicon, "object")
+    ]
+    if not before:
+        return text
+
+    def one(m: re.Match[str]) -> str:
+        said = [b for b in before if b[0] <= m.start()]
+        if not said:
+            return m[0]
+        _end, adj, n, first = said[-1]
+        if adj.lower() == m["adj"].lower():
+            return m[0]
+        whole = f"the {m['adj']} {n}"
+        if not _only(whole, lexicon, "object"):
+            return m[0]
+        (oid,) = _ids(whole, lexicon, "object")
+        if oid in first or not _ids(f"the {m['adj']}", lexicon) <= {oid}:
+            return m[0]
+        return whole
+
+    out = _BARE_ADJ55S.sub(one, text)
+    return _plain51s(out, text, lexicon)
+
+
+# -- session 55 (12s): '…, is he having the blue mug?' ---------------------------------------
+#
+# "Bob's not having the red mug, is he having the blue mug?" read `mug_blue>B` on main ceed68bd:
+# the closing clause only asks whether he is (session 39's `_not_wanted39r` says the first
+# clause "Bob doesn't want the red mug", and the question was read as the want). A text that
+# ends, after a first clause, in a clause asking a fact of a person ('…, is / does / did / has /
+# was he / she / they / P …?'; not 'could / can / might P have …?' nor 'is P able / alright /
+# allowed to …?', which ask for it) is refused when read.
+_ASKS_IF55S = re.compiled(
+    r"[,;:.!—–-]\s*(?:and |so |or |but |then )?(?P<aux>is|isn't|are|aren't|does|doesn't|did|"
+    r"didn't|has|hasn't|have|haven't|was|wasn't|were|weren't) (?P<p>he|she|they|person [a-z]|"
+    r"(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)\b(?! (?:able|alright|all right|allowed|ok|okay|free|"
+    r"fine|happy|good) to\b)[^,;:.!?]*\?\s*$",
+    _F,
+)
+
+
+def _asks_if55s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12s): a text ending in a question of fact about a person, read (above)."""
+    if not text.rstrip().endswith("?"):
+        return
+    m = _ASKS_IF55S.search(text)
+    if m is None:
+        return
+    p = m["p"].lower()
+    if p not in ("he", "she", "they") and not _ids(m["p"], lexicon, "human"):
+        return
+    raise GroundingError(
+        f"{m.group(0).lstrip(',;:.!—–- ')!r} asks whether something is so: a question that only "
+        "asks is no request; say what to do"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
-_STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_scrap_for55s,)
+_STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_scrap_for55s, _bare_adj55s)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
-CHECK55S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_where_is55s, _had_it55s)
+CHECK55S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_where_is55s, _had_it55s, _asks_if55s)
