@@ -26,7 +26,9 @@ from tests.grounding.helpers import (
     tree,
 )
 
-L44, T21 = (load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("4-4-line", "2-1"))
+L44, T21, DUO, ONE = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml") for n in ("4-4-line", "2-1", "2-2", "1-1")
+)
 
 # -- where a thing is, read as a placing beside another task on it (_where_is55s, a check) -----
 #
@@ -242,4 +244,57 @@ def test_asks_if55s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
 test_asks_if55s_near = PhrasingCases().test(
     ("Could Carol have the apple?", "apple>C", CELL),
     ("Bob's not having the red mug, could he have the blue one?", "mug_blue>B", CELL),
+)
+
+# -- 'P can't eat the X, so …', "The X isn't P's to have; Q's getting it.", 'No one but P gets …'
+# (_cant_have55s, _not_theirs55s, _no_one_but55s)
+#
+# blind53 #120 #127 #129 and fresh ones, each refused on main ceed68bd
+NOT_FOR = PhrasingCases()
+test_not_for55s = NOT_FOR.test(
+    ("Carol can't eat the apple, braces, so she gets the crisps instead.", "chips>C", CELL),
+    ("Bob can't have the apple, so he gets the crisps instead.", "chips>B", CELL),
+    ("Bob can't drink from the red mug, so give him the blue one.", "mug_blue>B", CELL),
+    ("Lena can't eat the lemon, so she gets the salt instead.", "salt>B", KITCHEN),
+    ("Marco mustn't touch the knife, so give him the tongs.", "tongs>A", KITCHEN),
+    (
+        "Mr Lee can't drink from the jug, so he gets the thermometer instead.",
+        "thermometer>B",
+        WARD,
+    ),
+    ("Lily can't have the wipes, allergies, so she gets the teddy instead.", "teddy>A", NURSERY),
+    ("The bottle isn't Person A's to have; Person B's getting it.", "bottle>B", DUO),
+    ("The apple isn't Bob's to have; Carol's getting it.", "apple>C", CELL),
+    ("The cup isn't for Alice; Bob's having it.", "cup>B", CELL),
+    ("The knife isn't Lena's to have; Marco's getting it.", "knife>A", KITCHEN),
+    ("The magazine isn't for Mr Lee; Mrs Khan's having it.", "magazine>C", WARD),
+    ("The drill isn't Jess's to have; Kofi's getting it.", "drill>A", WORKSHOP),
+    ("No one but Person A gets that bottle, so over it goes to her.", "bottle>A", ONE),
+    ("Nobody but Bob gets the crisps.", "chips>B", CELL),
+    ("Nobody but Mr Novak gets the salt.", "salt>C", KITCHEN),
+    ("No one except Ruth gets the thermometer, so over it goes to her.", "thermometer>A", WARD),
+    ("Nobody but Zoe gets the globe.", "globe>C", CLASSROOM),
+)
+
+
+def test_not_for55s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_FOR.refused_without(
+        (r55s._cant_have55s, r55s._not_theirs55s, r55s._no_one_but55s), monkeypatch
+    )
+
+
+# near sentences: a question, a past, a time, the same thing or person again, a he / she that
+# is not the person: refused
+test_not_for55s_near = PhrasingCases().test(
+    ("Bob can't eat the apple, so give him the crisps?", None, CELL),
+    ("Bob can't eat the apple, so he had the crisps.", None, CELL),
+    ("Bob can't eat the apple, so he gets the crisps tomorrow.", None, CELL),
+    ("Bob can't eat the apple, so he gets the apple.", None, CELL),
+    ("Bob can't eat the apple, so she gets the crisps instead.", None, CELL),
+    ("The apple isn't Bob's to have; Bob's getting it.", None, CELL),
+    ("The apple isn't Bob's; Carol had it.", None, CELL),
+    ("The apple isn't Bob's to have; Carol's getting it tomorrow.", None, CELL),
+    ("Nobody but Bob got the crisps.", None, CELL),
+    ("Nobody but Bob gets the crisps?", None, CELL),
+    ("Nobody but Bob gets the crisps, Alice had them.", None, CELL),
 )

@@ -291,8 +291,111 @@ def _asks_if55s(text: str, node: Node, lexicon: Lexicon) -> None:
     )
 
 
+# -- session 55 (12s): 'P can't eat the X, so she gets the Y instead' --------------------------
+#
+# "Carol can't eat the apple, braces, so she gets the crisps instead." (blind53 #120): what a
+# person cannot eat / drink / have / use, then a request for another thing: said "P doesn't want
+# the X, so …", which session 39's rules read (the X named whole; a short aside after it that
+# names nothing of the scene, 'braces', dropped). The reading must hand the X to no one.
+_CANT_HAVE55S = re.compiled(
+    rf"^(?P<p>{_WHO53S}) (?:can't|cannot|can not|mustn't|must not|isn't allowed to|is not allowed "
+    r"to|isn't supposed to) (?:eat|have|drink|use|touch|manage|stomach)(?: from| out of)? "
+    r"(?P<x>(?:the|that|this|those|these|any) [a-z]+(?: [a-z]+)?)"
+    r"(?:\s*,\s*(?P<aside>[a-z]+(?: [a-z]+){0,2}))?(?P<rest>\s*[,;]\s*(?:so |and |but )\S.*)$",
+    _F,
+)
+
+
+def _cant_have55s(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12s): "P can't eat the X, so she gets the Y instead" said "P doesn't want the
+    X, so …" (above)."""
+    low = text.lower()
+    if "can" not in low and "n't" not in low and "not" not in low:
+        return text
+    if text.rstrip().endswith("?") or _UNSAFE53S.search(text):
+        return text
+    m = _CANT_HAVE55S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x = _ids(m["x"], lexicon)
+    if not x or x != _ids(m["x"], lexicon, "object"):
+        return text
+    if m["aside"] and _names(m["aside"], lexicon):
+        return text
+    out = f"{m['p']} doesn't want {m['x']}{m['rest']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
+# -- session 55 (12s): "The X isn't P's to have; Q's getting it." --------------------------------
+#
+# blind53 #127: who a thing is not for, then who gets it ("The X isn't P's (to have) / isn't for
+# P; Q's getting / having it"): said "The X isn't for P, it's for Q.", which the grammar reads.
+# P and Q one person each, apart; the X named whole; nothing after.
+_NOT_THEIRS55S = re.compiled(
+    r"^(?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?)(?: isn't| is not|'s not) (?:(?P<p>"
+    rf"{_WHO53S})'s(?: to (?:have|keep|take))?|for (?P<p2>{_WHO53S}))\s*[;,.]\s*(?:it's |it is )?"
+    rf"(?P<q>{_WHO53S})(?:'s| is) (?:getting|having|(?:meant |supposed )?to (?:have|get)) "
+    r"(?:it|them)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_theirs55s(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12s): "The X isn't P's to have; Q's getting it." said "The X isn't for P, it's
+    for Q." (above)."""
+    low = text.lower()
+    if "not" not in low and "n't" not in low:
+        return text
+    m = _NOT_THEIRS55S.match(text.strip())
+    if m is None:
+        return text
+    p = m["p"] or m["p2"]
+    if not (_only_person(p, lexicon) and _only_person(m["q"], lexicon)):
+        return text
+    if _ids(p, lexicon) == _ids(m["q"], lexicon):
+        return text
+    x = _ids(m["x"], lexicon)
+    if not x or x != _ids(m["x"], lexicon, "object"):
+        return text
+    out = f"{m['x']} isn't for {p}, it's for {m['q']}{m['end']}"
+    return _plain51s(out, text, lexicon)
+
+
+# -- session 55 (12s): 'No one but P gets that X' -----------------------------------------------
+#
+# "No one but Person A gets that bottle, so over it goes to her." (blind53 #129): 'no one /
+# nobody but / except / other than P' opening the text is "Only P", which the grammar reads.
+_NO_ONE_BUT55S = re.compiled(
+    rf"^(?:no one|no-one|nobody) (?:but|except|other than|apart from|besides) (?P<p>{_WHO53S})"
+    r"(?= (?:gets|is getting|is having|should get|can have|is to have|wants|needs)\b)",
+    _F,
+)
+
+
+def _no_one_but55s(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12s): 'No one but P gets the X' said 'Only P gets the X' (above)."""
+    low = text.lower()
+    if "no" not in low or ("body" not in low and "one" not in low):
+        return text
+    if _UNSAFE53S.search(text):
+        return text
+    m = _NO_ONE_BUT55S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    out = f"Only {m['p']}{text.strip()[m.end() :]}"
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
-_STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_scrap_for55s, _bare_adj55s)
+_STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _scrap_for55s,
+    _bare_adj55s,
+    _cant_have55s,
+    _not_theirs55s,
+    _no_one_but55s,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
