@@ -298,3 +298,47 @@ test_not_for55s_near = PhrasingCases().test(
     ("Nobody but Bob gets the crisps?", None, CELL),
     ("Nobody but Bob gets the crisps, Alice had them.", None, CELL),
 )
+
+# 12c (re-probe of e8aa8570): a holding, a use or a maybe said with the colour alone is no want:
+# refused (the rewrite does not apply, and the checks refuse main's readings of the 'one' forms)
+test_bare_adj55s_holding = PhrasingCases().test(
+    ("Carol's not having the red mug, she's had the blue.", None, CELL),
+    ("Carol's not having the red mug, she's got the blue.", None, CELL),
+    ("Carol's not having the red mug, she's taken the blue.", None, CELL),
+    ("Emma's not having the green cup, she's had the white.", None, LAB),
+    ("Cancel that, chips for Alice, just the apple.", None, CELL),
+)
+
+# -- '…, she's had the blue one.' (_had_it55s) and '…, she might have the blue.' (_might55s) ----
+#
+# each read on main ceed68bd (a handover of the thing had, or of a maybe)
+HAD_ONE = [
+    ("Carol's not having the red mug, she's had the blue one.", CELL),
+    ("Give Bob the blue mug, he's had the red one.", CELL),
+]
+MIGHT = [
+    ("Carol's not having the red mug, she might have the blue.", CELL),
+    ("Alice might want the apple.", CELL),
+    ("Give Alice the apple, she might want the cup too.", CELL),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HAD_ONE + MIGHT)
+def test_had_one_might55s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_had_one_might55s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the checks each is read."""
+    off = {r55s._had_it55s, r55s._might55s}
+    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in off))
+    for text, scene in HAD_ONE + MIGHT:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: leave asked ('whether he might have', 'any chance P might'), a request: read
+test_might55s_near = PhrasingCases().test(
+    ("Mr Novak has asked, very politely, whether he might have the lemon", "lemon>C", KITCHEN),
+    ("Could Alice have the apple?", "apple>A", CELL),
+    ("Any chance Bob might have the apple?", "apple>B", CELL),
+)

@@ -96,31 +96,63 @@ _HAD_IT55S = re.compiled(
     r"even|actually|definitely))? had (?:it|them|that|those)\b",
     _F,
 )
+# "…, she's had / got / taken the blue one." (12c): a holding or a use of a thing said by its
+# colour alone, of the one the reading hands a thing of that colour to
+_HAD_ONE55S = re.compiled(
+    r"(?:^|[,;:.!?—–-]\s*|\b(?:and|but|as|since|because|cos|'cause)\s+)(?P<p>he|she|they|"
+    r"(?:mr|mrs|ms|miss|dr|person) [a-z]+|[a-z]+)(?:'s|'d| has| had)?(?: (?:already|just|only|"
+    r"even|actually|definitely))? (?:had|got|taken|took|eaten|ate|used) (?:the|that|this|his|her) "
+    r"(?P<adj>[a-z]+)(?: one)?(?=\s*(?:[,;:.!?]|$))",
+    _F,
+)
+
+
+def _recipients55s(said: str, given: set[str], lexicon: Lexicon) -> set[str]:
+    """The people of ``given`` a he / she / they / name ``said`` may be."""
+    p = said.lower()
+    if p == "they":
+        return given
+    if p in PRONOUN_SEX:
+        return {g for g in given if unnamed_sex44l(g, lexicon) in (None, PRONOUN_SEX[p])}
+    return given & _ids(said, lexicon, "human")
 
 
 def _had_it55s(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 55 (12s): 'he had it yesterday' beside a handover of it to him (above)."""
     low = text.lower()
-    if "had " not in low:
+    if not any(w in low for w in _HAD55S):
         return
-    given = {t.target for t in tasks(node) if t.kind == "deliver"}
+    handed = [t for t in tasks(node) if t.kind == "deliver"]
+    given = {t.target for t in handed}
     if not given:
         return
     for m in _HAD_IT55S.finditer(text):
-        p = m["p"].lower()
-        if p == "they":
-            may = given
-        elif p in PRONOUN_SEX:
-            sex = PRONOUN_SEX[p]
-            may = {g for g in given if unnamed_sex44l(g, lexicon) in (None, sex)}
-        else:
-            may = given & _ids(m["p"], lexicon, "human")
-        if may:
+        if _recipients55s(m["p"], given, lexicon):
             raise GroundingError(
                 f"{m.group(0).lstrip(',;:.!?—–- ')!r}: the one who gets it has had it already "
                 "(or used it up), so whether it is still to be handed over is not said: say "
                 "the request again"
             )
+    for m in _HAD_ONE55S.finditer(text):
+        may = _recipients55s(m["p"], given, lexicon)
+        adj = m["adj"].lower()
+        for t in handed:
+            if t.target in may and adj in _words55s(t.obj, lexicon):
+                raise GroundingError(
+                    f"{m.group(0).lstrip(',;:.!?—–- ')!r}: the one who gets the {t.obj} has had "
+                    "or got one like it already, so whether it is still to be handed over is not "
+                    "said: say the request again"
+                )
+
+
+_HAD55S = ("had ", "got ", "taken ", "took ", "eaten ", "ate ", "used ")
+
+
+def _words55s(oid: str, lexicon: Lexicon) -> set[str]:
+    """The words of object ``oid``'s id and names (its colour among them)."""
+    obj = next(o for o in lexicon.scene.objects if o.id == oid)
+    names = [obj.id.replace("_", " "), *obj.aliases]
+    return {w.lower() for n in names for w in n.split()}
 
 
 # -- session 55 (12s): 'scrap the X for P, it's the Y she's after' ----------------------------
@@ -139,7 +171,7 @@ _Y55S = (
 )
 _SCRAP_FOR55S = re.compiled(
     r"^(?:(?:ok|okay|right|oh|actually|sorry|hmm|no)\s*,?\s*)*(?:scrap|skip|forget(?: about)?|"
-    r"ditch|drop|never mind(?: about)?|cross off|strike off|cancel that,?) "
+    r"ditch|drop|never mind(?: about)?|cross off|strike off) "
     rf"(?P<x>(?:the |any |those |these |that )?[a-z]+(?: [a-z]+)?) (?:for|to) (?P<p>{_WHO53S})"
     r"\s*[,;:—–-]\s*(?:(?:it's|it is|it was) (?:only |actually |really |just )?"
     rf"(?P<y>{_Y55S}) (?:(?:that|which) )?(?P<pro>he|she)(?:(?:'s| is) (?:actually |really |only )?"
@@ -204,7 +236,6 @@ _SCRAP55S = (
     "never mind",
     "cross off",
     "strike off",
-    "cancel that",
 )
 
 
@@ -224,6 +255,7 @@ _BARE_ADJ55S = re.compiled(
     _F,
 )
 _SET_ASIDE55S = ("not ", "n't ", "instead", "rather", "no ")
+_MAYBE55S = re.compiled(r"\b(?:might|may|maybe|perhaps|could|would|should|took|taken|used)\b", _F)
 
 
 def _bare_adj55s(text: str, lexicon: Lexicon) -> str:
@@ -231,6 +263,8 @@ def _bare_adj55s(text: str, lexicon: Lexicon) -> str:
     low = text.lower()
     if not any(w in low for w in _SET_ASIDE55S):
         return text
+    if _UNSAFE53S.search(text) or _MAYBE55S.search(text):
+        return text  # 12c: "…, she's had / got / taken the blue.", "…, she might have the blue."
     before = [
         (m.end(), m["adj"], m["n"], _ids(m[0], lexicon, "object"))
         for m in _KIND_BEFORE55S.finditer(text)
@@ -388,6 +422,41 @@ def _no_one_but55s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 55 (12s): '…, she might have the blue.' --------------------------------------------
+#
+# "Carol's not having the red mug, she might have the blue." and "Alice might want the apple." read
+# as handovers on main ceed68bd (12c): 'P might have / want / need / like …', 'P may want / need /
+# like …' says a maybe, not a request (not after 'whether / if / any chance / hoping', which ask
+# leave: "Mr Novak has asked whether he might have some salt"); a reading of such a text is
+# refused.
+_MIGHT55S = re.compiled(
+    r"\b(?P<p>he|she|they|(?:mr|mrs|ms|miss|dr|person) [a-z]+|[a-z]+)"
+    r"(?: might(?: (?:well|just|also))? (?:have|want|need|like|fancy|prefer|get|take)| may (?:want|"
+    r"need|like|fancy|prefer))\b",
+    _F,
+)
+
+
+_LEAVE55S = re.compiled(
+    r"\b(?:whether|if|chance|hoping|hope|wonder|wondering|wondered)\s+(?:(?:person|mr|mrs|ms|miss|"
+    r"dr)\s+)?$",
+    _F,
+)
+
+
+def _might55s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12s): a reading of a text saying a maybe of a person (above)."""
+    low = text.lower()
+    if "might " not in low and "may " not in low:
+        return
+    for m in _MIGHT55S.finditer(text):
+        if _LEAVE55S.search(text[: m.start()]):
+            continue  # 'whether he might have', 'any chance Person B might get'
+        p = m["p"].lower()
+        if p in ("he", "she", "they") or _ids(m["p"], lexicon, "human"):
+            raise GroundingError(f"{m.group(0)!r} says a maybe, not a request: say what to do")
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _scrap_for55s,
@@ -401,4 +470,9 @@ _STEPS55S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55S: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
-CHECK55S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_where_is55s, _had_it55s, _asks_if55s)
+CHECK55S: tuple[Callable[[str, Node, Lexicon], None], ...] = (
+    _where_is55s,
+    _had_it55s,
+    _asks_if55s,
+    _might55s,
+)
