@@ -529,8 +529,6 @@ KNOWN_MISSES = frozenset(
         "Both spanners live in the locker, so in they go now.",
         "Person B can have the lot bar the cup, he never drinks from cups.",
         "Person B's off chips this week, so they go to Person A.",
-        "It's Mrs Khan wanting the water jug, not Mr Lee, he's fine.",
-        "Noah's the one the glue stick is for, Zoe can wait her turn.",
         "Give the bottle to Alice, argh, my brain, Bob I meant.",
         "Send the chips Person B's way, no, Person A's, my error.",
         "The bottle goes to, um, yes, Person A, no change there.",

@@ -342,3 +342,33 @@ test_might55s_near = PhrasingCases().test(
     ("Could Alice have the apple?", "apple>A", CELL),
     ("Any chance Bob might have the apple?", "apple>B", CELL),
 )
+
+# -- "It's P wanting the X, not Q", '…, Q can wait her turn' (_its_wanting55s) -----------------
+#
+# blind53 #134 #137 and fresh ones, each refused on main ceed68bd
+WANTING = PhrasingCases()
+test_its_wanting55s = WANTING.test(
+    ("It's Mrs Khan wanting the water jug, not Mr Lee, he's fine.", "jug>C", WARD),
+    ("It's Mr Lee needing the thermometer.", "thermometer>B", WARD),
+    ("It's Carol wanting the apple, not Bob.", "apple>C", CELL),
+    ("It's Bob after the crisps.", "chips>B", CELL),
+    ("It's Lena needing the salt, not Marco.", "salt>B", KITCHEN),
+    ("Noah's the one the glue stick is for, Zoe can wait her turn.", "glue>B", CLASSROOM),
+    ("The ruler is for Zoe, Noah will have to wait his turn.", "ruler>C", CLASSROOM),
+    ("Give Bob the apple, Alice can wait her turn.", "apple>B", CELL),
+    ("The tongs for Marco, Lena will have to wait her turn.", "tongs>A", KITCHEN),
+)
+
+
+def test_its_wanting55s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WANTING.refused_without((r55s._its_wanting55s,), monkeypatch)
+
+
+# near sentences: a question, a holding after, the other sex, the same person waiting, a past
+test_its_wanting55s_near = PhrasingCases().test(
+    ("It's Mrs Khan wanting the water jug?", None, WARD),
+    ("It's Mrs Khan wanting the water jug, she had it.", None, WARD),
+    ("The glue stick is for Noah, Zoe can wait his turn.", None, CLASSROOM),
+    ("Noah's the one the glue stick is for, Noah can wait his turn.", None, CLASSROOM),
+    ("The tongs for Marco, Lena had to wait her turn.", None, KITCHEN),
+)

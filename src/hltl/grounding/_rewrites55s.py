@@ -457,6 +457,52 @@ def _might55s(text: str, node: Node, lexicon: Lexicon) -> None:
             raise GroundingError(f"{m.group(0)!r} says a maybe, not a request: say what to do")
 
 
+# -- session 55 (12s): "It's P wanting the X, not Q", '…, Q can wait her turn' ------------------
+#
+# "It's Mrs Khan wanting the water jug, not Mr Lee, he's fine." (blind53 #134): a cleft with an
+# -ing want ('It's P wanting / needing / after the X') said "P wants / needs / is after the X",
+# which the grammar reads with the rest. "Noah's the one the glue stick is for, Zoe can wait her
+# turn." (#137): a closing 'Q can / will have to / must wait her / his / their turn' of another
+# person said ', not Q' (the pronoun Q's sex by the scene, or unknown).
+_ITS_WANTING55S = re.compiled(
+    rf"^it(?:'s| is) (?P<p>{_WHO53S}) (?P<v>wanting|needing|after) (?P<x>(?:the|that|this|his|her) "
+    r"[a-z]+(?: [a-z]+)?)(?P<rest>\s*(?:[,;.!]|$).*)$",
+    _F,
+)
+_WAIT_TURN55S = re.compiled(
+    rf"(?P<sep>\s*[,;]\s*)(?:and |but |so )?(?P<q>{_WHO53S}) (?:can|will (?:have to|just have to)|"
+    r"must|has to|'ll have to|'ll just have to) wait (?P<pro>her|his|their) turn(?P<end>\s*[.!]?)$",
+    _F,
+)
+_WANTING55S = {"wanting": "wants", "needing": "needs", "after": "is after"}
+
+
+def _its_wanting55s(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12s): "It's P wanting the X" said "P wants the X"; '…, Q can wait her turn'
+    said '…, not Q' (above)."""
+    low = text.lower()
+    if "wait " in low and " turn" in low:
+        m = _WAIT_TURN55S.search(text.rstrip())
+        if m is not None and _only_person(m["q"], lexicon) and not _UNSAFE53S.search(text):
+            (qid,) = _ids(m["q"], lexicon)
+            pro = m["pro"].lower()
+            if pro == "their" or unnamed_sex44l(qid, lexicon) in (None, PRONOUN_SEX[pro]):
+                out = f"{text.rstrip()[: m.start()]}, not {m['q']}{m['end']}"
+                return _plain51s(out, text, lexicon)
+    if "wanting" not in low and "needing" not in low and "after" not in low:
+        return text
+    if text.rstrip().endswith("?") or _UNSAFE53S.search(text):
+        return text
+    m = _ITS_WANTING55S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x = _ids(m["x"], lexicon)
+    if not x or x != _ids(m["x"], lexicon, "object"):
+        return text
+    out = f"{m['p']} {_WANTING55S[m['v'].lower()]} {m['x']}{m['rest']}"
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _scrap_for55s,
@@ -464,6 +510,7 @@ _STEPS55S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _cant_have55s,
     _not_theirs55s,
     _no_one_but55s,
+    _its_wanting55s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55S: tuple[Callable[[str, Lexicon], str], ...] = ()
