@@ -101,6 +101,9 @@ HAD_IT = [
     ("The jug to Mr Lee, he had it last night.", WARD),
     ("Mrs Khan's magazine to her, she had it yesterday.", WARD),
     ("The teddy for Lily, she had it at nap time.", NURSERY),
+    # 12c (12r's doubtful 'she had one earlier'): 'had one / some' of the kind so too
+    ("Give Bob an apple, he had one yesterday.", CELL),
+    ("The jug to Mr Lee, he had some last night.", WARD),
 ]
 
 
@@ -120,6 +123,7 @@ def test_had_it55s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
 # near sentences: the speaker had it, an order ('after she's had it'): read as before
 test_had_it55s_near = PhrasingCases().test(
     ("Give Bob the apple, I had it yesterday.", "apple>B", CELL),
+    ("Give Bob the apple, he hasn't had one.", "apple>B", CELL),
     ("Give Alice the cup, and after she's had it, give Bob the apple.", "cup>A ; apple>B", CELL),
 )
 

@@ -89,11 +89,12 @@ def _where_is55s(text: str, node: Node, lexicon: Lexicon) -> None:
 # thing already (or, of food, eaten it) — the handover may be done or no longer meant. A clause
 # 'he / she / P had / 'd had / has had / 's had it / them / that' (not after 'after / once /
 # when …', which orders; not 'I had it', the speaker), whose he / she may be a person the
-# reading hands something to, beside that handover, is refused.
+# reading hands something to, beside that handover, is refused ('had one / some' of the kind so
+# too: 12r's doubtful "Any of the four is fine for Person A, she had one earlier.").
 _HAD_IT55S = re.compiled(
     r"(?:^|[,;:.!?—–-]\s*|\b(?:and|but|as|since|because|cos|'cause)\s+)(?P<p>he|she|they|"
     r"(?:mr|mrs|ms|miss|dr|person) [a-z]+|[a-z]+)(?:'s|'d| has| had)?(?: (?:already|just|only|"
-    r"even|actually|definitely))? had (?:it|them|that|those)\b",
+    r"even|actually|definitely))? had (?:it|them|that|those|one|some)\b",
     _F,
 )
 # "…, she's had / got / taken the blue one." (12c): a holding or a use of a thing said by its
