@@ -4,8 +4,118 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.phrasing import starting_on
+from hltl.grounding.tree import Node, tasks
+
+# -- open wrong readings -------------------------------------------------------------------------
+
+# a later time said alone between commas (or as a sentence): the request's own time ("Bob can take
+# his pick of the cup or the apple, tomorrow", "…, before I go tomorrow", "…, after lunch")
+_DAY55R = r"(?:monday|tuesday|wednesday|thursday|friday|saturday|sunday)"
+_LATER55R = (
+    r"(?:tonight|tomorrow(?: (?:morning|afternoon|evening|night|lunchtime))?|the day after "
+    rf"tomorrow|later on|this (?:evening|afternoon|weekend)|next (?:week|month|{_DAY55R})|"
+    rf"(?:on )?{_DAY55R}(?: (?:morning|afternoon|evening|night))?|in the (?:morning|afternoon|"
+    r"evening)|after (?:lunch|dinner|breakfast|tea|school|work)|in (?:an?|one|two|three|four|"
+    r"five|ten|twenty|\d+) (?:hours?|minutes?|mins?)|first thing(?: tomorrow)?(?: in the morning)?)"
+)
+_TIME_PART55R = re.compiled(
+    r"(?:^|[,;:.!?])\s*(?P<said>(?:(?:but|and|only|just|ideally|maybe|say) )?(?:(?:before|by|"
+    r"after|until|till|sometime|some time|any time|anytime|early|late) )?(?:(?:i|we) (?:go|leave|"
+    r"head off|head home|get back|finish|knock off|clock off) )?"
+    rf"{_LATER55R}(?: (?:please|then|at the latest|latest|or so))?)\s*(?=[,;:.!?]|$)",
+    _F,
+)
+
+
+def _later_part55r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12r; 12c's session-54 fuzz): a later time said alone between commas or as a
+    sentence ("Bob can take his pick of the cup or the apple, tomorrow", "Any of the four things,
+    Person B isn't choosy, before I go tomorrow", "…, after lunch") is the request's own time: it
+    puts the task off (session 20), however the rest reads. The choice rules had taken it for a
+    remark naming nothing and dropped it. A time said of someone ("Bob's off tomorrow, so …")
+    is no such part."""
+    low = text.lower()
+    if (
+        "tomorrow" not in low
+        and "tonight" not in low
+        and "later on" not in low
+        and "this " not in low
+        and "next " not in low
+        and "day" not in low
+        and "in the " not in low
+        and "after " not in low
+        and " in " not in low
+        and "first thing" not in low
+    ):
+        return
+    m = _TIME_PART55R.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} puts the task off: the cell acts now, so say the request when it is to "
+        "be done"
+    )
+
+
+# the words a want is said with ("Mrs Ortiz wants both the books on the shelf.")
+_WANT55R = re.compiled(
+    r"\b(?:wants?|wanted|wanting|needs?|needed|needing|would like|'d like|would love|'d love|"
+    r"is after|'s after|asked for|asking for|fancies|could use|'d prefer|would prefer)\b",
+    _F,
+)
+
+
+# the rest of a want's clause, and a list in it followed by a place
+_CLAUSE55R = re.compiled(r"[^;.!?]*", _F)
+_LIST_PLACE55R = re.compiled(r"\band\b.*\b(?:on|onto|in|into)\b", _F)
+
+
+def _put_where_it_is55r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12r; 12c's session-54 fuzz): "Mrs Ortiz wants both the books on the shelf."
+    (the green book lying on the shelf) read book_red>A & book_green@shelf: the want of a list
+    with a place, one of the things already there, was left to the grammar (session 35's
+    `_wanted_on` puts them all there only when none lies there), which handed the first over and
+    put the last where it lies (or, the other way round, handed over the one lying there). A want
+    read as a handing-over AND a placing on a surface one of the things starts on is refused:
+    does she want them put there, or handed over, the one there among them?"""
+    low = text.lower()
+    if (
+        "want" not in low
+        and "need" not in low
+        and "like" not in low
+        and "love" not in low
+        and "after" not in low
+        and "asked" not in low
+        and "asking" not in low
+        and "fancies" not in low
+        and "could use" not in low
+        and "prefer" not in low
+    ):
+        return
+    want = _WANT55R.search(text)
+    if want is None:
+        return
+    done = list(tasks(node))
+    given = {t.obj for t in done if t.kind == "deliver"}
+    if not given:
+        return
+    # the handed thing lying there counts only where the want's own clause lists things and a place
+    clause = _CLAUSE55R.match(text, want.end())
+    listed = clause is not None and _LIST_PLACE55R.search(clause.group(0)) is not None
+    for where in dict.fromkeys(t.target for t in done if t.kind == "place"):
+        placed = {t.obj for t in done if t.kind == "place" and t.target == where}
+        there = starting_on(placed | given if listed else placed, where, lexicon)
+        if there:
+            raise GroundingError(
+                f"the {there[0]} already lies on the {where}: are the things wanted put there, "
+                "or handed over? say 'put … on …' or 'give … to …'"
+            )
+
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
@@ -14,4 +124,7 @@ _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
-CHECK55R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK55R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
+    _later_part55r,
+    _put_where_it_is55r,
+)
