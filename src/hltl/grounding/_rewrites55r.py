@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F
+from hltl.grounding._normalise1 import _F, _reading
+from hltl.grounding._rewrites44 import _GERUNDS44, _VERBS44
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.phrasing import starting_on
 from hltl.grounding.tree import Node, tasks
@@ -117,10 +118,137 @@ def _put_where_it_is55r(text: str, node: Node, lexicon: Lexicon) -> None:
             )
 
 
+# -- blind53: questions --------------------------------------------------------------------------
+
+# "Any chance you'd give Sam the black pen, …?": 'you'd' is 'you could' (session 44's form)
+_CHANCE_YOUD55R = re.compiled(
+    r"(?:^|(?<=[.;!?:])\s*)(?P<head>(?:(?:would|is) there (?:be )?)?any (?:chance|hope|way)"
+    rf"(?: at all)?) you'd (?P<v>{_VERBS44})\b",
+    _F,
+)
+
+
+def _chance_youd55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Any chance you'd give Sam the black pen?" is "Any chance you could give
+    …?", which session 44's `_ask_chance44` reads ('you'd' there is 'you would', asked)."""
+    if "you'd" not in text.lower():
+        return text
+    m = _CHANCE_YOUD55R.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m['head']} you could {m['v']}{text[m.end() :]}"
+
+
+# "Wouldn't mind handing Person A her bottle, would you?": the 'you' of the tag left off the front
+_WOULDNT_MIND55R = re.compiled(
+    r"^(?P<not>wouldn't|would not) mind (?P<g>"
+    + "|".join(_GERUNDS44)
+    + r")\b(?P<rest>[^?]*),\s*would you\s*\?\s*$",
+    _F,
+)
+
+
+def _wouldnt_mind55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Wouldn't mind handing P her bottle, would you?" is "You wouldn't mind
+    handing …, would you?" (the tag says who is asked; without it, "Wouldn't mind a cup" is the
+    speaker's own want)."""
+    if "mind" not in text.lower():
+        return text
+    m = _WOULDNT_MIND55R.match(text.strip())
+    if m is None:
+        return text
+    return f"You {m['not']} mind {m['g']}{m['rest']}, would you?"
+
+
+# "Could Person A get her bottle, please, when you're passing?": the hearer's chance, asked
+_PASSING_ASKED55R = re.compiled(
+    r"(?P<sep>\s*,?\s*)(?:when|whenever|as|next time) you(?:'re| are) (?:passing|going past|"
+    r"passing by|walking past|going by|on your way past)\s*\?\s*$",
+    _F,
+)
+
+
+def _passing_asked55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "…, when you're passing?" closing a question (session 42's
+    `_robot_rest42s` takes it off a request ending in a full stop) is taken off, the question
+    mark kept, when what is left reads."""
+    if (
+        "passing" not in text.lower()
+        and "past" not in text.lower()
+        and "going by" not in (text.lower())
+    ):
+        return text
+    m = _PASSING_ASKED55R.search(text)
+    if m is None or m.start() == 0:
+        return text
+    out = text[: m.start()].rstrip(" ,") + "?"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# "Got a spare minute to get the bottle across to Person B?": whether the hearer has the time
+_SPARE_MINUTE55R = re.compiled(
+    r"^(?:(?:have|has) you (?:got )?|do you have |you got |got )(?:a|any|one) "
+    r"(?:(?:spare|free|quick|little|spare little) )?(?:minute|moment|sec|second|mo|tick|jiffy)"
+    rf"(?: or two)?(?: (?:spare|free))? to (?P<v>{_VERBS44})\b(?P<rest>[^?]*)\?\s*$",
+    _F,
+)
+
+
+def _spare_minute55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Got a spare minute to get the bottle across to P?" ("Have you got a
+    moment to …?", "Do you have a sec to …?") asks for the task: "Could you get the bottle
+    across to P?" (a question that only asks about the time, without a task, stays refused)."""
+    low = text.lower()
+    if (
+        "minute" not in low
+        and "moment" not in low
+        and "sec" not in low
+        and " mo " not in low
+        and "tick" not in low
+        and "jiffy" not in low
+    ):
+        return text
+    m = _SPARE_MINUTE55R.match(text.strip())
+    if m is None:
+        return text
+    return f"Could you {m['v']}{m['rest']}?"
+
+
+# "Do you think you could fit in giving Person B the chips …?": room for the task, asked
+_FIT_IN55R = re.compiled(
+    r"\b(?P<ask>(?:could|can|would|will|might) you|you (?:could|can|would|might)) (?:fit in|squeeze in|manage|find time for|"
+    r"find the time for) (?P<g>" + "|".join(_GERUNDS44) + r")\b",
+    _F,
+)
+
+
+def _fit_in55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Could you fit in (squeeze in, manage) giving P the chips?" is "Could you
+    give P the chips?" (the task asked, room made for it)."""
+    low = text.lower()
+    if (
+        "fit in" not in low
+        and "squeeze in" not in low
+        and "manage" not in low
+        and ("time for" not in low)
+    ):
+        return text
+    m = _FIT_IN55R.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start()]}{m['ask']} {_GERUNDS44[m['g'].lower()]}{text[m.end() :]}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
-_STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _chance_youd55r,
+    _wouldnt_mind55r,
+    _passing_asked55r,
+    _spare_minute55r,
+    _fit_in55r,
+)
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = ()
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
