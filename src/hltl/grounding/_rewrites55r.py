@@ -216,8 +216,8 @@ def _spare_minute55r(text: str, lexicon: Lexicon) -> str:
 
 # "Do you think you could fit in giving Person B the chips …?": room for the task, asked
 _FIT_IN55R = re.compiled(
-    r"\b(?P<ask>(?:could|can|would|will|might) you|you (?:could|can|would|might)) (?:fit in|squeeze in|manage|find time for|"
-    r"find the time for) (?P<g>" + "|".join(_GERUNDS44) + r")\b",
+    r"\b(?P<ask>(?:could|can|would|will|might) you|you (?:could|can|would|might)) (?:fit in|"
+    r"squeeze in|manage|find time for|find the time for) (?P<g>" + "|".join(_GERUNDS44) + r")\b",
     _F,
 )
 
