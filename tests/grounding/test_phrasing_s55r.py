@@ -1,0 +1,248 @@
+"""Session-55 phrasings of issue 12 (engineer 12r): 12c's open wrong readings and blind53's choices,
+counts, corrections and questions, each as a family (docs/grounding.md, "Session 55 (engineer
+12r)"). Every sentence that reads here was refused (or read wrongly) on main ceed68bd, and is
+refused (or read as before) with its rule taken out."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.bench.grounding import show_tree
+from hltl.grounding import _rewrites55r, offline
+from hltl.world.scene import load_scene
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    KITCHEN,
+    LAB,
+    OFFICE,
+    ROOT,
+    WARD,
+    PhrasingCases,
+    tree,
+)
+
+# the example scenes blind53 uses
+DUO, ONE, T12, F41, F42, L44, L24, T21, SQ, FIG1, TWO = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml")
+    for n in (
+        "2-2",
+        "1-1",
+        "1-2",
+        "4-1",
+        "4-2",
+        "4-4-line",
+        "2-4-line",
+        "2-1",
+        "4-4-square",
+        "fig1",
+        "two_arms",
+    )
+)
+
+
+def _without_check(check: object, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c is not check))
+
+
+# -- 12c's open wrong readings ---------------------------------------------------------------------
+
+# _later_part55r (a check of the reading): a later time said alone between commas or as a
+# sentence is the request's own time; the choice rules had dropped it as a remark naming nothing
+# (main read each as the choice, now)
+LATER = [
+    ("Bob can take his pick of the cup or the apple, tomorrow", CELL),
+    ("Person B can take his pick of the cup or the bottle, before I go tomorrow", L44),
+    ("Any of the four things, Person B isn't choosy, before I go tomorrow", L44),
+    ("Bob can take his pick of the cup or the apple, tonight", CELL),
+    ("Bob can take his pick of the cup or the apple, after lunch", CELL),
+    ("Bob can take his pick of the cup or the apple, on Monday", CELL),
+    ("Bob can take his pick of the cup or the apple, in the morning", CELL),
+    ("Either mug, Bob doesn't mind, tomorrow", CELL),
+    ("Any mug will do for Bob, he's not fussy, tomorrow", CELL),
+    ("Either mug to Bob, he likes them both, tomorrow", CELL),
+    ("Bob can grab either mug, after lunch", CELL),
+    ("Bob gets his pick of the mugs, tomorrow", CELL),
+    ("Sam can take his pick of the pens, tomorrow morning", OFFICE),
+    ("Either blanket will do for Mr Lee, this evening", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), LATER)
+def test_later_part_refused(text: str, scene) -> None:
+    assert tree(text, scene) is None
+
+
+@pytest.mark.parametrize(("text", "scene"), LATER[:3] + LATER[7:10])
+def test_later_part_check_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    _without_check(_rewrites55r._later_part55r, monkeypatch)
+    assert tree(text, scene) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # no later time, or a time said of someone, not of the request: read as before
+        ("Bob can take his pick of the cup or the apple", "cup>B | apple>B", CELL),
+        (
+            "Any of the four things, Person B isn't choosy",
+            "bottle>B | chips>B | cup>B | apple>B",
+            L44,
+        ),
+        ("Bob can take his pick of the cup or the apple, he's earned it", "cup>B | apple>B", CELL),
+        ("Bob's off tomorrow, so give him the cup.", "cup>B", CELL),
+        ("Give Bob the cup now, he's off tomorrow.", "cup>B", CELL),
+    ],
+)
+def test_later_part_kept(text: str, want: str, scene) -> None:
+    got = tree(text, scene)
+    assert got is not None and show_tree(got) == want
+
+
+# _put_where_it_is55r (a check of the reading): a want of things with a place, one of them lying
+# there, read as a handing-over AND a placing (main: book_red>A & book_green@shelf)
+PUT_WHERE = [
+    ("Mrs Ortiz wants both the books on the shelf.", CLASSROOM),
+    ("Mrs Ortiz wants both books on the shelf.", CLASSROOM),
+    ("Mrs Ortiz wants the red book and the green book on the shelf.", CLASSROOM),
+    ("Mrs Ortiz wants the green book and the red book on the shelf.", CLASSROOM),
+    ("Noah needs the green book and the red book on the shelf.", CLASSROOM),
+    ("Noah would like both books on the shelf, please.", CLASSROOM),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), PUT_WHERE)
+def test_put_where_it_is_refused(text: str, scene) -> None:
+    assert tree(text, scene) is None
+
+
+@pytest.mark.parametrize(("text", "scene"), PUT_WHERE)
+def test_put_where_it_is_check_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    _without_check(_rewrites55r._put_where_it_is55r, monkeypatch)
+    assert tree(text, scene) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # none of the things lies there, or no handing-over: read as before
+        ("Bob wants the cup and the apple on the shelf.", "cup@shelf & apple@shelf", CELL),
+        (
+            "Mrs Ortiz wants the red book and the globe on the shelf.",
+            "book_red@shelf & globe@shelf",
+            CLASSROOM,
+        ),
+        (
+            "Mrs Ortiz wants the red book and the green book on the desk.",
+            "book_red@desk & book_green@desk",
+            CLASSROOM,
+        ),
+        ("Mrs Ortiz wants both the books.", "book_red>A & book_green>A", CLASSROOM),
+        (
+            "Mrs Ortiz wants the green book; put the red book on the shelf.",
+            "book_green>A & book_red@shelf",
+            CLASSROOM,
+        ),
+    ],
+)
+def test_put_where_it_is_kept(text: str, want: str, scene) -> None:
+    got = tree(text, scene)
+    assert got is not None and show_tree(got) == want
+
+
+# -- blind53: questions ----------------------------------------------------------------------------
+
+# _chance_youd55r: "Any chance you'd give …?" is "Any chance you could give …?"
+CHANCE_YOUD = PhrasingCases()
+test_chance_youd = CHANCE_YOUD.test(
+    (
+        "Any chance you'd give Sam the black pen, and the notepad as well?",
+        "pen_black>B & notebook>B",
+        OFFICE,
+    ),
+    ("Any chance you'd pass Bob the apple?", "apple>B", CELL),
+    ("Any chance you'd bring Mr Lee the jug?", "jug>B", WARD),
+    ("Any chance you'd put the sponge in the sink?", "sponge@sink", LAB),
+    # near: a want of the hearer's or someone's, asked
+    ("Any chance you'd like the apple?", None, CELL),
+    ("Any chance Bob'd like the apple?", None, CELL),
+)
+
+
+def test_chance_youd_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CHANCE_YOUD.refused_without((_rewrites55r._chance_youd55r,), monkeypatch)
+
+
+# _wouldnt_mind55r: "Wouldn't mind handing P X, would you?" is "You wouldn't mind …, would you?"
+WOULDNT_MIND = PhrasingCases()
+test_wouldnt_mind = WOULDNT_MIND.test(
+    ("Wouldn't mind handing Person A her bottle, would you?", "bottle>A", ONE),
+    ("Wouldn't mind passing Bob the cup, would you?", "cup>B", CELL),
+    ("Wouldn't mind taking Marco the lemon, would you?", "lemon>A", KITCHEN),
+    ("Wouldn't mind putting the stapler in the box, would you?", "stapler@box", OFFICE),
+    # near: no tag asking the hearer (the speaker's own want), or the tag another's
+    ("Wouldn't mind the cup, would you?", None, CELL),
+    ("Wouldn't mind passing Bob the cup.", None, CELL),
+    ("Wouldn't mind passing Bob the cup, would he?", None, CELL),
+)
+
+
+def test_wouldnt_mind_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WOULDNT_MIND.refused_without((_rewrites55r._wouldnt_mind55r,), monkeypatch)
+
+
+# _passing_asked55r: "…, when you're passing?" closing a question
+PASSING_ASKED = PhrasingCases()
+test_passing_asked = PASSING_ASKED.test(
+    ("Could Person A get her bottle, please, when you're passing?", "bottle>A", T12),
+    ("Could you give Bob the cup, please, when you're passing?", "cup>B", CELL),
+    ("Could Mr Lee have the jug when you're going past?", "jug>B", WARD),
+    ("Would you put the spoon in the sink when you're passing?", "spoon@sink", LAB),
+    ("Could Emma have the banana, please, when you're going past?", "banana>C", LAB),
+    # near: someone else passing
+    ("Could Bob get the cup when he's passing?", None, CELL),
+)
+
+
+def test_passing_asked_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PASSING_ASKED.refused_without((_rewrites55r._passing_asked55r,), monkeypatch)
+
+
+# _spare_minute55r: "Got a spare minute to get X across to P?" is "Could you get X across to P?"
+SPARE_MINUTE = PhrasingCases()
+test_spare_minute = SPARE_MINUTE.test(
+    ("Got a spare minute to get the bottle across to Person B?", "bottle>B", DUO),
+    ("Got a minute to pass Bob the apple?", "apple>B", CELL),
+    ("Have you got a moment to bring Mr Lee the jug?", "jug>B", WARD),
+    ("Do you have a sec to put the stapler in the box?", "stapler@box", OFFICE),
+    # near: only the time asked, or asked of the past, or a later time with it
+    ("Got a minute?", None, CELL),
+    ("Got a minute to spare?", None, CELL),
+    ("Did you have a minute to give Bob the cup?", None, CELL),
+    ("Got a minute to give Bob the cup tomorrow?", None, CELL),
+)
+
+
+def test_spare_minute_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SPARE_MINUTE.refused_without((_rewrites55r._spare_minute55r,), monkeypatch)
+
+
+# _fit_in55r: "Could you fit in (squeeze in, manage) giving P X?" is "Could you give P X?"
+FIT_IN = PhrasingCases()
+test_fit_in = FIT_IN.test(
+    (
+        "Do you think you could fit in giving Person B the chips and Person A the bottle?",
+        "chips>B & bottle>A",
+        T21,
+    ),
+    ("Could you fit in giving Person B the chips?", "chips>B", T21),
+    ("Could you squeeze in bringing Mr Lee the jug?", "jug>B", WARD),
+    ("Would you manage taking Marco the lemon?", "lemon>A", KITCHEN),
+    ("Can you find time for putting the stapler in the box?", "stapler@box", OFFICE),
+    # near: asked of someone else
+    ("Could Bob fit in giving Alice the cup?", None, CELL),
+)
+
+
+def test_fit_in_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    FIT_IN.refused_without((_rewrites55r._fit_in55r,), monkeypatch)
