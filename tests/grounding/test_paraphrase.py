@@ -556,11 +556,6 @@ KNOWN_MISSES = frozenset(
         "Since she's peckish, the chipl should go over to Person A.",
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
-        "Got a spare minute to get the bottle across to Person B?",
-        "Wouldn't mind handing Person A her bottle, would you?",
-        "Could Person A get her bottle, please, when you're passing?",
-        "Do you think you could fit in giving Person B the chips and Person A the bottle?",
-        "Any chance you'd give Sam the black pen, and the notepad as well?",
         "Might the lemon go out to Mr Novak, for his fish?",
         "Can the green book come down off the shelf to Mrs Ortiz?",
     }
