@@ -8,6 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _reading
 from hltl.grounding._rewrites44 import _GERUNDS44, _VERBS44
+from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.phrasing import starting_on
 from hltl.grounding.tree import Node, tasks
@@ -239,6 +240,50 @@ def _fit_in55r(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{m['ask']} {_GERUNDS44[m['g'].lower()]}{text[m.end() :]}"
 
 
+# "Might the lemon go out to Mr Novak, for his fish?": 'out' (from the kitchen, out to the tables)
+_OUT_TO55R = re.compiled(
+    r"\b(?P<v>go|goes|going|gone|went|take|takes|taking|took|bring|brings|bringing|brought|send|"
+    r"sends|sending|sent|carry|carries|carrying|carried)\b(?P<mid>(?: the [a-z]+(?: [a-z]+)?| it|"
+    rf" them)?) out to (?P<p>{_P46R})(?=\s*(?:[,.;!?]|$))",
+    _F,
+)
+
+
+def _out_to55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "the lemon goes (take the lemon) out to P" is "… over to P": 'out' says
+    the way out (of the kitchen) and names nothing; only before one person of the scene ('out to
+    the van', 'out to lunch' stay as they are)."""
+    if " out to " not in text.lower():
+        return text
+    for m in list(_OUT_TO55R.finditer(text))[::-1]:
+        if _person46r(m["p"], lexicon) is None:
+            continue
+        text = f"{text[: m.start()]}{m['v']}{m['mid']} over to {m['p']}{text[m.end() :]}"
+    return text
+
+
+# "Can the green book come down off the shelf to Mrs Ortiz?": the thing coming to the person
+_COME_TO55R = re.compiled(
+    r"^(?P<ask>can|could|might|may|will|would|should)\s+(?P<x>the [a-z]+(?: [a-z]+)?) come"
+    r"(?P<way>(?: (?:over|down|across|back|along|round|up))?(?: (?:off|from) the [a-z]+"
+    rf"(?: [a-z]+)?)?) to (?P<p>{_P46R})(?P<rest>\s*(?:,[^?]*)?\?\s*)$",
+    _F,
+)
+
+
+def _come_to55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Can (could, might) the X come (down off the shelf) to P?" is "Can you
+    bring the X (down off the shelf) to P?" (the thing asked to come to one person of the scene,
+    by the hearer's hand)."""
+    if " come" not in text.lower():
+        return text
+    m = _COME_TO55R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    ask = m["ask"][:1].upper() + m["ask"][1:].lower()
+    return f"{ask} you bring {m['x']}{m['way']} to {m['p']}{m['rest']}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
@@ -248,6 +293,8 @@ _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
     _passing_asked55r,
     _spare_minute55r,
     _fit_in55r,
+    _out_to55r,
+    _come_to55r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = ()
