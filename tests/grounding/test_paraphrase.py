@@ -556,8 +556,6 @@ KNOWN_MISSES = frozenset(
         "Since she's peckish, the chipl should go over to Person A.",
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
-        "Might the lemon go out to Mr Novak, for his fish?",
-        "Can the green book come down off the shelf to Mrs Ortiz?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

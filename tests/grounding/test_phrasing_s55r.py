@@ -246,3 +246,41 @@ test_fit_in = FIT_IN.test(
 
 def test_fit_in_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     FIT_IN.refused_without((_rewrites55r._fit_in55r,), monkeypatch)
+
+
+# _out_to55r: "the lemon go(es) out to P" / "take the lemon out to P" is "… over to P"
+OUT_TO = PhrasingCases()
+test_out_to = OUT_TO.test(
+    ("Might the lemon go out to Mr Novak, for his fish?", "lemon>C", KITCHEN),
+    ("Take the lemon out to Mr Novak.", "lemon>C", KITCHEN),
+    ("The salt goes out to Lena.", "salt>B", KITCHEN),
+    ("Could the jug go out to Mrs Khan?", "jug>C", WARD),
+    ("Bring the cup out to Bob, please.", "cup>B", CELL),
+    # near: out to a place that is no person, or said as done
+    ("Take the lemon out to the van.", None, KITCHEN),
+    ("Marco went out to lunch, give the lemon to Lena.", None, KITCHEN),
+    ("The lemon went out to Mr Novak.", None, KITCHEN),
+)
+
+
+def test_out_to_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    OUT_TO.refused_without((_rewrites55r._out_to55r,), monkeypatch)
+
+
+# _come_to55r: "Can the X come (down off the shelf) to P?" is "Can you bring the X … to P?"
+COME_TO = PhrasingCases()
+test_come_to = COME_TO.test(
+    ("Can the green book come down off the shelf to Mrs Ortiz?", "book_green>A", CLASSROOM),
+    ("Can the cup come over to Bob?", "cup>B", CELL),
+    ("Could the grey blanket come across to Mrs Khan?", "blanket_grey>C", WARD),
+    ("Might the stapler come to Sam, please?", "stapler>B", OFFICE),
+    # near: a person coming, a place that is no person, said as done, a later time
+    ("Can Bob come to the shelf?", None, CELL),
+    ("Can the cup come to the shelf?", None, CELL),
+    ("The cup came to Bob?", None, CELL),
+    ("Can the cup come to Bob tomorrow?", None, CELL),
+)
+
+
+def test_come_to_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    COME_TO.refused_without((_rewrites55r._come_to55r,), monkeypatch)
