@@ -8,16 +8,20 @@ from __future__ import annotations
 import pytest
 
 from hltl.bench.grounding import show_tree
-from hltl.grounding import _rewrites55r, offline
+from hltl.errors import GroundingError
+from hltl.grounding import _rewrites55r, normalise, offline
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
     KITCHEN,
     LAB,
+    NURSERY,
     OFFICE,
     ROOT,
     WARD,
+    WORKSHOP,
     PhrasingCases,
     tree,
 )
@@ -284,3 +288,173 @@ test_come_to = COME_TO.test(
 
 def test_come_to_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     COME_TO.refused_without((_rewrites55r._come_to55r,), monkeypatch)
+
+
+# -- blind53: corrections --------------------------------------------------------------------------
+
+# _my_error55r: "my error" / "(argh,) my brain" blame the speaker, as "my mistake" does
+MY_ERROR = PhrasingCases()
+test_my_error = MY_ERROR.test(
+    ("Give the bottle to Alice, argh, my brain, Bob I meant.", "bottle>B", FIG1),
+    ("Send the chips Person B's way, no, Person A's, my error.", "chips>A", F42),
+    ("Give the lemon to Lena, ugh, my head, Marco I meant.", "lemon>A", KITCHEN),
+    ("Take the jug to Mr Lee, no, Mrs Khan, my error.", "jug>C", WARD),
+    ("Put the stapler in the box, no, on the desk, my error.", "stapler@desk", OFFICE),
+    # near: no correction after it, a holding, the words not between commas
+    ("Give the cup to Alice, my brain, hurts.", None, CELL),
+    ("Give the cup to Alice, my error.", None, CELL),
+    ("Bob had the cup, my error, the apple.", None, CELL),
+    ("The cup goes above my head.", None, CELL),
+)
+
+
+def test_my_error_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    MY_ERROR.refused_without((_rewrites55r._my_error55r,), monkeypatch)
+
+
+# _not_word55r: "The grey blanket for P, not grey, I mean blue" is "…, no, the blue one"
+NOT_WORD = PhrasingCases()
+test_not_word = NOT_WORD.test(
+    ("The grey blanket for Mrs Khan, not grey, I mean blue.", "blanket_blue>C", WARD),
+    ("The red mug for Bob, not red, I mean blue.", "mug_blue>B", CELL),
+    ("The red mug for Bob, not red, blue.", "mug_blue>B", CELL),
+    ("The white plate to Lena, not white, the blue one.", "plate_blue>B", KITCHEN),
+    # near: no such thing, both said, a holding
+    ("The red mug for Bob, not red, I mean green.", None, CELL),
+    ("The red mug for Bob, not red, I mean big.", None, CELL),
+    ("The red mug and the blue mug for Bob, not red, I mean blue.", None, CELL),
+    ("Bob had the red mug, not red, I mean blue.", None, CELL),
+)
+
+
+def test_not_word_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_WORD.refused_without((_rewrites55r._not_word55r,), monkeypatch)
+
+
+# _surface_for55r: "Tray for the spoon, <cue> …, <correction>" is "The spoon on the tray, …"
+SURFACE_FOR = PhrasingCases()
+test_surface_for = SURFACE_FOR.test(
+    ("Tray for the spoon, no, I've changed my mind, the sink.", "spoon@sink", LAB),
+    ("Tray for the bowl, sorry, the sink.", "bowl@sink", LAB),
+    ("Shelf for the apple, no, wait, the table.", "apple@table", CELL),
+    ("Shelf for the cup, no, it's the apple that goes up there.", "apple@shelf", CELL),
+    # near: a person for a thing, a correction that names nothing
+    ("Shelf for Bob, no, the apple.", None, CELL),
+    ("Table for the cup, no, Bob.", None, CELL),
+    ("Table for the cup, no, I'd rather you didn't.", None, CELL),
+)
+
+
+def test_surface_for_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SURFACE_FOR.refused_without((_rewrites55r._surface_for55r,), monkeypatch)
+
+
+# _goes_on55r: "…, hang on, it's the small box that goes on" is "… that goes there"
+GOES_ON = PhrasingCases()
+test_goes_on = GOES_ON.test(
+    (
+        "The medium box on the belt, oh hang on, it's the small box that goes on.",
+        "box_small@conveyor",
+        DEPOT,
+    ),
+    ("Put the cup on the shelf, hang on, it's the apple that goes on.", "apple@shelf", CELL),
+    ("The spoon in the sink, sorry, it's the bowl that goes in.", "bowl@sink", LAB),
+    ("Put the teddy on the play mat, no, it's the bib that goes on there.", "bib@mat", NURSERY),
+    # near: no thing of the scene
+    ("Put the cup on the shelf, hang on, it's the lid that goes on.", None, CELL),
+)
+
+
+def test_goes_on_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    GOES_ON.refused_without((_rewrites55r._goes_on55r,), monkeypatch)
+
+
+# _um_yes55r: "The bottle goes to, um, yes, P(, no change there)" is "The bottle goes to P"
+UM_YES = PhrasingCases()
+test_um_yes = UM_YES.test(
+    ("The bottle goes to, um, yes, Person A, no change there.", "bottle>A", ONE),
+    ("The cup goes to, um, yes, Bob.", "cup>B", CELL),
+    ("The jug is for, er, yes, Mr Lee, same as ever.", "jug>B", WARD),
+    ("Hand the lemon to, erm, right, Marco.", "lemon>A", KITCHEN),
+    # near: no one of the scene, a 'no', a change after a correction
+    ("The cup goes to, um, yes, Dave.", None, CELL),
+    ("The cup goes to, um, no, Bob.", None, CELL),
+    ("Give the cup to Alice, no, Bob, no change there.", None, CELL),
+)
+
+
+def test_um_yes_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    UM_YES.refused_without((_rewrites55r._um_yes55r,), monkeypatch)
+
+
+# _no_such55r: "…to Person B, silly me, there's no Person B, so Person A" is "…to Person A"
+NO_SUCH = PhrasingCases()
+test_no_such = NO_SUCH.test(
+    ("Take the bottle to Person B, silly me, there's no Person B, so Person A.", "bottle>A", T12),
+    ("Give the cup to Dave, oops, there's no Dave here, so Bob.", "cup>B", CELL),
+    ("Take the jug to Dr Smith, sorry, there's no Dr Smith, so Mrs Khan.", "jug>C", WARD),
+    ("Hand the torch to Sue, whoops, there's no Sue, so Jess.", "torch>B", WORKSHOP),
+    # near: the person is in the scene, no one after 'so', a place after 'so'
+    ("Give the cup to Alice, sorry, there's no Alice, so Bob.", None, CELL),
+    ("Give the cup to Dave, there's no Dave, so Zed.", None, CELL),
+    ("Give the cup to Dave, there's no Dave, so the shelf.", None, CELL),
+)
+
+
+def test_no_such_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NO_SUCH.refused_without((_rewrites55r._no_such55r,), monkeypatch)
+
+
+# _was_it55r: "Was it the X or the Y P wanted? <forgot>" is refused, naming both readings
+WAS_IT = [
+    (
+        "Was it the wipes or the sippy cup Grandad wanted? It's gone right out of my head.",
+        ("wipes", "beaker"),
+        NURSERY,
+    ),
+    (
+        "Was it the cup or the apple Bob wanted? It's gone clean out of my head.",
+        ("cup", "apple"),
+        CELL,
+    ),
+    (
+        "Was it the knife or the lemon Lena asked for? It's gone out of my head.",
+        ("knife", "lemon"),
+        KITCHEN,
+    ),
+    (
+        "Was it the stapler or the notepad Sam needed? It's gone completely out of my head.",
+        ("stapler", "notebook"),
+        OFFICE,
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "readings", "scene"), WAS_IT)
+def test_was_it_names_readings(text: str, readings: tuple[str, ...], scene) -> None:
+    with pytest.raises(GroundingError) as refused:
+        offline.parse_instruction(text, scene)
+    assert all(r in str(refused.value) for r in readings)
+    assert "which" in str(refused.value)
+
+
+@pytest.mark.parametrize(("text", "readings", "scene"), WAS_IT)
+def test_was_it_is_what_names_them(
+    text: str, readings: tuple[str, ...], scene, monkeypatch
+) -> None:
+    kept = tuple(s for s in normalise._STEPS19 if s is not _rewrites55r._was_it55r)
+    monkeypatch.setattr(normalise, "_STEPS19", kept)
+    with pytest.raises(GroundingError) as refused:
+        offline.parse_instruction(text, scene)
+    assert "is a question" in str(refused.value)  # the words quoted, no readings named
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Was it the cup or the apple Bob wanted?",
+        "Was it the cup or the apple Bob wanted? Give him the cup.",
+    ],
+)
+def test_was_it_question_stays_refused(text: str) -> None:
+    assert tree(text, CELL) is None

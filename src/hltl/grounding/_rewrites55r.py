@@ -6,9 +6,11 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _reading
+from hltl.grounding._normalise1 import _F, _ids, _reading
+from hltl.grounding._normalise3 import _whole_name
 from hltl.grounding._rewrites44 import _GERUNDS44, _VERBS44
 from hltl.grounding._rewrites46r import _P46R, _person46r
+from hltl.grounding._rewrites53r import _held53r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.phrasing import starting_on
 from hltl.grounding.tree import Node, tasks
@@ -23,7 +25,8 @@ _LATER55R = (
     rf"tomorrow|later on|this (?:evening|afternoon|weekend)|next (?:week|month|{_DAY55R})|"
     rf"(?:on )?{_DAY55R}(?: (?:morning|afternoon|evening|night))?|in the (?:morning|afternoon|"
     r"evening)|after (?:lunch|dinner|breakfast|tea|school|work)|in (?:an?|one|two|three|four|"
-    r"five|ten|twenty|\d+) (?:hours?|minutes?|mins?)|first thing(?: tomorrow)?(?: in the morning)?)"
+    r"five|ten|twenty|\d+) (?:hours?|minutes?|mins?)|first thing (?:tomorrow(?: morning)?|in the "
+    r"morning))"
 )
 _TIME_PART55R = re.compiled(
     r"(?:^|[,;:.!?])\s*(?P<said>(?:(?:but|and|only|just|ideally|maybe|say) )?(?:(?:before|by|"
@@ -284,8 +287,201 @@ def _come_to55r(text: str, lexicon: Lexicon) -> str:
     return f"{ask} you bring {m['x']}{m['way']} to {m['p']}{m['rest']}"
 
 
+# -- blind53: corrections -----------------------------------------------------------------------
+
+# "…, argh, my brain, Bob I meant.", "…, no, Person A's, my error.": the speaker blaming herself
+_MY_ERROR55R = re.compiled(
+    r"(?<=,)(?P<sp>\s*)(?:(?:argh|ugh|gah|doh|duh|oh),?\s*)?(?:my (?:error|blunder|slip|goof)|"
+    r"my (?:poor )?(?:brain|head|memory))(?=\s*(?:,|[.!]?\s*$))",
+    _F,
+)
+
+
+def _my_error55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "my error" ("my blunder", "my slip") and, between commas, "(argh,) my
+    brain" ("my head", "my memory") blame the speaker, as "my mistake" does; said after a request
+    (not where the words before say what someone has or had)."""
+    low = text.lower()
+    if "my " not in low:
+        return text
+    if (
+        "error" not in low
+        and "blunder" not in low
+        and "slip" not in low
+        and "goof" not in low
+        and "brain" not in low
+        and "head" not in low
+        and "memory" not in low
+    ):
+        return text
+    m = _MY_ERROR55R.search(text)
+    if m is None or m.start() < 2 or _held53r(text[: m.start()]):
+        return text
+    return f"{text[: m.start()]}{m['sp']}my mistake{text[m.end() :]}"
+
+
+# "The grey blanket for Mrs Khan, not grey, I mean blue.": the colour (or size) put right
+_NOT_WORD55R = re.compiled(
+    r", (?P<cue>(?:no|sorry|oops|wait|hang on), )?not (?P<a>[a-z]+),\s*(?:(?:i mean|i meant|"
+    r"make it|rather|it's|it was)\s*,?\s*)?(?:the )?(?P<b>[a-z]+)(?: one)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_word55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "The grey blanket for P, not grey, I mean blue" is "…, no, the blue one":
+    the word put right said before a kind ('grey blanket'), and the new word with that kind one
+    object of the scene ('blue blanket'); the head names that thing once."""
+    if ", not " not in text.lower():
+        return text
+    m = _NOT_WORD55R.search(text)
+    if m is None:
+        return text
+    head = text[: m.start()]
+    said = re.findall(rf"\b{m['a']} (?P<k>[a-z]+)\b", head, _F)
+    if len(said) != 1 or _held53r(head):
+        return text
+    kind = said[0]
+    if len(_ids(f"the {m['a']} {kind}", lexicon, "object")) != 1:
+        return text
+    if not _whole_name(f"the {m['b']} {kind}", lexicon, "object"):
+        return text
+    return f"{head}, no, the {m['b']} one{m['end'] or '.'}"
+
+
+# "Tray for the spoon, no, I've changed my mind, the sink.": a note said place first
+_SURFACE_FOR55R = re.compiled(
+    r"^(?P<s>(?:the )?[a-z]+(?: [a-z]+)?) for (?P<x>the [a-z]+(?: [a-z]+)?)(?P<rest>,\s*"
+    r"(?:oh |or )?(?:no|sorry|wait|hang on|hold on|actually)\b.+)$",
+    _F,
+)
+
+
+def _surface_for55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Tray (belt) for the spoon, <cue> …, <the correction>" is "The spoon on
+    the tray, <cue> …": the note said place first (one surface, one object, whole names) before a
+    correction the older rules read (session 34's `_surface_for34r` has the correction 'to P' /
+    'on S' right after 'no')."""
+    low = text.lower()
+    if " for the " not in low:
+        return text
+    m = _SURFACE_FOR55R.match(text.strip())
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if not _whole_name(m["x"], lexicon, "object"):
+        return text
+    where = re.sub(r"^the ", "", m["s"], flags=_F).lower()
+    return f"The {m['x'][4:]} on the {where}{m['rest']}"
+
+
+# "…, oh hang on, it's the small box that goes on.": the thing put right, said as a cleft
+_GOES_ON55R = re.compiled(
+    r"\b(?P<it>it's|it is) (?P<x>the [a-z]+(?: [a-z]+)?) that (?P<v>goes|go) (?:on|in|up|on it|"
+    r"in it|onto it|into it|on there|in there|up there)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _goes_on55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "…, hang on, it's the small box that goes on (in, up there)" closing a
+    correction is "…, it's the small box that goes there", which the older rules read (the thing
+    one object of the scene)."""
+    if "that go" not in text.lower():
+        return text
+    m = _GOES_ON55R.search(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['it']} {m['x']} that {m['v']} there{m['end']}"
+
+
+# "The bottle goes to, um, yes, Person A, no change there.": a hesitation, then the person
+_UM_YES55R = re.compiled(
+    r"\b(?P<to>to|for),\s*(?:(?:um|uh|er|erm|ah),\s*)?(?:yes|yeah|yep|right),\s*"
+    rf"(?P<p>{_P46R})(?P<tail>,\s*(?:no change there|no change|same as (?:ever|always|before))|)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _um_yes55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "The bottle goes to, um, yes, P(, no change there)" is "The bottle goes
+    to P": the speaker finding the name, then saying it is as it was (one person of the
+    scene)."""
+    low = text.lower()
+    if "to," not in low and "for," not in low:
+        return text
+    m = _UM_YES55R.search(text)
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    return f"{text[: m.start()]}{m['to']} {m['p']}{m['end'] or '.'}"
+
+
+# "Take the bottle to Person B, silly me, there's no Person B, so Person A.": no such person
+_NO_SUCH55R = re.compiled(
+    r"(?:,\s*(?:no|sorry|oops|whoops|oh|silly me|my mistake|wait|hang on)\b[^,]*)?"
+    rf",\s*there(?:'s| is) no (?P<q>{_P46R})(?: here| in here| around)?,\s*(?:so |then |so then )?"
+    rf"(?:(?:it's|make it) )?(?P<p>{_P46R})(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _no_such55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Take the bottle to Person B, silly me, there's no Person B, so Person
+    A" is "Take the bottle to Person A": the person said first is no whole name of the scene's
+    ('Person B' in a scene of Person A alone), said once in the request before, and is put right
+    by one person of the scene after 'so'."""
+    low = text.lower()
+    if "there's no " not in low and "there is no " not in low:
+        return text
+    m = _NO_SUCH55R.search(text)
+    if m is None or _whole_name(m["q"], lexicon, "human") or m["q"].lower() == m["p"].lower():
+        return text
+    if _person46r(m["p"], lexicon) is None:
+        return text
+    head = text[: m.start()]
+    said = list(re.finditer(rf"\b{re.escape(m['q'])}\b", head, _F))
+    if len(said) != 1 or _held53r(head):
+        return text
+    at = said[0]
+    return f"{head[: at.start()]}{m['p']}{head[at.end() :]}{m['end'] or '.'}"
+
+
+# "Was it the wipes or the sippy cup Grandad wanted? It's gone right out of my head."
+_WAS_IT55R = re.compiled(
+    r"^was it (?P<x>the [a-z]+(?: [a-z]+)?) or (?P<y>the [a-z]+(?: (?!that\b)[a-z]+)?)(?: that)? "
+    rf"(?P<p>{_P46R}) (?P<v>wanted|asked for|needed|was after)\s*\?\s*(?P<rest>.+)$",
+    _F,
+)
+_FORGOT55R = re.compiled(
+    r"^(?:(?:it's|it has|that's) gone (?:right |clean |completely )?out of my head|i (?:can't|"
+    r"cannot|can not) (?:remember|recall)|i(?:'ve| have) forgotten|i forget|(?:i've )?no idea)"
+    r"[^.!?]*[.!]?$",
+    _F,
+)
+
+
+def _was_it55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Was it the X or the Y P wanted? It's gone right out of my head." is
+    "P wanted the X or the Y, it's gone right out of my head": the speaker has forgotten which
+    (refused, naming both readings, as that sentence is); not without the forgetting remark (a
+    question that only asks)."""
+    if not text.lower().startswith("was it "):
+        return text
+    m = _WAS_IT55R.match(text.strip())
+    if m is None or _FORGOT55R.match(m["rest"].strip()) is None:
+        return text
+    if _person46r(m["p"], lexicon) is None:
+        return text
+    rest = m["rest"].strip()
+    return f"{m['p']} {m['v']} {m['x']} or {m['y']}, {rest[:1].lower()}{rest[1:]}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
-_STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _my_error55r,
+    _surface_for55r,
+    _goes_on55r,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
     _chance_youd55r,
@@ -295,6 +491,10 @@ _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
     _fit_in55r,
     _out_to55r,
     _come_to55r,
+    _not_word55r,
+    _um_yes55r,
+    _no_such55r,
+    _was_it55r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = ()
