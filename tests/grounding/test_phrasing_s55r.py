@@ -96,6 +96,14 @@ def test_later_part_check_is_what_refuses(text: str, scene, monkeypatch) -> None
         ("Bob can take his pick of the cup or the apple, he's earned it", "cup>B | apple>B", CELL),
         ("Bob's off tomorrow, so give him the cup.", "cup>B", CELL),
         ("Give Bob the cup now, he's off tomorrow.", "cup>B", CELL),
+        # 'in a minute' is soon; 'first thing' alone is an order (blind44 #65)
+        ("Give Bob the apple, in a minute.", "apple>B", CELL),
+        (
+            "First thing, the cup to Person B then Person A can have the chips, she's back from "
+            "the autoharp lesson.",
+            "cup>B ; chips>A",
+            L44,
+        ),
     ],
 )
 def test_later_part_kept(text: str, want: str, scene) -> None:
@@ -150,6 +158,43 @@ def test_put_where_it_is_check_is_what_refuses(text: str, scene, monkeypatch) ->
     ],
 )
 def test_put_where_it_is_kept(text: str, want: str, scene) -> None:
+    got = tree(text, scene)
+    assert got is not None and show_tree(got) == want
+
+
+# _or_asked55r (a check of the reading): a choice read where 'or' opens a question (12c's probe;
+# main read each as a choice left to the robot)
+OR_ASKED = [
+    ("Could you give Bob the apple, or does Alice want it?", CELL),
+    ("Give Bob the apple, or does Alice want it?", CELL),
+    ("Give Bob the apple, or should Alice have it?", CELL),
+    ("Give Bob the apple or the cup, or does he want both?", CELL),
+    ("Could you bring the lemon to Marco, or does Lena want it?", KITCHEN),
+    ("Give Mr Lee the jug, or should Mrs Khan have it?", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), OR_ASKED)
+def test_or_asked_refused(text: str, scene) -> None:
+    assert tree(text, scene) is None
+
+
+@pytest.mark.parametrize(("text", "scene"), OR_ASKED)
+def test_or_asked_check_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    _without_check(_rewrites55r._or_asked55r, monkeypatch)
+    assert tree(text, scene) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # no choice read, or no question: read as before
+        ("Could you give Mr Novak the lemon, or is that a bother?", "lemon>C", KITCHEN),
+        ("Can you give Bob the cup, or is that a bother?", "cup>B", CELL),
+        ("Could you give Bob the cup or the apple?", "cup>B | apple>B", CELL),
+    ],
+)
+def test_or_asked_kept(text: str, want: str, scene) -> None:
     got = tree(text, scene)
     assert got is not None and show_tree(got) == want
 
@@ -283,6 +328,11 @@ test_come_to = COME_TO.test(
     ("Can the cup come to the shelf?", None, CELL),
     ("The cup came to Bob?", None, CELL),
     ("Can the cup come to Bob tomorrow?", None, CELL),
+    # near (12c's probe): asking what will happen, or asking which
+    ("Will the apple come to Bob?", None, CELL),
+    ("Would the apple come to Bob?", None, CELL),
+    ("Could the apple come to Bob, or should it go to Alice?", None, CELL),
+    ("Can the apple come to Bob, or is Alice having it?", None, CELL),
 )
 
 

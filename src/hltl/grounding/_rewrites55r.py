@@ -13,7 +13,7 @@ from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites53r import _held53r
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.phrasing import starting_on
-from hltl.grounding.tree import Node, tasks
+from hltl.grounding.tree import Node, has_choice, tasks
 
 # -- open wrong readings -------------------------------------------------------------------------
 
@@ -25,7 +25,8 @@ _LATER55R = (
     rf"tomorrow|later on|this (?:evening|afternoon|weekend)|next (?:week|month|{_DAY55R})|"
     rf"(?:on )?{_DAY55R}(?: (?:morning|afternoon|evening|night))?|in the (?:morning|afternoon|"
     r"evening)|after (?:lunch|dinner|breakfast|tea|school|work)|in (?:an?|one|two|three|four|"
-    r"five|ten|twenty|\d+) (?:hours?|minutes?|mins?)|first thing (?:tomorrow(?: morning)?|in the "
+    r"five|ten|twenty|\d+) hours?|in (?:two|three|four|five|ten|twenty|thirty|\d+) (?:minutes|"
+    r"mins)|first thing (?:tomorrow(?: morning)?|in the "
     r"morning))"
 )
 _TIME_PART55R = re.compiled(
@@ -64,6 +65,31 @@ def _later_part55r(text: str, node: Node, lexicon: Lexicon) -> None:
     raise GroundingError(
         f"{m['said']!r} puts the task off: the cell acts now, so say the request when it is to "
         "be done"
+    )
+
+
+# "Could you give Bob the apple, or does Alice want it?": the speaker asking which, as a question
+_OR_ASKED55R = re.compiled(
+    r"\bor (?:does|do|did|is|are|was|were|should|would|will|can|could|shall|might|has|have|had) "
+    r"[^.!?]*\?",
+    _F,
+)
+
+
+def _or_asked55r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12r; 12c's probe): "Give Bob the apple, or does Alice want it?" ("…, or
+    should Alice have it?", "…, or does he want both?") read apple>B | apple>A: the grammar made
+    the speaker's question a choice left to the robot. A choice read where 'or' opens a question
+    is refused (the speaker asks which; "…, or is that a bother?" beside one request, no choice
+    read, stays read)."""
+    if "or " not in text.lower() or "?" not in text:
+        return
+    m = _OR_ASKED55R.search(text)
+    if m is None or not has_choice(node):
+        return
+    raise GroundingError(
+        f"{m.group(0)!r} asks which: the speaker has not left the choice to the robot; say who "
+        "gets what"
     )
 
 
@@ -267,9 +293,9 @@ def _out_to55r(text: str, lexicon: Lexicon) -> str:
 
 # "Can the green book come down off the shelf to Mrs Ortiz?": the thing coming to the person
 _COME_TO55R = re.compiled(
-    r"^(?P<ask>can|could|might|may|will|would|should)\s+(?P<x>the [a-z]+(?: [a-z]+)?) come"
+    r"^(?P<ask>can|could|might|may)\s+(?P<x>the [a-z]+(?: [a-z]+)?) come"
     r"(?P<way>(?: (?:over|down|across|back|along|round|up))?(?: (?:off|from) the [a-z]+"
-    rf"(?: [a-z]+)?)?) to (?P<p>{_P46R})(?P<rest>\s*(?:,[^?]*)?\?\s*)$",
+    rf"(?: [a-z]+)?)?) to (?P<p>{_P46R})(?P<rest>(?:,? please)?\s*\?\s*)$",
     _F,
 )
 
@@ -277,7 +303,8 @@ _COME_TO55R = re.compiled(
 def _come_to55r(text: str, lexicon: Lexicon) -> str:
     """Session 55 (12r): "Can (could, might) the X come (down off the shelf) to P?" is "Can you
     bring the X (down off the shelf) to P?" (the thing asked to come to one person of the scene,
-    by the hearer's hand)."""
+    by the hearer's hand); not 'will' / 'would' (asking what will happen) nor with more said after
+    the person ("…, or should it go to Alice?": 12c's probe)."""
     if " come" not in text.lower():
         return text
     m = _COME_TO55R.match(text.strip())
@@ -502,4 +529,5 @@ REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = ()
 CHECK55R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
     _later_part55r,
     _put_where_it_is55r,
+    _or_asked55r,
 )
