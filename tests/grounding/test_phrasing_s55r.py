@@ -130,7 +130,9 @@ def test_put_where_it_is_refused(text: str, scene) -> None:
 
 @pytest.mark.parametrize(("text", "scene"), PUT_WHERE)
 def test_put_where_it_is_check_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    # _list_split55r refuses the list forms too (the same split reading)
     _without_check(_rewrites55r._put_where_it_is55r, monkeypatch)
+    _without_check(_rewrites55r._list_split55r, monkeypatch)
     assert tree(text, scene) is not None
 
 
@@ -508,3 +510,407 @@ def test_was_it_is_what_names_them(
 )
 def test_was_it_question_stays_refused(text: str) -> None:
     assert tree(text, CELL) is None
+
+
+# _list_split55r (a check of the reading): a list right before 'on' a surface read as handing
+# some over and putting the others there (main: "Bob had the cup and the apple on the shelf." ->
+# cup>B & apple@shelf)
+LIST_SPLIT = [
+    ("Bob had the cup and the apple on the shelf.", CELL),
+    ("Bob had both mugs on the shelf.", CELL),
+    ("Alice had the cup and the apple up on the table.", CELL),
+    ("Bob had every mug on the shelf, red and blue alike.", CELL),
+    ("Give Bob the cup and the apple on the shelf.", CELL),
+    ("Lena had the knife and the lemon on the worktop.", KITCHEN),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), LIST_SPLIT)
+def test_list_split_refused(text: str, scene) -> None:
+    assert tree(text, scene) is None
+
+
+@pytest.mark.parametrize(("text", "scene"), LIST_SPLIT[:3] + LIST_SPLIT[4:])
+def test_list_split_check_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    _without_check(_rewrites55r._list_split55r, monkeypatch)
+    assert tree(text, scene) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # two tasks said apart: read as before
+        ("Give Bob the cup and put the apple on the shelf.", "cup>B & apple@shelf", CELL),
+        ("Give Bob the cup, and the apple on the shelf.", "cup>B & apple@shelf", CELL),
+        ("The cup to Bob and the apple on the shelf.", "cup>B & apple@shelf", CELL),
+        ("Bob wants the cup and the apple on the shelf.", "cup@shelf & apple@shelf", CELL),
+    ],
+)
+def test_list_split_kept(text: str, want: str, scene) -> None:
+    got = tree(text, scene)
+    assert got is not None and show_tree(got) == want
+
+
+# -- blind53: whichever, either, both, each -------------------------------------------------------
+
+# _closer_to_hand55r: "whichever mug is closer to hand" is "any mug" (more than one of the kind)
+CLOSER_TO_HAND = PhrasingCases()
+test_closer_to_hand = CLOSER_TO_HAND.test(
+    ("Bob can have whichever mug is closer to hand.", "mug_red>B | mug_blue>B", CELL),
+    (
+        "Sam can have whichever pen is closer to hand.",
+        "pen_black>B | pen_blue>B | pen_red>B",
+        OFFICE,
+    ),
+    ("Lena can have whichever plate is nearest to you.", "plate_white>B | plate_blue>B", KITCHEN),
+    ("Give Mr Lee whichever blanket is closer to hand.", "blanket_blue>B | blanket_grey>B", WARD),
+    # near: one of the kind, a holding, a later time
+    ("Bob can have whichever cup is closer to hand.", None, CELL),
+    ("Bob had whichever mug was closer to hand.", None, CELL),
+    ("Bob can have whichever mug is closer to hand, tomorrow.", None, CELL),
+)
+
+
+def test_closer_to_hand_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CLOSER_TO_HAND.refused_without((_rewrites55r._closer_to_hand55r,), monkeypatch)
+
+
+# _any_fine55r + _grab_nearest55r: "Any of the four is fine for P, grab what's nearest"
+ANY_FINE = PhrasingCases()
+test_any_fine = ANY_FINE.test(
+    (
+        "Any of the four is fine for Person A, grab what's nearest.",
+        "bottle>A | chips>A | cup>A | apple>A",
+        F41,
+    ),
+    ("Any of the four is fine for Person A.", "bottle>A | chips>A | cup>A | apple>A", F41),
+    ("Any of the two is fine for Person B, she's not fussy.", "bottle>B | chips>B", DUO),
+    ("Any of the four would be fine for Person B.", "bottle>B | chips>B | cup>B | apple>B", F42),
+    # near: said as past, a count the scene does not have
+    ("Any of the four was fine for Person A.", None, F41),
+    ("Any of the three is fine for Person A.", None, F41),
+)
+
+
+def test_any_fine_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ANY_FINE.refused_without((_rewrites55r._any_fine55r,), monkeypatch)
+
+
+GRAB_NEAREST = PhrasingCases()
+test_grab_nearest = GRAB_NEAREST.test(
+    (
+        "Either of the two mugs is fine for Bob, grab whatever's handiest.",
+        "mug_red>B | mug_blue>B",
+        CELL,
+    ),
+    (
+        "Bob can have either mug, just grab whichever's closest to you.",
+        "mug_red>B | mug_blue>B",
+        CELL,
+    ),
+    (
+        "Give Sam any pen, grab what's nearest to you.",
+        "pen_black>B | pen_blue>B | pen_red>B",
+        OFFICE,
+    ),
+    # near: no choice before it
+    ("Give Bob the cup, grab what's nearest.", None, CELL),
+)
+
+
+def test_grab_nearest_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    GRAB_NEAREST.refused_without((_rewrites55r._grab_nearest55r,), monkeypatch)
+
+
+# _one_of_two55r: "P or Q, one of the two gets the X(, your pick)" is "P or Q can have the X"
+ONE_OF_TWO = PhrasingCases()
+test_one_of_two = ONE_OF_TWO.test(
+    (
+        "Person A or Person B, I'm easy, one of the two gets the bottle, your pick.",
+        "bottle>A | bottle>B",
+        DUO,
+    ),
+    ("Alice or Bob, one of them gets the apple.", "apple>A | apple>B", CELL),
+    ("Lena or Marco, one of the two gets the knife, your call.", "knife>B | knife>A", KITCHEN),
+    ("Noah or Zoe, one of the two gets the globe.", "globe>B | globe>C", CLASSROOM),
+    # near: said as done, someone not in the scene, another's word
+    ("Alice or Bob, one of the two got the apple.", None, CELL),
+    ("Alice or Dave, one of the two gets the apple.", None, CELL),
+    ("Alice or Bob, one of the two gets the apple, Carol says.", None, CELL),
+)
+
+
+def test_one_of_two_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ONE_OF_TWO.refused_without((_rewrites55r._one_of_two55r,), monkeypatch)
+
+
+# _only_one55r: "…and that's the only bottle, so she's having it" names the one bottle
+ONLY_ONE = PhrasingCases()
+test_only_one = ONLY_ONE.test(
+    (
+        "Person A's the only soul about and that's the only bottle, so she's having it.",
+        "bottle>A",
+        ONE,
+    ),
+    ("Person A's thirsty and that's the only bottle, so she's having it.", "bottle>A", ONE),
+    ("Mrs Khan's cold and that's the only jug, so she's having it.", "jug>C", WARD),
+    # near: more than one of the kind, the pronoun another's
+    ("Bob's cold and that's the only mug, so he's having it.", None, CELL),
+    ("Bob's thirsty and that's the only bottle, so she's having it.", None, CELL),
+)
+
+
+def test_only_one_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ONLY_ONE.refused_without((_rewrites55r._only_one55r,), monkeypatch)
+
+
+# _every_alike55r: "every plate on the worktop, white and blue alike" names the two
+EVERY_ALIKE = PhrasingCases()
+test_every_alike = EVERY_ALIKE.test(
+    (
+        "Marco wants every plate on the worktop, white and blue alike, for plating up.",
+        "plate_white@counter & plate_blue@counter",
+        KITCHEN,
+    ),
+    (
+        "Bob wants every mug on the shelf, red and blue alike.",
+        "mug_red@shelf & mug_blue@shelf",
+        CELL,
+    ),
+    ("Put every mug on the table, red and blue alike.", "mug_red@table & mug_blue@table", CELL),
+    (
+        "Put every blanket on the trolley, blue and grey alike.",
+        "blanket_blue@trolley & blanket_grey@trolley",
+        WARD,
+    ),
+    # near: a colour the scene does not have, a holding
+    ("Bob wants every mug on the shelf, red and green alike.", None, CELL),
+    ("Bob had every mug on the shelf, red and blue alike.", None, CELL),
+)
+
+
+def test_every_alike_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    EVERY_ALIKE.refused_without((_rewrites55r._every_alike55r,), monkeypatch)
+
+
+# _apiece55r: "A drink apiece, please: <list>" is "A drink each: <list>"
+APIECE = PhrasingCases()
+test_apiece = APIECE.test(
+    (
+        "A drink apiece, please: the cup's for Person A and the bottle's for Person B.",
+        "cup>A & bottle>B",
+        SQ,
+    ),
+    (
+        "A snack apiece, please: the apple's for Bob and the crisps are for Alice.",
+        "apple>B & chips>A",
+        CELL,
+    ),
+    (
+        "A book apiece, please: the red book's for Noah and the green book's for Zoe.",
+        "book_red>B & book_green>C",
+        CLASSROOM,
+    ),
+    # near: nothing listed
+    ("A drink apiece, please.", None, CELL),
+)
+
+
+def test_apiece_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    APIECE.refused_without((_rewrites55r._apiece55r,), monkeypatch)
+
+
+# -- blind53: counts and plurals -------------------------------------------------------------------
+
+# _twin55r: "the red mug and its blue twin" is "the red mug and the blue mug"
+TWIN = PhrasingCases()
+test_twin = TWIN.test(
+    (
+        "The red mug and its blue twin, on the counter to dry please.",
+        "mug_red@table & mug_blue@table",
+        CELL,
+    ),
+    ("The blue mug and its red partner go on the shelf.", "mug_blue@shelf & mug_red@shelf", CELL),
+    ("Give Lena the white plate and its blue twin.", "plate_white>B & plate_blue>B", KITCHEN),
+    ("The grey blanket and its blue mate to Mr Lee.", "blanket_grey>B & blanket_blue>B", WARD),
+    # near: no such thing
+    ("The red mug and its green twin, on the shelf.", None, CELL),
+    ("The cup and its twin, on the shelf.", None, CELL),
+)
+
+
+def test_twin_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    TWIN.refused_without((_rewrites55r._twin55r,), monkeypatch)
+
+
+# _those_n55r: "Chips, cup, apple: those three to P" is "Chips, cup and apple to P"
+THOSE_N = PhrasingCases()
+test_those_n = THOSE_N.test(
+    (
+        "Chips, cup, apple: those three to Person B; the bottle stays where it is.",
+        "chips>B & cup>B & apple>B",
+        F41,
+    ),
+    ("Cup, apple: those two to Bob.", "cup>B & apple>B", CELL),
+    ("Cup, apple: those two on the shelf.", "cup@shelf & apple@shelf", CELL),
+    ("Knife, lemon, salt: all three to Marco.", "knife>A & lemon>A & salt>A", KITCHEN),
+    # near: the count not the list's, a person in the list
+    ("Cup, apple, chips: those two to Bob.", None, CELL),
+    ("Cup, Bob: those two to Alice.", None, CELL),
+)
+
+
+def test_those_n_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    THOSE_N.refused_without((_rewrites55r._those_n55r,), monkeypatch)
+
+
+# _spoken_for55r: "X are spoken for by P(, so hand them over)" is "X are for P"
+SPOKEN_FOR = PhrasingCases()
+test_spoken_for = SPOKEN_FOR.test(
+    (
+        "Both items are spoken for by Person B, so hand the pair of them over.",
+        "bottle>B & chips>B",
+        T21,
+    ),
+    (
+        "The mugs are spoken for by Carol, so hand both of them over.",
+        "mug_red>C & mug_blue>C",
+        CELL,
+    ),
+    (
+        "Both blocks are spoken for by Lily, so hand the pair of them over.",
+        "block_red>A & block_green>A",
+        NURSERY,
+    ),
+    ("Both cups are spoken for by Emma, so pass them over.", "cup_green>C & cup_white>C", LAB),
+    # near: a place, not a person
+    ("The apple is spoken for by the shelf.", None, CELL),
+)
+
+
+def test_spoken_for_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    SPOKEN_FOR.refused_without((_rewrites55r._spoken_for55r,), monkeypatch)
+
+
+# _with_them55r: "X want soaking, so into the sink (with them)" / "X and Y, up on the S with the
+# pair of them"
+WITH_THEM = PhrasingCases()
+test_with_them = WITH_THEM.test(
+    (
+        "Both of the cups want soaking, so into the sink with them.",
+        "cup_green@sink & cup_white@sink",
+        LAB,
+    ),
+    ("Both mugs need drying, so onto the table with them.", "mug_red@table & mug_blue@table", CELL),
+    (
+        "Crisps and bottle, up on the shelf with the pair of them, before the dog gets in.",
+        "chips@shelf & bottle@shelf",
+        TWO,
+    ),
+    (
+        "The cup and the apple, onto the table with the pair of them.",
+        "cup@table & apple@table",
+        CELL,
+    ),
+    # near: a person, said as past, nothing said before
+    ("The mugs need washing, so onto Bob with them.", None, CELL),
+    ("The mugs needed washing, so onto the shelf with them.", None, CELL),
+    ("Onto the shelf with them.", None, CELL),
+)
+
+
+def test_with_them_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WITH_THEM.refused_without((_rewrites55r._with_them55r,), monkeypatch)
+
+
+# _wrap_in55r: "wrap him in both blankets" is "give him both blankets"
+WRAP_IN = PhrasingCases()
+test_wrap_in = WRAP_IN.test(
+    (
+        "Mr Lee's shivering, wrap him in both blankets, the blue and the grey.",
+        "blanket_blue>B & blanket_grey>B",
+        WARD,
+    ),
+    ("Mrs Khan's cold, wrap her in the grey blanket.", "blanket_grey>C", WARD),
+    ("Wrap Mrs Khan in the blue blanket.", "blanket_blue>C", WARD),
+    ("Lily's chilly, wrap her up in the bib.", "bib>A", NURSERY),
+    # near: a thing wrapped, said as done, a pronoun without a person
+    ("Wrap the jug in the blue blanket.", None, WARD),
+    ("Mr Lee was wrapped in the blue blanket.", None, WARD),
+    ("Wrap her in the blue blanket.", None, WARD),
+)
+
+
+def test_wrap_in_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WRAP_IN.refused_without((_rewrites55r._wrap_in55r,), monkeypatch)
+
+
+# _carrying55r: "P's carrying out two plates(, …), so let her have them both"
+CARRYING = PhrasingCases()
+test_carrying = CARRYING.test(
+    (
+        "Lena's carrying out two plates, the white and the blue, so let her have them both.",
+        "plate_white>B & plate_blue>B",
+        KITCHEN,
+    ),
+    ("Lena's taking out both plates, so give her them.", "plate_white>B & plate_blue>B", KITCHEN),
+    ("Bob's carrying two mugs, so let him have them both.", "mug_red>B & mug_blue>B", CELL),
+    ("Mr Lee's taking both blankets, so give him them.", "blanket_blue>B & blanket_grey>B", WARD),
+    # near: a count the scene does not have, said as past
+    ("Bob's carrying two cups, so let him have them both.", None, CELL),
+    ("Bob was carrying two mugs, so let him have them both.", None, CELL),
+)
+
+
+def test_carrying_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CARRYING.refused_without((_rewrites55r._carrying55r,), monkeypatch)
+
+
+# _in_they_go55r: "X live in the locker, so in they go (now)"
+IN_THEY_GO = PhrasingCases()
+test_in_they_go = IN_THEY_GO.test(
+    (
+        "Both spanners live in the locker, so in they go now.",
+        "spanner_small@locker & spanner_large@locker",
+        WORKSHOP,
+    ),
+    ("The mugs live on the shelf, so on they go.", "mug_red@shelf & mug_blue@shelf", CELL),
+    ("Both blocks belong on the mat, so on they go.", "block_red@mat & block_green@mat", NURSERY),
+    # near: a person, a want, said as past
+    ("The mugs live with Bob, so over they go.", None, CELL),
+    ("Bob wants the mugs, so in they go.", None, CELL),
+    ("The mugs lived on the shelf, so on they go.", None, CELL),
+)
+
+
+def test_in_they_go_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    IN_THEY_GO.refused_without((_rewrites55r._in_they_go55r,), monkeypatch)
+
+
+# _on_s_go55r: "On the desk, (please,) go the X and the Y(, both for <nothing of the scene>)"
+ON_S_GO = PhrasingCases()
+test_on_s_go = ON_S_GO.test(
+    (
+        "On the desk, please, go the red book and the green one, both for the reading corner.",
+        "book_red@desk & book_green@desk",
+        CLASSROOM,
+    ),
+    ("On the table, please, go the cup and the apple.", "cup@table & apple@table", CELL),
+    (
+        "Into the sink, go the bowl and the spoon, both for the washing up.",
+        "bowl@sink & spoon@sink",
+        LAB,
+    ),
+    (
+        "On the pallet, please, go the small box and the tape.",
+        "box_small@pallet & tape@pallet",
+        DEPOT,
+    ),
+    # near: for a person of the scene, a person in the list
+    ("On the shelf, go the cup and the apple, both for Bob.", None, CELL),
+    ("On the shelf, go the cup and Bob.", None, CELL),
+)
+
+
+def test_on_s_go_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ON_S_GO.refused_without((_rewrites55r._on_s_go55r,), monkeypatch)

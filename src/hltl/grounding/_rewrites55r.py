@@ -11,7 +11,7 @@ from hltl.grounding._normalise3 import _whole_name
 from hltl.grounding._rewrites44 import _GERUNDS44, _VERBS44
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites53r import _held53r
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.lexicon import Lexicon, lex
 from hltl.grounding.phrasing import starting_on
 from hltl.grounding.tree import Node, has_choice, tasks
 
@@ -91,6 +91,52 @@ def _or_asked55r(text: str, node: Node, lexicon: Lexicon) -> None:
         f"{m.group(0)!r} asks which: the speaker has not left the choice to the robot; say who "
         "gets what"
     )
+
+
+def _list_split55r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 55 (12r): "Bob had the cup and the apple on the shelf." (main: cup>B &
+    apple@shelf), "Bob had both mugs on the shelf." — a list of things (or one plural name)
+    right before 'on' / 'in' a surface, read as handing some of them over and putting the others
+    there: the place said of the whole list went to its last thing only. Both readings a person
+    might mean (all put there, or all handed over and the place says which) take the list whole;
+    a split reading is refused."""
+    low = text.lower()
+    if " and " not in low and "both" not in low and "all" not in low:
+        return
+    if " on" not in low and " in" not in low:
+        return
+    done = list(tasks(node))
+    given = {t.obj for t in done if t.kind == "deliver"}
+    placed = {(t.obj, t.target) for t in done if t.kind == "place"}
+    if not given or not placed:
+        return
+    try:
+        items = lex(text, lexicon)
+    except GroundingError:
+        return
+    run: set[str] = set()
+    for k, it in enumerate(items):
+        if it.kind == "ent" and it.refs and all(r.kind == "object" for r in it.refs):
+            run |= {r.id for r in it.refs}
+            continue
+        if it.kind == "word" and it.lemma in ("and", "det", "both"):
+            continue  # a comma ends the list ("Give Bob the cup, and the apple on the shelf.")
+        if run and it.kind == "word" and it.lemma in ("on", "filler"):
+            j = k
+            while j < len(items) and items[j].kind == "word" and items[j].lemma == "filler":
+                j += 1
+            if j < len(items) and items[j].lemma == "on":
+                j += 1
+                while j < len(items) and items[j].kind == "word" and items[j].lemma == "det":
+                    j += 1
+                if j < len(items) and items[j].kind == "ent" and len(items[j].refs) == 1:
+                    where = items[j].refs[0].id
+                    if run & given and any((o, where) in placed for o in run):
+                        raise GroundingError(
+                            f"the place after {' and '.join(sorted(run))} could say where all of "
+                            "them go or which are meant: say 'put … on …' or who gets what"
+                        )
+        run = set()
 
 
 # the words a want is said with ("Mrs Ortiz wants both the books on the shelf.")
@@ -503,11 +549,383 @@ def _was_it55r(text: str, lexicon: Lexicon) -> str:
     return f"{m['p']} {m['v']} {m['x']} or {m['y']}, {rest[:1].lower()}{rest[1:]}"
 
 
+# -- blind53: whichever, either, both, each ------------------------------------------------------
+
+# "Bob can have whichever mug is closer to hand.": the robot's pick of the kind
+_CLOSER_TO_HAND55R = re.compiled(
+    r"\bwhichever (?P<k>[a-z]+) (?:is|'s) (?:closer|closest|nearer|nearest|handier|handiest|"
+    r"easier|easiest)(?: to (?:hand|reach|get at|grab|you))?(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _closer_to_hand55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "P can have whichever mug is closer to hand (handiest, nearest to you)"
+    is "P can have any mug" (the scene holding more than one of the kind): the robot picks; not
+    'closer to <someone or something>' (which one is meant: the older rules measure it)."""
+    if "whichever" not in text.lower():
+        return text
+    m = _CLOSER_TO_HAND55R.search(text)
+    if m is None or len(_ids(f"the {m['k']}", lexicon, "object")) < 2:
+        return text
+    return f"{text[: m.start()]}any {m['k']}{text[m.end() :]}"
+
+
+# "Any of the four is fine for Person A, …": the robot's pick among the scene's things
+_ANY_FINE55R = re.compiled(
+    r"^(?:any|either|any one|whichever) of the (?P<n>two|three|four|five|six) (?:things |items )?"
+    r"(?:is|are|would be|'d be|will be|'ll be) (?:fine|ok|okay|good|grand|alright|all right) "
+    rf"(?:for|by) (?P<p>{_P46R})(?P<rest>(?:\s*,[^.;!?]*)?[.!]?)\s*$",
+    _F,
+)
+
+
+def _any_fine55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Any of the four is fine for P(, …)" is "P can have any of the four
+    things(, …)" (session 50's "Any of the four will do for P"; the grammar checks the count),
+    one person of the scene."""
+    if (
+        " fine" not in text.lower()
+        and " ok" not in text.lower()
+        and "good" not in text.lower()
+        and ("grand" not in text.lower() and "right" not in text.lower())
+    ):
+        return text
+    m = _ANY_FINE55R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    return f"{m['p']} can have any of the {m['n']} things{m['rest'] or '.'}"
+
+
+# "Any of the four is fine for Person A, grab what's nearest.": the robot's pick, said again
+_GRAB_NEAREST55R = re.compiled(
+    r",\s*(?:just )?(?:grab|take|pick|bring|get|hand (?:her|him) over) (?:what's|whatever's|"
+    r"whichever's|whatever is|whichever is|the one that's|what is) (?:nearest|closest|handiest|"
+    r"easiest|nearer|closer)(?: to (?:hand|you|reach))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _grab_nearest55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "…, grab what's nearest (whatever's handiest)" closing a choice left to
+    the robot says the choice again: taken off when what is left reads as a choice."""
+    low = text.lower()
+    if (
+        "nearest" not in low
+        and "closest" not in low
+        and "handiest" not in low
+        and ("easiest" not in low and "nearer" not in low and "closer" not in low)
+    ):
+        return text
+    m = _GRAB_NEAREST55R.search(text)
+    if m is None:
+        return text
+    out = f"{text[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    return out if node is not None and has_choice(node) else text
+
+
+# "Person A or Person B, I'm easy, one of the two gets the bottle, your pick."
+_ONE_OF_TWO55R = re.compiled(
+    rf"^(?P<p>{_P46R}) or (?P<q>{_P46R}),\s*(?:(?:i'm|i am) (?:easy|not fussed|not bothered|happy "
+    r"either way),\s*)?(?:one of (?:the two|them|the pair|you two|the two of "
+    r"them)|either (?:one|of them)) (?:gets|has|can have|takes|is having) (?P<x>the [a-z]+"
+    r"(?: [a-z]+)?)(?P<tail>,\s*(?:your (?:pick|call|choice)|you (?:choose|decide|pick)|up to "
+    r"you|(?:i'm|i am) easy))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _one_of_two55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "P or Q, one of the two gets the X(, your pick)" is "P or Q can have the
+    X(, your pick)": two people of the scene named, the thing one object; nothing after it but
+    that the pick is the robot's ("…, Carol says" stays refused)."""
+    if "one of" not in text.lower() and "either" not in text.lower():
+        return text
+    m = _ONE_OF_TWO55R.match(text.strip())
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    p, q = _person46r(m["p"], lexicon), _person46r(m["q"], lexicon)
+    if p is None or q is None or p == q:
+        return text
+    return f"{m['p']} or {m['q']} can have {m['x']}{m['tail'] or ''}{m['end'] or '.'}"
+
+
+# "…, and that's the only bottle, so she's having it.": the one thing of its kind, named
+_ONLY_ONE55R = re.compiled(
+    r"\s+and (?:that's|that is|it's|it is) the only (?P<x>[a-z]+(?: [a-z]+)?),\s*so "
+    r"(?P<pro>she|he)(?:'s| is) having it\b",
+    _F,
+)
+
+
+def _only_one55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "P's the only soul about and that's the only bottle, so she's having
+    it" is "P's the only soul about, so she's having the bottle": 'the only X' of the one X of
+    the scene."""
+    if "the only" not in text.lower():
+        return text
+    m = _ONLY_ONE55R.search(text)
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    if len(_ids(f"the {m['x']}", lexicon, "object")) != 1:
+        return text
+    return f"{text[: m.start()]}, so {m['pro']}'s having the {m['x']}{text[m.end() :]}"
+
+
+# "Marco wants every plate on the worktop, white and blue alike, …": each of the kind, named
+_EVERY_ALIKE55R = re.compiled(
+    r"\bevery (?P<k>[a-z]+) (?P<prep>(?:up |down )?(?:on|onto|in|into)) (?P<s>the [a-z]+(?: "
+    r"[a-z]+)?),\s*(?P<a>[a-z]+) and (?P<b>[a-z]+) alike\b",
+    _F,
+)
+
+
+def _every_alike55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "every plate on the worktop, white and blue alike" is "the white plate
+    and the blue plate on the worktop": the two named are every one of the kind in the scene."""
+    if "alike" not in text.lower():
+        return text
+    m = _EVERY_ALIKE55R.search(text)
+    if m is None:
+        return text
+    kind = _ids(f"the {m['k']}", lexicon, "object")
+    a = _ids(f"the {m['a']} {m['k']}", lexicon, "object")
+    b = _ids(f"the {m['b']} {m['k']}", lexicon, "object")
+    if len(kind) != 2 or len(a) != 1 or len(b) != 1 or a | b != kind:
+        return text
+    said = f"the {m['a']} {m['k']} and the {m['b']} {m['k']} {m['prep']} {m['s']}"
+    return f"{text[: m.start()]}{said}{text[m.end() :]}"
+
+
+# "A drink apiece, please: the cup's for Person A and …": each gets one, the list after the colon
+_APIECE55R = re.compiled(r"^(?P<h>an? [a-z]+) (?:apiece|each)(?:,? please)?\s*:", _F)
+
+
+def _apiece55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "A drink apiece, please: <list>" is "A drink each: <list>" (read by the
+    older rules: the header says each gets one)."""
+    low = text.lower()
+    if "apiece" not in low and "each" not in low:
+        return text
+    m = _APIECE55R.match(text.strip())
+    if m is None:
+        return text
+    return f"{m['h']} each:{text.strip()[m.end() :]}"
+
+
+# -- blind53: counts and plurals -----------------------------------------------------------------
+
+# "The red mug and its blue twin, …": the other of the kind, by its colour
+_TWIN55R = re.compiled(
+    r"\b(?P<a>the (?P<c1>[a-z]+) (?P<k>[a-z]+)) and its (?P<c2>[a-z]+) (?:twin|partner|mate|"
+    r"sibling|brother|sister|counterpart|match|pair|cousin|friend)\b",
+    _F,
+)
+
+
+def _twin55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "the red mug and its blue twin (partner, mate)" is "the red mug and the
+    blue mug": each one object of the scene."""
+    if " its " not in text.lower():
+        return text
+    m = _TWIN55R.search(text)
+    if m is None or not _whole_name(m["a"], lexicon, "object"):
+        return text
+    other = f"the {m['c2']} {m['k']}"
+    if not _whole_name(other, lexicon, "object"):
+        return text
+    return f"{text[: m.start()]}{m['a']} and {other}{text[m.end() :]}"
+
+
+# "Chips, cup, apple: those three to Person B": the list counted again after a colon
+_THOSE_N55R = re.compiled(
+    r"^(?P<list>[^:;,]+(?:,\s*[^:;,]+)+):\s*(?:those|these|all|the|all of those) (?P<n>two|three|"
+    r"four|five)(?: of them)? (?P<rest>(?:go )?(?:to|for|on|onto|in|into) [^;]+?)(?P<end>\s*[.!;]"
+    r".*)?$",
+    _F,
+)
+_N55R = {"two": 2, "three": 3, "four": 4, "five": 5}
+
+
+def _those_n55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "Chips, cup, apple: those three to Person B" is "Chips, cup and apple
+    to Person B": the count said after the colon that of the list (each item one object)."""
+    if ":" not in text:
+        return text
+    m = _THOSE_N55R.match(text.strip())
+    if m is None:
+        return text
+    items = [x.strip() for x in m["list"].split(",")]
+    if len(items) != _N55R[m["n"].lower()]:
+        return text
+    if any(not _whole_name(x, lexicon, "object") for x in items):
+        return text
+    said = ", ".join(items[:-1]) + f" and {items[-1]}"
+    return f"{said} {m['rest']}{m['end'] or '.'}"
+
+
+# "Both items are spoken for by Person B, so hand the pair of them over."
+_SPOKEN_FOR55R = re.compiled(
+    rf"\b(?P<be>is|are) (?:spoken for|called for|bagged|reserved) by (?P<p>{_P46R})"
+    r"(?P<so>,\s*so (?:hand|pass|give|take) (?:it|them|the pair of them|both of them|the lot) "
+    r"over)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _spoken_for55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "X are spoken for (bagged, reserved) by P, so hand them over" is "X are
+    for P" (without the tail the older rules read it; 'claimed by' is session 43's): one person
+    of the scene; not where the words before say what someone has or had."""
+    low = text.lower()
+    if (
+        "spoken for" not in low
+        and "called for" not in low
+        and "bagged" not in low
+        and ("reserved" not in low)
+    ):
+        return text
+    m = _SPOKEN_FOR55R.search(text)
+    if m is None or _person46r(m["p"], lexicon) is None or _held53r(text[: m.start()]):
+        return text
+    return f"{text[: m.start()]}{m['be']} for {m['p']}{m['end'] or '.'}"
+
+
+# "Both of the cups want soaking, so into the sink with them.": where they go, for why
+_WANT_DOING55R = re.compiled(
+    r"^(?P<x>[^,]+?) (?:want|wants|need|needs) (?:a )?[a-z]+(?:ing)?(?: (?:out|up|off|down|"
+    r"through))?,\s*so (?P<prep>(?:up |down |back )?(?:on|onto|in|into)) (?P<s>the [a-z]+"
+    r"(?: [a-z]+)?)(?: with (?:them|it|the pair of them|both of them|the lot))?(?: now| please)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+_WITH_THEM55R = re.compiled(
+    r"(?P<prep>(?:up |down |back |over )?(?:on|onto|in|into)) (?P<s>the [a-z]+(?: [a-z]+)?) with "
+    r"(?:them|the pair of them|both of them|the two of them|the lot(?: of them)?|all of them)"
+    r"(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _with_them55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "X want soaking (need a wash), so into the sink (with them)" is "X into
+    the sink"; "X and Y, up on the shelf with the pair of them" is "X and Y, up on the shelf":
+    the surface one of the scene, 'with them' the things said before it."""
+    low = text.lower()
+    if " so " in low and (" want" in low or " need" in low):
+        m = _WANT_DOING55R.match(text.strip())
+        if m is not None and _whole_name(m["s"], lexicon, "surface"):
+            out = f"{m['x']} {m['prep']} {m['s']}{m['end'] or '.'}"
+            if _reading(out, lexicon) is not None:
+                return out
+    if " with " not in low:
+        return text
+    m2 = _WITH_THEM55R.search(text)
+    if m2 is None or m2.start() == 0 or not _whole_name(m2["s"], lexicon, "surface"):
+        return text
+    return f"{text[: m2.start()]}{m2['prep']} {m2['s']}{text[m2.end() :]}"
+
+
+# "Mr Lee's shivering, wrap him in both blankets, …": what he is wrapped in, handed to him
+_WRAP_IN55R = re.compiled(
+    rf"\bwrap (?P<p>him|her|{_P46R})(?: up)? in (?P<x>(?:the|both|both the|both of the|his|her) "
+    r"[a-z]+(?: [a-z]+)?)",
+    _F,
+)
+
+
+def _wrap_in55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "wrap him (up) in both blankets" is "give him both blankets": the things
+    handed (the robot hands them over; one person or a pronoun the older rules resolve)."""
+    if "wrap " not in text.lower():
+        return text
+    m = _WRAP_IN55R.search(text)
+    if m is None or not _ids(m["x"], lexicon, "object"):
+        return text
+    if m["p"].lower() not in ("him", "her") and _person46r(m["p"], lexicon) is None:
+        return text
+    return f"{text[: m.start()]}give {m['p']} {m['x']}{text[m.end() :]}"
+
+
+# "Lena's carrying out two plates, the white and the blue, so let her have them both."
+_CARRYING55R = re.compiled(
+    rf"^(?P<p>{_P46R})(?:'s| is) (?:carrying|taking|bringing|serving|running)(?: (?:out|over|up|"
+    r"round|through))? (?:two|both|the two|both the) (?P<k>[a-z]+)s(?P<which>,\s*the [a-z]+ and "
+    r"the [a-z]+)?,\s*so (?:let (?:her|him) have|give (?:her|him)) (?:them|those)(?: both)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _carrying55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "P's carrying out two plates(, the white and the blue), so let her have
+    them both" is "Let P have both plates(, the white and the blue)": the two of the kind in the
+    scene, for one person of it."""
+    low = text.lower()
+    if "so " not in low or (" have them" not in low and "give " not in low):
+        return text
+    m = _CARRYING55R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    if len(_ids(f"the {m['k']}", lexicon, "object")) != 2:
+        return text
+    return f"Let {m['p']} have both {m['k']}s{m['which'] or ''}{m['end'] or '.'}"
+
+
+# "Both spanners live in the locker, so in they go now.": where they belong, so put there
+_IN_THEY_GO55R = re.compiled(
+    r",\s*so (?P<prep>in|on|up|onto|into) (?:they|it) go(?:es)?(?: now| then| please)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _in_they_go55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "X live (belong) in the locker, so in they go (now)" is "X live in the
+    locker": what is left reads as putting them there (the older rules read 'live in' so), only
+    placings."""
+    if "they go" not in text.lower() and "it goes" not in text.lower():
+        return text
+    m = _IN_THEY_GO55R.search(text)
+    if m is None or m.start() == 0:
+        return text
+    out = f"{text[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# "On the desk, please, go the red book and the green one, both for the reading corner."
+_ON_S_GO55R = re.compiled(
+    r"^(?P<prep>on|onto|in|into) (?P<s>the [a-z]+(?: [a-z]+)?),\s*(?:please,\s*)?go (?P<x>the "
+    r"[a-z]+(?: [a-z]+)? and the [a-z]+(?: [a-z]+)?)(?:,\s*both for (?P<why>the [a-z]+"
+    r"(?: [a-z]+)?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _on_s_go55r(text: str, lexicon: Lexicon) -> str:
+    """Session 55 (12r): "On the desk, (please,) go the red book and the green one(, both for the
+    reading corner)" is "Put the red book and the green one on the desk": the surface one of the
+    scene; what they are for, naming nothing of the scene, taken off."""
+    if " go " not in text.lower():
+        return text
+    m = _ON_S_GO55R.match(text.strip())
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    if m["why"] is not None and _ids(m["why"], lexicon):
+        return text
+    return f"Put {m['x']} {m['prep'].lower()} {m['s']}{m['end'] or '.'}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _my_error55r,
     _surface_for55r,
     _goes_on55r,
+    _apiece55r,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
@@ -522,6 +940,20 @@ _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
     _um_yes55r,
     _no_such55r,
     _was_it55r,
+    _closer_to_hand55r,
+    _any_fine55r,
+    _grab_nearest55r,
+    _one_of_two55r,
+    _only_one55r,
+    _every_alike55r,
+    _twin55r,
+    _those_n55r,
+    _spoken_for55r,
+    _with_them55r,
+    _wrap_in55r,
+    _carrying55r,
+    _in_they_go55r,
+    _on_s_go55r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
 REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = ()
@@ -530,4 +962,5 @@ CHECK55R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
     _later_part55r,
     _put_where_it_is55r,
     _or_asked55r,
+    _list_split55r,
 )
