@@ -432,6 +432,11 @@ test_um_yes = UM_YES.test(
     ("The cup goes to, um, yes, Dave.", None, CELL),
     ("The cup goes to, um, no, Bob.", None, CELL),
     ("Give the cup to Alice, no, Bob, no change there.", None, CELL),
+    # near (12c's probe): said as done
+    ("The bottle went to, um, yes, Person A.", None, L44),
+    ("The bottle has gone to, um, yes, Person A.", None, L44),
+    ("The bottle should have gone to, um, yes, Person A.", None, L44),
+    ("The apple was handed to, um, yes, Bob.", None, CELL),
 )
 
 
@@ -914,3 +919,26 @@ test_on_s_go = ON_S_GO.test(
 
 def test_on_s_go_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     ON_S_GO.refused_without((_rewrites55r._on_s_go55r,), monkeypatch)
+
+
+# _done_um55r (a refusal before the read): "The bottle went to, um, Person A." is said as done
+# (12c's probe; main read bottle>A)
+DONE_UM = [
+    ("The bottle went to, um, Person A.", L44),
+    ("The bottle went to, er, Person A.", L44),
+    ("The apple went to, um, Bob.", CELL),
+    ("The apple was given to, um, Bob.", CELL),
+    ("The teddy went to, er, Grandad.", NURSERY),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), DONE_UM)
+def test_done_um_refused(text: str, scene) -> None:
+    assert tree(text, scene) is None
+
+
+@pytest.mark.parametrize(("text", "scene"), DONE_UM)
+def test_done_um_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    kept = tuple(r for r in offline._REFUSALS if r is not _rewrites55r._done_um55r)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
+    assert tree(text, scene) is not None

@@ -476,15 +476,31 @@ _UM_YES55R = re.compiled(
 )
 
 
+# what may come before 'to, um, yes, P': a request or a present 'goes' / 'is for' (12c's probe:
+# "The bottle went to, um, yes, Person A." is said as done)
+_ASKED_TO55R = re.compiled(
+    r"\b(?:goes|go|is|are|'s|give|hand|take|pass|bring|send|deliver|carry|pop|run)\b[^,.;!?]*$", _F
+)
+_DONE_TO55R = re.compiled(
+    r"\b(?:went|gone|was|were|had|has|have|handed|given|passed|taken|brought|sent|delivered|"
+    r"should|would|could|might|must)\b",
+    _F,
+)
+
+
 def _um_yes55r(text: str, lexicon: Lexicon) -> str:
     """Session 55 (12r): "The bottle goes to, um, yes, P(, no change there)" is "The bottle goes
     to P": the speaker finding the name, then saying it is as it was (one person of the
-    scene)."""
+    scene); only after a request or a present 'goes' / 'is for' (not 'went', 'has gone', 'should
+    have gone', 'was handed')."""
     low = text.lower()
     if "to," not in low and "for," not in low:
         return text
     m = _UM_YES55R.search(text)
     if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    head = text[: m.start()]
+    if _ASKED_TO55R.search(head) is None or _DONE_TO55R.search(head) is not None:
         return text
     return f"{text[: m.start()]}{m['to']} {m['p']}{m['end'] or '.'}"
 
@@ -920,6 +936,30 @@ def _on_s_go55r(text: str, lexicon: Lexicon) -> str:
     return f"Put {m['x']} {m['prep'].lower()} {m['s']}{m['end'] or '.'}"
 
 
+# "The bottle went to, um, Person A.": said as done, the hesitation before the name
+_DONE_UM55R = re.compiled(
+    r"\b(?P<said>(?:went|gone|(?:was|were) (?:given|handed|passed|taken|brought|sent|delivered))"
+    r") to,\s*(?:(?:um|uh|er|erm|ah|yes|yeah|right),\s*)+",
+    _F,
+)
+
+
+def _done_um55r(text: str, lexicon: Lexicon) -> None:
+    """Session 55 (12r; 12c's probe): "The bottle went to, um, Person A." read bottle>A — the
+    refusal of what is said as done ("The bottle went to Person A.") did not see past the
+    hesitation: refused the same."""
+    low = text.lower()
+    if "went" not in low and "gone" not in low and "was " not in low and "were " not in low:
+        return
+    m = _DONE_UM55R.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says it as done, not as something to do: say the request without it, "
+        "e.g. 'give Bob the chips'"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _my_error55r,
@@ -956,7 +996,7 @@ _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
     _on_s_go55r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
-REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = (_done_um55r,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
 CHECK55R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
     _later_part55r,
