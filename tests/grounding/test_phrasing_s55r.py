@@ -942,3 +942,31 @@ def test_done_um_is_what_refuses(text: str, scene, monkeypatch) -> None:
     kept = tuple(r for r in offline._REFUSALS if r is not _rewrites55r._done_um55r)
     monkeypatch.setattr(offline, "_REFUSALS", kept)
     assert tree(text, scene) is not None
+
+
+# _had_choice55r (a refusal before the read): what someone had, said of a choice (main read each
+# as a choice handed over)
+HAD_CHOICE = [
+    ("Bob had either mug.", CELL),
+    ("Bob could have had any mug.", CELL),
+    ("Bob had either mug, grab whatever's nearest.", CELL),
+    ("Lena's had either plate, she's not fussy.", KITCHEN),
+    ("Sam had his pick of the pens.", OFFICE),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), HAD_CHOICE)
+def test_had_choice_refused(text: str, scene) -> None:
+    assert tree(text, scene) is None
+
+
+@pytest.mark.parametrize(("text", "scene"), HAD_CHOICE[:3])
+def test_had_choice_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    kept = tuple(r for r in offline._REFUSALS if r is not _rewrites55r._had_choice55r)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
+    assert tree(text, scene) is not None
+
+
+def test_had_choice_keeps_a_choice_asked() -> None:
+    got = tree("Bob can have either mug, he's had a long day.", CELL)
+    assert got is not None and show_tree(got) == "mug_red>B | mug_blue>B"

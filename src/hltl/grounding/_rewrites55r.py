@@ -960,6 +960,30 @@ def _done_um55r(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# "Bob had either mug.", "Bob could have had any mug.": what someone had, said of a choice
+_HAD_CHOICE55R = re.compiled(
+    r"\b(?P<said>(?:had|has had|'s had|have had|could have had|would have had|might have had|"
+    r"should have had|could've had|would've had|might've had|should've had) (?:either|any|"
+    r"whichever|one of|(?:his|her|their) pick))\b",
+    _F,
+)
+
+
+def _had_choice55r(text: str, lexicon: Lexicon) -> None:
+    """Session 55 (12r): "Bob had either mug." ("… could have had any mug", "… had his pick of
+    the cups") read mug_red>B | mug_blue>B on main: what someone had (or might have had) is no
+    request, the choice in it no choice left to the robot: refused."""
+    if "had" not in text.lower():
+        return
+    m = _HAD_CHOICE55R.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what someone had or might have had: it asks for nothing; say "
+        "'give …' to have something handed over"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _my_error55r,
@@ -996,7 +1020,7 @@ _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
     _on_s_go55r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
-REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = (_done_um55r,)
+REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = (_done_um55r, _had_choice55r)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
 CHECK55R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
     _later_part55r,
