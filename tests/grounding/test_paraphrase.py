@@ -584,7 +584,6 @@ KNOWN_UNCLEAR = frozenset(
         "and I cannot for the life of me recall which she said.",
         "Sam needs a pen and did tell me the colour, but it's gone clean out of my head.",
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
-        "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
         "lena or marco wanted the tongs not sure which",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
     }

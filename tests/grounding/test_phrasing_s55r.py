@@ -970,3 +970,40 @@ def test_had_choice_is_what_refuses(text: str, scene, monkeypatch) -> None:
 def test_had_choice_keeps_a_choice_asked() -> None:
     got = tree("Bob can have either mug, he's had a long day.", CELL)
     assert got is not None and show_tree(got) == "mug_red>B | mug_blue>B"
+
+
+# _something_else55r (a refusal before the read): "…, not the cup, something else, I've lost it"
+# names the other things it could be
+SOMETHING_ELSE = [
+    (
+        "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
+        F41,
+        ("bottle", "chips", "apple"),
+    ),
+    (
+        "Bob wants the apple, no, not the apple, something else, I've lost it.",
+        CELL,
+        ("cup", "chips", "mug_red"),
+    ),
+    (
+        "Give Sam the stapler, sorry, not the stapler, something else, I've forgotten what.",
+        OFFICE,
+        ("notebook", "pen_black"),
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), SOMETHING_ELSE)
+def test_something_else_names_readings(text: str, scene, readings: tuple[str, ...]) -> None:
+    with pytest.raises(GroundingError) as refused:
+        offline.parse_instruction(text, scene)
+    assert all(r in str(refused.value) for r in readings)
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), SOMETHING_ELSE)
+def test_something_else_is_what_names_them(text: str, scene, readings, monkeypatch) -> None:
+    kept = tuple(r for r in offline._REFUSALS if r is not _rewrites55r._something_else55r)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
+    with pytest.raises(GroundingError) as refused:
+        offline.parse_instruction(text, scene)
+    assert not all(r in str(refused.value) for r in readings)

@@ -984,6 +984,36 @@ def _had_choice55r(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# "Person A wants the cup, hang on, no, not the cup, something else, I've lost it."
+_SOMETHING_ELSE55R = re.compiled(
+    r"\bnot (?P<x>the [a-z]+(?: [a-z]+)?),\s*(?:it's |it was )?something else,\s*(?:i've lost it|"
+    r"i've forgotten(?: what)?|i forget what|i can't remember what|can't remember what|it's gone|"
+    r"no idea what)\b",
+    _F,
+)
+
+
+def _something_else55r(text: str, lexicon: Lexicon) -> None:
+    """Session 55 (12r): "P wants the cup, hang on, no, not the cup, something else, I've lost
+    it" leaves what P wants to the speaker's lost word: refused, naming the other things it could
+    be (every object of the scene but the one put aside)."""
+    if "something else" not in text.lower():
+        return
+    m = _SOMETHING_ELSE55R.search(text)
+    if m is None:
+        return
+    out = _ids(m["x"], lexicon, "object")
+    if len(out) != 1:
+        return
+    rest = [o.id for o in lexicon.scene.objects if o.id not in out]
+    if not rest:
+        return
+    raise GroundingError(
+        f"{m.group(0)!r}: the speaker has lost what is wanted instead of {m['x']}: it could be "
+        f"{', '.join(rest)}; say which"
+    )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _my_error55r,
@@ -1020,7 +1050,11 @@ _STEPS55R: tuple[Callable[[str, Lexicon], str], ...] = (
     _on_s_go55r,
 )
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
-REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = (_done_um55r, _had_choice55r)
+REFUSE55R: tuple[Callable[[str, Lexicon], None], ...] = (
+    _done_um55r,
+    _had_choice55r,
+    _something_else55r,
+)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
 CHECK55R: tuple[Callable[[str, Node, Lexicon], None], ...] = (
     _later_part55r,
