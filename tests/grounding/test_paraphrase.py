@@ -169,8 +169,6 @@ KNOWN_MISSES = frozenset(
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
-        "One apiece for the pair of them, they've both been up ladders with the bunting: the "
-        "bottle for Person A, the chips to Person B.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "

@@ -716,8 +716,32 @@ test_apiece = APIECE.test(
         "book_red>B & book_green>C",
         CLASSROOM,
     ),
-    # near: nothing listed
+    (
+        "One apiece for the pair of them, they've both been up ladders with the bunting: the "
+        "bottle for Person A, the chips to Person B.",
+        "bottle>A & chips>B",
+        DUO,
+    ),
+    (
+        "One apiece for the pair of them, they've both been up ladders: the cup for Alice, the "
+        "apple to Bob.",
+        "cup>A & apple>B",
+        CELL,
+    ),
+    (
+        "One apiece for the pair of them, they've both been poorly: the jug for Mr Lee, the "
+        "magazine to Mrs Khan.",
+        "jug>B & magazine>C",
+        WARD,
+    ),
+    # near: nothing listed, a want in the remark
     ("A drink apiece, please.", None, CELL),
+    (
+        "One apiece for the pair of them, they're thirsty: the bottle for Person A, the chips to "
+        "Person B.",
+        None,
+        DUO,
+    ),
 )
 
 

@@ -8,6 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._normalise3 import _whole_name
+from hltl.grounding._rewrites42s import _remark_only42s
 from hltl.grounding._rewrites44 import _GERUNDS44, _VERBS44
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites53r import _held53r
@@ -715,18 +716,28 @@ def _every_alike55r(text: str, lexicon: Lexicon) -> str:
 
 
 # "A drink apiece, please: the cup's for Person A and …": each gets one, the list after the colon
-_APIECE55R = re.compiled(r"^(?P<h>an? [a-z]+) (?:apiece|each)(?:,? please)?\s*:", _F)
+_APIECE55R = re.compiled(
+    r"^(?P<h>an? [a-z]+|one) (?:apiece|each)(?: for (?:the pair of them|the two of them|both of "
+    r"them|them both|each of them))?(?P<remark>,\s*[^:,]+?)?(?:,? please)?\s*:",
+    _F,
+)
 
 
 def _apiece55r(text: str, lexicon: Lexicon) -> str:
-    """Session 55 (12r): "A drink apiece, please: <list>" is "A drink each: <list>" (read by the
-    older rules: the header says each gets one)."""
+    """Session 55 (12r): "A drink apiece, please: <list>" ("One apiece for the pair of them,
+    they've both been up ladders: <list>") is "A drink each: <list>" (read by the older rules:
+    the header says each gets one); a remark before the colon must name nothing of the scene
+    ('they've both' is the pair said again)."""
     low = text.lower()
     if "apiece" not in low and "each" not in low:
         return text
     m = _APIECE55R.match(text.strip())
     if m is None:
         return text
+    if m["remark"] is not None:
+        said = re.sub(r"\b(they(?:'ve| have|'re| are)) both\b", r"\1", m["remark"], flags=_F)
+        if not _remark_only42s(said.strip(" ,"), lexicon):
+            return text
     return f"{m['h']} each:{text.strip()[m.end() :]}"
 
 
