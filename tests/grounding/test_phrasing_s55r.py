@@ -594,6 +594,9 @@ test_any_fine = ANY_FINE.test(
     # near: said as past, a count the scene does not have
     ("Any of the four was fine for Person A.", None, F41),
     ("Any of the three is fine for Person A.", None, F41),
+    # near (12c's probe): a remark about before
+    ("Any of the four is fine for Person A, she had one earlier.", None, F41),
+    ("Any of the four is fine for Person A, she said yesterday.", None, F41),
 )
 
 

@@ -597,6 +597,13 @@ _ANY_FINE55R = re.compiled(
 )
 
 
+# a remark about before, after a choice ("…, she had one earlier"): doubt about the choice
+_PAST55R = re.compiled(
+    r"\b(?:had|has had|'s had|said|told|was|were|yesterday|earlier|before|ago|last|used to)\b",
+    _F,
+)
+
+
 def _any_fine55r(text: str, lexicon: Lexicon) -> str:
     """Session 55 (12r): "Any of the four is fine for P(, …)" is "P can have any of the four
     things(, …)" (session 50's "Any of the four will do for P"; the grammar checks the count),
@@ -611,6 +618,8 @@ def _any_fine55r(text: str, lexicon: Lexicon) -> str:
     m = _ANY_FINE55R.match(text.strip())
     if m is None or _person46r(m["p"], lexicon) is None:
         return text
+    if _PAST55R.search(m["rest"]) is not None:
+        return text  # "…, she had one earlier", "…, she said yesterday" (12c's probe)
     return f"{m['p']} can have any of the {m['n']} things{m['rest'] or '.'}"
 
 
