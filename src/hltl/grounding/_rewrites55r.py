@@ -727,7 +727,7 @@ def _every_alike55r(text: str, lexicon: Lexicon) -> str:
 # "A drink apiece, please: the cup's for Person A and …": each gets one, the list after the colon
 _APIECE55R = re.compiled(
     r"^(?P<h>an? [a-z]+|one) (?:apiece|each)(?: for (?:the pair of them|the two of them|both of "
-    r"them|them both|each of them))?(?P<remark>,\s*[^:,]+?)?(?:,? please)?\s*:",
+    r"them|them both|each of them))?(?P<remark>,\s*[^:,]+?)?(?P<please>,? please)?\s*:",
     _F,
 )
 
@@ -741,8 +741,8 @@ def _apiece55r(text: str, lexicon: Lexicon) -> str:
     if "apiece" not in low and "each" not in low:
         return text
     m = _APIECE55R.match(text.strip())
-    if m is None:
-        return text
+    if m is None or (m["remark"] is None and m["please"] is None):
+        return text  # "One apiece (for the pair of them): <list>" is session 46's
     if m["remark"] is not None:
         said = re.sub(r"\b(they(?:'ve| have|'re| are)) both\b", r"\1", m["remark"], flags=_F)
         if not _remark_only42s(said.strip(" ,"), lexicon):
