@@ -805,14 +805,14 @@ def _those_n55r(text: str, lexicon: Lexicon) -> str:
 _SPOKEN_FOR55R = re.compiled(
     rf"\b(?P<be>is|are) (?:spoken for|called for|bagged|reserved) by (?P<p>{_P46R})"
     r"(?P<so>,\s*so (?:hand|pass|give|take) (?:it|them|the pair of them|both of them|the lot) "
-    r"over)?(?P<end>\s*[.!]?)$",
+    r"over)(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
 def _spoken_for55r(text: str, lexicon: Lexicon) -> str:
     """Session 55 (12r): "X are spoken for (bagged, reserved) by P, so hand them over" is "X are
-    for P" (without the tail the older rules read it; 'claimed by' is session 43's): one person
+    for P": only with that tail (without it session 43's `_claimed_by43s` reads it): one person
     of the scene; not where the words before say what someone has or had."""
     low = text.lower()
     if (
