@@ -132,7 +132,9 @@ def _list_split55r(text: str, node: Node, lexicon: Lexicon) -> None:
                     j += 1
                 if j < len(items) and items[j].kind == "ent" and len(items[j].refs) == 1:
                     where = items[j].refs[0].id
-                    if run & given and any((o, where) in placed for o in run):
+                    handed = run & given
+                    put = {o for o in run if (o, where) in placed}
+                    if len(run) > 1 and handed and put and handed != put:
                         raise GroundingError(
                             f"the place after {' and '.join(sorted(run))} could say where all of "
                             "them go or which are meant: say 'put … on …' or who gets what"
@@ -860,7 +862,8 @@ def _with_them55r(text: str, lexicon: Lexicon) -> str:
     m2 = _WITH_THEM55R.search(text)
     if m2 is None or m2.start() == 0 or not _whole_name(m2["s"], lexicon, "surface"):
         return text
-    return f"{text[: m2.start()]}{m2['prep']} {m2['s']}{text[m2.end() :]}"
+    out = f"{text[: m2.start()]}{m2['prep']} {m2['s']}{text[m2.end() :]}"
+    return out if _reading(out, lexicon) is not None else text
 
 
 # "Mr Lee's shivering, wrap him in both blankets, …": what he is wrapped in, handed to him
