@@ -169,8 +169,6 @@ KNOWN_MISSES = frozenset(
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
-        "One apiece for the pair of them, they've both been up ladders with the bunting: the "
-        "bottle for Person A, the chips to Person B.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
@@ -511,31 +509,8 @@ KNOWN_MISSES = frozenset(
         "chips to Person A bottle to Person B no need to rush either way",
         "The red pen, give it to Priya. The notepad, give it to Sam. Stapler, leave it.",
         "Mr Lee needs the thermometer. Mrs Khan wants her magazine. Both now please.",
-        "Bob can have whichever mug is closer to hand.",
-        "Crisps and bottle, up on the shelf with the pair of them, before the dog gets in.",
-        "A drink apiece, please: the cup's for Person A and the bottle's for Person B.",
-        "Any of the four is fine for Person A, grab what's nearest.",
-        "Person B's doing a double shift, so he gets both, the cup as well as the apple.",
-        "Person A or Person B, I'm easy, one of the two gets the bottle, your pick.",
-        "Person A's the only soul about and that's the only bottle, so she's having it.",
-        "Marco wants every plate on the worktop, white and blue alike, for plating up.",
-        "The red mug and its blue twin, on the counter to dry please.",
-        "Chips, cup, apple: those three to Person B; the bottle stays where it is.",
-        "Both items are spoken for by Person B, so hand the pair of them over.",
-        "Both of the cups want soaking, so into the sink with them.",
-        "Mr Lee's shivering, wrap him in both blankets, the blue and the grey.",
-        "Lena's carrying out two plates, the white and the blue, so let her have them both.",
-        "On the desk, please, go the red book and the green one, both for the reading corner.",
-        "Both spanners live in the locker, so in they go now.",
         "Person B can have the lot bar the cup, he never drinks from cups.",
         "Person B's off chips this week, so they go to Person A.",
-        "Give the bottle to Alice, argh, my brain, Bob I meant.",
-        "Send the chips Person B's way, no, Person A's, my error.",
-        "The bottle goes to, um, yes, Person A, no change there.",
-        "Take the bottle to Person B, silly me, there's no Person B, so Person A.",
-        "Tray for the spoon, no, I've changed my mind, the sink.",
-        "The grey blanket for Mrs Khan, not grey, I mean blue.",
-        "Belt for the medium box, oh hang on, it's the small box that goes on.",
         "shelf for the bottle pls somewhere the baby cant grab it",
         "apple goes to person a n the cup to person b, dont mix em up",
         "person b is gagging for the bottle pass it him",
@@ -547,13 +522,6 @@ KNOWN_MISSES = frozenset(
         "Since she's peckish, the chipl should go over to Person A.",
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
-        "Got a spare minute to get the bottle across to Person B?",
-        "Wouldn't mind handing Person A her bottle, would you?",
-        "Could Person A get her bottle, please, when you're passing?",
-        "Do you think you could fit in giving Person B the chips and Person A the bottle?",
-        "Any chance you'd give Sam the black pen, and the notepad as well?",
-        "Might the lemon go out to Mr Novak, for his fish?",
-        "Can the green book come down off the shelf to Mrs Ortiz?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -605,10 +573,8 @@ KNOWN_UNCLEAR = frozenset(
         "and I cannot for the life of me recall which she said.",
         "Sam needs a pen and did tell me the colour, but it's gone clean out of my head.",
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
-        "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
         "lena or marco wanted the tongs not sure which",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
-        "Was it the wipes or the sippy cup Grandad wanted? It's gone right out of my head.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
