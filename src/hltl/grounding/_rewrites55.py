@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
+from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
 
@@ -85,8 +86,248 @@ def _placed_wanted55(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
+# -- politeness and fillers ------------------------------------------------------------------------
+
+# -- a time filler set off by commas between the courtesy and its verb ("Would you mind, when
+# you've a sec, running the crisps over to Alice?", "Could you, when you get a minute, …"): taken
+# off, so session 54's 'mind running … over to' and the grammar read what is left
+_SEC55 = re.compile(
+    r"\b(?P<a>mind|you),\s*(?:when|whenever|once|if) you(?:'ve| have| get| got|'ve got| have "
+    r"got) (?:a |the )?(?:spare )?(?:sec|second|minute|min|mo|moment|tick|jiffy|chance)\s*,\s*",
+    _F,
+)
+_SEC_WORDS55 = (
+    "you've a",
+    "you have a",
+    "you get a",
+    "you got a",
+    "you've got a",
+    "you have got a",
+)
+
+
+def _sec55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: ', when you've a sec,' between 'would you mind' / 'could you' and the verb
+    taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _SEC_WORDS55):
+        return text
+    m = _SEC55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.end("a"), m.end(), " ", lexicon)
+
+
+# -- 'pretty please with <anything> on (top)' ("Pretty please with sprinkles on, hand Person B the
+# cup"): said 'pretty please' (the courtesy frames know only sugar, a cherry, cherries, bells)
+_PRETTY55 = re.compile(
+    r"\bpretty please(?P<w>,? with (?:a |some |extra |the )?(?:[a-z]+ ){0,2}[a-z]+ on"
+    r"(?: top| it)?)\b",
+    _F,
+)
+
+
+def _pretty55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'pretty please with sprinkles on' said 'pretty please' (above)."""
+    if "pretty please" not in text.lower():
+        return text
+    m = _PRETTY55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- a small favour asked for at the start ("Teeny favour, Dana would like the green cup", "Quick
+# favour: …", "Morning! Tiny favour to ask, …"): taken off ('Teeny favour:' was read, the comma
+# made the words a name)
+_FAVOUR55 = re.compile(
+    r"(?:^|(?<=[.!?])\s+)(?P<w>(?:a |one )?(?:teeny|tiny|quick|small|little|wee|cheeky|itty[- "
+    r"]bitty|teensy|minor|big|huge|massive)(?: (?:little|tiny|teeny|wee|weeny))? favou?r(?: to "
+    r"ask)?(?: (?:for|of) you)?(?: please)?\s*(?:[,:;]|\s[-\u2013\u2014])\s*)",
+    _F,
+)
+
+
+def _favour55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: a leading 'Teeny favour,' taken off (above)."""
+    low = text.lower()
+    if "favour" not in low and "favor" not in low:
+        return text
+    m = _FAVOUR55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- a kind word in a closing 'if': "…, if you'd be an absolute gem", "…, if you would be a star"
+# (the courtesy frames take off ', if you'd be so kind'; 'be a gem' made the 'if' a condition)
+_GEM55 = re.compile(
+    r",?\s*\bif you(?:'d| would| could| will)? be (?:a|an|my|such a|such an) (?:(?:absolute|real|"
+    r"total|proper|utter|little|lovely|complete|right) )?(?:gem|star|angel|love|dear|darling|"
+    r"treasure|sweetheart|doll|diamond|legend|hero|saint|lifesaver|life saver|pet|lamb|duck|"
+    r"sweetie|superstar|babe|peach|godsend)\b(?=\s*(?:[.!,]|$))",
+    _F,
+)
+_GEM_WORDS55 = ("if you'd be", "if you would be", "if you could be", "if you will be", "if you be")
+
+
+def _gem55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: a closing ', if you'd be a gem' taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _GEM_WORDS55):
+        return text
+    m = _GEM55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
+# -- an apology for interrupting at the start ("Hate to interrupt, only, would you kindly bring …",
+# "Sorry to butt in, only, could you …", "I hate to bother you, only …"): taken off ('Sorry to
+# interrupt, would you …' was read; 'hate to interrupt' and 'only' as 'but' were not)
+_INTERRUPT55 = re.compile(
+    r"^(?P<w>(?:(?:so |really |very )?sorry|(?:i )?hate|(?:i )?don't (?:mean|want)|apologies|"
+    r"i'm sorry) to (?:interrupt|butt in|barge in|cut in|bother you|trouble you|disturb you|"
+    r"pester you|intrude)(?: again)?(?:,? (?:only|but|just))?\s*,\s*)",
+    _F,
+)
+_INTERRUPT_WORDS55 = (
+    *("interrupt", "butt in", "barge in", "cut in", "bother you", "trouble you", "disturb you"),
+    *("pester you", "intrude"),
+)
+
+
+def _interrupt55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: a leading 'Hate to interrupt, only,' taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _INTERRUPT_WORDS55):
+        return text
+    m = _INTERRUPT55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- 'bless you for waiting' ("Sorry, bless you for waiting, Lena wants …"): thanks for waiting
+# (a thanks for patience, which asks nothing; the courtesy frames take 'thanks for waiting' off)
+_BLESS55 = re.compile(
+    r"\b(?P<w>bless (?:you|ya|ye|your heart|you all))(?= for (?:waiting|your patience|being "
+    r"(?:so )?patient|holding on|hanging on|bearing with me)\b)",
+    _F,
+)
+
+
+def _bless55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'bless you for waiting' said 'thanks for waiting' (above)."""
+    if "bless" not in text.lower():
+        return text
+    m = _BLESS55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "thanks", lexicon)
+
+
+# -- thanks in Irish ("Go raibh maith agat, Jess would love the torch", "go raibh míle maith
+# agaibh"): said 'thanks' (the unknown words were read as a name)
+_IRISH55 = re.compile(
+    r"\b(?P<w>go raibh (?:(?:m[i\u00ed]le )?maith) (?:agat|agaibh))\b",
+    _F,
+)
+
+
+def _irish55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: Irish thanks ('go raibh maith agat') said 'thanks' (above)."""
+    if "raibh" not in text.lower():
+        return text
+    m = _IRISH55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "thanks", lexicon)
+
+
+# -- Spanish 'please' said short ("Porfa, could the chips find their way to Person A?", "porfis",
+# "porfavor"): said 'por favor', as the courtesy list has it
+_PORFA55 = re.compile(r"\b(?P<w>porfa|porfis|porfi|porfavor|xfa|x favor)\b", _F)
+
+
+def _porfa55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'porfa' said 'por favor' (above)."""
+    low = text.lower()
+    if "porf" not in low and "xf" not in low and "x favor" not in low:
+        return text
+    m = _PORFA55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "por favor", lexicon)
+
+
+# -- why a thing is placed where it is, then a closing courtesy ("Stow the crisps on the shelf, away
+# from little hands, ta very much", "…, out of reach of the kids, cheers"): session 43s's
+# _placed_aside43s takes the reason off when it closes the text (and not 'away from' bare words);
+# taken off before a comma too, when its words name nothing of the scene and every task left is a
+# placing
+_AWAY55 = re.compile(
+    r",\s*(?:well |safely |right )?(?:away from|out of (?:the )?reach of|out of (?:the )?sight of|"
+    r"clear of) (?P<x>[a-z][a-z' ]{0,40}?)(?=\s*,)",
+    _F,
+)
+_AWAY_WORDS55 = ("away from", "reach of", "sight of", "clear of")
+
+
+def _away55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: ', away from little hands,' after a placing taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _AWAY_WORDS55):
+        return text
+    m = _AWAY55.search(text)
+    if m is None or _ids(m["x"], lexicon):
+        return text
+    out = _cut52(text, m.start(), m.end(), "", lexicon)
+    if out == text:
+        return text
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# -- 'whenever you're passing' before a remark ("Jess would love the torch whenever you're passing,
+# she's under the van."): when the hearer passes, not a time the task waits for (read when it
+# closes the sentence), taken off before a comma too
+_PASSING55 = re.compile(
+    r"\s*,?\s*\b(?:whenever|when|next time|as|if) you(?:'re| are) (?:passing|going past|walking "
+    r"past|passing by|going by|over that way|that way|round that way)(?=\s*,)",
+    _F,
+)
+
+
+_PASSING_WORDS55 = ("passing", "going past", "walking past", "going by", "that way")
+
+
+def _passing55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'whenever you're passing' before a comma taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _PASSING_WORDS55):
+        return text
+    m = _PASSING55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
-_STEPS55_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS55_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _sec55,
+    _pretty55,
+    _favour55,
+    _gem55,
+    _interrupt55,
+    _bless55,
+    _irish55,
+    _porfa55,
+    _away55,
+    _passing55,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
