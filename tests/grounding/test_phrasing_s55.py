@@ -12,11 +12,16 @@ from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
+    DEPOT,
     KITCHEN,
+    LAB,
     NURSERY,
+    OFFICE,
     ROOT,
     WARD,
     WORKSHOP,
+    PhrasingCases,
+    assert_names_readings,
     assert_reads,
     assert_refused,
 )
@@ -80,3 +85,187 @@ def test_placed_wanted_read_without_the_check(monkeypatch: pytest.MonkeyPatch) -
 )
 def test_placed_wanted_near_read(text: str, want: str, scene: Scene) -> None:
     assert_reads(text, want, scene)
+
+
+# -- politeness and fillers (first steps) ---
+
+POLITE = PhrasingCases()
+
+# ', when you've a sec,' between the courtesy and its verb (_sec55)
+test_sec = POLITE.test(
+    (
+        "Er, would you mind, when you've a sec, running the crisps over to Alice? Ta duck.",
+        "chips>A",
+        TWO,
+    ),
+    ("Would you mind, when you get a minute, running the apple over to Bob?", "apple>B", CELL),
+    ("Would you mind, when you've a moment, running the salt over to Lena?", "salt>B", KITCHEN),
+    (
+        "Would you mind, once you've got a sec, running the magazine over to Mrs Khan?",
+        "magazine>C",
+        WARD,
+    ),
+)
+# 'pretty please with <anything> on (top)' (_pretty55)
+test_pretty = POLITE.test(
+    ("Pretty please with sprinkles on, hand Person B the cup, he's been so patient.", "cup>B", F42),
+    ("Pretty please with a cherry and sprinkles on top, give Bob the apple.", "apple>B", CELL),
+    ("Pretty please with knobs on, pass Lena the salt.", "salt>B", KITCHEN),
+    ("Pretty please with extra sugar on top, give Lily the teddy.", "teddy>A", NURSERY),
+)
+# a leading 'Teeny favour,' (_favour55)
+test_favour = POLITE.test(
+    (
+        "Morning! Teeny favour, Dana would like the green cup, if you'd be an absolute gem.",
+        "cup_green>A",
+        LAB,
+    ),
+    ("Quick favour, Bob would like the apple.", "apple>B", CELL),
+    ("Small favour to ask, Sam needs the stapler.", "stapler>B", OFFICE),
+    ("Big favour, could you take the tape to Tom?", "tape>B", DEPOT),
+)
+# a closing ', if you'd be a gem' (_gem55)
+test_gem = POLITE.test(
+    ("Dana would like the green cup, if you'd be an absolute gem.", "cup_green>A", LAB),
+    ("Give Bob the apple, if you'd be a star.", "apple>B", CELL),
+    ("The globe to Zoe, if you would be an angel.", "globe>C", CLASSROOM),
+    ("Pass Lena the salt, if you'd be a total lifesaver.", "salt>B", KITCHEN),
+)
+# a leading 'Hate to interrupt, only,' (_interrupt55)
+test_interrupt = POLITE.test(
+    (
+        "Hate to interrupt, only, would you kindly bring Person B the bottle, he's asked "
+        "ever so nicely.",
+        "bottle>B",
+        L24,
+    ),
+    ("Sorry to butt in, only, could you give Bob the apple?", "apple>B", CELL),
+    ("Hate to interrupt, would you take the magazine to Mrs Khan?", "magazine>C", WARD),
+    ("So sorry to interrupt, only, Sam needs the stapler.", "stapler>B", OFFICE),
+)
+# an opening 'bless you for waiting,' (_bless55)
+test_bless = POLITE.test(
+    ("Bless you for waiting, give Bob the apple.", "apple>B", CELL),
+    ("Bless you for your patience, the magazine is for Mrs Khan.", "magazine>C", WARD),
+    ("Oh bless you for being so patient, Jess would like the torch.", "torch>B", WORKSHOP),
+    ("Thanks for waiting, give Lena the knife.", "knife>B", KITCHEN),
+)
+# Irish thanks (_irish55)
+test_irish = POLITE.test(
+    (
+        "Go raibh maith agat, Jess would love the torch whenever you're passing, she's "
+        "under the van.",
+        "torch>B",
+        WORKSHOP,
+    ),
+    ("Go raibh maith agat, give Bob the apple.", "apple>B", CELL),
+    ("The salt to Lena, go raibh maith agat.", "salt>B", KITCHEN),
+    ("Go raibh míle maith agat, Zoe needs the scissors.", "scissors>C", CLASSROOM),
+)
+# 'porfa' (_porfa55)
+test_porfa = POLITE.test(
+    (
+        "Porfa, could the chips find their way to Person A? She's off to ultimate "
+        "frisbee after this.",
+        "chips>A",
+        DUO,
+    ),
+    ("Porfa, could the apple find its way to Bob?", "apple>B", CELL),
+    ("Porfis, could the salt find its way to Lena?", "salt>B", KITCHEN),
+    ("Porfavor, could the sponge find its way to Omar?", "sponge>B", LAB),
+)
+# why a thing is placed where it is, before a closing courtesy (_away55)
+test_away = POLITE.test(
+    (
+        "Be an angel and stow the crisps on the shelf, away from little hands, ta very much.",
+        "chips@shelf",
+        FIG1,
+    ),
+    ("Put the apple on the shelf, away from little fingers, thanks.", "apple@shelf", CELL),
+    ("Wipes on the high chair, out of reach of tiny hands, cheers.", "wipes@highchair", NURSERY),
+    (
+        "Pop the scissors on the shelf, out of sight of small children, ta.",
+        "scissors@shelf",
+        CLASSROOM,
+    ),
+    ("Knife on the rack, clear of little hands, thank you.", "knife@rack", KITCHEN),
+)
+# 'whenever you're passing' before a remark (_passing55)
+test_passing = POLITE.test(
+    (
+        "Jess would love the torch whenever you're passing, she's under the van.",
+        "torch>B",
+        WORKSHOP,
+    ),
+    ("Bob would like the apple when you're passing, he's starving.", "apple>B", CELL),
+    ("The magazine to Mrs Khan whenever you're going past, she's bored.", "magazine>C", WARD),
+)
+# near sentences that stay refused
+test_polite_near = POLITE.test(
+    ("Put the bottle on the shelf, away from Bob, cheers.", None, FIG1),
+    ("Put the bottle on the shelf, away from the chips, thanks.", None, FIG1),
+    ("Put the bottle on the shelf, away from little hands, and give Bob the crisps.", None, FIG1),
+    ("Give Lena the salt next time you're passing, she's plating up.", None, KITCHEN),
+    ("If you'd be a star, give Bob the apple tomorrow.", None, CELL),
+)
+
+
+def test_polite_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    POLITE.refused_without(
+        (
+            _rewrites55._sec55,
+            _rewrites55._pretty55,
+            _rewrites55._favour55,
+            _rewrites55._gem55,
+            _rewrites55._interrupt55,
+            _rewrites55._bless55,
+            _rewrites55._irish55,
+            _rewrites55._porfa55,
+            _rewrites55._away55,
+            _rewrites55._passing55,
+        ),
+        monkeypatch,
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Sorry, bless you for waiting, Lena wants either the knife or the lemon for table nine "
+        "and I cannot for the life of me recall which she said.",
+    ],
+)
+def test_bless_unclear_names_both(text: str) -> None:
+    assert_names_readings(text, KITCHEN, ("knife", "lemon"))
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        (
+            "Please, whenever suits, Sam could use the stapler, he's assembling the set dresser's "
+            "call sheets. Cheers ever so.",
+            "stapler>B",
+            OFFICE,
+        ),
+        ("Give Sam the stapler, he's writing up his call list.", "stapler>B", OFFICE),
+        ("Sam needs the stapler, he's doing the director's call sheets.", "stapler>B", OFFICE),
+        (
+            "Mrs Khan would like the magazine, she's reading the porter's call list.",
+            "magazine>C",
+            WARD,
+        ),
+        ("Tom needs the scanner, he's checking the dispatcher's call log.", "scanner>B", DEPOT),
+    ],
+)
+def test_call_names_a_thing(text: str, want: str, scene: Scene) -> None:
+    """offline._DEFERRED33L: 'X's call' before sheets / list / log … names a thing (each was
+    refused on main as a deferral)."""
+    assert_reads(text, want, scene)
+
+
+@pytest.mark.parametrize(
+    "text", ["What comes next is Priya's call.", "Give Sam the stapler, then it's Priya's call."]
+)
+def test_call_still_defers(text: str) -> None:
+    assert_refused(text, OFFICE)

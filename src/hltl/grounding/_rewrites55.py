@@ -121,7 +121,8 @@ def _sec55(text: str, lexicon: Lexicon) -> str:
 # -- 'pretty please with <anything> on (top)' ("Pretty please with sprinkles on, hand Person B the
 # cup"): said 'pretty please' (the courtesy frames know only sugar, a cherry, cherries, bells)
 _PRETTY55 = re.compile(
-    r"\bpretty please(?P<w>,? with (?:a |some |extra |the )?(?:[a-z]+ ){0,2}[a-z]+ on"
+    r"\bpretty please(?P<w>,? with (?!(?:sugar|a cherry|cherries|bells) on\b)(?:a |some |extra |"
+    r"the )?(?:[a-z]+ ){0,2}[a-z]+ on"
     r"(?: top| it)?)\b",
     _F,
 )
@@ -162,10 +163,10 @@ def _favour55(text: str, lexicon: Lexicon) -> str:
 # -- a kind word in a closing 'if': "…, if you'd be an absolute gem", "…, if you would be a star"
 # (the courtesy frames take off ', if you'd be so kind'; 'be a gem' made the 'if' a condition)
 _GEM55 = re.compile(
-    r",?\s*\bif you(?:'d| would| could| will)? be (?:a|an|my|such a|such an) (?:(?:absolute|real|"
+    r",\s*\bif you(?:'d| would| could| will)? be (?:a|an|my|such a|such an) (?:(?:absolute|real|"
     r"total|proper|utter|little|lovely|complete|right) )?(?:gem|star|angel|love|dear|darling|"
     r"treasure|sweetheart|doll|diamond|legend|hero|saint|lifesaver|life saver|pet|lamb|duck|"
-    r"sweetie|superstar|babe|peach|godsend)\b(?=\s*(?:[.!,]|$))",
+    r"sweetie|superstar|babe|peach|godsend)\b(?=\s*[.!]*\s*$)",
     _F,
 )
 _GEM_WORDS55 = ("if you'd be", "if you would be", "if you could be", "if you will be", "if you be")
@@ -185,10 +186,13 @@ def _gem55(text: str, lexicon: Lexicon) -> str:
 # -- an apology for interrupting at the start ("Hate to interrupt, only, would you kindly bring …",
 # "Sorry to butt in, only, could you …", "I hate to bother you, only …"): taken off ('Sorry to
 # interrupt, would you …' was read; 'hate to interrupt' and 'only' as 'but' were not)
+_BOTHER55 = (
+    r"(?:interrupt|butt in|barge in|cut in|bother you|trouble you|disturb you|pester you|intrude)"
+    r"(?: again)?"
+)
 _INTERRUPT55 = re.compile(
-    r"^(?P<w>(?:(?:so |really |very )?sorry|(?:i )?hate|(?:i )?don't (?:mean|want)|apologies|"
-    r"i'm sorry) to (?:interrupt|butt in|barge in|cut in|bother you|trouble you|disturb you|"
-    r"pester you|intrude)(?: again)?(?:,? (?:only|but|just))?\s*,\s*)",
+    rf"^(?P<w>(?:(?:i )?hate to {_BOTHER55}(?:,? (?:only|but|just))?|(?:(?:so |really |very )?"
+    rf"sorry|apologies|i'm sorry) to {_BOTHER55},? only)\s*,\s*)",
     _F,
 )
 _INTERRUPT_WORDS55 = (
@@ -208,23 +212,27 @@ def _interrupt55(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
 
 
-# -- 'bless you for waiting' ("Sorry, bless you for waiting, Lena wants …"): thanks for waiting
-# (a thanks for patience, which asks nothing; the courtesy frames take 'thanks for waiting' off)
+# -- a thanks for waiting opening the text ("Sorry, bless you for waiting, Lena wants …", "Thanks
+# for your patience, give Bob the apple", "Oh bless you for being so patient, …"): asks nothing,
+# taken off (read as a verb 'bless' or a person 'waiting')
 _BLESS55 = re.compile(
-    r"\b(?P<w>bless (?:you|ya|ye|your heart|you all))(?= for (?:waiting|your patience|being "
-    r"(?:so )?patient|holding on|hanging on|bearing with me)\b)",
+    r"(?:^|(?<=[,.!?])\s*)(?P<w>(?:(?:oh|aw|aww|ah),? )?(?:bless (?:you|ya|ye|your heart)|thanks|"
+    r"thank you|cheers|ta)(?: (?:so|ever so|very) much)? for (?:waiting|your patience|being (?:so "
+    r"|very )?patient|holding on|hanging on|bearing with (?:me|us))\s*[,.!]\s*)(?=\S)",
     _F,
 )
+_BLESS_WORDS55 = ("waiting", "patien", "holding on", "hanging on", "bearing with")
 
 
 def _bless55(text: str, lexicon: Lexicon) -> str:
-    """Session 55: 'bless you for waiting' said 'thanks for waiting' (above)."""
-    if "bless" not in text.lower():
+    """Session 55: an opening 'bless you for waiting,' taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _BLESS_WORDS55):
         return text
     m = _BLESS55.search(text)
     if m is None:
         return text
-    return _cut52(text, m.start("w"), m.end("w"), "thanks", lexicon)
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
 
 
 # -- thanks in Irish ("Go raibh maith agat, Jess would love the torch", "go raibh míle maith
@@ -295,7 +303,7 @@ def _away55(text: str, lexicon: Lexicon) -> str:
 # she's under the van."): when the hearer passes, not a time the task waits for (read when it
 # closes the sentence), taken off before a comma too
 _PASSING55 = re.compile(
-    r"\s*,?\s*\b(?:whenever|when|next time|as|if) you(?:'re| are) (?:passing|going past|walking "
+    r"\s*,?\s*\b(?:whenever|when|as|if) you(?:'re| are) (?:passing|going past|walking "
     r"past|passing by|going by|over that way|that way|round that way)(?=\s*,)",
     _F,
 )
