@@ -473,18 +473,6 @@ KNOWN_MISSES = frozenset(
         "Priya's stuck stapling by hand, take her the stzpler.",
         "Mia needs the Scahner for stock-take, over to her please.",
         # blind53 (tuned on in session 55): refusals left at its one measurement (docs/grounding.md)
-        "Er, would you mind, when you've a sec, running the crisps over to Alice? Ta duck.",
-        "Be an angel and stow the crisps on the shelf, away from little hands, ta very much.",
-        "Pretty please with sprinkles on, hand Person B the cup, he's been so patient.",
-        "Porfa, could the chips find their way to Person A? She's off to ultimate frisbee after "
-        "this.",
-        "Hate to interrupt, only, would you kindly bring Person B the bottle, he's asked ever so "
-        "nicely.",
-        "Morning! Teeny favour, Dana would like the green cup, if you'd be an absolute gem.",
-        "Please, whenever suits, Sam could use the stapler, he's assembling the set dresser's "
-        "call sheets. Cheers ever so.",
-        "Go raibh maith agat, Jess would love the torch whenever you're passing, she's under the "
-        "van.",
         "Carol needs the apple and Bob's after a mug, the blue one specifically.",
         "What Person A is after is the bottle, and then the apple straight after that.",
         "Person B has his heart set on the apple, bless him.",
@@ -610,8 +598,6 @@ KNOWN_UNCLEAR = frozenset(
         "Kofi wants a spanner. Which one, he did say. Lost it, sorry.",
         "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
         # blind53 (tuned on in session 55)
-        "Sorry, bless you for waiting, Lena wants either the knife or the lemon for table nine "
-        "and I cannot for the life of me recall which she said.",
         "Sam needs a pen and did tell me the colour, but it's gone clean out of my head.",
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
         "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
