@@ -265,7 +265,13 @@ def test_call_names_a_thing(text: str, want: str, scene: Scene) -> None:
 
 
 @pytest.mark.parametrize(
-    "text", ["What comes next is Priya's call.", "Give Sam the stapler, then it's Priya's call."]
+    ("text", "scene"),
+    [
+        ("What comes next is Priya's call.", OFFICE),
+        ("Give Sam the stapler, then it's Priya's call.", OFFICE),
+        ("Give Carol one of the mugs, it's her call time-wise.", CELL),
+        ("Give Carol one of the mugs, it's her call time.", CELL),
+    ],
 )
-def test_call_still_defers(text: str) -> None:
-    assert_refused(text, OFFICE)
+def test_call_still_defers(text: str, scene: Scene) -> None:
+    assert_refused(text, scene)
