@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _only_person, _reading
+from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person, _reading
+from hltl.grounding._rewrites42r import _WHO42R
 from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
@@ -83,6 +84,62 @@ def _placed_wanted55(text: str, node: Node, lexicon: Lexicon) -> None:
             f"{m['v']!r} after putting the {t.obj} on the {placed[t.obj]}: is that why it goes "
             f"there ({put}), or is {name} to be handed it too ({put} & {t.obj}>{t.target})? say "
             "which"
+        )
+
+
+# -- a want of another person's thing said with 'asking for' / 'crying for' / 'after' …
+# ("Lily's been crying for Ava's teddy.", "Bob's asking for Alice's apple.", "Jess has been asking
+# for Kofi's drill."; 12c's fuzz): read as a handover to the owner (the grammar takes the last
+# person before the object), while "Bob wants Alice's apple." is refused by session 43's
+# owned_other43l (whose it is does not say who gets it). Refused the same, naming both people
+_WANT_FOR55 = (
+    r"(?:(?:'s|\u2019s|\s+is|\s+has|\s+was|\s+keeps|\s+kept)(?:\s+been)?|\s+(?:would|'d|could))?\s+"
+    r"(?:(?:asking|crying|begging|calling|screaming|pleading|whining|nagging|angling|dying|"
+    r"desperate|gagging|itching|longing|pining|hankering|yearning|hoping|hungry|thirsty)"
+    r"\s+for|after|love|use|do with|fancies|craves|requests|requires|asked for|begged for|"
+    r"cried for|called for)"
+)
+_OWNED_WANT55 = re.compile(
+    rf"\b(?P<p>{_WHO42R}){_WANT_FOR55}\s+(?P<q>{_WHO42R})(?:'s|\u2019s)\s+(?P<x>[a-z]+(?:\s+"
+    r"(?!(?:and|or|nor|but|to|for|with|from|please|then|too|as|if)\b)[a-z]+){0,2})",
+    _F,
+)
+_WANT_FOR_WORDS55 = (
+    *("asking", "crying", "begging", "calling", "screaming", "pleading", "whining", "nagging"),
+    *("angling", "dying", "desperate", "gagging", "itching", "longing", "pining", "hankering"),
+    *("yearning", "hoping", "hungry", "thirsty", "after", "love", "use", "do with", "fancies"),
+    *("craves", "requests", "requires", "asked for", "begged for", "cried for", "called for"),
+)
+
+
+def _owned_want55(text: str, lexicon: Lexicon) -> None:
+    """Session 55: "P's asking for Q's X" refused naming P and Q, as session 43's owned_other43l
+    refuses "P wants Q's X" (above)."""
+    low = text.lower()
+    if ("'s" not in low and "\u2019s" not in low) or not any(w in low for w in _WANT_FOR_WORDS55):
+        return
+    for m in _OWNED_WANT55.finditer(text):
+        who, owner = m["p"], m["q"]
+        if not _only_person(who, lexicon) or not _only_person(owner, lexicon):
+            continue
+        p, q = sorted(_ids(who, lexicon)), sorted(_ids(owner, lexicon))
+        if p == q:
+            continue
+        words = m["x"].split()
+        thing = next(
+            (
+                " ".join(words[:n])
+                for n in range(len(words), 0, -1)
+                if _objects_only(" ".join(words[:n]), lexicon)
+            ),
+            None,
+        )
+        if thing is None:
+            continue
+        raise GroundingError(
+            f'"{owner}\'s {thing}" beside {who!r}: whose it is does not say who gets it; it '
+            f"could go to {person_name(p[0], lexicon)} or to {person_name(q[0], lexicon)}: say "
+            "who gets it"
         )
 
 
@@ -339,6 +396,6 @@ _STEPS55_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
-REFUSE55: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE55: tuple[Callable[[str, Lexicon], None], ...] = (_owned_want55,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
 CHECK55: tuple[Callable[[str, Node, Lexicon], None], ...] = (_placed_wanted55,)
