@@ -473,12 +473,7 @@ KNOWN_MISSES = frozenset(
         "Priya's stuck stapling by hand, take her the stzpler.",
         "Mia needs the Scahner for stock-take, over to her please.",
         # blind53 (tuned on in session 55): refusals left at its one measurement (docs/grounding.md)
-        "Carol needs the apple and Bob's after a mug, the blue one specifically.",
-        "What Person A is after is the bottle, and then the apple straight after that.",
-        "Person B has his heart set on the apple, bless him.",
-        "Person A wants her bottle and nothing else at the moment.",
         "Omar requires the sponge for scrubbing out the sink, and Emma would quite like a banana.",
-        "Mr Lee's asking for his tablets and a drink from the water jug.",
         "Kofi's needing the drill to put up the brackets; Jess would like the small spanner.",
         "The crisps? Bob's been on at me about them all day, so let him have them.",
         "Person A is thirsty, so bring her the bottle, and give him the apple too, Person B that "
@@ -593,12 +588,9 @@ KNOWN_UNCLEAR = frozenset(
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
         # blind51 (tuned on in session 53)
         # blind52 (tuned on in session 54)
-        "Priya needs one of the pens for signing, the black or the red, she did tell me but I've "
-        "forgotten.",
         "Kofi wants a spanner. Which one, he did say. Lost it, sorry.",
         "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
         # blind53 (tuned on in session 55)
-        "Sam needs a pen and did tell me the colour, but it's gone clean out of my head.",
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
         "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
         "lena or marco wanted the tongs not sure which",

@@ -25,6 +25,7 @@ from tests.grounding.helpers import (
     PhrasingCases,
     assert_names_readings,
     assert_reads,
+    assert_refusals_are,
     assert_refused,
     tree,
 )
@@ -325,3 +326,116 @@ def test_call_names_a_thing(text: str, want: str, scene: Scene) -> None:
 )
 def test_call_still_defers(text: str, scene: Scene) -> None:
     assert_refused(text, scene)
+
+
+# -- wants and needs (first steps) ---
+
+WANTS = PhrasingCases()
+
+# 'specifically' / 'in particular' closing the name of the thing (_specific55)
+test_specific = WANTS.test(
+    (
+        "Carol needs the apple and Bob's after a mug, the blue one specifically.",
+        "apple>C & mug_blue>B",
+        CELL,
+    ),
+    ("Alice wants the red mug in particular.", "mug_red>A", CELL),
+    ("Lena would like a plate, the white one specifically.", "plate_white>B", KITCHEN),
+    ("Mr Lee needs a blanket, the grey one in particular, he's cold.", "blanket_grey>B", WARD),
+    ("Zoe wants a book, the green one specifically.", "book_green>C", CLASSROOM),
+)
+# 'then the Y straight after that' (_then_after55)
+test_then_after = WANTS.test(
+    (
+        "What Person A is after is the bottle, and then the apple straight after that.",
+        "bottle>A ; apple>A",
+        F41,
+    ),
+    (
+        "What Bob is after is the cup, and then the apple straight after that.",
+        "cup>B ; apple>B",
+        CELL,
+    ),
+    (
+        "What Lily's after is the teddy, and then the beaker straight after that.",
+        "teddy>A ; beaker>A",
+        NURSERY,
+    ),
+    ("Lena wants the salt, and then the lemon straight after that.", "salt>B ; lemon>B", KITCHEN),
+)
+# 'P has his heart set on X, bless him' (_heart55)
+test_heart = WANTS.test(
+    ("Person B has his heart set on the apple, bless him.", "apple>B", F42),
+    ("Lily has her heart set on the teddy, bless her.", "teddy>A", NURSERY),
+    ("Jess has her heart set on the torch, bless her.", "torch>B", WORKSHOP),
+    ("Zoe is dead set on having the globe, bless her.", "globe>C", CLASSROOM),
+)
+# 'at the moment' closing a present want (_moment55)
+test_moment = WANTS.test(
+    ("Person A wants her bottle and nothing else at the moment.", "bottle>A", ONE),
+    ("Bob needs the apple at the moment.", "apple>B", CELL),
+    ("Mrs Khan would like the magazine at present.", "magazine>C", WARD),
+    ("Tom could use the gloves right at the moment, it's freezing.", "gloves>B", DEPOT),
+)
+# a drink from a vessel of the scene (_drink_from55)
+test_drink = WANTS.test(
+    ("Mr Lee's asking for his tablets and a drink from the water jug.", "pills>B & jug>B", WARD),
+    ("Mrs Khan would like a drink from the jug.", "jug>C", WARD),
+    ("Bob would like a drink from the bottle.", "bottle>B", CELL),
+    ("Dana wants a drink from the cup, the white one.", "cup_white>A", LAB),
+)
+# near sentences that stay refused
+test_wants_near = WANTS.test(
+    ("Jess would like a drink from the flask.", None, WORKSHOP),
+    ("Omar needs a splash of water from the bowl.", None, LAB),
+    ("Bob wanted the apple at the moment.", None, CELL),
+    ("Bob has his heart set on the apple, give him the cup.", None, CELL),
+    ("It isn't the apple Bob has his heart set on, bless him.", None, CELL),
+)
+
+
+def test_wants_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    WANTS.refused_without(
+        (
+            _rewrites55._specific55,
+            _rewrites55._then_after55,
+            _rewrites55._heart55,
+            _rewrites55._moment55,
+            _rewrites55._drink_from55,
+        ),
+        monkeypatch,
+    )
+
+
+# an emphatic 'did tell me' in a forgetting remark (_did_tell55, a refusal naming the readings)
+DID_TELL = [
+    (
+        "Sam needs a pen and did tell me the colour, but it's gone clean out of my head.",
+        OFFICE,
+        ("pen_black", "pen_blue", "pen_red"),
+    ),
+    (
+        "Kofi needs a spanner and did tell me which, but I've forgotten.",
+        WORKSHOP,
+        ("spanner_large", "spanner_small"),
+    ),
+    (
+        "Lena wants a plate, she did mention which one, but it's slipped my mind.",
+        KITCHEN,
+        ("plate_blue", "plate_white"),
+    ),
+    (
+        "Zoe needs a book and did show me which, but I can't remember.",
+        CLASSROOM,
+        ("book_green", "book_red"),
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), DID_TELL)
+def test_did_tell_names_readings(text: str, scene: Scene, readings: tuple[str, ...]) -> None:
+    assert_names_readings(text, scene, readings)
+
+
+def test_did_tell_is_what_names_them(monkeypatch: pytest.MonkeyPatch) -> None:
+    assert_refusals_are((_rewrites55._did_tell55,), DID_TELL, monkeypatch)

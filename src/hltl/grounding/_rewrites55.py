@@ -6,10 +6,18 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person, _reading
-from hltl.grounding._rewrites42r import _WHO42R
+from hltl.grounding._normalise1 import (
+    _COMMON,
+    _F,
+    _KEEP_WORDS,
+    _ids,
+    _objects_only,
+    _only_person,
+    _reading,
+)
+from hltl.grounding._rewrites42r import _WHO42R, which_lost42r
 from hltl.grounding._rewrites52 import _cut52
-from hltl.grounding.lexicon import Lexicon, person_name
+from hltl.grounding.lexicon import VERBS, Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
 
 # -- session 55 (engineer 12): the open wrong reading of session 54 (12c's fuzz), then blind53's
@@ -34,7 +42,10 @@ _WANTED55 = re.compile(
 # the words the pattern needs (its gate): each of its verbs ends in one of them
 _WANTED55_WORDS = tuple(
     f"{v} {p}"
-    for v in ("wants", "needs", "wanted", "needed", "like", "use", "with", "for", "after")
+    for v in (
+        *("wants", "needs", "wanted", "needed", "like", "use", "do with", "asked for"),
+        *("asking for", "waiting for", "begged for", "after"),
+    )
     for p in ("it", "them")
 )
 # a verb that asks for a handover in words (session 38's _HANDOVER_SAID38L): then it is said
@@ -93,11 +104,10 @@ def _placed_wanted55(text: str, node: Node, lexicon: Lexicon) -> None:
 # person before the object), while "Bob wants Alice's apple." is refused by session 43's
 # owned_other43l (whose it is does not say who gets it). Refused the same, naming both people
 _WANT_FOR55 = (
-    r"(?:(?:'s|\u2019s|\s+is|\s+has|\s+was|\s+keeps|\s+kept)(?:\s+been)?|\s+(?:would|'d|could))?\s+"
+    r"(?:(?:'s|\u2019s|\s+is|\s+has|\s+was|\s+keeps|\s+kept)(?:\s+been)?)?\s+"
     r"(?:(?:asking|crying|begging|calling|screaming|pleading|whining|nagging|angling|dying|"
-    r"desperate|gagging|itching|longing|pining|hankering|yearning|hoping|hungry|thirsty)"
-    r"\s+for|after|love|use|do with|fancies|craves|requests|requires|asked for|begged for|"
-    r"cried for|called for)"
+    r"desperate|gagging|itching|longing|pining|hankering|yearning|hoping|hungry|thirsty|asked|"
+    r"begged|cried|called) for|after)"
 )
 _OWNED_WANT55 = re.compile(
     rf"\b(?P<p>{_WHO42R}){_WANT_FOR55}\s+(?P<q>{_WHO42R})(?:'s|\u2019s)\s+(?P<x>[a-z]+(?:\s+"
@@ -105,10 +115,12 @@ _OWNED_WANT55 = re.compile(
     _F,
 )
 _WANT_FOR_WORDS55 = (
-    *("asking", "crying", "begging", "calling", "screaming", "pleading", "whining", "nagging"),
-    *("angling", "dying", "desperate", "gagging", "itching", "longing", "pining", "hankering"),
-    *("yearning", "hoping", "hungry", "thirsty", "after", "love", "use", "do with", "fancies"),
-    *("craves", "requests", "requires", "asked for", "begged for", "cried for", "called for"),
+    *(f"{w} for" for w in ("asking", "crying", "begging", "calling", "screaming", "pleading")),
+    *(f"{w} for" for w in ("whining", "nagging", "angling", "dying", "desperate", "gagging")),
+    *(f"{w} for" for w in ("itching", "longing", "pining", "hankering", "yearning", "hoping")),
+    *(f"{w} for" for w in ("hungry", "thirsty", "asked", "begged", "cried", "called")),
+    *("'s after", "\u2019s after", "is after", "has after", "was after", "been after"),
+    *("keeps after", "kept after"),
 )
 
 
@@ -150,17 +162,10 @@ def _owned_want55(text: str, lexicon: Lexicon) -> None:
 # off, so session 54's 'mind running … over to' and the grammar read what is left
 _SEC55 = re.compile(
     r"\b(?P<a>mind|you),\s*(?:when|whenever|once|if) you(?:'ve| have| get| got|'ve got| have "
-    r"got) (?:a |the )?(?:spare )?(?:sec|second|minute|min|mo|moment|tick|jiffy|chance)\s*,\s*",
+    r"got) a (?:spare )?(?:sec|second|minute|min|mo|moment|tick|jiffy|chance)\s*,\s*",
     _F,
 )
-_SEC_WORDS55 = (
-    "you've a",
-    "you have a",
-    "you get a",
-    "you got a",
-    "you've got a",
-    "you have got a",
-)
+_SEC_WORDS55 = ("a sec", "a minute", "a min", "a mo", "a tick", "a jiffy", "a chance", "a spare")
 
 
 def _sec55(text: str, lexicon: Lexicon) -> str:
@@ -249,13 +254,10 @@ _BOTHER55 = (
 )
 _INTERRUPT55 = re.compile(
     rf"^(?P<w>(?:(?:i )?hate to {_BOTHER55}(?:,? (?:only|but|just))?|(?:(?:so |really |very )?"
-    rf"sorry|apologies|i'm sorry) to {_BOTHER55},? only)\s*,\s*)",
+    rf"sorry|apologies|i'm sorry) to {_BOTHER55},\s*only)\s*,\s*)",
     _F,
 )
-_INTERRUPT_WORDS55 = (
-    *("interrupt", "butt in", "barge in", "cut in", "bother you", "trouble you", "disturb you"),
-    *("pester you", "intrude"),
-)
+_INTERRUPT_WORDS55 = ("hate to", ", only")
 
 
 def _interrupt55(text: str, lexicon: Lexicon) -> str:
@@ -278,7 +280,10 @@ _BLESS55 = re.compile(
     r"|very )?patient|holding on|hanging on|bearing with (?:me|us))\s*[,.!]\s*)(?=\S)",
     _F,
 )
-_BLESS_WORDS55 = ("waiting", "patien", "holding on", "hanging on", "bearing with")
+_BLESS_WORDS55 = (
+    *("for waiting", "for your patience", "for being patient", "for being so patient"),
+    *("for being very patient", "for holding on", "for hanging on", "for bearing with"),
+)
 
 
 def _bless55(text: str, lexicon: Lexicon) -> str:
@@ -312,13 +317,13 @@ def _irish55(text: str, lexicon: Lexicon) -> str:
 
 # -- Spanish 'please' said short ("Porfa, could the chips find their way to Person A?", "porfis",
 # "porfavor"): said 'por favor', as the courtesy list has it
-_PORFA55 = re.compile(r"\b(?P<w>porfa|porfis|porfi|porfavor|xfa|x favor)\b", _F)
+_PORFA55 = re.compile(r"\b(?P<w>porfa|porfis|porfi|porfavor)\b", _F)
 
 
 def _porfa55(text: str, lexicon: Lexicon) -> str:
     """Session 55: 'porfa' said 'por favor' (above)."""
     low = text.lower()
-    if "porf" not in low and "xf" not in low and "x favor" not in low:
+    if "porf" not in low:
         return text
     m = _PORFA55.search(text)
     if m is None:
@@ -361,12 +366,16 @@ def _away55(text: str, lexicon: Lexicon) -> str:
 # closes the sentence), taken off before a comma too
 _PASSING55 = re.compile(
     r"\s*,?\s*\b(?:whenever|when|as|if) you(?:'re| are) (?:passing|going past|walking "
-    r"past|passing by|going by|over that way|that way|round that way)(?=\s*,)",
+    r"past|going by)(?: by)?(?=\s*,)",
     _F,
 )
 
 
-_PASSING_WORDS55 = ("passing", "going past", "walking past", "going by", "that way")
+_PASSING_WORDS55 = tuple(
+    f"{y} {w}"
+    for y in ("you're", "you are")
+    for w in ("passing", "going past", "walking past", "going by")
+)
 
 
 def _passing55(text: str, lexicon: Lexicon) -> str:
@@ -378,6 +387,204 @@ def _passing55(text: str, lexicon: Lexicon) -> str:
     if m is None:
         return text
     return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
+# -- wants and needs -------------------------------------------------------------------------------
+
+# -- 'specifically' / 'in particular' closing the name of the thing ("Bob's after a mug, the blue
+# one specifically.", "Alice wants the red mug in particular."): says which, taken off
+_SPECIFIC55 = re.compile(
+    r"(?P<x>\b(?:the|a|an|that|this) [a-z]+(?: [a-z]+){0,2}?)(?P<w>,? (?:specifically|in "
+    r"particular|particularly|precisely|especially|exactly|mind you))(?=\s*(?:[.,;!]|$))",
+    _F,
+)
+_SPECIFIC_WORDS55 = ("specifically", "particular", "precisely", "especially", "exactly", "mind you")
+
+
+def _specific55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'specifically' after the thing's name taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _SPECIFIC_WORDS55):
+        return text
+    m = _SPECIFIC55.search(text)
+    if m is None:
+        return text
+    x = m["x"].lower()
+    if not (x.endswith(" one") or _objects_only(m["x"], lexicon)):
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- 'then the Y straight after that' ("What Person A is after is the bottle, and then the apple
+# straight after that."): the 'then' says the order; the closing 'straight after that' taken off
+_THEN_AFTER55 = re.compile(
+    r"\bthen\b[^.;!?,]*?(?P<w>,? (?:straight|right|directly|immediately|just)? ?after (?:that|"
+    r"it|this|those))(?=\s*(?:[.;!?]|$))",
+    _F,
+)
+
+
+def _then_after55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'then the Y straight after that': 'straight after that' taken off (above)."""
+    low = text.lower()
+    if "then" not in low or not any(w in low for w in ("after that", "after it", "after this")):
+        return text
+    m = _THEN_AFTER55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- 'P has his heart set on X' and a remark after it ("Person B has his heart set on the apple,
+# bless him."): said 'P wants X' (session 54's _craving54 says the "'s got his heart set on" form;
+# the older rules read it alone or before a request: left to them)
+_HEART55 = re.compile(
+    r"(?:^|(?<=[.;!?])\s+)(?P<p>[^.;!?,]+?)(?P<w>(?:'s|\u2019s| has| is) (?:(?:his|her|their) "
+    r"heart (?:set|fixed|dead set) on|(?:dead )?set on having)) [^.;!?,]+,\s*(?P<rest>[^.;!?]+)",
+    _F,
+)
+# a verb of handing in the remark after it: the older rules read those ('…, hand him the cup')
+_HANDS55 = re.compile(
+    r"\b(?:give|hand|pass|bring|take|fetch|send|put|let|pop|stick|move|place)\b", _F
+)
+
+
+def _heart55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'P has his heart set on X, <remark>' said 'P wants X, …' (above)."""
+    if "set on" not in text.lower():
+        return text
+    m = _HEART55.search(text)
+    if m is None or _HANDS55.search(m["rest"]) or not _only_person(m["p"], lexicon):
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), " wants", lexicon)
+
+
+# -- 'at the moment' closing a present want ("Person A wants her bottle and nothing else at the
+# moment.", "Bob needs the apple at the moment."): now, taken off
+_MOMENT55 = re.compile(
+    r"\b(?:wants|needs|would like|'d like|could use|is after|'s after|fancies)\b[^.;!?]*?"
+    r"(?P<w>,? (?:right |just )?(?:at the moment|at present|at this moment|for the moment))"
+    r"(?=\s*(?:[.,;!]|$))",
+    _F,
+)
+
+
+def _moment55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'at the moment' closing a present want taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in ("the moment", "at present", "this moment")):
+        return text
+    m = _MOMENT55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- an emphatic 'did' before a verb of saying in a forgetting remark ("Sam needs a pen and did
+# tell me the colour, but it's gone clean out of my head."): session 42's which_lost42r refuses
+# the remark with 'told me' naming the readings ('did say' too); 'did tell me' / 'did mention' /
+# 'did show me' said so and asked of it
+_DID_TELL55 = re.compile(r"\b(?P<w>did (?P<v>tell|mention|show))\b", _F)
+_SAID55 = {"tell": "told", "mention": "mentioned", "show": "showed"}
+
+
+def _did_tell55(text: str, lexicon: Lexicon) -> None:
+    """Session 55: 'did tell me …, but I've forgotten' refused as 'told me …' is (above)."""
+    low = text.lower()
+    if "did tell" not in low and "did mention" not in low and "did show" not in low:
+        return
+    m = _DID_TELL55.search(text)
+    if m is None:
+        return
+    which_lost42r(f"{text[: m.start('w')]}{_SAID55[m['v'].lower()]}{text[m.end('w') :]}", lexicon)
+
+
+# -- a drink from a vessel of the scene ("Mr Lee's asking for his tablets and a drink from the water
+# jug."): the vessel is what is handed, said 'the water jug'
+_DRINK_FROM55 = re.compile(
+    r"\b(?P<w>(?:a|some|another) (?:drink|glass|sip|swig|splash|top-up|refill)(?: of "
+    r"(?:water|juice|milk|squash))? (?:from|out of) )(?P<x>(?:the|his|her|their) [a-z]+"
+    r"(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$|\s(?:and|please|too)\b))",
+    _F,
+)
+
+
+_DRINK_WORDS55 = ("drink", "glass", "sip", "swig", "splash", "top-up", "refill")
+# what a drink is poured from
+_VESSELS55 = frozenset(
+    ("jug", "bottle", "flask", "carton", "jar", "kettle", "pitcher", "beaker", "cup", "mug")
+) | frozenset(("glass", "thermos", "urn", "decanter", "teapot", "cafetiere", "canteen"))
+
+
+def _drink_from55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'a drink from the water jug' said 'the water jug' (above)."""
+    low = text.lower()
+    if not any(w in low for w in _DRINK_WORDS55):
+        return text
+    m = _DRINK_FROM55.search(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    if m["x"].lower().split()[-1] not in _VESSELS55:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- what the wanted thing is for, inside a longer text ("Omar requires the sponge for scrubbing
+# out the sink, and Emma would quite like a banana.", "Kofi's needing the drill to put up the
+# brackets; Jess would like the small spanner."): the older purpose rules take it off when it
+# closes the text and names nothing of the scene; taken off before a comma or a stop too, and
+# when it names a surface (what is scrubbed or wiped is not where the thing goes), when its verb is
+# none the grounder reads (or 'put up' / 'hang up' of things the scene does not have), it names no
+# person, no object and no place it goes to, and holds no word that counts, points back or
+# negates (_KEEP_WORDS)
+_PURPOSE55 = re.compile(
+    r"\b(?:needs|need|needed|needing|requires|required|wants|wanting|would (?:quite |really )?"
+    r"like|'d (?:quite |really )?like|could (?:really )?use|could do with|(?:is|'s) after) "
+    r"(?:the|a|an|his|her|their|some) [a-z]+(?: (?!(?:to|for)\b)[a-z]+){0,2}? (?P<p>(?:to "
+    r"(?P<v>[a-z]+)|for (?P<g>[a-z]{3,}ing))(?P<w>(?: (?!(?:and|but|so|then|please)\b)[a-z']+)"
+    r"{1,5}?))(?=\s*[,;.]\s*\S)",
+    _F,
+)
+# where a thing goes ('to the shelf', 'on the bench'): then the purpose may be a placing
+_TO_PLACE55 = re.compile(r"\b(?:to|on|onto|into|in|at|over|by|near|beside|under|inside)\b", _F)
+_NOT_VERBS55 = frozenset(("the", "a", "an", "my", "your", "our", "its", "be", "have", "go"))
+_PHRASAL55 = frozenset(("put up", "hang up", "set up", "put together", "take down", "take apart"))
+
+
+def _purpose55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: what the wanted thing is for, before a comma or a stop, taken off (above)."""
+    low = text.lower()
+    if " to " not in low and " for " not in low:
+        return text
+    for m in _PURPOSE55.finditer(text):
+        words = m["w"].strip()
+        if m["v"]:
+            verb = m["v"].lower()
+            if _KEEP_WORDS.search(verb) or verb in _NOT_VERBS55:
+                continue
+            phrasal = f"{verb} {words.split()[0].lower()}" in _PHRASAL55
+            if (verb in VERBS and not phrasal) or verb not in _COMMON:
+                continue
+            if phrasal and _names_any55(words, lexicon):
+                continue
+        else:
+            g = m["g"].lower()
+            if {g, g[:-3], g[:-3] + "e", g[:-4]} & VERBS.keys():
+                continue
+            if not _ids(words, lexicon, "surface"):
+                continue  # naming nothing: session 33's _purpose_ing33t reads it
+        if _KEEP_WORDS.search(words) or _TO_PLACE55.search(words):
+            continue
+        if _ids(words, lexicon, "human") or _ids(words, lexicon, "object"):
+            continue
+        out = _cut52(text, m.start("p") - 1, m.end("p"), "", lexicon)
+        if out != text:
+            return out
+    return text
+
+
+def _names_any55(words: str, lexicon: Lexicon) -> bool:
+    return bool(_ids(words, lexicon))
 
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
@@ -392,10 +599,16 @@ _STEPS55_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _porfa55,
     _away55,
     _passing55,
+    _specific55,
+    _then_after55,
+    _heart55,
+    _moment55,
+    _drink_from55,
+    # _purpose55,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
-REFUSE55: tuple[Callable[[str, Lexicon], None], ...] = (_owned_want55,)
+REFUSE55: tuple[Callable[[str, Lexicon], None], ...] = (_owned_want55, _did_tell55)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
 CHECK55: tuple[Callable[[str, Node, Lexicon], None], ...] = (_placed_wanted55,)
