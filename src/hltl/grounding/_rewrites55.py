@@ -257,7 +257,13 @@ _INTERRUPT55 = re.compile(
     rf"sorry|apologies|i'm sorry) to {_BOTHER55},\s*only)\s*,\s*)",
     _F,
 )
-_INTERRUPT_WORDS55 = ("hate to", ", only")
+_INTERRUPT_WORDS55 = tuple(
+    f"to {w}"
+    for w in (
+        *("interrupt", "butt in", "barge in", "cut in", "bother you", "trouble you"),
+        *("disturb you", "pester you", "intrude"),
+    )
+)
 
 
 def _interrupt55(text: str, lexicon: Lexicon) -> str:
