@@ -106,6 +106,18 @@ OWNED_WANT = [
     ("Mr Novak has been asking for Lena's tongs.", KITCHEN),
     ("Tom's been asking for Mia's scanner.", DEPOT),
     ("Jess has been asking for Kofi's drill.", WORKSHOP),
+    # the same family in other words (12c's re-probe)
+    ("Bob's got his eye on Alice's apple.", CELL),
+    ("Bob has had his eye on Alice's apple.", CELL),
+    ("Bob's keen on Alice's apple.", CELL),
+    ("Bob's been crying out for Alice's apple.", CELL),
+    ("Bob has been wanting Alice's apple.", CELL),
+    ("Lily's grizzling for Ava's teddy.", NURSERY),
+    ("Bob would love Alice's apple.", CELL),
+    ("Bob fancies Alice's apple.", CELL),
+    ("Bob could do with Alice's apple.", CELL),
+    ("Bob has had Alice's apple.", CELL),
+    ("Bob's got Alice's apple.", CELL),
 ]
 
 
@@ -132,6 +144,7 @@ def test_owned_want_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
         ("Bob's been asking for the apple.", "apple>B", CELL),
         ("Lily's been crying for her teddy.", "teddy>A", NURSERY),
         ("Jess has been asking for the drill.", "drill>B", WORKSHOP),
+        ("Bob's been asking for the apple, Alice's one.", "apple>B", CELL),
     ],
 )
 def test_owned_want_near_read(text: str, want: str, scene: Scene) -> None:

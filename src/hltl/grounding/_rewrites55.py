@@ -104,10 +104,11 @@ def _placed_wanted55(text: str, node: Node, lexicon: Lexicon) -> None:
 # person before the object), while "Bob wants Alice's apple." is refused by session 43's
 # owned_other43l (whose it is does not say who gets it). Refused the same, naming both people
 _WANT_FOR55 = (
-    r"(?:(?:'s|\u2019s|\s+is|\s+has|\s+was|\s+keeps|\s+kept)(?:\s+been)?)?\s+"
-    r"(?:(?:asking|crying|begging|calling|screaming|pleading|whining|nagging|angling|dying|"
-    r"desperate|gagging|itching|longing|pining|hankering|yearning|hoping|hungry|thirsty|asked|"
-    r"begged|cried|called) for|after)"
+    r"(?:(?:'s|\u2019s|\s+is|\s+has|\s+was|\s+keeps|\s+kept)(?:\s+(?:been|had|got))?)?\s+"
+    r"(?:(?:really |so |just )?(?:[a-z]+ing|[a-z]+ed)(?: out)? for|after|(?:his|her|their|an|a) "
+    r"(?:eye|eyes) on|(?:keen|sweet|set|dead set) on|wanting|(?:would|'d|\u2019d) (?:really )?"
+    r"love|loves|fancies|fancied|could (?:really )?(?:use|do with)|craves|covets|had|got|has|"
+    r"took|borrowed|nicked|pinched)"
 )
 _OWNED_WANT55 = re.compile(
     rf"\b(?P<p>{_WHO42R}){_WANT_FOR55}\s+(?P<q>{_WHO42R})(?:'s|\u2019s)\s+(?P<x>[a-z]+(?:\s+"
@@ -115,12 +116,9 @@ _OWNED_WANT55 = re.compile(
     _F,
 )
 _WANT_FOR_WORDS55 = (
-    *(f"{w} for" for w in ("asking", "crying", "begging", "calling", "screaming", "pleading")),
-    *(f"{w} for" for w in ("whining", "nagging", "angling", "dying", "desperate", "gagging")),
-    *(f"{w} for" for w in ("itching", "longing", "pining", "hankering", "yearning", "hoping")),
-    *(f"{w} for" for w in ("hungry", "thirsty", "asked", "begged", "cried", "called")),
-    *("'s after", "\u2019s after", "is after", "has after", "was after", "been after"),
-    *("keeps after", "kept after"),
+    *("ing for", "ing out for", "ed for", "ed out for", "after", "eye on", "eyes on", "keen on"),
+    *("sweet on", "set on", "wanting", "love", "fancie", "use", "do with", "craves", "covets"),
+    *("had ", "got ", "has ", "took ", "borrowed ", "nicked ", "pinched "),
 )
 
 
