@@ -452,3 +452,159 @@ def test_did_tell_names_readings(text: str, scene: Scene, readings: tuple[str, .
 
 def test_did_tell_is_what_names_them(monkeypatch: pytest.MonkeyPatch) -> None:
     assert_refusals_are((_rewrites55._did_tell55,), DID_TELL, monkeypatch)
+
+
+# -- wants: a purpose inside a longer text (_purpose55) ---
+
+PURPOSE = PhrasingCases()
+test_purpose = PURPOSE.test(
+    (
+        "Omar requires the sponge for scrubbing out the sink, and Emma would quite like a banana.",
+        "sponge>B & banana>C",
+        LAB,
+    ),
+    (
+        "Kofi's needing the drill to put up the brackets; Jess would like the small spanner.",
+        "drill>A & spanner_small>B",
+        WORKSHOP,
+    ),
+    (
+        "Omar needs the sponge to wipe down the sink, and Dana wants the spoon.",
+        "sponge>B & spoon>A",
+        LAB,
+    ),
+    (
+        "Mia needs the tape to seal up the pallet, and Tom wants the gloves.",
+        "tape>A & gloves>B",
+        DEPOT,
+    ),
+)
+test_purpose_near = PURPOSE.test(
+    ("Bob needs the cup to put the apple in, and Alice wants the crisps.", None, CELL),
+    ("Bob needs the cup for carrying the apple, and Alice wants the crisps.", None, CELL),
+    ("Bob needs the cup to take to Alice, and Carol wants the crisps.", None, CELL),
+    (
+        "Kofi needs the drill to put up the bench; Jess would like the small spanner.",
+        None,
+        WORKSHOP,
+    ),
+    ("Bob needs the cup to give Alice, and Carol wants the crisps.", None, CELL),
+)
+
+
+def test_purpose_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PURPOSE.refused_without((_rewrites55._purpose55,), monkeypatch)
+
+
+# -- pronouns and ellipsis, lower case (first steps) ---
+
+PRONOUNS = PhrasingCases()
+
+# how long a want has gone on, closing it (_while55)
+test_while = PRONOUNS.test(
+    (
+        "Person A's been hanging on for that bottle a good while now, off it goes to her.",
+        "bottle>A",
+        T12,
+    ),
+    ("Mr Lee's been asking for his magazine a long time now, take it to him.", "magazine>B", WARD),
+    ("Mrs Khan's been waiting for the jug a fair while now, take it to her.", "jug>C", WARD),
+    ("Zoe's been asking for the globe a good while now, off it goes to her.", "globe>C", CLASSROOM),
+)
+# 'on at me about it' (_on_at55)
+test_on_at = PRONOUNS.test(
+    ("The crisps? Bob's been on at me about them all day, so let him have them.", "chips>B", FIG1),
+    ("The apple? Bob's been on at me about it all morning, so let him have it.", "apple>B", CELL),
+    (
+        "The torch? Jess has been on at me about it all day, so let her have it.",
+        "torch>B",
+        WORKSHOP,
+    ),
+)
+# a pronoun named after the clause (_that_is55)
+test_that_is = PRONOUNS.test(
+    (
+        "Person A is thirsty, so bring her the bottle, and give him the apple too, "
+        "Person B that is.",
+        "bottle>A & apple>B",
+        SQ,
+    ),
+    ("Give him the apple, Bob that is.", "apple>B", CELL),
+    ("Pass her the salt, Lena that is.", "salt>B", KITCHEN),
+    ("Take her the magazine, Mrs Khan that is.", "magazine>C", WARD),
+)
+# where the one who needs it is (_there55)
+test_there = PRONOUNS.test(
+    (
+        "Jess needs a light under there, so pass her the flashlight and the small spanner too.",
+        "torch>B & spanner_small>B",
+        WORKSHOP,
+    ),
+    ("Bob needs a drink up there, so pass him the bottle.", "bottle>B", CELL),
+    ("Grandad needs a cloth down there, so hand him the wipes.", "wipes>B", NURSERY),
+)
+# a request pointing back run on after a want (_runon55)
+test_runon = PRONOUNS.test(
+    ("person b is gagging for the bottle pass it him", "bottle>B", F42),
+    ("bob wants the apple pass it to him", "apple>B", CELL),
+    ("mrs khan wants her magazine take it to her", "magazine>C", WARD),
+    ("tom needs the gloves pass them to him", "gloves>B", DEPOT),
+)
+# a remark of what the person is, run on after the want (_runon_remark55)
+test_runon_remark = PRONOUNS.test(
+    ("person b could use the bottle hes a captioner and talks all day", "bottle>B", L24),
+    ("bob could use the apple hes a runner and trains all day", "apple>B", CELL),
+)
+# why a thing is placed, in lower case without a comma (_reach55)
+test_reach = PRONOUNS.test(
+    ("green block into the high chair so lily can reach it", "block_green@highchair", NURSERY),
+    ("apple on the shelf so bob can reach it", "apple@shelf", CELL),
+    ("magazine on the locker so mrs khan can see it", "magazine@bedside", WARD),
+    ("tongs on the rack so marco can reach them", "tongs@rack", KITCHEN),
+)
+# a closing "don't mix them up" (_mix55)
+test_mix = PRONOUNS.test(
+    ("apple goes to person a n the cup to person b, dont mix em up", "apple>A & cup>B", F41),
+    ("apple to bob and the cup to alice, dont mix them up", "apple>B & cup>A", CELL),
+    ("salt to lena, knife to marco, don't get them mixed up", "salt>B & knife>A", KITCHEN),
+)
+test_pronouns_near = PRONOUNS.test(
+    ("Give Alice the apple, Bob that is.", None, CELL),
+    ("bob wants the apple give them those", None, CELL),
+    ("Put the apple on the shelf so Bob can reach it, then give him the cup.", None, CELL),
+    ("apple to bob, dont mix them up", None, CELL),
+)
+
+
+def test_pronouns_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    PRONOUNS.refused_without(
+        (
+            _rewrites55._while55,
+            _rewrites55._on_at55,
+            _rewrites55._that_is55,
+            _rewrites55._there55,
+            _rewrites55._runon55,
+            _rewrites55._runon_remark55,
+            _rewrites55._reach55,
+            _rewrites55._mix55,
+        ),
+        monkeypatch,
+    )
+
+
+# a forgetting remark run on without a comma (_not_sure55, a refusal naming the readings)
+NOT_SURE = [
+    ("lena or marco wanted the tongs not sure which", KITCHEN, ("Person A", "Person B")),
+    ("bob or alice wanted the apple no idea which", CELL, ("Person A", "Person B")),
+    ("mrs khan or mr lee wanted the jug dunno which", WARD, ("Person B", "Person C")),
+    ("sam needs a pen not sure which", OFFICE, ("pen_black", "pen_blue", "pen_red")),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), NOT_SURE)
+def test_not_sure_names_readings(text: str, scene: Scene, readings: tuple[str, ...]) -> None:
+    assert_names_readings(text, scene, readings)
+
+
+def test_not_sure_is_what_names_them(monkeypatch: pytest.MonkeyPatch) -> None:
+    assert_refusals_are((_rewrites55._not_sure55,), NOT_SURE, monkeypatch)

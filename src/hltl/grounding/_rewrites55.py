@@ -16,7 +16,7 @@ from hltl.grounding._normalise1 import (
     _reading,
 )
 from hltl.grounding._rewrites42r import _WHO42R, which_lost42r
-from hltl.grounding._rewrites52 import _cut52
+from hltl.grounding._rewrites52 import _UNSAFE52, _cut52
 from hltl.grounding.lexicon import VERBS, Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
 
@@ -591,6 +591,232 @@ def _names_any55(words: str, lexicon: Lexicon) -> bool:
     return bool(_ids(words, lexicon))
 
 
+# -- pronouns and ellipsis -------------------------------------------------------------------------
+
+# -- how long a want has gone on, closing it ("Person A's been hanging on for that bottle a good
+# while now, off it goes to her.", "Bob's been waiting for the apple all day, …"): taken off (the
+# want holds now: 'been … for')
+_WHILE55 = re.compile(
+    r"\bbeen (?:[a-z]+ing)(?: on| out)? for (?:the|that|this|his|her|their) [a-z]+(?: [a-z]+)?"
+    r"(?P<w> (?:for )?(?:a (?:good |long |fair )?while|quite a while|ages|a long time)(?: now)?)"
+    r"(?=\s*[,.;!])",
+    _F,
+)
+_WHILE_WORDS55 = ("while", "ages", "long time")
+
+
+def _while55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'been hanging on for X a good while now' without the while (above)."""
+    low = text.lower()
+    if "been " not in low or not any(w in low for w in _WHILE_WORDS55):
+        return text
+    m = _WHILE55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- 'on at me about' ("The crisps? Bob's been on at me about them all day, so let him have them."):
+# nagging the speaker, said 'on about' (read; 'me' names no one of the scene)
+_ON_AT55 = re.compile(r"\bon (?P<w>at (?:me|us) )about (?:it|them)\b", _F)
+
+
+def _on_at55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'on at me about' said 'on about' (above)."""
+    low = text.lower()
+    if "on at me" not in low and "on at us" not in low:
+        return text
+    m = _ON_AT55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- a pronoun named after the clause ("…, and give him the apple too, Person B that is."): the name
+# said in the pronoun's place (the last him / her before it), the tag taken off
+_THAT_IS55 = re.compile(
+    r",\s*(?P<p>[A-Za-z][\w]*(?: [A-Za-z][\w]*)?) (?:that is|that's who)\s*[.!]?\s*$", _F
+)
+
+
+def _that_is55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: '…him…, Person B that is' said with the name (above)."""
+    low = text.lower()
+    if "that is" not in low and "that's who" not in low:
+        return text
+    m = _THAT_IS55.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    before = text[: m.start()]
+    prons = list(re.finditer(r"\b(?:him|her)\b", before, _F))
+    if not prons:
+        return text
+    k = prons[-1]
+    out = f"{before[: k.start()]}{m['p']}{before[k.end() :]}."
+    if _UNSAFE52.search(out) or _reading(out, lexicon) is None:
+        return text
+    return out
+
+
+# -- where the one who needs it is, after the need ("Jess needs a light under there, so pass her the
+# flashlight"): 'under there' says where she is working, taken off
+_THERE55 = re.compile(
+    r"\b(?:needs|wants|could use|could do with|would like) (?:a|an|some) [a-z]+(?P<w> "
+    r"(?:under|down|in|up|inside|behind) there)(?=\s*,)",
+    _F,
+)
+_THERE_WORDS55 = tuple(f"{w} there" for w in ("under", "down", "in", "up", "inside", "behind"))
+
+
+def _there55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'needs a light under there,' without 'under there' (above)."""
+    low = text.lower()
+    if not any(w in low for w in _THERE_WORDS55):
+        return text
+    m = _THERE55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- lower case ------------------------------------------------------------------------------------
+
+# -- a request pointing back run on after a want without a comma ("person b is gagging for the
+# bottle pass it him"): the comma said
+_RUNON55 = re.compile(
+    r"\b(?:wants|needs|would like|could use|is after|'s after|(?:is|'s) [a-z]+ing for) "
+    r"(?:the|a|an|his|her|their|that|this) [a-z]+(?: (?!(?:so|and|then|but|now|please|just)\b)"
+    r"[a-z]+)?(?P<w>) (?:pass|give|hand|bring|take|fetch|send) (?:it|them)(?=\s+(?:him|her|to|"
+    r"over|across|round|back)\b|\s*[.!]?\s*$)",
+    _F,
+)
+_RUNON_WORDS55 = tuple(
+    f" {v} {p}"
+    for v in ("pass", "give", "hand", "bring", "take", "fetch", "send")
+    for p in ("it", "them")
+)
+
+
+def _runon55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'P wants the X pass it him' said with a comma before the request (above)."""
+    low = text.lower()
+    if not any(w in low for w in _RUNON_WORDS55):
+        return text
+    m = _RUNON55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), ",", lexicon)
+
+
+# -- a remark about the person run on after the want ("person b could use the bottle hes a
+# captioner and talks all day"): the comma said
+_RUNON_REMARK55 = re.compile(
+    r"\b(?:wants|needs|would like|could use|could do with|is after|'s after) (?:the|a|an|his|her|"
+    r"their) [a-z]+(?: [a-z]+)?(?P<w>) (?:hes|shes|he's|she's|he is|she is|theyre|they're) "
+    r"(?:a|an) ",
+    _F,
+)
+_REMARK_WORDS55 = (
+    *(" hes ", " shes ", " he's ", " she's ", " he is ", " she is ", " theyre "),
+    " they're ",
+)
+
+
+def _runon_remark55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: 'P could use the X hes a …' said with a comma before the remark (above)."""
+    low = text.lower()
+    if not any(w in low for w in _REMARK_WORDS55):
+        return text
+    m = _RUNON_REMARK55.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), ",", lexicon)
+
+
+# -- a forgetting remark run on without a comma ("lena or marco wanted the tongs not sure which"):
+# refused as the same words with the comma are (naming the readings), not for its 'not'
+_NOT_SURE55 = re.compile(
+    r"(?<=[a-z])(?P<w>) (?:not sure|no idea|dunno|cant remember|can't remember|cannot remember|"
+    r"i forget|forgot) (?:which|who)\b",
+    _F,
+)
+_NOT_SURE_WORDS55 = tuple(
+    f"{w} {x}"
+    for w in ("not sure", "no idea", "dunno", "remember", "forget", "forgot")
+    for x in ("which", "who")
+)
+
+
+def _not_sure55(text: str, lexicon: Lexicon) -> None:
+    """Session 55: '… the tongs not sure which' refused as '…, not sure which' is (above)."""
+    low = text.lower()
+    if not any(w in low for w in _NOT_SURE_WORDS55):
+        return
+    m = _NOT_SURE55.search(text)
+    if m is None or re.search(r"[,;:.!?]", text[: m.start()]):
+        return
+    if re.search(r"\b(?:i|i'm|im|i've|ive|and|but|we|so)\s*$", text[: m.start()], _F):
+        return
+    # why: offline.py imports this module, so the grammar is imported where it is used
+    from hltl.grounding.offline import parse_instruction
+
+    # the same words with the comma: its refusal (naming the readings) is this text's; a reading
+    # of it leaves this text to the rules after this one
+    parse_instruction(f"{text[: m.start('w')]},{text[m.end('w') :]}", lexicon.scene, lexicon)
+
+
+# -- why a thing is placed, closing the placing without a comma ("green block into the high chair so
+# lily can reach it"): taken off when every task is a placing
+_REACH55 = re.compile(
+    r"\s*,?\s*\bso (?:that )?(?P<who>[a-z][a-z' ]{0,30}?) can (?:reach|get|grab|see|find|get at|"
+    r"get to) (?:it|them)\s*[.!]?\s*$",
+    _F,
+)
+_REACH_WORDS55 = tuple(f"can {v}" for v in ("reach", "get", "grab", "see", "find"))
+
+
+def _reach55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: '… so lily can reach it' after a placing taken off (above)."""
+    low = text.lower()
+    if text != low or not any(w in low for w in _REACH_WORDS55):
+        return text  # said in lower case (cased, session 38r's rules read it)
+    m = _REACH55.search(text)
+    if m is None or _ids(m["who"], lexicon, "object") or _ids(m["who"], lexicon, "surface"):
+        return text
+    out = _cut52(text, m.start(), m.end(), "", lexicon)
+    if out == text:
+        return text
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# -- a closing 'don't mix them up' after two or more handovers ("apple goes to person a n the cup to
+# person b, dont mix em up"): a care, not a negated task, taken off
+_MIX55 = re.compile(
+    r",?\s*\b(?:and )?(?:don't|dont|do not) (?:mix (?:them|em|'em|those|these) up|get (?:them|em|"
+    r"'em) mixed up)\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _mix55(text: str, lexicon: Lexicon) -> str:
+    """Session 55: a closing "don't mix them up" after two handovers taken off (above)."""
+    if "mix" not in text.lower():
+        return text
+    m = _MIX55.search(text)
+    if m is None:
+        return text
+    out = _cut52(text, m.start(), m.end(), "", lexicon)
+    if out == text:
+        return text
+    node = _reading(out, lexicon)
+    if node is None or len(list(tasks(node))) < 2:
+        return text
+    return out
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _sec55,
@@ -608,11 +834,19 @@ _STEPS55_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _heart55,
     _moment55,
     _drink_from55,
-    # _purpose55,
+    _purpose55,
+    _while55,
+    _on_at55,
+    _that_is55,
+    _there55,
+    _runon55,
+    _runon_remark55,
+    _reach55,
+    _mix55,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-54 ones)
 _STEPS55: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-54 ones)
-REFUSE55: tuple[Callable[[str, Lexicon], None], ...] = (_owned_want55, _did_tell55)
+REFUSE55: tuple[Callable[[str, Lexicon], None], ...] = (_owned_want55, _did_tell55, _not_sure55)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-54 ones)
 CHECK55: tuple[Callable[[str, Node, Lexicon], None], ...] = (_placed_wanted55,)
