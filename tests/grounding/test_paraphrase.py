@@ -444,7 +444,6 @@ KNOWN_MISSES = frozenset(
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
         "Any chance you could run the packing tape over to Mia for the pallets?",
         # blind52 (tuned on in session 54): refusals left at its one measurement (docs/grounding.md)
-        "Omar needs the sponge to wipe down the bench, and Emma needs a spoon.",
         "Kofi reckons he'll need the power drill to put up the shelving in the office.",
         "Person A's got nothing to drink; pass her the bottle and him the chips.",
         "Her bottle, Person A's. Fetch it for her please.",
@@ -473,19 +472,12 @@ KNOWN_MISSES = frozenset(
         "Priya's stuck stapling by hand, take her the stzpler.",
         "Mia needs the Scahner for stock-take, over to her please.",
         # blind53 (tuned on in session 55): refusals left at its one measurement (docs/grounding.md)
-        "Omar requires the sponge for scrubbing out the sink, and Emma would quite like a banana.",
-        "Kofi's needing the drill to put up the brackets; Jess would like the small spanner.",
-        "The crisps? Bob's been on at me about them all day, so let him have them.",
-        "Person A is thirsty, so bring her the bottle, and give him the apple too, Person B that "
-        "is.",
         "The cup: Person B. The chips: same again, him as well.",
         "Person A's after the bottle for her flask, and for Person B, the chips, he skipped "
         "breakfast.",
         "That bottle there is Person A's, take it across to her.",
-        "Person A's been hanging on for that bottle a good while now, off it goes to her.",
         "Mrs Khan's tablets are due, take them to her please, and her magazine as well.",
         "Tom's got a long drive ahead; the gloves are his, so pass them to him.",
-        "Jess needs a light under there, so pass her the flashlight and the small spanner too.",
         "The bottle for Person A, she's a ferry pilot, up at dawn, needs it now",
         "No water since lunch and Person A's flagging, the bottle, straight over to her, ta "
         "muchly.",
@@ -529,11 +521,7 @@ KNOWN_MISSES = frozenset(
         "The grey blanket for Mrs Khan, not grey, I mean blue.",
         "Belt for the medium box, oh hang on, it's the small box that goes on.",
         "shelf for the bottle pls somewhere the baby cant grab it",
-        "apple goes to person a n the cup to person b, dont mix em up",
-        "person b is gagging for the bottle pass it him",
-        "person b could use the bottle hes a captioner and talks all day",
         "tom needs gloves on for the loading and mia wants tape",
-        "green block into the high chair so lily can reach it",
         "jess is on the hammer today so give her it, and kofi needs the big spanner",
         "Park the apple on the coubter out of Bob's reach, ta.",
         "Since she's peckish, the chipl should go over to Person A.",
@@ -593,7 +581,6 @@ KNOWN_UNCLEAR = frozenset(
         # blind53 (tuned on in session 55)
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
         "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
-        "lena or marco wanted the tongs not sure which",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
         "Was it the wipes or the sippy cup Grandad wanted? It's gone right out of my head.",
     }
