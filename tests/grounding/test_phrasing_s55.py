@@ -118,6 +118,7 @@ OWNED_WANT = [
     ("Bob could do with Alice's apple.", CELL),
     ("Bob has had Alice's apple.", CELL),
     ("Bob's got Alice's apple.", CELL),
+    ("Bob's desperate for Alice's apple.", CELL),
 ]
 
 
@@ -401,6 +402,7 @@ test_drink = WANTS.test(
 test_wants_near = WANTS.test(
     ("Jess would like a drink from the flask.", None, WORKSHOP),
     ("Omar needs a splash of water from the bowl.", None, LAB),
+    ("Bob wants a drink from her cup.", None, CELL),
     ("Bob wanted the apple at the moment.", None, CELL),
     ("Bob has his heart set on the apple, give him the cup.", None, CELL),
     ("It isn't the apple Bob has his heart set on, bless him.", None, CELL),

@@ -105,7 +105,8 @@ def _placed_wanted55(text: str, node: Node, lexicon: Lexicon) -> None:
 # owned_other43l (whose it is does not say who gets it). Refused the same, naming both people
 _WANT_FOR55 = (
     r"(?:(?:'s|\u2019s|\s+is|\s+has|\s+was|\s+keeps|\s+kept)(?:\s+(?:been|had|got))?)?\s+"
-    r"(?:(?:really |so |just )?(?:[a-z]+ing|[a-z]+ed)(?: out)? for|after|(?:his|her|their|an|a) "
+    r"(?:(?:really |so |just )?(?:[a-z]+ing|[a-z]+ed|desperate|hungry|thirsty|eager|greedy|mad|"
+    r"crazy|wild|keen)(?: out)? for|after|(?:his|her|their|an|a) "
     r"(?:eye|eyes) on|(?:keen|sweet|set|dead set) on|wanting|(?:would|'d|\u2019d) (?:really )?"
     r"love|loves|fancies|fancied|could (?:really )?(?:use|do with)|craves|covets|had|got|has|"
     r"took|borrowed|nicked|pinched)"
@@ -117,6 +118,8 @@ _OWNED_WANT55 = re.compile(
 )
 _WANT_FOR_WORDS55 = (
     *("ing for", "ing out for", "ed for", "ed out for", "after", "eye on", "eyes on", "keen on"),
+    *("desperate for", "hungry for", "thirsty for", "eager for", "greedy for", "mad for"),
+    *("crazy for", "wild for", "keen for"),
     *("sweet on", "set on", "wanting", "love", "fancie", "use", "do with", "craves", "covets"),
     *("had ", "got ", "has ", "took ", "borrowed ", "nicked ", "pinched "),
 )
@@ -507,7 +510,7 @@ def _did_tell55(text: str, lexicon: Lexicon) -> None:
 # jug."): the vessel is what is handed, said 'the water jug'
 _DRINK_FROM55 = re.compile(
     r"\b(?P<w>(?:a|some|another) (?:drink|glass|sip|swig|splash|top-up|refill)(?: of "
-    r"(?:water|juice|milk|squash))? (?:from|out of) )(?P<x>(?:the|his|her|their) [a-z]+"
+    r"(?:water|juice|milk|squash))? (?:from|out of) )(?P<x>the [a-z]+"
     r"(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$|\s(?:and|please|too)\b))",
     _F,
 )
