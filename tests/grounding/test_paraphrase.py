@@ -442,7 +442,6 @@ KNOWN_MISSES = frozenset(
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
         "Any chance you could run the packing tape over to Mia for the pallets?",
         # blind52 (tuned on in session 54): refusals left at its one measurement (docs/grounding.md)
-        "Omar needs the sponge to wipe down the bench, and Emma needs a spoon.",
         "Kofi reckons he'll need the power drill to put up the shelving in the office.",
         "Person A's got nothing to drink; pass her the bottle and him the chips.",
         "Her bottle, Person A's. Fetch it for her please.",
@@ -471,36 +470,12 @@ KNOWN_MISSES = frozenset(
         "Priya's stuck stapling by hand, take her the stzpler.",
         "Mia needs the Scahner for stock-take, over to her please.",
         # blind53 (tuned on in session 55): refusals left at its one measurement (docs/grounding.md)
-        "Er, would you mind, when you've a sec, running the crisps over to Alice? Ta duck.",
-        "Be an angel and stow the crisps on the shelf, away from little hands, ta very much.",
-        "Pretty please with sprinkles on, hand Person B the cup, he's been so patient.",
-        "Porfa, could the chips find their way to Person A? She's off to ultimate frisbee after "
-        "this.",
-        "Hate to interrupt, only, would you kindly bring Person B the bottle, he's asked ever so "
-        "nicely.",
-        "Morning! Teeny favour, Dana would like the green cup, if you'd be an absolute gem.",
-        "Please, whenever suits, Sam could use the stapler, he's assembling the set dresser's "
-        "call sheets. Cheers ever so.",
-        "Go raibh maith agat, Jess would love the torch whenever you're passing, she's under the "
-        "van.",
-        "Carol needs the apple and Bob's after a mug, the blue one specifically.",
-        "What Person A is after is the bottle, and then the apple straight after that.",
-        "Person B has his heart set on the apple, bless him.",
-        "Person A wants her bottle and nothing else at the moment.",
-        "Omar requires the sponge for scrubbing out the sink, and Emma would quite like a banana.",
-        "Mr Lee's asking for his tablets and a drink from the water jug.",
-        "Kofi's needing the drill to put up the brackets; Jess would like the small spanner.",
-        "The crisps? Bob's been on at me about them all day, so let him have them.",
-        "Person A is thirsty, so bring her the bottle, and give him the apple too, Person B that "
-        "is.",
         "The cup: Person B. The chips: same again, him as well.",
         "Person A's after the bottle for her flask, and for Person B, the chips, he skipped "
         "breakfast.",
         "That bottle there is Person A's, take it across to her.",
-        "Person A's been hanging on for that bottle a good while now, off it goes to her.",
         "Mrs Khan's tablets are due, take them to her please, and her magazine as well.",
         "Tom's got a long drive ahead; the gloves are his, so pass them to him.",
-        "Jess needs a light under there, so pass her the flashlight and the small spanner too.",
         "The bottle for Person A, she's a ferry pilot, up at dawn, needs it now",
         "No water since lunch and Person A's flagging, the bottle, straight over to her, ta "
         "muchly.",
@@ -512,11 +487,7 @@ KNOWN_MISSES = frozenset(
         "Person B can have the lot bar the cup, he never drinks from cups.",
         "Person B's off chips this week, so they go to Person A.",
         "shelf for the bottle pls somewhere the baby cant grab it",
-        "apple goes to person a n the cup to person b, dont mix em up",
-        "person b is gagging for the bottle pass it him",
-        "person b could use the bottle hes a captioner and talks all day",
         "tom needs gloves on for the loading and mia wants tape",
-        "green block into the high chair so lily can reach it",
         "jess is on the hammer today so give her it, and kofi needs the big spanner",
         "Park the apple on the coubter out of Bob's reach, ta.",
         "Since she's peckish, the chipl should go over to Person A.",
@@ -564,16 +535,10 @@ KNOWN_UNCLEAR = frozenset(
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
         # blind51 (tuned on in session 53)
         # blind52 (tuned on in session 54)
-        "Priya needs one of the pens for signing, the black or the red, she did tell me but I've "
-        "forgotten.",
         "Kofi wants a spanner. Which one, he did say. Lost it, sorry.",
         "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
         # blind53 (tuned on in session 55)
-        "Sorry, bless you for waiting, Lena wants either the knife or the lemon for table nine "
-        "and I cannot for the life of me recall which she said.",
-        "Sam needs a pen and did tell me the colour, but it's gone clean out of my head.",
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
-        "lena or marco wanted the tongs not sure which",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
     }
 )

@@ -373,6 +373,9 @@ _DEFERRED33L = re.compile(
     r"\b(?:is|are|'s|was)\s+(?:all\s+)?up to\s+"
     r"(?!(?:you|yourself|the robots?)\b|(?:the\s+)?(?:top|brim|rim|ceiling|line|mark)\b)"
     r"|\b(?:[a-z]+'s|his|her|their)\s+(?:call|decision|say-so)\b(?!\s+(?:to|for|of)\b)"
+    # session 55 (12): 'call' naming a thing ("the set dresser's call sheets", "his call list")
+    r"(?!\s+(?:sheets?|lists?|logs?|centres?|centers?|signs?|bells?|buttons?|numbers?|"
+    r"slips?|cards?|charts?|rotas?|boxes|box|notes?)\b(?!-))"
     r"|\bsee what\s+[\w' ]{1,40}?\s+(?:says|thinks|wants|decides)\b"
     r"|\bdepending on (?:what|whatever|whether)\s+[\w' ]{1,40}?\s+"
     r"(?:says|tells|decides|wants|thinks)\b"
