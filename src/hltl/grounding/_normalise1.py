@@ -466,8 +466,9 @@ _WORDS: tuple[tuple[str, str], ...] = (
 # can get it herself", the person does it themself: see _words)
 _REFLEXIVE = r"(?<=\w) (?:himself|herself)\b"
 # "Noah is wanting the ruler for his maths": what it is for, taken off unless it is a thing of
-# the scene (_a_thing; session 55: "Lily's been whining for her teddy, and …" lost the teddy, 12b's
-# review); not what a person cries or asks for ("Lily's been crying for her teddy": a want)
+# the scene said right after a verb (_wanted_thing; session 55: "Lily's been whining for her
+# teddy, and …" lost the teddy, 12b's review); not what a person cries or asks for ("Lily's been
+# crying for her teddy": a want)
 _FOR_THEIRS = (
     r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)(?<!\bcrying)(?<!\basking)(?<!\basked)(?<!\bcalling)"
     r"(?<!\bbegging)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
@@ -557,8 +558,7 @@ _WORDS_LATE: tuple[tuple[str, str], ...] = (
         r"[^.;!?])*(?:[.;!?]|$))",
         r"\1 ",
     ),
-    # "Noah is wanting the ruler for his maths": what it is for (_FOR_THEIRS, asked in _words)
-    (_FOR_THEIRS, ""),
+    # "Noah is wanting the ruler for his maths": what it is for: _FOR_THEIRS, a step after _words'
     # "The magazine, Mrs Khan asked it, please bring to her": 'asked it' is asked for it
     (r"\basked (it|them|that)(?=\s*[,;.])", r"asked for \1"),
     # "the white plate, then the blue one, both to Lena"
@@ -782,6 +782,14 @@ def _a_thing(words: str, lexicon: Lexicon) -> bool:
     return said in names or bool(_ids(said.split()[-1], lexicon, "object"))
 
 
+def _wanted_thing(m: re.Match[str], lexicon: Lexicon) -> bool:
+    """Whether _FOR_THEIRS' "for her X" is what a person whines / looks / asks for: X a thing of
+    the scene right after a verb ("Lily's been whining for her teddy"); after an object it says
+    what the object is for ("Mr Lee wants the jug for his tablets"), taken off as before."""
+    before = m.string[: m.start()].split()
+    return bool(before) and before[-1].lower().endswith(("ing", "ed")) and _a_thing(m[1], lexicon)
+
+
 def _words(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _WORDS:
         text = _sub(pattern, repl, text)
@@ -790,11 +798,15 @@ def _words(text: str, lexicon: Lexicon) -> str:
     # clause is refused (session 25)
     text = _sub(_REFLEXIVE, lambda m: "" if _person_before(m, lexicon) else m[0], text)
     for pattern, repl in _WORDS_LATE:
-        if pattern is _FOR_THEIRS:
-            text = _sub(pattern, lambda m: m[0] if _a_thing(m[1], lexicon) else "", text)
-        else:
-            text = _sub(pattern, repl, text)
+        text = _sub(pattern, repl, text)
     return text
+
+
+def _for_theirs55l(text: str, lexicon: Lexicon) -> str:
+    """_FOR_THEIRS taken off (after _words' steps, a step of its own so stepguard guards each)."""
+    if "for " not in text and "For " not in text:
+        return text
+    return _sub(_FOR_THEIRS, lambda m: m[0] if _wanted_thing(m, lexicon) else "", text)
 
 
 # Session 55 (12p): _words was one step ending with two rewrites and a spacing of its sentences,
