@@ -902,6 +902,11 @@ def test_one_object_twice_refused(text: str, scene: Scene) -> None:
 
 
 def test_one_object_twice_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    off = tuple(c for c in offline._CHECKS if c is not _rewrites51._one_object_twice51)
+    # (session 55: 12s's `_had_it55s` refuses "Bob's got the red one" beside a handover of the red
+    # mug to him too, the same family: taken out as well)
+    from hltl.grounding import _rewrites55s
+
+    mine = {_rewrites51._one_object_twice51, _rewrites55s._had_it55s}
+    off = tuple(c for c in offline._CHECKS if c not in mine)
     monkeypatch.setattr(offline, "_CHECKS", off)
     assert [t for t, s in TWICE if tree(t, s) is None] == []

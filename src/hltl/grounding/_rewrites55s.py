@@ -94,7 +94,7 @@ def _where_is55s(text: str, node: Node, lexicon: Lexicon) -> None:
 _HAD_IT55S = re.compiled(
     r"(?:^|[,;:.!?—–-]\s*|\b(?:and|but|as|since|because|cos|'cause)\s+)(?P<p>he|she|they|"
     r"(?:mr|mrs|ms|miss|dr|person) [a-z]+|[a-z]+)(?:'s|'d| has| had)?(?: (?:already|just|only|"
-    r"even|actually|definitely))? had (?:it|them|that|those|one|some)\b",
+    r"even|actually|definitely))? had (?:it|them|that|those|one|some)\b(?! first\b)",
     _F,
 )
 # "…, she's had / got / taken the blue one." (12c): a holding or a use of a thing said by its
