@@ -1763,6 +1763,10 @@ DONE_AFTER = (
     ", I've done it already.",
     ", I'll see to it myself.",
     ". Oh, that's been done.",
+    # session 55 (12c): the handover itself said as made (read on main after a request or a want)
+    ", I've already handed that over.",
+    ", that's been handed over already.",
+    ". I gave that over earlier.",
 )
 # ... ticked off, then another one-of-a-kind object ({x}) for the person: that handover only
 DONE_CHECKLIST = (

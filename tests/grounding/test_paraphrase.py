@@ -169,8 +169,6 @@ KNOWN_MISSES = frozenset(
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
-        "One apiece for the pair of them, they've both been up ladders with the bunting: the "
-        "bottle for Person A, the chips to Person B.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
@@ -486,40 +484,8 @@ KNOWN_MISSES = frozenset(
         "chips to Person A bottle to Person B no need to rush either way",
         "The red pen, give it to Priya. The notepad, give it to Sam. Stapler, leave it.",
         "Mr Lee needs the thermometer. Mrs Khan wants her magazine. Both now please.",
-        "Bob can have whichever mug is closer to hand.",
-        "Crisps and bottle, up on the shelf with the pair of them, before the dog gets in.",
-        "A drink apiece, please: the cup's for Person A and the bottle's for Person B.",
-        "Any of the four is fine for Person A, grab what's nearest.",
-        "Person B's doing a double shift, so he gets both, the cup as well as the apple.",
-        "Person A or Person B, I'm easy, one of the two gets the bottle, your pick.",
-        "Person A's the only soul about and that's the only bottle, so she's having it.",
-        "Marco wants every plate on the worktop, white and blue alike, for plating up.",
-        "The red mug and its blue twin, on the counter to dry please.",
-        "Chips, cup, apple: those three to Person B; the bottle stays where it is.",
-        "Both items are spoken for by Person B, so hand the pair of them over.",
-        "Both of the cups want soaking, so into the sink with them.",
-        "Mr Lee's shivering, wrap him in both blankets, the blue and the grey.",
-        "Lena's carrying out two plates, the white and the blue, so let her have them both.",
-        "On the desk, please, go the red book and the green one, both for the reading corner.",
-        "Both spanners live in the locker, so in they go now.",
-        "Carol can't eat the apple, braces, so she gets the crisps instead.",
         "Person B can have the lot bar the cup, he never drinks from cups.",
-        "Scrap the chips for Person A, it's the apple she's actually after.",
-        "The bottle isn't Person A's to have; Person B's getting it.",
         "Person B's off chips this week, so they go to Person A.",
-        "No one but Person A gets that bottle, so over it goes to her.",
-        "Skip the chips for Person B, it's only the bottle he's needing.",
-        "Emma's not having the green cup, she's having the white.",
-        "Forget pens for Sam, it's the stapler he's after.",
-        "It's Mrs Khan wanting the water jug, not Mr Lee, he's fine.",
-        "Noah's the one the glue stick is for, Zoe can wait her turn.",
-        "Give the bottle to Alice, argh, my brain, Bob I meant.",
-        "Send the chips Person B's way, no, Person A's, my error.",
-        "The bottle goes to, um, yes, Person A, no change there.",
-        "Take the bottle to Person B, silly me, there's no Person B, so Person A.",
-        "Tray for the spoon, no, I've changed my mind, the sink.",
-        "The grey blanket for Mrs Khan, not grey, I mean blue.",
-        "Belt for the medium box, oh hang on, it's the small box that goes on.",
         "shelf for the bottle pls somewhere the baby cant grab it",
         "tom needs gloves on for the loading and mia wants tape",
         "jess is on the hammer today so give her it, and kofi needs the big spanner",
@@ -527,13 +493,6 @@ KNOWN_MISSES = frozenset(
         "Since she's peckish, the chipl should go over to Person A.",
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
-        "Got a spare minute to get the bottle across to Person B?",
-        "Wouldn't mind handing Person A her bottle, would you?",
-        "Could Person A get her bottle, please, when you're passing?",
-        "Do you think you could fit in giving Person B the chips and Person A the bottle?",
-        "Any chance you'd give Sam the black pen, and the notepad as well?",
-        "Might the lemon go out to Mr Novak, for his fish?",
-        "Can the green book come down off the shelf to Mrs Ortiz?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -580,9 +539,7 @@ KNOWN_UNCLEAR = frozenset(
         "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
         # blind53 (tuned on in session 55)
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
-        "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
-        "Was it the wipes or the sippy cup Grandad wanted? It's gone right out of my head.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -693,8 +650,10 @@ KNOWN_UNCLEAR = frozenset(
 # wrong, refused since session 54), tuned on in session 54: asserted now, the rest in KNOWN_MISSES
 # and KNOWN_UNCLEAR; "blind53" written in session 54 by another engineer and committed alone,
 # measured once at the end of session 54 (1 wrong, read right since session 55), tuned on in
-# session 55: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
-MEASURED_ONLY: frozenset[str] = frozenset()
+# session 55: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind54" written in
+# session 55 by another engineer and committed alone, measured once at the end of session 55, not
+# asserted)
+MEASURED_ONLY: frozenset[str] = frozenset({"blind54"})
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 
@@ -826,6 +785,8 @@ def test_corpus_sizes() -> None:
     assert len({e.scene for e in CORPORA["blind52"].entries}) >= 3
     assert len(CORPORA["blind53"].entries) >= 200
     assert len({e.scene for e in CORPORA["blind53"].entries}) >= 3
+    assert len(CORPORA["blind54"].entries) >= 200
+    assert len({e.scene for e in CORPORA["blind54"].entries}) >= 3
     for part, corpus in CORPORA.items():
         if part in MEASURED_ONLY:
             continue  # a held-back part is measured, not asserted

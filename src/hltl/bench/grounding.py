@@ -161,7 +161,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # never opened by the engineers who change the grounder before its one measurement at the end of
 # session 53; tuned on in session 54), blind53 (written in session 54 by another engineer and
 # committed alone, never opened by the engineers who change the grounder before its one measurement
-# at the end of session 54; tuned on in session 55).
+# at the end of session 54; tuned on in session 55), blind54 (written in session 55 by another
+# engineer and committed alone, never opened by the engineers who change the grounder before its one
+# measurement at the end of session 55; to be tuned on in session 56).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -232,6 +234,7 @@ PARTS = (
     "blind51",
     "blind52",
     "blind53",
+    "blind54",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")

@@ -4525,6 +4525,8 @@ def _both_then_one35s(text: str, node: Node, lexicon: Lexicon) -> None:
         nxt = items[j + 1] if j + 1 < len(items) else None
         if nxt is not None and (_is_word35s(nxt, "and", "or") or nxt.lemma == ","):
             continue  # a list after 'both'
+        if nxt is not None and nxt.kind == "word" and nxt.lemma == "and":
+            continue  # session 55 (12r): 'both, the cup as well as the apple' ('and') too
         more = sorted({t.obj for t in tasks(node)} - one)
         if not more:
             continue
