@@ -610,3 +610,29 @@ def test_not_sure_names_readings(text: str, scene: Scene, readings: tuple[str, .
 
 def test_not_sure_is_what_names_them(monkeypatch: pytest.MonkeyPatch) -> None:
     assert_refusals_are((_rewrites55._not_sure55,), NOT_SURE, monkeypatch)
+
+
+# session 52's _to_look52 took a second clause as the words of 'to see under …' ("jess needs the
+# torch to see under there and kofi wants the drill" read torch>B, the drill dropped)
+@pytest.mark.parametrize(
+    ("text", "scene"),
+    [
+        ("jess needs the torch to see under there and kofi wants the drill", WORKSHOP),
+        ("bob needs the cup to look in the cupboard and alice wants the apple", CELL),
+    ],
+)
+def test_to_look_keeps_the_next_clause(text: str, scene: Scene) -> None:
+    got = tree(text, scene)
+    assert got is None or len(list(offline.tasks(got))) == 2, text
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("Jess needs the torch to have a look under the bench.", "torch>B", WORKSHOP),
+        ("Jess needs the torch to see under there.", "torch>B", WORKSHOP),
+        ("Bob wants the cup to have a peek inside the box.", "cup>B", CELL),
+    ],
+)
+def test_to_look_still_read(text: str, want: str, scene: Scene) -> None:
+    assert_reads(text, want, scene)

@@ -274,7 +274,9 @@ _TO_LOOK52 = re.compile(
     r"|closer )?(?:look|peek|peep|squint|gander|shufti|butcher's|nosey|nose|rummage|poke "
     r"about|poke around)|look|peer|peek|see|check|poke about|poke around|rummage|search|root "
     r"about|root around)(?: (?:at|behind|under|underneath|beneath|in|inside|into|round|around|"
-    r"for|through|up|down|over|at the back of|in behind) [^,.;:!?]+?)?)(?=\s*[.!]?$)"
+    r"for|through|up|down|over|at the back of|in behind) (?:(?!\b(?:and|but|so|then|plus|also)\b)"
+    # session 55 (12): never a second clause ('… under there and kofi wants the drill')
+    r"[^,.;:!?])+?)?)(?=\s*[.!]?$)"
 )
 
 
