@@ -169,8 +169,6 @@ KNOWN_MISSES = frozenset(
         # blind37 (tuned on in session 39): refusals left at its one measurement (docs/grounding.md)
         "Alice is happy with either the bottle or the crisps after her spinning wheel demo, "
         "hand her whichever.",
-        "One apiece for the pair of them, they've both been up ladders with the bunting: the "
-        "bottle for Person A, the chips to Person B.",
         "Lily's building a castle like the one at the fete, she can have either block, she's "
         "not fussy.",
         "Stand both of the blocks up on the high chair so Lily can see them from her paddling "
@@ -444,7 +442,6 @@ KNOWN_MISSES = frozenset(
         "Marco's finishing the fish and wants the lrmon to squeeze over it.",
         "Any chance you could run the packing tape over to Mia for the pallets?",
         # blind52 (tuned on in session 54): refusals left at its one measurement (docs/grounding.md)
-        "Omar needs the sponge to wipe down the bench, and Emma needs a spoon.",
         "Kofi reckons he'll need the power drill to put up the shelving in the office.",
         "Person A's got nothing to drink; pass her the bottle and him the chips.",
         "Her bottle, Person A's. Fetch it for her please.",
@@ -473,36 +470,12 @@ KNOWN_MISSES = frozenset(
         "Priya's stuck stapling by hand, take her the stzpler.",
         "Mia needs the Scahner for stock-take, over to her please.",
         # blind53 (tuned on in session 55): refusals left at its one measurement (docs/grounding.md)
-        "Er, would you mind, when you've a sec, running the crisps over to Alice? Ta duck.",
-        "Be an angel and stow the crisps on the shelf, away from little hands, ta very much.",
-        "Pretty please with sprinkles on, hand Person B the cup, he's been so patient.",
-        "Porfa, could the chips find their way to Person A? She's off to ultimate frisbee after "
-        "this.",
-        "Hate to interrupt, only, would you kindly bring Person B the bottle, he's asked ever so "
-        "nicely.",
-        "Morning! Teeny favour, Dana would like the green cup, if you'd be an absolute gem.",
-        "Please, whenever suits, Sam could use the stapler, he's assembling the set dresser's "
-        "call sheets. Cheers ever so.",
-        "Go raibh maith agat, Jess would love the torch whenever you're passing, she's under the "
-        "van.",
-        "Carol needs the apple and Bob's after a mug, the blue one specifically.",
-        "What Person A is after is the bottle, and then the apple straight after that.",
-        "Person B has his heart set on the apple, bless him.",
-        "Person A wants her bottle and nothing else at the moment.",
-        "Omar requires the sponge for scrubbing out the sink, and Emma would quite like a banana.",
-        "Mr Lee's asking for his tablets and a drink from the water jug.",
-        "Kofi's needing the drill to put up the brackets; Jess would like the small spanner.",
-        "The crisps? Bob's been on at me about them all day, so let him have them.",
-        "Person A is thirsty, so bring her the bottle, and give him the apple too, Person B that "
-        "is.",
         "The cup: Person B. The chips: same again, him as well.",
         "Person A's after the bottle for her flask, and for Person B, the chips, he skipped "
         "breakfast.",
         "That bottle there is Person A's, take it across to her.",
-        "Person A's been hanging on for that bottle a good while now, off it goes to her.",
         "Mrs Khan's tablets are due, take them to her please, and her magazine as well.",
         "Tom's got a long drive ahead; the gloves are his, so pass them to him.",
-        "Jess needs a light under there, so pass her the flashlight and the small spanner too.",
         "The bottle for Person A, she's a ferry pilot, up at dawn, needs it now",
         "No water since lunch and Person A's flagging, the bottle, straight over to her, ta "
         "muchly.",
@@ -511,58 +484,15 @@ KNOWN_MISSES = frozenset(
         "chips to Person A bottle to Person B no need to rush either way",
         "The red pen, give it to Priya. The notepad, give it to Sam. Stapler, leave it.",
         "Mr Lee needs the thermometer. Mrs Khan wants her magazine. Both now please.",
-        "Bob can have whichever mug is closer to hand.",
-        "Crisps and bottle, up on the shelf with the pair of them, before the dog gets in.",
-        "A drink apiece, please: the cup's for Person A and the bottle's for Person B.",
-        "Any of the four is fine for Person A, grab what's nearest.",
-        "Person B's doing a double shift, so he gets both, the cup as well as the apple.",
-        "Person A or Person B, I'm easy, one of the two gets the bottle, your pick.",
-        "Person A's the only soul about and that's the only bottle, so she's having it.",
-        "Marco wants every plate on the worktop, white and blue alike, for plating up.",
-        "The red mug and its blue twin, on the counter to dry please.",
-        "Chips, cup, apple: those three to Person B; the bottle stays where it is.",
-        "Both items are spoken for by Person B, so hand the pair of them over.",
-        "Both of the cups want soaking, so into the sink with them.",
-        "Mr Lee's shivering, wrap him in both blankets, the blue and the grey.",
-        "Lena's carrying out two plates, the white and the blue, so let her have them both.",
-        "On the desk, please, go the red book and the green one, both for the reading corner.",
-        "Both spanners live in the locker, so in they go now.",
-        "Carol can't eat the apple, braces, so she gets the crisps instead.",
         "Person B can have the lot bar the cup, he never drinks from cups.",
-        "Scrap the chips for Person A, it's the apple she's actually after.",
-        "The bottle isn't Person A's to have; Person B's getting it.",
         "Person B's off chips this week, so they go to Person A.",
-        "No one but Person A gets that bottle, so over it goes to her.",
-        "Skip the chips for Person B, it's only the bottle he's needing.",
-        "Emma's not having the green cup, she's having the white.",
-        "Forget pens for Sam, it's the stapler he's after.",
-        "It's Mrs Khan wanting the water jug, not Mr Lee, he's fine.",
-        "Noah's the one the glue stick is for, Zoe can wait her turn.",
-        "Give the bottle to Alice, argh, my brain, Bob I meant.",
-        "Send the chips Person B's way, no, Person A's, my error.",
-        "The bottle goes to, um, yes, Person A, no change there.",
-        "Take the bottle to Person B, silly me, there's no Person B, so Person A.",
-        "Tray for the spoon, no, I've changed my mind, the sink.",
-        "The grey blanket for Mrs Khan, not grey, I mean blue.",
-        "Belt for the medium box, oh hang on, it's the small box that goes on.",
         "shelf for the bottle pls somewhere the baby cant grab it",
-        "apple goes to person a n the cup to person b, dont mix em up",
-        "person b is gagging for the bottle pass it him",
-        "person b could use the bottle hes a captioner and talks all day",
         "tom needs gloves on for the loading and mia wants tape",
-        "green block into the high chair so lily can reach it",
         "jess is on the hammer today so give her it, and kofi needs the big spanner",
         "Park the apple on the coubter out of Bob's reach, ta.",
         "Since she's peckish, the chipl should go over to Person A.",
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
-        "Got a spare minute to get the bottle across to Person B?",
-        "Wouldn't mind handing Person A her bottle, would you?",
-        "Could Person A get her bottle, please, when you're passing?",
-        "Do you think you could fit in giving Person B the chips and Person A the bottle?",
-        "Any chance you'd give Sam the black pen, and the notepad as well?",
-        "Might the lemon go out to Mr Novak, for his fish?",
-        "Can the green book come down off the shelf to Mrs Ortiz?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -605,19 +535,11 @@ KNOWN_UNCLEAR = frozenset(
         "Mr Novak's table. He asked for a plate. Which one, I can't remember. White or blue.",
         # blind51 (tuned on in session 53)
         # blind52 (tuned on in session 54)
-        "Priya needs one of the pens for signing, the black or the red, she did tell me but I've "
-        "forgotten.",
         "Kofi wants a spanner. Which one, he did say. Lost it, sorry.",
         "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
         # blind53 (tuned on in session 55)
-        "Sorry, bless you for waiting, Lena wants either the knife or the lemon for table nine "
-        "and I cannot for the life of me recall which she said.",
-        "Sam needs a pen and did tell me the colour, but it's gone clean out of my head.",
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
-        "Person A wants the cup, hang on, no, not the cup, something else, I've lost it.",
-        "lena or marco wanted the tongs not sure which",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
-        "Was it the wipes or the sippy cup Grandad wanted? It's gone right out of my head.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -15,6 +15,7 @@ from hltl.grounding import (
     _rewrites43r,
     _rewrites44r,
     _rewrites54r,
+    _rewrites55s,
     offline,
 )
 from hltl.grounding._normalise4 import _placed_then34r, _where_was_i36r
@@ -310,6 +311,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             *_rewrites44r._STEPS44R,
             # session 54 (12r; lead at the merge): '…, no wait, he asked for the Y' reads it too
             _rewrites54r._he_said54r,
+            # session 55 (12s): 'the green one' after 'the red book' said 'the green book' reads it
+            _rewrites55s._bare_adj55s,
         ),
         monkeypatch,
     )

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites41, _rewrites42, _rewrites42s, _rewrites45r
+from hltl.grounding import _normalise2, _rewrites41, _rewrites42, _rewrites42s, _rewrites45r
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -84,7 +84,9 @@ test_all_morning_long = IDIOMS.test(
 
 
 def test_idioms_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
-    IDIOMS.refused_without((_rewrites41._want_idiom41,), monkeypatch)
+    # session 55: session 30's idiom step reads "P's been pining / crying for X" too (blind53 #38's
+    # family, the same as _want_idiom41's): both taken out
+    IDIOMS.refused_without((_rewrites41._want_idiom41, _normalise2._idioms30), monkeypatch)
 
 
 # -- a want said in a cleft (_cleft_want42) -----------------------------------------------------

@@ -835,12 +835,13 @@ def test_past_refused(text: str, scene: Scene) -> None:
 def test_past_read_without(monkeypatch: pytest.MonkeyPatch) -> None:
     # (lead at the merge: the lead's `_told_done51l` and 12r's checks refuse some of the same
     # reports — "you brought Carol the blue mug", "he's had it" — so they are taken out too;
-    # session 52: the lead's `_got_it52l` refuses "has received" too)
-    from hltl.grounding import _rewrites51l, _rewrites51r, _rewrites52l
+    # session 52: the lead's `_got_it52l` refuses "has received" too; session 55: 12s's
+    # `_had_it55s` refuses "she's had it" of the one a handover goes to, the same family)
+    from hltl.grounding import _rewrites51l, _rewrites51r, _rewrites52l, _rewrites55s
 
     off = {*MINE, _rewrites51l._told_done51l, *_rewrites51r.REFUSE51R, _rewrites52l._got_it52l}
     monkeypatch.setattr(offline, "_REFUSALS", tuple(r for r in offline._REFUSALS if r not in off))
-    checks = set(_rewrites51r.CHECK51R)
+    checks = {*_rewrites51r.CHECK51R, _rewrites55s._had_it55s}
     monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in checks))
     # (each of these was read by the lead's first commit: the refusals are what refuse them)
     assert [t for t, s in PAST if tree(t, s) is None] == []

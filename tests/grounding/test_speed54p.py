@@ -141,7 +141,7 @@ def _translated_as_it_was(text: str, lexicon: Lexicon) -> str:
     if not n2._HONORIFIC25.search(text):
         return text
     return n2._HONORIFIC25.sub(
-        lambda m: "" if n2._person_at(m.string[m.end() :], lexicon) else m[0], text
+        lambda m: "" if n2._opens_with_person(m.string[m.end() :], lexicon) else m[0], text
     )
 
 

@@ -465,6 +465,14 @@ _WORDS: tuple[tuple[str, str], ...] = (
 # "the foreman himself", "Bob herself": a person said with emphasis (after anything else, "Ava
 # can get it herself", the person does it themself: see _words)
 _REFLEXIVE = r"(?<=\w) (?:himself|herself)\b"
+# "Noah is wanting the ruler for his maths": what it is for, taken off unless it is a thing of
+# the scene (_a_thing; session 55: "Lily's been whining for her teddy, and …" lost the teddy, 12b's
+# review); not what a person cries or asks for ("Lily's been crying for her teddy": a want)
+_FOR_THEIRS = (
+    r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)(?<!\bcrying)(?<!\basking)(?<!\basked)(?<!\bcalling)"
+    r"(?<!\bbegging)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
+    r"([a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$))"
+)
 _WORDS_LATE: tuple[tuple[str, str], ...] = (
     # "Give Bob the chips and then when he's got them give Alice the cup": the condition ends
     # at the command
@@ -549,14 +557,8 @@ _WORDS_LATE: tuple[tuple[str, str], ...] = (
         r"[^.;!?])*(?:[.;!?]|$))",
         r"\1 ",
     ),
-    # "Noah is wanting the ruler for his maths": what it is for, when no name is in it; not what a
-    # person cries or asks for ("Lily's been crying for her teddy": a want, session 55)
-    (
-        r"(?<!\bits)(?<!it's)(?<!\bis)(?<!\bare)(?<!\bcrying)(?<!\basking)(?<!\basked)(?<!\bcalling)"
-        r"(?<!\bbegging)\s+for (?:his|her|their|my|our) (?!(?:own)\b)"
-        r"([a-z]+(?: [a-z]+)?)(?=\s*(?:[.,;!?]|$))",
-        "",
-    ),
+    # "Noah is wanting the ruler for his maths": what it is for (_FOR_THEIRS, asked in _words)
+    (_FOR_THEIRS, ""),
     # "The magazine, Mrs Khan asked it, please bring to her": 'asked it' is asked for it
     (r"\basked (it|them|that)(?=\s*[,;.])", r"asked for \1"),
     # "the white plate, then the blue one, both to Lena"
@@ -772,6 +774,14 @@ def _only(words: str, lexicon: Lexicon, kind: str) -> bool:
     )
 
 
+def _a_thing(words: str, lexicon: Lexicon) -> bool:
+    """Whether ``words`` are a scene object's name, or end in a word that names one ('teddy',
+    'teddy bear'; not 'water polo', whose 'water' is only a bottle's alias word)."""
+    said = words.lower()
+    names = {n.lower() for o in lexicon.scene.objects for n in (o.id, o.category, *o.aliases)}
+    return said in names or bool(_ids(said.split()[-1], lexicon, "object"))
+
+
 def _words(text: str, lexicon: Lexicon) -> str:
     for pattern, repl in _WORDS:
         text = _sub(pattern, repl, text)
@@ -780,17 +790,42 @@ def _words(text: str, lexicon: Lexicon) -> str:
     # clause is refused (session 25)
     text = _sub(_REFLEXIVE, lambda m: "" if _person_before(m, lexicon) else m[0], text)
     for pattern, repl in _WORDS_LATE:
-        text = _sub(pattern, repl, text)
-    # "X should end up with Carol, and Y with Bob": goes to (each 'with' of the sentence)
+        if pattern is _FOR_THEIRS:
+            text = _sub(pattern, lambda m: m[0] if _a_thing(m[1], lexicon) else "", text)
+        else:
+            text = _sub(pattern, repl, text)
+    return text
+
+
+# Session 55 (12p): _words was one step ending with two rewrites and a spacing of its sentences,
+# run on every text; each is a step of its own after it (the same text out of the four), the
+# rewrites asked only where their words are (so stepguard guards _words and them).
+def _words_spaced55p(text: str, _lexicon: Lexicon) -> str:
+    """_words' sentences joined by one space."""
+    return " ".join(re.split(r"(?<=[.;!?])\s+", text))
+
+
+def _ends_up_with55p(text: str, lexicon: Lexicon) -> str:
+    """_words' "X should end up with Carol, and Y with Bob": goes to (each 'with' of the
+    sentence). A sentence of the text matches only where the text does; the text comes spaced by
+    _words_spaced55p, so its sentences joined again are the text."""
+    if not re.search(r"\bends? up with\b", text, _F):
+        return text
     sentences = re.split(r"(?<=[.;!?])\s+", text)
     for n, s in enumerate(sentences):
         m = re.search(r"\bends? up with\b", s, _F)
         if m is not None and not _person_ends_up36s(s[m.end() :], lexicon):
             s = _sub(r"\bends? up with\b", "go to", s)
             sentences[n] = _sub(r"\bwith\b", "to", s)
-    text = " ".join(sentences)
-    # "…, and the apple with Carol": an object left with a person goes to that person (in a
-    # list of what goes where; after 'give P' it could be a second recipient or company)
+    return " ".join(sentences)
+
+
+def _left_with55p(text: str, lexicon: Lexicon) -> str:
+    """_words' "…, and the apple with Carol": an object left with a person goes to that person
+    (in a list of what goes where; after 'give P' it could be a second recipient or company).
+    Each pattern holds ' with '."""
+    if not re.search(r"\bwith\b", text, _F):
+        return text
     given = re.search(r"\b(?:give|hand|pass|bring|take|fetch|get)\b", text, _F)
     for h in [] if given else lexicon.scene.humans:
         for alias in (*h.aliases, h.name):
@@ -2156,6 +2191,13 @@ def _courtesy(text: str, lexicon: Lexicon) -> str:
         ),
         text,
     )
+    return text
+
+
+# Session 55 (12p): the single spacing that closed _courtesy, _courtesy14 and _courtesy_frames,
+# a step of its own after each (the same text out): what is left of each is read by its words,
+# so stepguard guards it.
+def _spaced55p(text: str, _lexicon: Lexicon) -> str:
     return " ".join(text.split())
 
 
@@ -2788,6 +2830,13 @@ _UNAPOSTROPHED = {
     "theyve": "they've",
     "youll": "you'll",
     "theyll": "they'll",
+    # session 55 (12c's fuzz: 'i cant remember which', 'he wont mind'): an English 'cant' / 'wont'
+    # is not said to a robot
+    "cant": "can't",
+    "wont": "won't",
+    "mustnt": "mustn't",
+    "neednt": "needn't",
+    "hadnt": "hadn't",
 }
 
 
@@ -2963,7 +3012,7 @@ def _courtesy14(text: str, lexicon: Lexicon) -> str:
             and _names_nothing(m.group(1), lexicon)
         ):
             text = text[: m.start()] + m.group(2)
-    return " ".join(text.split())
+    return text
 
 
 # a sentence only of the speaker saying it is them again ("Sorry, me again.", "It's me again!",
@@ -4791,7 +4840,7 @@ def _courtesy_frames(text: str, lexicon: Lexicon) -> str:
         and (_ids(m.group(1), lexicon) <= _ids(text[m.end() :], lexicon))
     ):
         text = text[m.end() :]
-    return " ".join(text.split())
+    return text
 
 
 # -- wants and purposes --------------------------------------------------------------------------
@@ -5786,6 +5835,13 @@ def _word_idiom(words: str, lexicon: Lexicon) -> bool:
     return bool(plain) and bool(_WORD_IDIOM18.match(plain)) and _names_nothing(words, lexicon)
 
 
+def _word_idiom_may(said: str) -> bool:
+    """Session 55 (12p): False only where _word_idiom is false of every stretch of ``said`` (words
+    joined by single spaces): the gate finds none of _WORD_IDIOM18's words in it lower-cased, and
+    a stretch's plain form is a piece of that."""
+    return re.may_match(_WORD_IDIOM18.pattern, int(_WORD_IDIOM18.flags), said.lower())
+
+
 _P = r"([A-Za-z][\w ]*?)"  # a person's name (checked by the rewrite)
 _X = r"([A-Za-z][\w ,'-]*?)"  # what is asked for (checked by the rewrite)
 # what a thing is wanted for: an occasion, which names no one and nothing in the scene
@@ -6656,6 +6712,13 @@ def _ends_object(chunk: str, lexicon: Lexicon) -> bool:
     return any(r.kind == "object" for r in last.refs) and tail.endswith(last.text.lower())
 
 
+# the words after which _fillers19 asks whether a word is 'loose' between a thing and where it goes
+_LOOSE_BEFORE19 = ("on", "onto", "to", "in", "into", "over")
+# the interjections that are not address (session 55, 12p: the difference had been made at every
+# call)
+_INTERJECTION_ONLY19 = _INTERJECTION19 - _ADDRESS
+
+
 def _fillers19(text: str, lexicon: Lexicon) -> str:
     """The speaker's own words taken off by kind (above): manner adverbs, particles and words of
     immediacy wherever they stand (not between a determiner and its noun: 'the woolly hat'), and
@@ -6666,7 +6729,7 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
     words = out.split(" ")
     # interjections said first without a comma ('aye aye the bottle's going …')
     lead = 0
-    while lead < len(words) - 2 and words[lead].lower() in _INTERJECTION19 - _ADDRESS:
+    while lead < len(words) - 2 and words[lead].lower() in _INTERJECTION_ONLY19:
         if _held_word(words[lead], lexicon) or words[lead].lower() in ("please", "and", "so"):
             break
         lead += 1
@@ -6676,12 +6739,22 @@ def _fillers19(text: str, lexicon: Lexicon) -> str:
     for k, w in enumerate(words):
         core = w.strip('.,;:!?"')
         low = core.lower()
+        if (
+            low not in _PARTICLES
+            and (len(low) < 5 or not low.endswith("ly"))
+            and not (0 < k < len(words) - 1 and words[k + 1].lower() in _LOOSE_BEFORE19)
+        ):
+            # session 55 (12p): a word none of the three tests below can take off (not a
+            # particle, not an -ly word, as _manner asks first, nor before a word 'loose' asks
+            # for), kept at once: most words are
+            kept.append(w)
+            continue
         prev = words[k - 1].lower().strip(",;:") if k else ""
         last = k + 1 == len(words) or w[-1:] in ",;:.!?"
         glued = low in _PARTICLES and k > 0 and prev[-1:] not in (",", ";", ":")
         loose = (  # the cheap tests first (session 44, 12b): the same value, not asked of most
             0 < k < len(words) - 1
-            and words[k + 1].lower() in ("on", "onto", "to", "in", "into", "over")
+            and words[k + 1].lower() in _LOOSE_BEFORE19
             and _unknown_word(core, lexicon)
             and _ends_object(" ".join(words[:k]), lexicon)
         )  # 'the sippy cup aloft on the high chair': a word between a thing and where it goes

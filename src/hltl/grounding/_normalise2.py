@@ -6196,7 +6196,7 @@ def _address_after26r(text: str, lexicon: Lexicon) -> str:
     return _ADDRESS_AFTER26.sub(after_person, text)
 
 
-def _person_at(rest: str, lexicon: Lexicon) -> bool:
+def _opens_with_person(rest: str, lexicon: Lexicon) -> bool:
     """Whether ``rest`` starts with the name of a person of the scene."""
     said = _names(" ".join(rest.split()[:2]), lexicon)
     return (
@@ -6223,7 +6223,7 @@ def _translated25(text: str, lexicon: Lexicon) -> str:
     if not _HONORIFIC25.search(text):
         return text
     return _HONORIFIC25.sub(
-        lambda m: "" if _person_at(m.string[m.end() :], lexicon) else m[0], text
+        lambda m: "" if _opens_with_person(m.string[m.end() :], lexicon) else m[0], text
     )
 
 

@@ -62,6 +62,7 @@ from hltl.grounding._normalise1 import (
     _surface_only,
     _tasks_of,
     _word_idiom,
+    _word_idiom_may,
 )
 from hltl.grounding._normalise2 import (
     _ASKS29,
@@ -96,8 +97,8 @@ from hltl.grounding._normalise2 import (
     _mid_aside34,
     _mind_if34,
     _one_name,
+    _opens_with_person,
     _over_and34,
-    _person_at,
     _questions34,
     _run_on_remarks34,
     _see_the34,
@@ -1349,7 +1350,10 @@ def _verb_last27(text: str, lexicon: Lexicon) -> str:
         who, what, verb = m["who"], m["what"], m["verb"]
         if verb.lower() in ("put", "place", "set", "leave"):
             return m[0]
-        if not _person_at(who, lexicon) or _names(who, lexicon)[0].text.lower() != who.lower():
+        if (
+            not _opens_with_person(who, lexicon)
+            or _names(who, lexicon)[0].text.lower() != who.lower()
+        ):
             return m[0]
         if not _objects_only(what, lexicon) or len(_names(who, lexicon)) != 1:
             return m[0]
@@ -2604,24 +2608,27 @@ def _word_edges18(text: str, lexicon: Lexicon) -> str:
     words = text.split()
     if len(words) < 3:
         return text
+    # session 55 (12p): where no stretch can be an idiom (the gate finds none of their words in
+    # the words joined), only a chat token of one word is asked for
+    idioms = _word_idiom_may(" ".join(words))
     start, stop = 0, len(words)
     for _ in range(4):
         moved = False
         for n in (5, 4, 3, 2, 1):
-            if stop - start - n < 2:
+            if stop - start - n < 2 or (n > 1 and not idioms):
                 continue
             tail = " ".join(words[stop - n : stop])
             bare = tail.strip(" .!?,").lower()
-            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(tail, lexicon):
+            if (n == 1 and _chat_token(bare, lexicon)) or (idioms and _word_idiom(tail, lexicon)):
                 stop -= n
                 moved = True
                 break
         for n in (5, 4, 3, 2, 1):
-            if stop - start - n < 2:
+            if stop - start - n < 2 or (n > 1 and not idioms):
                 continue
             head = " ".join(words[start : start + n])
             bare = head.strip(" .!?,").lower()
-            if (n == 1 and _chat_token(bare, lexicon)) or _word_idiom(head, lexicon):
+            if (n == 1 and _chat_token(bare, lexicon)) or (idioms and _word_idiom(head, lexicon)):
                 start += n
                 moved = True
                 break

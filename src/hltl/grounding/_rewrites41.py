@@ -21,7 +21,7 @@ _CLAUSE_OPEN41 = re.compile(
 )
 
 
-def _person_at41(text: str, end: int, lexicon: Lexicon, pronouns: bool = False) -> str | None:
+def _person_ending41(text: str, end: int, lexicon: Lexicon, pronouns: bool = False) -> str | None:
     """The person of the scene named by the one or two words ending at ``end`` ("Bob", "Person
     B", "Mrs Khan"; 'he' / 'she' when ``pronouns``), opening its clause; None if there is none."""
     words = text[:end].split(" ")
@@ -83,7 +83,7 @@ def _want_idiom41(text: str, lexicon: Lexicon) -> str:
         if m["p"].lower() == "and":
             if _elided42(text[: m.start("p")], lexicon) is None:
                 continue
-        elif _person_at41(text, m.end("p"), lexicon, pronouns=True) is None:
+        elif _person_ending41(text, m.end("p"), lexicon, pronouns=True) is None:
             continue
         rest = re.split(
             r"[,;:.!?—–]| (?:and|but|so|while|after|before|since|for) ",
@@ -150,7 +150,7 @@ def _will_do41(text: str, lexicon: Lexicon) -> str:
     k = _KIND_WANTED41.match(head)
     end = m["end"].strip() or "."
     if k is not None:
-        who = _person_at41(head, k.end("p"), lexicon)
+        who = _person_ending41(head, k.end("p"), lexicon)
         if who is None:
             return text
         if _ids(k["want"], lexicon, "object") or _ids(k["want"], lexicon, "surface"):
@@ -186,7 +186,7 @@ def _asked_that41(text: str, lexicon: Lexicon) -> str:
     if "ask" not in text.lower() and "request" not in text.lower():
         return text
     for m in list(_ASKED_THAT41.finditer(text))[::-1]:
-        who = _person_at41(text, m.end("p"), lexicon)
+        who = _person_ending41(text, m.end("p"), lexicon)
         if who is None:
             continue
         start = m.end("p") - len(who)
@@ -252,7 +252,7 @@ def _said_want41(text: str, lexicon: Lexicon) -> str:
     ):
         return text
     for m in list(_SAID_WANT41.finditer(text))[::-1]:
-        who = _person_at41(text, m.end("p"), lexicon)
+        who = _person_ending41(text, m.end("p"), lexicon)
         if who is None:
             continue
         (pid,) = _ids(who, lexicon, "human")

@@ -7,7 +7,7 @@ from collections.abc import Callable
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _name, _objects_only, _only, _only_person
 from hltl.grounding._normalise4 import _fit36
-from hltl.grounding._rewrites41 import _elided42, _person_at41
+from hltl.grounding._rewrites41 import _elided42, _person_ending41
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
@@ -141,7 +141,7 @@ def _more_than42(text: str, lexicon: Lexicon) -> str:
     if "more than" not in text.lower():
         return text
     for m in list(_MORE_THAN42.finditer(text))[::-1]:
-        if _person_at41(text, m.end("p"), lexicon, pronouns=True) is None:
+        if _person_ending41(text, m.end("p"), lexicon, pronouns=True) is None:
             continue
         if not _objects_only(m["x"], lexicon):
             continue
@@ -646,7 +646,7 @@ def _own_thing42(text: str, lexicon: Lexicon) -> str:
     if not any(w in text.lower() for w in (" his ", " her ", " their ")):
         return text
     for m in list(_OWN_THING42.finditer(text))[::-1]:
-        who = _person_at41(text, m.end("p"), lexicon)
+        who = _person_ending41(text, m.end("p"), lexicon)
         if who is None or not _fit36(next(iter(_ids(who, lexicon))), m["pron"], lexicon):
             continue
         if not any(_objects_only(" ".join(m["x"].split(" ")[:n]), lexicon) for n in (1, 2)):

@@ -8,7 +8,7 @@ from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person
 from hltl.grounding._normalise4 import _fit36
-from hltl.grounding._rewrites41 import _TO_HIM42, _elided42, _person_at41
+from hltl.grounding._rewrites41 import _TO_HIM42, _elided42, _person_ending41
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node
 
@@ -99,7 +99,7 @@ def _want_words44(text: str, lexicon: Lexicon) -> str:
         if m["p"].lower() == "and":
             if _elided42(text[: m.start("p")], lexicon) is None:
                 continue
-        elif _person_at41(text, m.end("p"), lexicon, pronouns=True) is None and (
+        elif _person_ending41(text, m.end("p"), lexicon, pronouns=True) is None and (
             _sayer44(text[: m.start("p")], m["p"], lexicon) is None
         ):
             continue
@@ -412,7 +412,7 @@ def _all_state44(text: str, lexicon: Lexicon) -> str:
     if " all " not in text.lower():
         return text
     for m in list(_ALL_STATE44.finditer(text))[::-1]:
-        if _person_at41(text, m.end("p"), lexicon) is None:
+        if _person_ending41(text, m.end("p"), lexicon) is None:
             continue
         text = f"{text[: m.end('be')]} {text[m.end() :]}"
     return text
@@ -685,7 +685,7 @@ def _kind_want44(text: str, lexicon: Lexicon) -> str:
     m = _KIND_WANT44.search(text)
     if m is None or _ids(text, lexicon, "object"):
         return text
-    if _person_at41(text, m.end("p"), lexicon) is None:
+    if _person_ending41(text, m.end("p"), lexicon) is None:
         return text
     kinds = _DRINK_KINDS44 if m["drink"] else _FOOD_KINDS44
     found = [o for o in lexicon.scene.objects if o.category in kinds]

@@ -437,14 +437,27 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
 
 
 # "…, and she's had it.", "…, she's had it already.", "…, and he's eaten it.", "…, I gave him the
-# red.": the thing a reading hands over is already had, or already given
+# red.", "…, I gave it to him." (session 55): the thing a reading hands over is already had, or
+# already given
 _DONE51R = re.compiled(
     r"(?:^|[,;.:!?]|\b(?:and|but|so|though)\b)\s*(?:(?:and|but|so|though|oh)\s+)?"
     rf"(?P<who>she|he|they|{_P46R})(?:'s| has|'ve| have)(?: already| just| since)? (?:had|eaten|"
     r"drunk|finished|used|taken|received|got|been given) (?:it|them|one|that|hers|his)"
     r"(?: already| now| by now| earlier| just now)?\s*(?=[,;.!?]|$)|"
-    r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took) "
-    r"(?P<to>him|her|them)\b",
+    # … and handed over with no one said, or given said of the thing ("…, I've already handed it
+    # over.", "…, I gave it him.", "…, it's been given to him already.": 12c's fuzz)
+    r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took|sent) "
+    r"(?:it|them)(?: (?P<to2>him|her|them))?(?: (?:over|across|round|back))?"
+    r"(?: already| earlier| just now| a minute ago| before)?\s*(?=[,;.!?]|$)"
+    r"|\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took) "
+    # session 55 (lead; 12c's fuzz: "Bob wants the apple, I gave it to him." read apple>B): the
+    # thing said as 'it' / 'them' and the person after 'to'
+    r"(?:(?:it|them|that|those|one) (?:back |over |across |round )?to )?"
+    rf"(?P<to>him|her|them|{_P46R})\b"
+    r"|\b(?:it|they)(?:'s| has|'ve| have|'re| are) (?:already |just )?been (?:already |just )?"
+    r"(?:given|handed|passed|brought|sent|delivered)(?: (?:over|across|round|back))?"
+    rf"(?: to (?P<to3>him|her|them|{_P46R}))?"
+    r"(?: already| earlier| just now| a minute ago)?\s*(?=[,;.!?]|$)",
     _F,
 )
 
@@ -459,7 +472,9 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
     low = text.lower()
     if not any(
         w in low for w in ("had", "eaten", "drunk", "finished", "used", "taken", "got")
-    ) and (not any(w in low for w in ("gave", "given", "handed", "passed", "brought", "took"))):
+    ) and (
+        not any(w in low for w in ("gave", "given", "handed", "passed", "brought", "took", "sent"))
+    ):
         return
     got = {t.target for t in tasks(node) if t.kind == "deliver"}
     if not got:
@@ -469,8 +484,10 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
             # "The red book for Noah, no, he's finished that, the green one": said of the thing
             # the correction takes back
             continue
-        who = m["who"] or m["to"]
-        if who.lower() in ("she", "he", "her", "him"):
+        who = m["who"] or m["to"] or m["to2"] or m["to3"]
+        if who is None:
+            fits = True  # handed over, to no one said: the thing the reading hands
+        elif who.lower() in ("she", "he", "her", "him"):
             fits = any(_agrees44r(pid, who, lexicon) for pid in got)
         elif who.lower() in ("they", "them"):
             fits = True

@@ -256,8 +256,8 @@ def _not_x_rest51s(m: re.Match[str] | None, text: str, lexicon: Lexicon) -> str 
     """The rewrite "Not <x>, <rest>" of ``m`` (a match of ``text`` with groups ``x`` and
     ``rest``) when ``x`` names one thing of the scene and nothing else and the rewrite reads
     without handing it over (session 44's `_read_without44r`); None otherwise (no match included).
-    Shared by `_dont_bother51s` and session 52's `_dont_just52s`, each asking its own `_plain51s`
-    of it."""
+    Shared by `_dont_bother51s` and session 52's `_dont_just52s`, which ask `_plain51s` and
+    `_rewrites52s._plain52s` of it."""
     if m is None or len(_ids(m["x"], lexicon, "object")) != 1:
         return None
     if _ids(m["x"], lexicon) != _ids(m["x"], lexicon, "object"):

@@ -23,7 +23,7 @@ from hltl.grounding.tree import Node, tasks
 _P52 = r"(?:[Pp]erson [A-Za-z]|[A-Z]\w*(?: [A-Z]\w*)?)"
 
 
-def _person_at52(text: str, lexicon: Lexicon) -> str | None:
+def _person_opening52(text: str, lexicon: Lexicon) -> str | None:
     """The words opening ``text`` (one to three, the longest) that name one person of the scene
     and nothing else, however cased ('lena', 'Mrs Khan', 'person b'); None if none do."""
     words = re.findall(r"[A-Za-z]+", text.split("'")[0])[:3]
@@ -411,7 +411,7 @@ def _poor52(text: str, lexicon: Lexicon) -> str:
     if text[:4].lower() not in ("poor", "bles"):
         return text
     m = _POOR52.match(text)
-    if m is None or _person_at52(text[m.end() :], lexicon) is None:
+    if m is None or _person_opening52(text[m.end() :], lexicon) is None:
         return text
     if not _WANTS52.search(text[m.end() :]):
         return text  # ("Poor Marco burnt his thumb, so …" is session 43's)
@@ -570,7 +570,7 @@ def _cataphor52(text: str, lexicon: Lexicon) -> str:
     if m is None or _names(m["w"], lexicon):
         return text
     rest = text[m.end() :]
-    who = _person_at52(rest, lexicon)
+    who = _person_opening52(rest, lexicon)
     if who is None or not _WANTS52.search(rest) or len(_ids(rest, lexicon, "human")) != 1:
         return text
     (pid,) = _ids(who, lexicon)

@@ -7,23 +7,26 @@ from collections.abc import Callable
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids
-from hltl.grounding._rewrites51s import _not_x_rest51s
-from hltl.grounding._rewrites51s import _plain51s as _plain51
+from hltl.grounding._rewrites51s import _not_x_rest51s, _plain51s
 from hltl.grounding.lexicon import Lexicon, first_name_sex36s, person_name, said_sex35s
 from hltl.grounding.tree import Node, tasks
 
-# a past holding or taking said after the negation ("…, so he had the blue one", "he had the
-# pills"): a report, which the rewrite would leave to be read as a handover (12c 13:43)
+# what a person holds, held, was handed or wanted once ("…, so he had the blue one", "he had the
+# pills", "Bob has …", "Lily's got …"): a report, which a rewrite would leave to be read as a
+# handover (12c 13:43). One list for session 52's rules here (12s) and session 53's `_held53r` (12r)
 _HELD52S = re.compile(
-    r"\b(?:had|got|took|received|was given|were given|was handed|has had|'s had|has got)\b", _F
+    r"\b(?:has|had|'s got|'ve got|have got|got|gotten|took|taken|received|wanted|needed|was "
+    r"after|were after|went|given|was handed|already|ended up|finished up|wound up|kept|keeps|"
+    r"holds|holding|held)\b",
+    _F,
 )
 
 
-def _plain51s(out: str, text: str, lexicon: Lexicon) -> str:
+def _plain52s(out: str, text: str, lexicon: Lexicon) -> str:
     """Session 51's `_plain51s`, unless ``text`` says a past holding (above): then ``text``."""
     if out != text and _HELD52S.search(text):
         return text
-    return _plain51(out, text, lexicon)
+    return _plain51s(out, text, lexicon)
 
 
 # -- session 52 (12s): a he / she who wants a thing the reading gives to the other sex ----------
@@ -99,7 +102,7 @@ def _not_use52s(text: str, lexicon: Lexicon) -> str:
     if "drink" not in low and "eat" not in low and "use" not in low:
         return text
     out = _NOT_USE52S.sub("doesn't want ", text)
-    return _plain51s(out, text, lexicon)
+    return _plain52s(out, text, lexicon)
 
 
 # "Jess doesn't need the drill after all, she's only after the torch for the crawl space." (#139):
@@ -117,7 +120,7 @@ def _after_all52s(text: str, lexicon: Lexicon) -> str:
     """Session 52 (12s): 'P doesn't need the X after all, …' said without 'after all' (above)."""
     if "after all" not in text.lower():
         return text
-    return _plain51s(_AFTER_ALL52S.sub(lambda m: m["neg"], text), text, lexicon)
+    return _plain52s(_AFTER_ALL52S.sub(lambda m: m["neg"], text), text, lexicon)
 
 
 # "Don't put the knife out, just the tongs for Lena." (#136): a negated command whose thing the
@@ -138,7 +141,7 @@ def _dont_just52s(text: str, lexicon: Lexicon) -> str:
     if "just" not in low and "only" not in low:
         return text
     out = _not_x_rest51s(_DONT_JUST52S.match(text.strip()), text, lexicon)
-    return text if out is None else _plain51s(out, text, lexicon)
+    return text if out is None else _plain52s(out, text, lexicon)
 
 
 # -- session 52 (12s): an opening perfect participle (12c's probe) ------------------------------

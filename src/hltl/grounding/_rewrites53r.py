@@ -12,6 +12,7 @@ from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites50l import forgets50l
 from hltl.grounding._rewrites51r import _BACK51R, _CUE51R, _one_task51r
 from hltl.grounding._rewrites52r import _put_pair52r
+from hltl.grounding._rewrites52s import _HELD52S
 from hltl.grounding.lexicon import Lexicon, person_name
 from hltl.grounding.tree import Group, Node, Task, has_choice, tasks
 
@@ -105,19 +106,11 @@ def _tasks53r(text: str, lexicon: Lexicon) -> list[Task] | None:
     return list(tasks(node))
 
 
-# what a person holds, held, or wanted once: a text saying so is left to the older rules
-_HELD53R = re.compiled(
-    r"\b(?:has|had|'s got|'ve got|have got|got|gotten|took|taken|received|wanted|needed|was "
-    r"after|were after|went|given|already|ended up|finished up|wound up|kept|keeps|holds|holding|"
-    r"held)\b",
-    _F,
-)
-
-
 def _held53r(words: str) -> bool:
     """Whether ``words`` say what someone has, had or wanted once ("Bob has …", "Alice had …",
-    "Lily's got …"): a rewrite of this session's is not taken there (12c's variants)."""
-    return _HELD53R.search(words) is not None
+    "Lily's got …"; session 52's list of past holdings): a rewrite of this session's is not taken
+    there (12c's variants)."""
+    return _HELD52S.search(words) is not None
 
 
 # "Take the bottle to Alice, oh hang on, it's Bob who wants it, not Alice."

@@ -2055,7 +2055,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\b(take|bring|pass|carry) ([a-z][\\w ]*?)'s ([a-z ]+?) over to (him|her)\\b", 2, True),
     ("\\b(that's|that is) (everything|all|it) from (?:me|us)(?=\\s*(?:[.!]|$))", 2, True),
     (
-        "\\b(thats|whats|theres|isnt|doesnt|didnt|wouldnt|couldnt|shouldnt|youre|theyre|hasnt|havent|arent|wasnt|shes|hes|im|ive|dont|werent|youve|weve|theyve|youll|theyll)\\b",
+        "\\b(thats|whats|theres|isnt|doesnt|didnt|wouldnt|couldnt|shouldnt|youre|theyre|hasnt|havent|arent|wasnt|shes|hes|im|ive|dont|werent|youve|weve|theyve|youll|theyll|cant|wont|mustnt|neednt|hadnt)\\b",
         2,
         True,
     ),
@@ -2066,8 +2066,6 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
         True,
     ),
     ("\\b(the [a-z ]+?),\\s*(?:those|these|they|it|that) (go|goes|are|is)\\b", 2, True),
-    ("\\b(the \\w+(?: \\w+)?) with (Alice)(?=\\s*(?:[.,;!?]|\\band\\b|$))", 2, True),
-    ("\\b(the \\w+(?: \\w+)?) with (Bob)(?=\\s*(?:[.,;!?]|\\band\\b|$))", 2, True),
     ("\\b(the \\w+(?: \\w+)?) with (Person\\ A)(?=\\s*(?:[.,;!?]|\\band\\b|$))", 2, True),
     ("\\b(the \\w+(?: \\w+)?) with (Person\\ B)(?=\\s*(?:[.,;!?]|\\band\\b|$))", 2, True),
     ("\\b(the \\w+(?: \\w+)?) with (Person\\ C)(?=\\s*(?:[.,;!?]|\\band\\b|$))", 2, True),
@@ -2415,6 +2413,7 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ("\\bwilt thou\\b", 2, True),
     ("\\bwilt\\b(?! (?:flower|leaf))", 2, True),
     ("\\bwishes to have\\b", 2, True),
+    ("\\bwith\\b", 2, True),
     ("\\bwould care for\\b", 2, True),
     (
         "\\bwould it be (?:at all |even )?(?:possible|ok|okay|alright) for (.+?) to be (taken|brought|given|handed|put|placed|moved|delivered|sent|passed)\\b",
@@ -3008,6 +3007,11 @@ PATTERNS: tuple[tuple[str, int, bool], ...] = (
     ),
     ("^(?:go(?: go)*|let's go|off you go)$", 2, True),
     ("^(?:go|do it|work it) (?=(?:whichever|any|either) way\\b)", 2, True),
+    (
+        "^(?:great (?:show|energy|work|job)(?: (?:tonight|today|everyone|team))?|good (?:hustle|work|job|show)(?:,? (?:team|everyone|folks))?|let's hear it(?:,? everybody)?|then we're (?:done|finished)|copy(?: that)?(?:,? copy)?|prithee(?:,? good robot)?|good evening and welcome|and bob's your uncle|howdy(?: partner)?|bravo(?:,? bravo)?|(?:nice|good) work|kia ora(?: mate)?|thanks in advance|arr(?:,? matey)?|bob's your uncle|roger(?: that)?|g'day(?: mate)?|ahoy(?: there)?|ey up(?: love)?|thank ya kindly|totally stoked|appreciate it|over and out|much obliged|best regards|kind regards|there we go|right then|no worries|good grief|hey there|checkmate|sweet as|yo ho ho|all done|job done|and now|namaste|play on|ez clap|cheerio|y'hear|no cap|encore|stoked|gnarly|gg ez|innit|ta-da|argh+|mmm+|lmao|tysm|slay|anon|dude|zzz+|yawn|ugh+|lol|tbh|omg|ooh|eh|yo|fr|gg|ez|ty|when (?:u|you) get a (?:chance|sec|minute|moment)|when (?:ur|you're) free|asap|rn)$",
+        34,
+        True,
+    ),
     ("^(?:her|his|their)\\b", 2, True),
     ("^(?:he|she)(?:'s| is) to have\\b", 2, True),
     ("^(?:he|she)\\b", 2, True),

@@ -373,6 +373,9 @@ _DEFERRED33L = re.compile(
     r"\b(?:is|are|'s|was)\s+(?:all\s+)?up to\s+"
     r"(?!(?:you|yourself|the robots?)\b|(?:the\s+)?(?:top|brim|rim|ceiling|line|mark)\b)"
     r"|\b(?:[a-z]+'s|his|her|their)\s+(?:call|decision|say-so)\b(?!\s+(?:to|for|of)\b)"
+    # session 55 (12): 'call' naming a thing ("the set dresser's call sheets", "his call list")
+    r"(?!\s+(?:sheets?|lists?|logs?|centres?|centers?|signs?|bells?|buttons?|numbers?|"
+    r"slips?|cards?|charts?|rotas?|boxes|box|notes?)\b(?!-))"
     r"|\bsee what\s+[\w' ]{1,40}?\s+(?:says|thinks|wants|decides)\b"
     r"|\bdepending on (?:what|whatever|whether)\s+[\w' ]{1,40}?\s+"
     r"(?:says|tells|decides|wants|thinks)\b"
@@ -4522,6 +4525,8 @@ def _both_then_one35s(text: str, node: Node, lexicon: Lexicon) -> None:
         nxt = items[j + 1] if j + 1 < len(items) else None
         if nxt is not None and (_is_word35s(nxt, "and", "or") or nxt.lemma == ","):
             continue  # a list after 'both'
+        if nxt is not None and nxt.kind == "word" and nxt.lemma == "and":
+            continue  # session 55 (12r): 'both, the cup as well as the apple' ('and') too
         more = sorted({t.obj for t in tasks(node)} - one)
         if not more:
             continue

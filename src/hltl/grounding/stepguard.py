@@ -88,6 +88,7 @@ _NORMALISE1 = "hltl.grounding._normalise1"
 _SUB = (_NORMALISE1, "_sub")
 _RX = (_NORMALISE1, "_rx")
 _SAID_ANY = (_NORMALISE1, "_said_any")
+_SAYS54R = ("hltl.grounding._rewrites54r", "_says54r")  # any of its words in the text, lower
 _DROP = (_NORMALISE1, "_drop")  # _sub of the pattern with a replacement of each match
 _SEARCHES = ("search", "match", "fullmatch")
 _ITERATIONS = ("finditer", "findall")  # an empty iteration where the pattern finds nothing
@@ -292,7 +293,14 @@ class _Reader:
         return (self._str(node),)
 
     def _words(self, node: ast.expr) -> tuple[str, ...]:
-        """The strings of a tuple, list or set written out."""
+        """The strings of a tuple, list or set written out, or of a module's tuple of strings
+        (session 55, 12p: 'any(w in low for w in _GRAND_WORDS54)'; kept with the guard as a
+        tuple of patterns is)."""
+        if isinstance(node, ast.Name) and node.id not in self.locals:
+            value = self.glob.get(node.id)
+            if isinstance(value, tuple) and value and all(type(v) is str for v in value):
+                return self._patterns(node.id)
+            raise _Unread("words")
         if isinstance(node, ast.Tuple | ast.List | ast.Set):
             out: list[str] = []
             for e in node.elts:  # session 49: '*("a", "b"), *("c",)' too
@@ -409,6 +417,17 @@ class _Reader:
             if len(node.args) != 2 or node.keywords or not self._is_text(node.args[0]):
                 raise _Unread("_said_any")
             return frozenset(("in", w, 1) for w in self._words(node.args[1]))
+        if isinstance(node, ast.Call) and self._helper(node.func, _SAYS54R):
+            # session 55 (12p): '_says54r(text, "w1", "w2")', any word in the text lower-cased
+            words = node.args[1:]
+            if (
+                not words
+                or node.keywords
+                or not self._is_text(node.args[0])
+                or any(isinstance(w, ast.Starred) for w in words)
+            ):
+                raise _Unread("_says54r")
+            return frozenset(("in", self._str(w), 1) for w in words)
         if (
             isinstance(node, ast.Call)
             and isinstance(node.func, ast.Name)
