@@ -13,7 +13,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import offline
+from hltl.grounding import _rewrites55, _rewrites55s, offline
 from tests.grounding.helpers import CELL, WARD, WORKSHOP, PhrasingCases, assert_case, tree
 
 CASES = PhrasingCases()
@@ -46,6 +46,10 @@ def test_the_refusal_names_both_readings() -> None:
 def test_without_the_check_the_handover_is_read(monkeypatch: pytest.MonkeyPatch) -> None:
     # the check is what refuses: turned off, the old reading (placement and handover) comes back
     monkeypatch.setattr(offline, "_placed_wanted38l", lambda text, node, lexicon: None)
+    # session 55 (lead, at the merge): 12's _placed_wanted55 (the run-on form) and 12s's
+    # _where_is55s ('Cup on the shelf, …' may say where it is) refuse the same sentences: out too
+    later = {_rewrites55._placed_wanted55, _rewrites55s._where_is55s}
+    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in later))
     assert_case("Put the cup on the shelf, Bob wants it for his lunch.", "cup@shelf & cup>B", CELL)
     assert tree("Cup on the shelf, Bob wants it.", CELL) is not None
 

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from hltl.bench.grounding import parse_expectation, show_tree
 from hltl.errors import GroundingError
-from hltl.grounding import phrasing
+from hltl.grounding import _rewrites55r, offline, phrasing
 from hltl.grounding.offline import parse_instruction
 from tests.grounding.helpers import KITCHEN, LAB, assert_reads, tree
 
@@ -128,5 +128,8 @@ def test_split_without(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(
         phrasing, "_PASSES", tuple(p for p in phrasing._PASSES if "_said_want_on47p" not in repr(p))
     )
+    # session 55: 12r's _list_split55r refuses the same split reading (taken out too)
+    split = _rewrites55r._list_split55r
+    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c is not split))
     got = tree("Omar is after the spoon and the bowl in the sink.", LAB)
     assert got is not None and show_tree(got) == _shown("spoon>B & bowl@sink")

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from hltl.grounding import _rewrites50r, _rewrites51r
+from hltl.grounding import _rewrites50r, _rewrites51r, _rewrites55r
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -285,4 +285,7 @@ test_batch2 = CASES.test(
 
 def test_rewrites_read_them(monkeypatch: pytest.MonkeyPatch) -> None:
     # session 51 (12r; at the merge): its rules of the same families read some of these too
-    CASES.refused_without((*_rewrites50r._STEPS50R, *_rewrites51r._STEPS51R), monkeypatch)
+    # session 55 (lead, at the merge): 12r's _with_them55r reads 'with the lot of them' too
+    CASES.refused_without(
+        (*_rewrites50r._STEPS50R, *_rewrites51r._STEPS51R, _rewrites55r._with_them55r), monkeypatch
+    )

@@ -992,7 +992,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites55r:_list_split55r": (
-        "2e0839fff820e277",
+        "2fe349ca8554db71",
         ((), (" and ", "all", "both"), False),
         (),
     ),
@@ -1024,7 +1024,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites55s:_asks_if55s": ("ba429750a29f40e3", (("?",), (), False), ()),
     "hltl.grounding._rewrites55s:_had_it55s": (
-        "37463db1b040121a",
+        "8cc9fbd58678c942",
         ((), ("ate ", "eaten ", "got ", "had ", "taken ", "took ", "used "), False),
         (
             (

@@ -132,6 +132,14 @@ def _list_split55r(text: str, node: Node, lexicon: Lexicon) -> None:
                     j += 1
                 if j < len(items) and items[j].kind == "ent" and len(items[j].refs) == 1:
                     where = items[j].refs[0].id
+                    after = items[j + 1 : j + 3]
+                    if (
+                        len(after) == 2
+                        and after[0].lemma == "for"
+                        and after[1].kind == "ent"
+                        and all(r.kind == "human" for r in after[1].refs)
+                    ):
+                        break  # "… the salt on the rack for Mr Novak": session 43's placed_for
                     handed = run & given
                     put = {o for o in run if (o, where) in placed}
                     if len(run) > 1 and handed and put and handed != put:
@@ -862,6 +870,8 @@ def _with_them55r(text: str, lexicon: Lexicon) -> str:
     m2 = _WITH_THEM55R.search(text)
     if m2 is None or m2.start() == 0 or not _whole_name(m2["s"], lexicon, "surface"):
         return text
+    if len(_ids(text[: m2.start()], lexicon, "object")) < 2:
+        return text  # "Apple first, onto the shelf with them.": 'them' are not the things said
     out = f"{text[: m2.start()]}{m2['prep']} {m2['s']}{text[m2.end() :]}"
     return out if _reading(out, lexicon) is not None else text
 

@@ -6,7 +6,14 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only, _only_person
+from hltl.grounding._normalise1 import (
+    _F,
+    _ids,
+    _names,
+    _objects_only,
+    _only,
+    _only_person,
+)
 from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding._rewrites51s import _plain51s
 from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S
@@ -135,8 +142,12 @@ def _had_it55s(text: str, node: Node, lexicon: Lexicon) -> None:
                 "the request again"
             )
     for m in _HAD_ONE55S.finditer(text):
-        may = _recipients55s(m["p"], given, lexicon)
         adj = m["adj"].lower()
+        if adj in {
+            n.lower() for o in lexicon.scene.objects for n in (o.id, o.category, *o.aliases)
+        }:
+            continue  # "Marco's got the tongs, and …": the thing's noun, a share (lead, s55)
+        may = _recipients55s(m["p"], given, lexicon)
         for t in handed:
             if t.target in may and adj in _words55s(t.obj, lexicon):
                 raise GroundingError(

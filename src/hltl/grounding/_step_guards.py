@@ -14697,7 +14697,7 @@ GUARDS: dict[str, Entry | str] = {
     ),
     "hltl.grounding._rewrites55r:_was_it55r": ("9a02cc8c427d513d", ((), ("was it ",), False), ()),
     "hltl.grounding._rewrites55r:_with_them55r": (
-        "106d8e646075b967",
+        "3d024c5a35b6a73f",
         ((), (" so ", " with "), False),
         (),
     ),
