@@ -992,7 +992,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites55r:_list_split55r": (
-        "2fe349ca8554db71",
+        "76670e652a816dba",
         ((), (" and ", "all", "both"), False),
         (),
     ),

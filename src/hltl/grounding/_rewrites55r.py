@@ -135,6 +135,7 @@ def _list_split55r(text: str, node: Node, lexicon: Lexicon) -> None:
                     after = items[j + 1 : j + 3]
                     if (
                         len(after) == 2
+                        and low.lstrip().startswith(("give ", "hand ", "pass "))
                         and after[0].lemma == "for"
                         and after[1].kind == "ent"
                         and all(r.kind == "human" for r in after[1].refs)
