@@ -850,7 +850,7 @@ GUARDS: dict[str, Entry | str] = {
         ),
     ),
     "hltl.grounding._rewrites55:_owned_want55": (
-        "f1023daf86652770",
+        "009012d5a7defd6e",
         ((), ("'s", "’s"), False),
         (
             (

@@ -38,26 +38,31 @@ def owned_other43l(text: str, lexicon: Lexicon) -> None:
     if "'s" not in text and "’s" not in text:
         return
     for m in _OWNED_OTHER43L.finditer(text):
-        who, owner = m["p"] or m["p2"], m["q"]
-        if not _only_person(who, lexicon) or not _only_person(owner, lexicon):
-            continue
-        p, q = sorted(_ids(who, lexicon)), sorted(_ids(owner, lexicon))
-        if p == q:
-            continue
-        words = m["x"].split()
-        # the thing in one to three words ("cup", "red mug", "tin of screws")
-        thing = next(
-            (
-                " ".join(words[:n])
-                for n in range(len(words), 0, -1)
-                if _objects_only(" ".join(words[:n]), lexicon)
-            ),
-            None,
-        )
-        if thing is None:
-            continue
-        raise GroundingError(
-            f'"{owner}\'s {thing}" beside {who!r}: whose it is does not say who gets it; it '
-            f"could go to {person_name(p[0], lexicon)} or to {person_name(q[0], lexicon)}: say "
-            "who gets it"
-        )
+        refuse_owned43l(m["p"] or m["p2"], m["q"], m["x"], lexicon)
+
+
+def refuse_owned43l(who: str, owner: str, said: str, lexicon: Lexicon) -> None:
+    """Refuse "<who> … <owner>'s <said>" naming both people, when both are one person of the
+    scene each, two people, and ``said`` opens with a scene object's name (one to three words:
+    "cup", "red mug", "tin of screws"); else nothing."""
+    if not _only_person(who, lexicon) or not _only_person(owner, lexicon):
+        return
+    p, q = sorted(_ids(who, lexicon)), sorted(_ids(owner, lexicon))
+    if p == q:
+        return
+    words = said.split()
+    thing = next(
+        (
+            " ".join(words[:n])
+            for n in range(len(words), 0, -1)
+            if _objects_only(" ".join(words[:n]), lexicon)
+        ),
+        None,
+    )
+    if thing is None:
+        return
+    raise GroundingError(
+        f'"{owner}\'s {thing}" beside {who!r}: whose it is does not say who gets it; it '
+        f"could go to {person_name(p[0], lexicon)} or to {person_name(q[0], lexicon)}: say "
+        "who gets it"
+    )

@@ -16,6 +16,7 @@ from hltl.grounding._normalise1 import (
     _reading,
 )
 from hltl.grounding._rewrites42r import _WHO42R, which_lost42r
+from hltl.grounding._rewrites43l import refuse_owned43l
 from hltl.grounding._rewrites52 import _UNSAFE52, _cut52
 from hltl.grounding.lexicon import VERBS, Lexicon, person_name
 from hltl.grounding.tree import Node, tasks
@@ -132,28 +133,7 @@ def _owned_want55(text: str, lexicon: Lexicon) -> None:
     if ("'s" not in low and "\u2019s" not in low) or not any(w in low for w in _WANT_FOR_WORDS55):
         return
     for m in _OWNED_WANT55.finditer(text):
-        who, owner = m["p"], m["q"]
-        if not _only_person(who, lexicon) or not _only_person(owner, lexicon):
-            continue
-        p, q = sorted(_ids(who, lexicon)), sorted(_ids(owner, lexicon))
-        if p == q:
-            continue
-        words = m["x"].split()
-        thing = next(
-            (
-                " ".join(words[:n])
-                for n in range(len(words), 0, -1)
-                if _objects_only(" ".join(words[:n]), lexicon)
-            ),
-            None,
-        )
-        if thing is None:
-            continue
-        raise GroundingError(
-            f'"{owner}\'s {thing}" beside {who!r}: whose it is does not say who gets it; it '
-            f"could go to {person_name(p[0], lexicon)} or to {person_name(q[0], lexicon)}: say "
-            "who gets it"
-        )
+        refuse_owned43l(m["p"], m["q"], m["x"], lexicon)
 
 
 # -- politeness and fillers ------------------------------------------------------------------------
