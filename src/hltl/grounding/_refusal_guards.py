@@ -1042,4 +1042,5 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("may ", "might "), False),
         (),
     ),
+    "hltl.grounding._rewrites56l:_was_one_of56l": ("a124086ada457f3e", ((), ("one",), False), ()),
 }

@@ -447,14 +447,16 @@ _DONE51R = re.compiled(
     # … and handed over with no one said, or given said of the thing ("…, I've already handed it
     # over.", "…, I gave it him.", "…, it's been given to him already.": 12c's fuzz)
     r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took|sent) "
-    r"(?:it|them)(?: (?P<to2>him|her|them))?(?: (?:over|across|round|back))?"
+    # session 56 (lead; 12c: "Give Bob the apple, I've already handed that over." read apple>B)
+    r"(?:it|them|that|those)(?: (?P<to2>him|her|them))?(?: (?:over|across|round|back))?"
     r"(?: already| earlier| just now| a minute ago| before)?\s*(?=[,;.!?]|$)"
     r"|\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took) "
     # session 55 (lead; 12c's fuzz: "Bob wants the apple, I gave it to him." read apple>B): the
     # thing said as 'it' / 'them' and the person after 'to'
     r"(?:(?:it|them|that|those|one) (?:back |over |across |round )?to )?"
     rf"(?P<to>him|her|them|{_P46R})\b"
-    r"|\b(?:it|they)(?:'s| has|'ve| have|'re| are) (?:already |just )?been (?:already |just )?"
+    r"|\b(?:it|they|that|those)(?:'s| has|'ve| have|'re| are) (?:already |just )?been "
+    r"(?:already |just )?"
     r"(?:given|handed|passed|brought|sent|delivered)(?: (?:over|across|round|back))?"
     rf"(?: to (?P<to3>him|her|them|{_P46R}))?"
     r"(?: already| earlier| just now| a minute ago)?\s*(?=[,;.!?]|$)",

@@ -581,6 +581,9 @@ from hltl.grounding._rewrites54s import _STEPS54S, _STEPS54S_FIRST
 from hltl.grounding._rewrites55 import _STEPS55, _STEPS55_FIRST
 from hltl.grounding._rewrites55r import _STEPS55R, _STEPS55R_FIRST
 from hltl.grounding._rewrites55s import _STEPS55S, _STEPS55S_FIRST
+from hltl.grounding._rewrites56 import _STEPS56, _STEPS56_FIRST
+from hltl.grounding._rewrites56r import _STEPS56R, _STEPS56R_FIRST
+from hltl.grounding._rewrites56s import _STEPS56S, _STEPS56S_FIRST
 from hltl.grounding.lexicon import (
     PRONOUN_SEX,
     Lexicon,
@@ -919,6 +922,9 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): a remark about a person of the scene closing the instruction
     *_STEPS38S_FIRST,
     # session 44 (12s, 12r, 12)
+    *_STEPS56S_FIRST,
+    *_STEPS56R_FIRST,
+    *_STEPS56_FIRST,
     *_STEPS55S_FIRST,
     *_STEPS55R_FIRST,
     *_STEPS55_FIRST,
@@ -984,6 +990,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12r): blind36's choices, counts, negation and exclusions
     *_STEPS38R,
     # session 44 (12r)
+    *_STEPS56R,
     *_STEPS55R,
     *_STEPS54R,
     *_STEPS53R,
@@ -1033,6 +1040,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12s): blind36's corrections; a purpose of the person's own
     *_STEPS38S,
     # session 44 (12s)
+    *_STEPS56S,
     *_STEPS55S,
     *_STEPS54S,
     *_STEPS53S,
@@ -1129,6 +1137,7 @@ _STEPS19: tuple[Callable[[str, Lexicon], str], ...] = (
     # session 38 (12): blind36's kinds
     *_STEPS38,
     # session 44 (12)
+    *_STEPS56,
     *_STEPS55,
     *_STEPS54,
     *_STEPS53,

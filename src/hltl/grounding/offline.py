@@ -73,6 +73,10 @@ from hltl.grounding import (
     _rewrites55l,
     _rewrites55r,
     _rewrites55s,
+    _rewrites56,
+    _rewrites56l,
+    _rewrites56r,
+    _rewrites56s,
     gate,
     refusalguard,
 )
@@ -194,6 +198,10 @@ _REFUSALS = (
     *_rewrites55.REFUSE55,
     *_rewrites55r.REFUSE55R,
     *_rewrites55s.REFUSE55S,
+    *_rewrites56l.REFUSE56L,
+    *_rewrites56.REFUSE56,
+    *_rewrites56r.REFUSE56R,
+    *_rewrites56s.REFUSE56S,
 )
 _CHECKS = (
     *_rewrites40.CHECK40,
@@ -253,6 +261,10 @@ _CHECKS = (
     *_rewrites55.CHECK55,
     *_rewrites55r.CHECK55R,
     *_rewrites55s.CHECK55S,
+    *_rewrites56l.CHECK56L,
+    *_rewrites56.CHECK56,
+    *_rewrites56r.CHECK56R,
+    *_rewrites56s.CHECK56S,
 )
 
 _SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
