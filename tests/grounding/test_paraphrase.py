@@ -493,6 +493,104 @@ KNOWN_MISSES = frozenset(
         "Since she's peckish, the chipl should go over to Person A.",
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
+        # blind54 (tuned on in session 56): refusals left at its one measurement (docs/grounding.md)
+        "Oh go on, if you'd be so kind, pop the blue mug down on the counter for me, ta ever so.",
+        "Sorry, I know you're rushed off your feet, but Bob's been waiting ages for the crisps, "
+        "could you run them over, cheers.",
+        "Khob khun, you're a marvel, and would the apple go across to Person B when it suits.",
+        "If it isn't too much of a faff, hand the apple across to Person A, would you, there's a "
+        "good robot.",
+        "Hello, hello, sorry, me again, the bottle for Person B please, thanking you kindly.",
+        "Sukriya, and while you're at it, one small favour: the chips to Person A and the bottle "
+        "to Person B.",
+        "Morning, and apologies for pestering, but the stapler's cluttering things up, would you "
+        "drop it into the box, much appreciated.",
+        "Dhanyawad, you're a lifesaver, Tom needs the packing tape, over to the driver with it "
+        "please.",
+        "Do me a kindness and lay the globe on the desk, Mrs Ortiz would be chuffed to bits.",
+        "Alice has a hankering for the crisps, while Bob reckons the bottle would hit the spot.",
+        "Emma's keen on the green cup for her tea, and the doctor could do with the spoon to stir "
+        "hers.",
+        "Priya needs the notepad for her one o'clock, she'd be ever so grateful.",
+        "Mia's lost without the barcode scanner today, and Tom's hands are raw so he wants the "
+        "work gloves.",
+        "Mr Novak is wanting the salt shaker, he finds the soup a bit bland.",
+        "Person A has put her name down for the cup, while Person B is the one with a craving for "
+        "the apple.",
+        "Person B? He's the sound mixer and he's after the bottle, so hand it over to him.",
+        "The apple's meant for Person A, and so are the chips, she paid for them.",
+        "Person B's the puppet maker; the chips are his, so take them across to him.",
+        "Whose is that bottle? Person A's, she left it behind when she popped out, so carry it "
+        "across to her.",
+        "Person A and Person B: she gets the chips, he gets the bottle.",
+        "Sam, the intern, has no pen. Give him the red one.",
+        "Tom's loading up. The small box, then the medium one, onto the belt.",
+        "Alice could use the apple. Oh, and Bob. For him it's the red mug, tea's brewing.",
+        "Bottle to Alice to kick things off, and once that's sorted, run the crisps over to Bob.",
+        "Apple for Person A, bottle for Person B, and throw in the chips for Person A while "
+        "you're there.",
+        "Person A's off to fire twirling after this so the bottle to her now and the chips to "
+        "Person B after.",
+        "Tongs to Marco, lemon to Mr Novak, he likes it in his water.",
+        "Clear the floor for the mopping, would you: the bottle and the crisps, the pair, up onto "
+        "the shelf.",
+        "Person A's happy with any one of the four, she honestly doesn't mind which you bring.",
+        "Something for both of them, then: Person A gets the bottle, Person B the cup.",
+        "Whichever of the two is closest, the chips or the bottle, take it to Person B.",
+        "Share them out so nobody's left empty-handed: chips for Person B, and Person A gets the "
+        "bottle.",
+        "Any spare cup, white or green, to Emma, she isn't fussy.",
+        "One of the pens to Sam, any of the three will do.",
+        "The small box and the medium one, both of them, onto the belt, Tom's waiting to tape "
+        "them up.",
+        "Mr Novak needs a plate, white or blue, whichever you lay a hand on first.",
+        "A book for each child: Noah the red one, and the green one for Zoe.",
+        "There's one bottle and one bag of crisps, both want to go up onto the shelf.",
+        "Person B is packing the picnic basket, so he's to have all four things, every last one.",
+        "Two things are on Person A's list, the apple and the cup, and nothing beyond that.",
+        "Only the single cup, to Person B, he just needs the one.",
+        "Both items are Person A's, so take the pair of them to her.",
+        "Both of the things here, bottle and chips, belong with Person B, he's the mask maker.",
+        "Hand out both things: chips for Person A, bottle for Person B.",
+        "The pair of cups, green and white, into the sink for washing.",
+        "Priya's clearing the desk, so the black, the blue and the red pen, all three, in the box "
+        "they go.",
+        "Mrs Khan's shivering under the one sheet, so bring her both blankets, blue as well as "
+        "grey.",
+        "The driver's about to load, so every one of the three boxes, small, medium and large, "
+        "onto the belt.",
+        "Both of the books, the red one as well as the green one, go to Mrs Ortiz, she's got "
+        "marking to do tonight.",
+        "Kofi needs the pair of spanners, small and large, for the bolts.",
+        "Alice would like the crisps, though not the apple, she's not a fruit person.",
+        "The bottle's not for Alice, it's for Bob, take it to him.",
+        "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
+        "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
+        "that.",
+        "Person A's off the chips this week, just give her the bottle.",
+        "Give the chips to anyone but Person A.",
+        "Person A wants the bottle, and no, she doesn't want anything else.",
+        "Leave Person B out this time round; both the bottle and the chips are headed to Person A.",
+        "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
+        "Lena's gone off the white plate for some reason, bring her the blue one instead.",
+        "Not the red block for Lily, she keeps chewing it, give her the green.",
+        "Jess could use the screws, but leave the hammer alone, she's got her own.",
+        "The apple to Bob, no, sorry, I'm thinking of Carol, give it to her.",
+        "Leave the bottle be, actually, on reflection, run it over to Person A.",
+        "Chips to Person B, bottle to Person A, oh no, I've said it backwards, swap those round.",
+        "Salt over to Marco, er, no, make that the lemon for him.",
+        "Teddy on the high chair, no, wait, Lily naps on the play mat, so teddy goes there "
+        "instead.",
+        "Drill to Kofi, wait, Jess needs it more, give it to Jess.",
+        "those crisps keep getting knocked over so stick them up on the shelf out of harms way",
+        "person a has been waiting for the apple and person b for the cup so off you go",
+        "can person a have the bottle shes got handbell ringing later",
+        "sam wants the black pen for signing things",
+        "lena needs the tongs for the salad and mr novak is after the salt shaker",
+        "jess needs the torch to see under there and kofi wants the screws",
+        "Is it alright if Person B helps himself to the chips, do you reckon, and could you take "
+        "them?",
+        "Can Jess borrow the small spanner, hers has gone walkabout?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -540,6 +638,12 @@ KNOWN_UNCLEAR = frozenset(
         # blind53 (tuned on in session 55)
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
+        # blind54 (tuned on in session 56)
+        "Emma and Dana were both over by the sink; give her the sponge.",
+        "Jess wants a spanner. One of them. Which, she didn't say, and I asked her twice.",
+        "Person B's after one of the snacks, the apple or the chips, he said which but I've clean "
+        "forgot.",
+        "The globe to Noah, or was it Zoe who asked, I've got them mixed up.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong
@@ -651,9 +755,10 @@ KNOWN_UNCLEAR = frozenset(
 # and KNOWN_UNCLEAR; "blind53" written in session 54 by another engineer and committed alone,
 # measured once at the end of session 54 (1 wrong, read right since session 55), tuned on in
 # session 55: asserted now, the rest in KNOWN_MISSES and KNOWN_UNCLEAR; "blind54" written in
-# session 55 by another engineer and committed alone, measured once at the end of session 55, not
-# asserted)
-MEASURED_ONLY: frozenset[str] = frozenset({"blind54"})
+# session 55 by another engineer and committed alone, measured once at the end of session 55 (2
+# wrong, one read right and one refused since session 56), tuned on in session 56: asserted now,
+# the rest in KNOWN_MISSES and KNOWN_UNCLEAR)
+MEASURED_ONLY: frozenset[str] = frozenset()
 CASES = [(part, e) for part, c in CORPORA.items() if part not in MEASURED_ONLY for e in c.entries]
 
 

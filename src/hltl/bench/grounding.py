@@ -163,7 +163,7 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # committed alone, never opened by the engineers who change the grounder before its one measurement
 # at the end of session 54; tuned on in session 55), blind54 (written in session 55 by another
 # engineer and committed alone, never opened by the engineers who change the grounder before its one
-# measurement at the end of session 55; to be tuned on in session 56).
+# measurement at the end of session 55; tuned on in session 56).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
