@@ -412,7 +412,7 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites51r:_done_after51r": (
-        "b7f5d951ece1ed50",
+        "500d7a14ead4958e",
         (
             (),
             (
@@ -1042,5 +1042,5 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("may ", "might "), False),
         (),
     ),
-    "hltl.grounding._rewrites56l:_was_one_of56l": ("a124086ada457f3e", ((), ("one",), False), ()),
+    "hltl.grounding._rewrites56l:_was_one_of56l": ("972ab9fe19a9e73d", ((), ("one",), False), ()),
 }

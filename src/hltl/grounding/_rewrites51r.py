@@ -439,6 +439,16 @@ def _only_one51r(text: str, lexicon: Lexicon) -> str:
 # "…, and she's had it.", "…, she's had it already.", "…, and he's eaten it.", "…, I gave him the
 # red.", "…, I gave it to him." (session 55): the thing a reading hands over is already had, or
 # already given
+# session 56 (lead; 12c's fuzz): when it was handed over ("…, I handed that over yesterday.", "…
+# an hour ago", "… at nine", "… twice already"): a time said after the handing is no request
+_WHEN_DONE51R = (
+    r"(?:\s+(?:already|earlier|before|just now|now|yesterday|today|earlier today|this (?:morning|"
+    r"afternoon|evening)|last night|at (?:lunch(?:time)?|breakfast|dinner|tea|noon|midday|"
+    r"\d{1,2}(?::\d\d)?(?: ?[ap]m)?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|"
+    r"twelve)(?: o'clock)?|(?:an?|one|two|three|five|ten|twenty|a few|a couple of) (?:hour|minute|"
+    r"min|second)s? ago|a (?:while|bit|moment|second|minute) ago|once|twice))*"
+)
+_THING_DONE51R = r"(?:it|them|that|those|(?:that|this) one)"
 _DONE51R = re.compiled(
     r"(?:^|[,;.:!?]|\b(?:and|but|so|though)\b)\s*(?:(?:and|but|so|though|oh)\s+)?"
     rf"(?P<who>she|he|they|{_P46R})(?:'s| has|'ve| have)(?: already| just| since)? (?:had|eaten|"
@@ -448,18 +458,21 @@ _DONE51R = re.compiled(
     # over.", "…, I gave it him.", "…, it's been given to him already.": 12c's fuzz)
     r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took|sent) "
     # session 56 (lead; 12c: "Give Bob the apple, I've already handed that over." read apple>B)
-    r"(?:it|them|that|those)(?: (?P<to2>him|her|them))?(?: (?:over|across|round|back))?"
+    rf"{_THING_DONE51R}(?: (?P<to2>him|her|them))?(?: (?:over|across|round|back))?"
     r"(?: already| earlier| just now| a minute ago| before)?\s*(?=[,;.!?]|$)"
+    # … given, handed or passed, then when ("…, I handed it over yesterday.")
+    r"|\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed) "
+    rf"{_THING_DONE51R}(?: (?P<to4>him|her|them))?(?: (?:over|across|round|back))?"
+    rf"(?: to (?P<to5>him|her|them|{_P46R}))?{_WHEN_DONE51R}\s*(?=[,;.!?]|$)"
     r"|\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took) "
     # session 55 (lead; 12c's fuzz: "Bob wants the apple, I gave it to him." read apple>B): the
     # thing said as 'it' / 'them' and the person after 'to'
-    r"(?:(?:it|them|that|those|one) (?:back |over |across |round )?to )?"
+    r"(?:(?:it|them|that|those|one|(?:that|this) one) (?:back |over |across |round )?to )?"
     rf"(?P<to>him|her|them|{_P46R})\b"
-    r"|\b(?:it|they|that|those)(?:'s| has|'ve| have|'re| are) (?:already |just )?been "
-    r"(?:already |just )?"
+    r"|\b(?:it|they|that|those|(?:that|this) one)(?:'s| has|'ve| have|'re| are) (?:already |just )?"
+    r"been (?:already |just )?"
     r"(?:given|handed|passed|brought|sent|delivered)(?: (?:over|across|round|back))?"
-    rf"(?: to (?P<to3>him|her|them|{_P46R}))?"
-    r"(?: already| earlier| just now| a minute ago)?\s*(?=[,;.!?]|$)",
+    rf"(?: to (?P<to3>him|her|them|{_P46R}))?{_WHEN_DONE51R}\s*(?=[,;.!?]|$)",
     _F,
 )
 
@@ -482,11 +495,11 @@ def _done_after51r(text: str, node: Node, lexicon: Lexicon) -> None:
     if not got:
         return
     for m in _DONE51R.finditer(text):
-        if _BACK51R.search(text[: m.start()]):
+        if _BACK_JUST51R.search(text[: m.start()]):
             # "The red book for Noah, no, he's finished that, the green one": said of the thing
             # the correction takes back
             continue
-        who = m["who"] or m["to"] or m["to2"] or m["to3"]
+        who = m["who"] or m["to"] or m["to2"] or m["to3"] or m["to4"] or m["to5"]
         if who is None:
             fits = True  # handed over, to no one said: the thing the reading hands
         elif who.lower() in ("she", "he", "her", "him"):
@@ -967,6 +980,16 @@ def _why_fix51r(text: str, lexicon: Lexicon) -> str:
 _BACK51R = re.compiled(
     r"\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|"
     r"actually|i mean|i meant)\b",
+    _F,
+)
+
+# session 56 (lead; 12c's fuzz on blind54 #149: "Put the bottle, no, just give the bottle to Person
+# A, that's been handed over already." read bottle>A): a correction cue right before the remark
+# ("The red book for Noah, no, he's finished that, the green one") says it of what is taken
+# back; one said before a new request does not
+_BACK_JUST51R = re.compiled(
+    r"\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|"
+    r"actually|i mean|i meant)\s*[,;:.!?-]*\s*(?:(?:and|but|so)\s+)?$",
     _F,
 )
 

@@ -21,7 +21,8 @@ from hltl.grounding.tree import Node
 _ONE_OF56L = re.compiled(
     r"(?:^|[,;.:!?-]\s*|\b(?:and|but|though)\s+)(?:(?:well|anyway|i think|i know)\s*,?\s*)?"
     r"(?:it was|'twas|twas|it were)\s+(?:definitely\s+|certainly\s+|def\s+|just\s+)?"
-    r"(?:one (?:of (?:those|them|these|the two|those two|them two|the pair)(?: two)?|or the other)"
+    r"(?:one (?:of (?:those|them|these|the two|those two|them two|the pair)(?: two| ones?)?|"
+    r"or the other)"
     r"|either (?:one|the one) or the other|(?:the )?one or the other)"
     r"(?:\s*,?\s*(?:anyway|at least|i think|i'm sure|for sure|i know that much))?"
     r"\s*(?=[,;.!?]|$)",
@@ -40,7 +41,8 @@ def _was_one_of56l(text: str, node: Node, lexicon: Lexicon) -> None:
     if not _has_choice50l(node):
         return
     m = _ONE_OF56L.search(text)
-    if m is None or _FREE50L.search(text) is not None:
+    # the remark's own 'either' ("it was either one or the other") leaves nothing free
+    if m is None or _FREE50L.search(f"{text[: m.start()]} {text[m.end() :]}") is not None:
         return
     choice_forgotten49l(
         node, lexicon, f"{m.group(0).strip(' ,;.')!r} says one was asked for, not which"
