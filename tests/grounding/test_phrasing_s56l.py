@@ -12,6 +12,7 @@ from hltl.world.scene import Scene, load_scene
 from tests.grounding.helpers import (
     CELL,
     KITCHEN,
+    NURSERY,
     OFFICE,
     ROOT,
     WARD,
@@ -171,3 +172,15 @@ def test_given_when_read_without_the_check(monkeypatch: pytest.MonkeyPatch) -> N
     monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c is not rule))
     for text, scene in GIVEN_WHEN:
         assert parse_instruction(text, scene) is not None, text
+
+
+@pytest.mark.parametrize(
+    ("text", "scene", "spec"),
+    [
+        # the person the correction takes back, said after the cue (blind30 #138)
+        ("Ava gets the teddy, and no, not Lily, she's had hers.", NURSERY, "teddy>C"),
+        ("Bob gets the apple, and no, not Alice, she's had hers.", CELL, "apple>B"),
+    ],
+)
+def test_remark_after_not_p_said_of_the_one_taken_back(text: str, scene: Scene, spec: str) -> None:
+    assert_reads(text, spec, scene)

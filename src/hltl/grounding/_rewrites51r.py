@@ -985,11 +985,14 @@ _BACK51R = re.compiled(
 
 # session 56 (lead; 12c's fuzz on blind54 #149: "Put the bottle, no, just give the bottle to Person
 # A, that's been handed over already." read bottle>A): a correction cue right before the remark
-# ("The red book for Noah, no, he's finished that, the green one") says it of what is taken
-# back; one said before a new request does not
+# ("The red book for Noah, no, he's finished that, the green one"; "…, and no, not Lily, she's had
+# hers.") says it of what is taken back; one said before a new request does not
 _BACK_JUST51R = re.compiled(
     r"\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|"
-    r"actually|i mean|i meant)\s*[,;:.!?-]*\s*(?:(?:and|but|so)\s+)?$",
+    r"actually|i mean|i meant)\s*[,;:.!?-]*\s*"
+    # … or the person it takes back or gives to, said after the cue ("…, and no, not Lily, she's
+    # had hers.", "Stapler to Priya, no, to Sam, Priya's got one.")
+    r"(?:(?:not|to|for) [\w' ]{1,30}?\s*[,;:.!?-]*\s*)?(?:(?:and|but|so)\s+)?$",
     _F,
 )
 
