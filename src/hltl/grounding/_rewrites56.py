@@ -4,14 +4,247 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _objects_only, _only_person
+from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node
 
+# -- session 56 (engineer 12): the open wrong reading of session 55 (12c), then blind54's refusals
+# of politeness and fillers, wants and needs, pronouns and ellipsis and lower case, each read as a
+# family.
+
+# -- wrong readings --------------------------------------------------------------------------------
+
+# -- a want said for a later time, run on into a request ("bob wants the apple later give it him",
+# "Bob needs the apple later, pass it over."; 12c): 'later' after a comma or a sentence's end is
+# read as 'then' (the order of two tasks), so the want was read as a handover now. The want's time
+# is the task's: refused as session 20 refuses a time that puts the task off
+_WANT_LATER56 = re.compile(
+    r"\b(?:wants?|needs?|wanted|needed|would like|['\u2019]d like|would love|['\u2019]d love|"
+    r"could use|could do with|(?:is|['\u2019]s) after|(?:is|['\u2019]s) wanting|fancies)"
+    r"(?: (?!(?:for|and|but|so|then|to|or)\b)[a-z'\u2019-]+){1,4}?"
+    r" (?P<said>later(?: on)?|tomorrow|tonight|this (?:evening|afternoon)|next week|in a (?:bit|"
+    r"while|minute|min|mo|sec|second|tick|jiffy)|after (?:lunch|dinner|breakfast|tea|school|"
+    r"work))\b(?!\s+than\b)",
+    _F,
+)
+_WANT_LATER_WORDS56 = (
+    *("later", "tomorrow", "tonight", "this evening", "this afternoon", "next week", "in a bit"),
+    *("in a while", "in a minute", "in a min", "in a mo", "in a sec", "in a tick", "in a jiffy"),
+    *("after lunch", "after dinner", "after breakfast", "after tea", "after school", "after work"),
+)
+
+
+def _want_later56(text: str, lexicon: Lexicon) -> None:
+    """Session 56: 'P wants the X later …' refused: the want's time puts the task off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _WANT_LATER_WORDS56):
+        return
+    m = _WANT_LATER56.search(text)
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} puts the task off: the cell acts now, so say the request when it is to "
+        "be done"
+    )
+
+
+# -- politeness and fillers ------------------------------------------------------------------------
+
+# -- 'Oh go on,' / 'Come on then,' opening the text before a courtesy ("Oh go on, if you'd be so
+# kind, pop the blue mug down …"): urges, asks nothing; taken off (the courtesy frames read 'If
+# you'd be so kind, …' opening the text, not after another opener)
+_GO_ON56 = re.compile(
+    r"^(?P<w>(?:(?:oh|ah|aw|aww|ok|okay|right|look),? )?(?:go on|come on)(?:,? then)?(?:,? "
+    r"(?:love|dear|pet|mate|duck|pal))?\s*,\s*)(?=(?:if|please|would|could|will|can|pretty)\b)",
+    _F,
+)
+
+
+def _go_on56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: an opening 'Oh go on,' before a courtesy taken off (above)."""
+    low = text.lower()
+    if "go on" not in low and "come on" not in low:
+        return text
+    m = _GO_ON56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- 'If it isn't too much of a faff,' ("… too much of a bother / hassle / palaver"): said 'too
+# much trouble', as the courtesy frames know it
+_FAFF56 = re.compile(
+    r"\b(?P<w>too much (?:of a |of an )?(?:faff|bother|hassle|palaver|pain|nuisance|chore|"
+    r"imposition|drag|kerfuffle|ballache|headache|fuss)(?: for you)?)(?=\s*,)",
+    _F,
+)
+
+
+def _faff56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'too much of a faff' said 'too much trouble' (above)."""
+    if "too much" not in text.lower():
+        return text
+    m = _FAFF56.search(text)
+    if m is None or m["w"].lower() == "too much bother":
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "too much trouble", lexicon)
+
+
+# -- 'me again' after a greeting or an apology ("Hello, hello, sorry, me again, the bottle for
+# Person B please", "Hi, it's only me again, …", "Sorry, me again, …"): who is speaking, asks
+# nothing; taken off (the 'me' was taken for a person to hand to)
+_AGAIN56 = re.compile(
+    r"^(?P<o>(?:(?:hello|hi|hiya|hey|sorry|so sorry|morning|evening|afternoon|excuse me|oh|um|er|"
+    r"erm|right|ok|okay|yes|hello again|hi again)\s*[,.!]\s*)*)(?P<w>(?:(?:it['\u2019]s|its|"
+    r"it is) )?(?:only |just )?me again"
+    r"(?:,? sorry)?\s*[,.!-]\s*)(?=\S)",
+    _F,
+)
+
+
+def _again56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'me again,' at or near the start taken off (above)."""
+    if "me again" not in text.lower():
+        return text
+    m = _AGAIN56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- 'when it suits (you)' closing a request ("would the apple go across to Person B when it
+# suits", "…, whenever it suits you"): the hearer's time, said 'when you can' (read); 'it' was
+# taken for a thing of the scene
+_SUITS56 = re.compile(
+    r"\b(?P<w>(?:when|whenever) it(?:['\u2019]s| is)? (?:suits(?: you)?|convenient(?: for you)?))"
+    r"(?=\s*[.!?]*\s*$)",
+    _F,
+)
+
+
+def _suits56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: a closing 'when it suits' said 'when you can' (above)."""
+    low = text.lower()
+    if "suits" not in low and "convenient" not in low:
+        return text
+    m = _SUITS56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "when you can", lexicon)
+
+
+# -- 'one small favour:' after an opener and a comma ("Sukriya, and while you're at it, one small
+# favour: the chips to Person A …"): session 55's _favour55 takes it off at the start only
+_FAVOUR_AFTER56 = re.compile(
+    r",\s*(?P<w>(?:one|a|just one)? ?(?:(?:teeny|tiny|quick|small|little|wee|cheeky|minor|"
+    r"last|more) )?(?:(?:little|tiny|teeny|wee) )?favou?r(?: to ask)?(?: (?:for|of) you)?"
+    r"\s*(?::|\s[-\u2013\u2014])\s*)",
+    _F,
+)
+
+
+def _favour_after56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: ', one small favour:' taken off (above)."""
+    low = text.lower()
+    if "favour" not in low and "favor" not in low:
+        return text
+    m = _FAVOUR_AFTER56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- 'over to P with it' ("Tom needs the packing tape, over to the driver with it please",
+# "across to Bob with them", "Over to Lena with the salt"): said 'take it over to P'
+_WITH_IT56 = re.compile(
+    r"(?:^|(?<=[,;:.!]))\s*(?P<d>over|across|round|off|along|back) to (?P<p>(?:the |mr |mrs |"
+    r"ms |dr |miss )?[a-z]+(?: [a-z]+)?) with (?P<x>it|them|(?:the|that|those|this|these) "
+    r"[a-z]+(?: [a-z]+)?)\b(?=\s*(?:,|\.|!|$|please\b|pls\b|ta\b|cheers\b|thanks\b))",
+    _F,
+)
+
+_WITH_IT_WORDS56 = ("over to", "across to", "round to", "off to", "along to", "back to")
+
+
+def _with_it56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'over to P with it' said 'take it over to P' (above)."""
+    low = text.lower()
+    if " with " not in low or not any(w in low for w in _WITH_IT_WORDS56):
+        return text
+    m = _WITH_IT56.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x = m["x"]
+    if x.lower() not in ("it", "them") and not _objects_only(x, lexicon):
+        return text
+    put = f"{' ' if m.start() else ''}take {x} {m['d'].lower()} to {m['p']}"
+    return _cut52(text, m.start(), m.end(), put, lexicon)
+
+
+# -- 'Do me a kindness and …' ("… a good turn / a solid / a service"): said 'Do me a favour and'
+_KINDNESS56 = re.compile(
+    r"\bdo (?:me|us) a (?P<w>kindness|good turn|solid|service|kind turn|great service)"
+    r"(?=,? and\b)",
+    _F,
+)
+
+
+def _kindness56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'do me a kindness and' said 'do me a favour and' (above)."""
+    if "do me a" not in text.lower() and "do us a" not in text.lower():
+        return text
+    m = _KINDNESS56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "favour", lexicon)
+
+
+# -- how pleased a person would be, closing the text ("…, Mrs Ortiz would be chuffed to bits",
+# "…, Lena will be delighted", "…, he'd be over the moon"): says nothing of the task; taken off
+_CHUFFED56 = re.compile(
+    r",\s*(?:and |oh,? )?(?P<p>(?:[a-z]+ ){0,2}[a-z]+?)(?: would|['\u2019]d| will|['\u2019]ll)"
+    r" be (?:so |ever so |really |very |just |absolutely )?(?:chuffed|delighted|thrilled|"
+    r"made up|over the moon|tickled pink|tickled|stoked|ecstatic)"
+    r"(?: to bits| to pieces)?\s*[.!]*\s*$",
+    _F,
+)
+_CHUFFED_WORDS56 = (
+    *("chuffed", "delighted", "thrilled", "made up", "over the moon", "tickled", "stoked"),
+    "ecstatic",
+)
+
+
+def _chuffed56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: a closing ', P would be chuffed to bits' taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _CHUFFED_WORDS56):
+        return text
+    m = _CHUFFED56.search(text)
+    if m is None:
+        return text
+    p = m["p"].lower()
+    if p not in ("he", "she", "they", "we") and not _only_person(m["p"], lexicon):
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
-_STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _go_on56,
+    _faff56,
+    _again56,
+    _suits56,
+    _favour_after56,
+    _with_it56,
+    _kindness56,
+    _chuffed56,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-56 ones)
-REFUSE56: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE56: tuple[Callable[[str, Lexicon], None], ...] = (_want_later56,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-56 ones)
 CHECK56: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
