@@ -494,27 +494,10 @@ KNOWN_MISSES = frozenset(
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
         # blind54 (tuned on in session 56): refusals left at its one measurement (docs/grounding.md)
-        "Oh go on, if you'd be so kind, pop the blue mug down on the counter for me, ta ever so.",
         "Sorry, I know you're rushed off your feet, but Bob's been waiting ages for the crisps, "
         "could you run them over, cheers.",
-        "Khob khun, you're a marvel, and would the apple go across to Person B when it suits.",
-        "If it isn't too much of a faff, hand the apple across to Person A, would you, there's a "
-        "good robot.",
-        "Hello, hello, sorry, me again, the bottle for Person B please, thanking you kindly.",
-        "Sukriya, and while you're at it, one small favour: the chips to Person A and the bottle "
-        "to Person B.",
         "Morning, and apologies for pestering, but the stapler's cluttering things up, would you "
         "drop it into the box, much appreciated.",
-        "Dhanyawad, you're a lifesaver, Tom needs the packing tape, over to the driver with it "
-        "please.",
-        "Do me a kindness and lay the globe on the desk, Mrs Ortiz would be chuffed to bits.",
-        "Alice has a hankering for the crisps, while Bob reckons the bottle would hit the spot.",
-        "Emma's keen on the green cup for her tea, and the doctor could do with the spoon to stir "
-        "hers.",
-        "Priya needs the notepad for her one o'clock, she'd be ever so grateful.",
-        "Mia's lost without the barcode scanner today, and Tom's hands are raw so he wants the "
-        "work gloves.",
-        "Mr Novak is wanting the salt shaker, he finds the soup a bit bland.",
         "Person A has put her name down for the cup, while Person B is the one with a craving for "
         "the apple.",
         "Person B? He's the sound mixer and he's after the bottle, so hand it over to him.",

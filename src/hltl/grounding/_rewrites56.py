@@ -6,9 +6,9 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _objects_only, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person
 from hltl.grounding._rewrites52 import _cut52
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.lexicon import PRONOUN_SEX, VERBS, Lexicon, name_sexes
 from hltl.grounding.tree import Node
 
 # -- session 56 (engineer 12): the open wrong reading of session 55 (12c), then blind54's refusals
@@ -175,7 +175,7 @@ def _with_it56(text: str, lexicon: Lexicon) -> str:
     if " with " not in low or not any(w in low for w in _WITH_IT_WORDS56):
         return text
     m = _WITH_IT56.search(text)
-    if m is None or not _only_person(m["p"], lexicon):
+    if m is None or not (m["p"].lower() in ("him", "her") or _only_person(m["p"], lexicon)):
         return text
     x = m["x"]
     if x.lower() not in ("it", "them") and not _objects_only(x, lexicon):
@@ -231,6 +231,163 @@ def _chuffed56(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), "", lexicon)
 
 
+# -- wants and needs -------------------------------------------------------------------------------
+
+# -- 'P reckons the X would hit the spot' ("…, while Bob reckons the bottle would hit the spot",
+# "Lena reckons the salt would go down a treat"): what P would like, said 'P would like the X'
+_RECKONS56 = re.compile(
+    r"\b(?P<p>(?:mr |mrs |ms |dr |miss |person |the )?[a-z]+) (?:reckons|thinks|"
+    r"says|feels)(?: that)? (?P<x>(?:the|a|an|some) [a-z]+(?: [a-z]+){0,2}?) (?:would|['\u2019]d|"
+    r"will|['\u2019]ll) (?:hit the spot|go down (?:a treat|well|nicely)|be just the "
+    r"(?:thing|ticket))(?: (?:for|with) (?:him|her|them))?(?=\s*(?:[,.;!]|$))",
+    _F,
+)
+_RECKONS_WORDS56 = ("hit the spot", "go down a treat", "go down well", "go down nicely", "just the")
+
+
+def _reckons56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'P reckons the X would hit the spot' said 'P would like the X' (above)."""
+    low = text.lower()
+    if not any(w in low for w in _RECKONS_WORDS56):
+        return text
+    m = _RECKONS56.search(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    p = m["p"]
+    if p.lower() not in ("he", "she", "they") and not _only_person(p, lexicon):
+        return text
+    return _cut52(text, m.start(), m.end(), f"{p} would like {m['x']}", lexicon)
+
+
+# -- what the wanted thing is for, said with a pronoun ("the doctor could do with the spoon to stir
+# hers", "Bob needs the knife to cut his", "Jess wants the cloth to wipe hers down"): the purpose
+# names nothing of the scene; taken off (with 'her tea' it was read)
+_STIR56 = re.compile(
+    r"(?<=[a-z])(?P<w> to (?P<v>[a-z]+) (?:hers|his|theirs)(?: (?:up|down|out|with))?)"
+    r"(?=\s*(?:[,.;!?]|$|and\b|but\b|please\b))",
+    _F,
+)
+
+
+def _stir56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: a closing 'to stir hers' after the wanted thing taken off (above)."""
+    low = text.lower()
+    if " hers" not in low and " his" not in low and " theirs" not in low:
+        return text
+    m = _STIR56.search(text)
+    if (
+        m is None
+        or m["v"].lower() in VERBS
+        or _ids(text[: m.start()].split(",")[-1], lexicon) == set()
+    ):
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- a meeting said by its hour ("Priya needs the notepad for her one o'clock", "… for his 3pm"):
+# said 'for her meeting' (the hour was read as a time the task waits for)
+_OCLOCK56 = re.compile(
+    r"\bfor (?P<w>(?:her|his|their|the) (?:(?:one|two|three|four|five|six|seven|eight|nine|ten|"
+    r"eleven|twelve|half (?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)|\d{1,2}"
+    r") ?(?:o['\u2019]?clock|o clock)|\d{1,2}(?:[:.]\d\d)? ?(?:am|pm)))"
+    r"(?: (?P<m>meeting|appointment|class|lesson|call|interview|session|slot))?"
+    r"(?=\s*(?:[,.;!?]|$|and\b))",
+    _F,
+)
+_OCLOCK_WORDS56 = (
+    "clock",
+    "pm",
+    *(f"{d}am" for d in "0123456789"),
+    *(f"{d} am" for d in "0123456789"),
+)
+
+
+def _oclock56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'for her one o'clock' said 'for her meeting' (above)."""
+    low = text.lower()
+    if not any(w in low for w in _OCLOCK_WORDS56):
+        return text
+    m = _OCLOCK56.search(text)
+    if m is None:
+        return text
+    owner = m["w"].split()[0]
+    return _cut52(text, m.start("w"), m.end(), f"{owner} {m['m'] or 'meeting'}", lexicon)
+
+
+# -- 'P's lost without the X' ("Mia's lost without the barcode scanner today", "Lena would be lost
+# without the tongs"): what P needs, said 'P needs the X'
+_LOST_WITHOUT56 = re.compile(
+    r"\b(?P<p>(?:mr |mrs |ms |dr |miss |person |the )?[a-z]+)(?:['\u2019]s| is|['\u2019]d be| would"
+    r" be|['\u2019]ll be| will be|['\u2019]s been) (?:completely |totally |utterly |a bit |"
+    r"rather |quite |so |just )?lost without (?P<x>(?:the|a|an|her|his|their) [a-z]+(?: "
+    r"[a-z]+){0,2}?)(?=\s*(?:[,.;!]|$|today\b|now\b|at the moment\b|and\b|so\b|please\b))",
+    _F,
+)
+
+
+def _lost_without56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: "P's lost without the X" said 'P needs the X' (above)."""
+    if "lost without" not in text.lower():
+        return text
+    m = _LOST_WITHOUT56.search(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects_only(m["x"], lexicon):
+        return text
+    return _cut52(text, m.start(), m.end(), f"{m['p']} needs {m['x']}", lexicon)
+
+
+# -- 'P's hands are raw so he wants the X' ("Tom's hands are raw so he wants the work gloves",
+# "Lena's feet are killing her so she'd like …"): the he / she is the one whose hands they are,
+# said 'P wants the X' (the reason dropped; not when a first name says the other sex)
+_BODY56 = (
+    r"hands|feet|back|head|eyes|fingers|toes|knees|legs|arms|neck|shoulders|throat|lips|nose|ears|"
+    r"hand|foot|knee|leg|arm|shoulder|wrist|wrists|ankle|ankles|tummy|stomach"
+)
+_BODY_SO56 = re.compile(
+    rf"\b(?P<p>(?:mr |mrs |ms |dr |miss |person |the )?[a-z]+)(?:['\u2019]s) (?:poor )?"
+    rf"(?:{_BODY56}) (?:is|are|['\u2019]re|feel|feels)(?: [a-z'\u2019]+){{1,3}}? so "
+    r"(?P<pr>he|she|they) (?P<v>wants|needs|would like|['\u2019]d like|could use|could do with|"
+    r"(?:is|['\u2019]s) after)\b",
+    _F,
+)
+
+
+def _body_so56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: "P's hands are raw so he wants the X" said 'P wants the X' (above)."""
+    low = text.lower()
+    if " so he " not in low and " so she " not in low and " so they " not in low:
+        return text
+    m = _BODY_SO56.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    sex = name_sexes().get(m["p"].split()[-1].lower())
+    said = PRONOUN_SEX.get(m["pr"].lower())
+    if sex is not None and said is not None and sex != said:
+        return text
+    return _cut52(text, m.start(), m.end(), f"{m['p']} {m['v']}", lexicon)
+
+
+# -- a closing remark of what the person finds the food or drink ("Mr Novak is wanting the salt
+# shaker, he finds the soup a bit bland", "…, she finds the tea too strong"): names nothing of the
+# scene; taken off
+_FINDS56 = re.compile(
+    r",\s*(?:(?:as|because|since) )?(?:he|she|they) (?:finds|find|found|thinks|reckons) (?P<x>"
+    r"(?:the|his|her|their|this|that) [a-z]+(?: [a-z]+)?) (?:(?:a bit|a little|rather|too|far "
+    r"too|way too|very|quite|so|really|a touch) )?[a-z]+\s*[.!]*\s*$",
+    _F,
+)
+
+
+def _finds56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: a closing ', he finds the soup a bit bland' taken off (above)."""
+    low = text.lower()
+    if "find" not in low and "found" not in low:
+        return text
+    m = _FINDS56.search(text)
+    if m is None or _ids(m["x"], lexicon):
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _go_on56,
@@ -241,6 +398,12 @@ _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _with_it56,
     _kindness56,
     _chuffed56,
+    _reckons56,
+    _stir56,
+    _oclock56,
+    _lost_without56,
+    _body_so56,
+    _finds56,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56: tuple[Callable[[str, Lexicon], str], ...] = ()
