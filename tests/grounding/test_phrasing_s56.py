@@ -170,8 +170,10 @@ test_with_it = POLITE.test(
     ),
     ("Jess needs the torch, over to her with it please.", "torch>B", WORKSHOP),
     ("Mrs Khan wants the magazine, across to her with it, ta.", "magazine>C", WARD),
-    ("The teddy, over to Lily with it please.", "teddy>A", NURSERY),
-    ("The salt, across to Lena with it, ta.", "salt>B", KITCHEN),
+    ("Lena would like the salt, over to her with it please.", "salt>B", KITCHEN),
+    ("Kofi needs the drill, across to him with it.", "drill>A", WORKSHOP),
+    # no want before it (session 30r's and 53s's opening 'Over to P with the X' aside)
+    ("The teddy, over to Lily with it please.", None, NURSERY),
     # a place, a thing had, or another person than the one who wants it: refused as before
     ("Over to the shelf with it.", None, CELL),
     ("Bob had the apple, over to Alice with it.", None, CELL),

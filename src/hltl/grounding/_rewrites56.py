@@ -58,7 +58,8 @@ def _want_later56(text: str, lexicon: Lexicon) -> None:
 # you'd be so kind, …' opening the text, not after another opener)
 _GO_ON56 = re.compile(
     r"^(?P<w>(?:(?:oh|ah|aw|aww|ok|okay|right|look),? )?(?:go on|come on)(?:,? then)?(?:,? "
-    r"(?:love|dear|pet|mate|duck|pal))?\s*,\s*)(?=(?:if|please|would|could|will|can|pretty)\b)",
+    r"(?:love|dear|pet|mate|duck|pal))?\s*,\s*)(?=if you(?:['\u2019]d| would| could)? be "
+    r"(?:so|ever so|that) (?:kind|good|sweet|lovely)\b)",
     _F,
 )
 
@@ -157,31 +158,31 @@ def _favour_after56(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
 
 
-# -- 'over to P with it' ("Tom needs the packing tape, over to the driver with it please",
-# "across to Bob with them", "Over to Lena with the salt"): said 'take it over to P'
+# -- 'over to P with it' after a want ("Tom needs the packing tape, over to the driver with it
+# please", "Jess needs the torch, over to her with it"): said 'take it over to P' ('Over to P with
+# the X' opening the text is session 30r's and 53s's)
 _WITH_IT56 = re.compile(
-    r"(?:^|(?<=[,;:.!]))\s*(?P<d>over|across|round|off|along|back) to (?P<p>(?:the |mr |mrs |"
-    r"ms |dr |miss )?[a-z]+(?: [a-z]+)?) with (?P<x>it|them|(?:the|that|those|this|these) "
-    r"[a-z]+(?: [a-z]+)?)\b(?=\s*(?:,|\.|!|$|please\b|pls\b|ta\b|cheers\b|thanks\b))",
+    r"\b(?:wants|needs|would like|['\u2019]d like|could use|could do with|(?:is|['\u2019]s) after)"
+    r" (?:the|a|an|his|her|their|some) [a-z]+(?: [a-z]+){0,2}?,\s*(?P<d>over|across|round|along)"
+    r" to (?P<p>(?:the |mr |mrs |ms |dr |miss |person )?[a-z]+) with (?P<x>it|them)\b"
+    r"(?=\s*(?:,|\.|!|$|please\b|pls\b|ta\b|cheers\b|thanks\b))",
     _F,
 )
-
-_WITH_IT_WORDS56 = ("over to", "across to", "round to", "off to", "along to", "back to")
+_WITH_IT_WORDS56 = ("over to", "across to", "round to", "along to")
 
 
 def _with_it56(text: str, lexicon: Lexicon) -> str:
     """Session 56: 'over to P with it' said 'take it over to P' (above)."""
     low = text.lower()
-    if " with " not in low or not any(w in low for w in _WITH_IT_WORDS56):
+    if (" with it" not in low and " with them" not in low) or not any(
+        w in low for w in _WITH_IT_WORDS56
+    ):
         return text
     m = _WITH_IT56.search(text)
     if m is None or not (m["p"].lower() in ("him", "her") or _only_person(m["p"], lexicon)):
         return text
-    x = m["x"]
-    if x.lower() not in ("it", "them") and not _objects_only(x, lexicon):
-        return text
-    put = f"{' ' if m.start() else ''}take {x} {m['d'].lower()} to {m['p']}"
-    return _cut52(text, m.start(), m.end(), put, lexicon)
+    put = f"take {m['x']} {m['d'].lower()} to {m['p']}"
+    return _cut52(text, m.start("d"), m.end(), put, lexicon)
 
 
 # -- 'Do me a kindness and …' ("… a good turn / a solid / a service"): said 'Do me a favour and'
