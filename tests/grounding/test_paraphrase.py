@@ -498,16 +498,9 @@ KNOWN_MISSES = frozenset(
         "could you run them over, cheers.",
         "Morning, and apologies for pestering, but the stapler's cluttering things up, would you "
         "drop it into the box, much appreciated.",
-        "Person A has put her name down for the cup, while Person B is the one with a craving for "
-        "the apple.",
-        "Person B? He's the sound mixer and he's after the bottle, so hand it over to him.",
-        "The apple's meant for Person A, and so are the chips, she paid for them.",
-        "Person B's the puppet maker; the chips are his, so take them across to him.",
         "Whose is that bottle? Person A's, she left it behind when she popped out, so carry it "
         "across to her.",
         "Person A and Person B: she gets the chips, he gets the bottle.",
-        "Sam, the intern, has no pen. Give him the red one.",
-        "Tom's loading up. The small box, then the medium one, onto the belt.",
         "Alice could use the apple. Oh, and Bob. For him it's the red mug, tea's brewing.",
         "Bottle to Alice to kick things off, and once that's sorted, run the crisps over to Bob.",
         "Apple for Person A, bottle for Person B, and throw in the chips for Person A while "
@@ -622,7 +615,6 @@ KNOWN_UNCLEAR = frozenset(
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
         # blind54 (tuned on in session 56)
-        "Emma and Dana were both over by the sink; give her the sponge.",
         "Jess wants a spanner. One of them. Which, she didn't say, and I asked her twice.",
         "Person B's after one of the snacks, the apple or the chips, he said which but I've clean "
         "forgot.",

@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person, _reading
 from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import PRONOUN_SEX, VERBS, Lexicon, name_sexes
 from hltl.grounding.tree import Node
@@ -389,6 +389,169 @@ def _finds56(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), "", lexicon)
 
 
+# -- pronouns and ellipsis -------------------------------------------------------------------------
+
+# -- 'P is the one with a craving for X' ("…, while Person B is the one with a craving for the
+# apple"): said 'P has a craving for X' ('the one who wants / needs' is older rules')
+_THE_ONE56 = re.compile(
+    r"\b(?P<p>(?:mr |mrs |ms |dr |miss |person |the )?[a-z]+)(?: is|['\u2019]s) the one "
+    r"(?:with|who has|who['\u2019]s got|who has got) (?P<a>a (?:real |bit of a |serious |"
+    r"massive )?(?:craving|hankering|yen|longing|hunger|thirst)) ",
+    _F,
+)
+
+
+def _the_one56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'P is the one with a craving for X' said 'P has a craving for X' (above)."""
+    if "the one " not in text.lower():
+        return text
+    m = _THE_ONE56.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    return _cut52(text, m.end("p"), m.end(), f" has {m['a']} ", lexicon)
+
+
+# -- a name asked, then he / she ("Person B? He's the sound mixer and he's after the bottle, so …",
+# "Lena? She wants the salt"): said with the name ("Person B is the sound mixer …"), not when a
+# first name says the other sex
+_NAME_Q56 = re.compile(
+    r"^(?P<p>(?:mr |mrs |ms |dr |miss |person )?[a-z]+)\?\s+(?P<pr>he|she)(?P<s>['\u2019]s\b)?",
+    _F,
+)
+
+
+def _name_q56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'P? He's …' said 'P is …' (above)."""
+    if "?" not in text:
+        return text
+    m = _NAME_Q56.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    sex = name_sexes().get(m["p"].split()[-1].lower())
+    if sex is not None and sex != PRONOUN_SEX[m["pr"].lower()]:
+        return text
+    return _cut52(text, m.end("p"), m.end(), " is" if m["s"] else "", lexicon)
+
+
+# -- who paid for it, closing the text ("The apple's meant for Person A, and so are the chips, she
+# paid for them", "…, he bought it"): says nothing more of the task; taken off
+_PAID56 = re.compile(
+    r",\s*(?:(?:as|because|since) )?(?:he|she|they)(?:['\u2019]s| has| have|['\u2019]ve)? (?:paid "
+    r"for|bought|ordered|chose|picked) (?:it|them|those|that|both)(?: (?:himself|herself|"
+    r"themselves|already|earlier|this morning))?\s*[.!]*\s*$",
+    _F,
+)
+_PAID_WORDS56 = ("paid for", "bought", "ordered", "chose", "picked")
+
+
+def _paid56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: a closing ', she paid for them' taken off (above)."""
+    low = text.lower()
+    if not any(w in low for w in _PAID_WORDS56):
+        return text
+    m = _PAID56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start(), m.end(), "", lexicon)
+
+
+# -- 'P's the R; the X are his, so …' ("Person B's the puppet maker; the chips are his, so take them
+# across to him"): the his is the one person the text names; said "The X are P's, so …" (not when a
+# first name says the other sex)
+_ARE_HIS56 = re.compile(
+    r"^(?P<p>(?:mr |mrs |ms |dr |miss |person )?[a-z]+)(?:['\u2019]s| is) (?:the|a|an|our) "
+    r"[a-z][a-z -]{0,30}?\s*[;,.]\s*(?P<x>the [a-z]+(?: [a-z]+){0,2}?) (?P<b>is|are) (?P<pr>his|"
+    r"hers),\s*(?=so\b)",
+    _F,
+)
+
+
+def _are_his56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: "P's the R; the X are his, so …" said "The X are P's, so …" (above)."""
+    low = text.lower()
+    if " his," not in low and " hers," not in low:
+        return text
+    m = _ARE_HIS56.search(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _objects_only(m["x"], lexicon):
+        return text
+    sex = name_sexes().get(m["p"].split()[-1].lower())
+    if sex is not None and sex != PRONOUN_SEX[m["pr"].lower()]:
+        return text
+    x = m["x"][0].upper() + m["x"][1:]
+    return _cut52(text, 0, m.end(), f"{x} {m['b']} {m['p']}'s, ", lexicon)
+
+
+# -- 'P and Q were both …; give her …' ("Emma and Dana were both over by the sink; give her the
+# sponge"): 'both' is the two people, not two things (it was asked which two objects); taken off,
+# so the her is refused naming both — only where the text is refused without it too, 'both' says
+# where they are and a sentence asks to hand 'him / her' something ('both on about / after the X'
+# is session 51's _both_on51)
+_BOTH_PEOPLE56 = re.compile(
+    r"\b(?P<p>(?:mr |mrs |ms |dr |miss |person )?[a-z]+) and (?P<q>(?:mr |mrs |ms |dr |miss |"
+    r"person )?[a-z]+) (?:were|are|['\u2019]re|was)(?P<w> both)(?= (?:over|by|at|in|near|next to|"
+    r"round|around|here|there|sat|standing|sitting|waiting)\b)[^.;!?]*[.;!?]\s*(?:give|pass|hand|"
+    r"bring|take) (?:him|her)\b",
+    _F,
+)
+
+
+def _both_people56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'P and Q were both' said 'P and Q were' (above)."""
+    if " both" not in text.lower():
+        return text
+    m = _BOTH_PEOPLE56.search(text)
+    if m is None or not _only_person(m["p"], lexicon) or not _only_person(m["q"], lexicon):
+        return text
+    out = f"{text[: m.start('w')]}{text[m.end('w') :]}"
+    # only the refusal's words change: where the text without 'both' reads, it is left as it is
+    return out if _reading(out, lexicon) is None else text
+
+
+# -- 'P has no X. Give him the red one.' ("Sam, the intern, has no pen. Give him the red one."):
+# the sentence after says what to do about it, as "P has no X, give him …" (read) does
+_HAS_NONE56 = re.compile(
+    r"^(?P<p>(?:mr |mrs |ms |dr |miss |person )?[a-z]+(?:, (?:the|our|a|an) [a-z]+(?: [a-z]+)?,)?"
+    r" (?:has|has got|['\u2019]s got) no [a-z]+(?: [a-z]+)?)(?P<w>\.\s+)(?=(?:give|pass|hand|"
+    r"bring|take) (?:him|her|them) )",
+    _F,
+)
+
+
+def _has_none56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'P has no X. Give him …' said 'P has no X, give him …' (above)."""
+    if " no " not in text.lower():
+        return text
+    m = _HAS_NONE56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w") + 1, f", {text[m.end('w')].lower()}", lexicon)
+
+
+# -- 'The X, then the Y, onto the Z' ("The small box, then the medium one, onto the belt"): each
+# onto the Z in that order, said "The X onto the Z, then the Y"
+_THEN_ONTO56 = re.compile(
+    r"(?:^|(?<=[.!:;]\s))(?P<x>the [a-z]+(?: [a-z]+){0,2}?),\s*then (?P<y>the [a-z]+(?: [a-z]+)"
+    r"{0,2}?),?\s+(?P<t>(?:onto|on to|on|into|in|over to|across to|to) (?:the )?[a-z]+(?: "
+    r"[a-z]+)?)(?=\s*(?:[.!]|,\s*(?:please|ta|thanks|cheers)\b|$))",
+    _F,
+)
+
+
+def _then_onto56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'The X, then the Y, onto the Z' said 'The X onto the Z, then the Y' (above)."""
+    low = text.lower()
+    if ", then " not in low:
+        return text
+    m = _THEN_ONTO56.search(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    y = m["y"]
+    if not (y.lower().endswith(" one") or _objects_only(y, lexicon)):
+        return text
+    x = m["x"][0].upper() + m["x"][1:] if m.start() == 0 else m["x"]
+    return _cut52(text, m.start(), m.end(), f"{x} {m['t']}, then {y}", lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _go_on56,
@@ -405,6 +568,13 @@ _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _lost_without56,
     _body_so56,
     _finds56,
+    _the_one56,
+    _name_q56,
+    _paid56,
+    _are_his56,
+    _both_people56,
+    _has_none56,
+    _then_onto56,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56: tuple[Callable[[str, Lexicon], str], ...] = ()
