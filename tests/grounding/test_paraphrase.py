@@ -558,12 +558,6 @@ KNOWN_MISSES = frozenset(
         "Teddy on the high chair, no, wait, Lily naps on the play mat, so teddy goes there "
         "instead.",
         "Drill to Kofi, wait, Jess needs it more, give it to Jess.",
-        "those crisps keep getting knocked over so stick them up on the shelf out of harms way",
-        "person a has been waiting for the apple and person b for the cup so off you go",
-        "can person a have the bottle shes got handbell ringing later",
-        "sam wants the black pen for signing things",
-        "lena needs the tongs for the salad and mr novak is after the salt shaker",
-        "jess needs the torch to see under there and kofi wants the screws",
         "Is it alright if Person B helps himself to the chips, do you reckon, and could you take "
         "them?",
         "Can Jess borrow the small spanner, hers has gone walkabout?",

@@ -552,6 +552,167 @@ def _then_onto56(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), f"{x} {m['t']}, then {y}", lexicon)
 
 
+# -- lower case ------------------------------------------------------------------------------------
+
+_WANT_VERB56 = (
+    r"(?:wants|needs|would like|['\u2019]d like|could use|could do with|(?:is|['\u2019]s) after|"
+    r"(?:is|has been|['\u2019]s been|['\u2019]s) (?:waiting|asking) for)"
+)
+
+# -- 'for signing things' ("sam wants the black pen for signing things", "… for writing stuff"):
+# the purpose is the -ing, said 'for signing' (read)
+_ING_THINGS56 = re.compile(
+    r"\bfor [a-z]+ing(?P<w> (?:things|stuff|bits|bits and bobs|and that|and stuff|with))"
+    r"(?=\s*(?:[.,;!]|$|and\b|please\b))",
+    _F,
+)
+
+
+def _ing_things56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'for signing things' said 'for signing' (above)."""
+    low = text.lower()
+    if not any(
+        w in low for w in ("ing things", "ing stuff", "ing bits", "ing and that", "ing with")
+    ):
+        return text
+    m = _ING_THINGS56.search(text)
+    if m is None:
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- a want with its purpose run on into another person's want without a comma ("lena needs the
+# tongs for the salad and mr novak is after the salt shaker"): the comma said (read with it)
+_FOR_AND56 = re.compile(
+    rf"\b{_WANT_VERB56} (?:the|a|an|his|her|their|some) [a-z]+(?: [a-z]+){{0,2}}? for (?P<y>(?:the|"
+    r"a|an|his|her|their|some) [a-z]+(?: [a-z]+)?)(?P<w> )and (?P<q>(?:mr |mrs |ms |dr |miss |"
+    rf"person )?[a-z]+) {_WANT_VERB56}\b",
+    _F,
+)
+
+
+def _for_and56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'needs the X for the Y and Q wants …': a comma before 'and' (above)."""
+    low = text.lower()
+    if " for " not in low or " and " not in low:
+        return text
+    m = _FOR_AND56.search(text)
+    if m is None or _ids(m["y"], lexicon) or not _only_person(m["q"], lexicon):
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), ", ", lexicon)
+
+
+# -- a want's verb left out after 'and' ("person a has been waiting for the apple and person b for
+# the cup so off you go"): said again ('and person b has been waiting for the cup')
+_GAP56 = re.compile(
+    r"\b(?P<v>(?:has been|['\u2019]s been|is|['\u2019]s) (?:waiting|asking|crying|hoping) for|"
+    r"(?:is|['\u2019]s) after) (?:the|a|an|his|her|their) [a-z]+(?: [a-z]+){0,2}? and (?P<q>(?:mr "
+    r"|mrs |ms |dr |miss |person )?[a-z]+) (?P<w>for )?(?=(?:the|a|an|his|her|their) )",
+    _F,
+)
+
+
+def _gap56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'P has been waiting for the X and Q for the Y': the verb said again (above)."""
+    low = text.lower()
+    if " for " not in low and " after " not in low:
+        return text
+    m = _GAP56.search(text)
+    if m is None or not _only_person(m["q"], lexicon):
+        return text
+    v = m["v"]
+    if m["w"] is None and v.lower().endswith(" for"):
+        return text
+    start = m.start("w") if m["w"] else m.end()
+    return _cut52(text, start, m.end(), f"{v} ", lexicon)
+
+
+# -- a remark of what the person has on run on in lower case ("can person a have the bottle shes
+# got handbell ringing later"): the comma said, as the grammar reads "…, she's got handbell ringing
+# later" (only an -ing activity after 'got'; 'it' / 'them' after it stays as it is)
+_SHES_GOT56 = re.compile(
+    r"\b(?P<x>(?:the|a|an|his|her|their) [a-z]+(?: [a-z]+)?) (?P<s>shes|she['\u2019]s|hes|"
+    r"he['\u2019]s|theyve|they['\u2019]ve) got (?!(?:it|them|that|those|one|some|the|a|an|his|her|"
+    r"their)\b)(?:[a-z]+ ){0,2}[a-z]+ing\b",
+    _F,
+)
+
+
+def _shes_got56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: '… the bottle shes got handbell ringing later': a comma after the thing
+    (above)."""
+    low = text.lower()
+    if " got " not in low or text != low:
+        return text
+    m = _SHES_GOT56.search(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    said = {"shes": "she's", "hes": "he's", "theyve": "they've"}.get(m["s"], m["s"])
+    out = f"{text[: m.end('x')]}, {said}{text[m.end('s') :]}"
+    return out if _reading(out, lexicon) is not None else text
+
+
+# -- what the thing is for, run on before another person's want ("jess needs the torch to see
+# under there and kofi wants the screws"): session 52's _to_look52 takes it off closing the text;
+# taken off before 'and Q wants' too (naming nothing of the scene)
+_TO_LOOK56 = re.compile(
+    r"(?P<w> (?:so as |in order )?to (?:look|peer|peek|see|check|poke about|poke around|rummage|"
+    r"search|root about|root around) (?:at|behind|under|underneath|beneath|in|inside|into|round|"
+    r"around|for|through|up|down|over) (?P<x>there|here|[a-z]+(?: [a-z]+){0,2}?)),? (?=and "
+    rf"(?P<q>(?:mr |mrs |ms |dr |miss |person )?[a-z]+) {_WANT_VERB56}\b)",
+    _F,
+)
+
+
+def _to_look56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'needs the torch to see under there and Q wants …': the purpose taken off
+    (above)."""
+    low = text.lower()
+    if " to " not in low or " and " not in low:
+        return text
+    m = _TO_LOOK56.search(text)
+    if m is None or _ids(m["x"], lexicon) or not _only_person(m["q"], lexicon):
+        return text
+    return _cut52(text, m.start("w"), m.end("w"), "", lexicon)
+
+
+# -- why the thing is to be moved, said before the request with 'so' ("those crisps keep getting
+# knocked over so stick them up on the shelf"): the reason taken off, the thing named in the 'them'
+_KEEPS_SO56 = re.compile(
+    r"^(?P<x>(?:those|these|the|that|this) [a-z]+(?: [a-z]+)?) (?:keeps?|kept) (?:getting|being|"
+    r"falling|going|rolling|tipping) [a-z ]{0,30}? so (?P<v>stick|put|pop|place|move|set|shove|"
+    r"stash|stow) (?P<p>them|it) ",
+    _F,
+)
+
+
+def _keeps_so56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'the X keep getting knocked over so stick them …' said 'stick the X …'
+    (above)."""
+    low = text.lower()
+    if " so " not in low or "keep" not in low:
+        return text
+    m = _KEEPS_SO56.search(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    x = "the " + m["x"].split(" ", 1)[1]
+    return _cut52(text, 0, m.end(), f"{m['v']} {x} ", lexicon)
+
+
+# -- 'out of harms way' with its apostrophe dropped (lower case): said "out of harm's way"
+_HARMS56 = re.compile(r"\bout of (?P<w>harms) way\b", _F)
+
+
+def _harms56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'out of harms way' said "out of harm's way" (above)."""
+    if "harms way" not in text.lower():
+        return text
+    m = _HARMS56.search(text)
+    if m is None:
+        return text
+    return f"{text[: m.start('w')]}harm's{text[m.end('w') :]}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _go_on56,
@@ -575,6 +736,13 @@ _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_people56,
     _has_none56,
     _then_onto56,
+    _harms56,
+    _ing_things56,
+    _for_and56,
+    _gap56,
+    _shes_got56,
+    _to_look56,
+    _keeps_so56,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56: tuple[Callable[[str, Lexicon], str], ...] = ()
