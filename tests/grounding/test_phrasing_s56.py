@@ -529,6 +529,7 @@ test_for_and = LOWER.test(
     ("bob wants the apple for alice and carol needs the red mug", None, CELL),
     ("bob wanted the apple for his lunch and alice needs the red mug", None, CELL),
     ("bob wants the apple for his lunch and the cup", None, CELL),
+    ("bob wants the apple for the morning and alice needs the red mug", None, CELL),
 )
 # 'P has been waiting for the X and Q for the Y': the verb said again (_gap56)
 test_gap = LOWER.test(

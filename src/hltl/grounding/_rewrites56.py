@@ -590,6 +590,12 @@ _FOR_AND56 = re.compile(
     _F,
 )
 
+_TIME_NOUN56 = re.compile(
+    r"\b(?:morning|afternoon|evening|night|weekend|week|day|month|year|holiday|holidays|later|"
+    r"shift)\b",
+    _F,
+)
+
 
 def _for_and56(text: str, lexicon: Lexicon) -> str:
     """Session 56: 'needs the X for the Y and Q wants …': a comma before 'and' (above)."""
@@ -599,6 +605,8 @@ def _for_and56(text: str, lexicon: Lexicon) -> str:
     m = _FOR_AND56.search(text)
     if m is None or _ids(m["y"], lexicon) or not _only_person(m["q"], lexicon):
         return text
+    if _TIME_NOUN56.search(m["y"]):
+        return text  # 'for the morning': when, not what for
     return _cut52(text, m.start("w"), m.end("w"), ", ", lexicon)
 
 
