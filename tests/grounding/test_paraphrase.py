@@ -494,10 +494,6 @@ KNOWN_MISSES = frozenset(
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
         # blind54 (tuned on in session 56): refusals left at its one measurement (docs/grounding.md)
-        "Sorry, I know you're rushed off your feet, but Bob's been waiting ages for the crisps, "
-        "could you run them over, cheers.",
-        "Morning, and apologies for pestering, but the stapler's cluttering things up, would you "
-        "drop it into the box, much appreciated.",
         "Whose is that bottle? Person A's, she left it behind when she popped out, so carry it "
         "across to her.",
         "Person A and Person B: she gets the chips, he gets the bottle.",

@@ -204,6 +204,43 @@ test_chuffed = POLITE.test(
     ("Put the apple on the shelf, the shelf would be chuffed.", None, CELL),
 )
 
+# 'could you run them over' after one person's want: over to that person (_run_over56)
+test_run_over = POLITE.test(
+    (
+        "Sorry, I know you're rushed off your feet, but Bob's been waiting ages for the crisps, "
+        "could you run them over, cheers.",
+        "chips>B",
+        TWO,
+    ),
+    ("Bob wants the apple, could you run it over?", "apple>B", CELL),
+    ("Jess is after the torch, could you nip it over, cheers.", "torch>B", WORKSHOP),
+    ("Bob's been waiting for the crisps, could you run them over, cheers.", "chips>B", TWO),
+    # two people, a past want, a later day, another thing: refused as before
+    ("Bob wants the apple and Alice the cup, could you run them over?", None, CELL),
+    ("Bob wants the apple, Alice wants the cup, could you run it over?", None, CELL),
+    ("Bob wanted the apple, could you run it over?", None, CELL),
+    ("Bob wants the apple, could you run it over tomorrow?", None, CELL),
+    ("Bob wants the apple, could you run the cup over?", None, CELL),
+)
+# "the stapler's cluttering things up, would you drop it …" said 'would you drop the stapler …'
+# (_reason_it56)
+test_reason_it = POLITE.test(
+    (
+        "Morning, and apologies for pestering, but the stapler's cluttering things up, would you "
+        "drop it into the box, much appreciated.",
+        "stapler@box",
+        OFFICE,
+    ),
+    ("The stapler's cluttering things up, would you drop it into the box.", "stapler@box", OFFICE),
+    ("Sorry, but the apple's in the way, could you put it on the shelf?", "apple@shelf", CELL),
+    ("The lemon is hogging the worktop, would you pop it on the rack.", "lemon@rack", KITCHEN),
+    # a person, a handover, a surface in the way, a past: refused as before
+    ("The apple's in the way, could you put it on Bob?", None, CELL),
+    ("The apple's in the way, could you give it to Bob?", None, CELL),
+    ("The shelf's in the way, could you put it on the table?", None, CELL),
+    ("The apple was in the way, could you put it on the shelf?", None, CELL),
+)
+
 
 def test_polite_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     POLITE.refused_without(
@@ -216,6 +253,8 @@ def test_polite_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
             _rewrites56._with_it56,
             _rewrites56._kindness56,
             _rewrites56._chuffed56,
+            _rewrites56._run_over56,
+            _rewrites56._reason_it56,
         ),
         monkeypatch,
     )

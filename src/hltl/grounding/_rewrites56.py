@@ -232,6 +232,65 @@ def _chuffed56(text: str, lexicon: Lexicon) -> str:
     return _cut52(text, m.start(), m.end(), "", lexicon)
 
 
+# -- 'could you run them over' after one person's want ("Bob's been waiting ages for the crisps,
+# could you run them over, cheers", "Lena wants the salt, would you take it across?"): over to the
+# one person the want names, said 'over to P'
+_RUN_OVER56 = re.compile(
+    r",\s*(?:(?:so|and) )?(?:(?:could|would|can|will) you (?:please |kindly |just )?)(?:run|take|"
+    r"bring|pass|carry|pop|nip|whizz|zip) (?:them|it) (?:over|across|round)(?P<w>)(?=\s*(?:[.!?]|"
+    r",\s*(?:please|cheers|thanks|ta|ta very much|much appreciated)\b|$))",
+    _F,
+)
+_RUN_WANT56 = re.compile(
+    r"\b(?:wants|needs|would like|['\u2019]d like|could use|could do with|(?:is|['\u2019]s) after|"
+    r"(?:has been|['\u2019]s been|is|['\u2019]s) waiting (?:ages |an age |so long )?for)\b",
+    _F,
+)
+_RUN_OVER_WORDS56 = (" over", " across", " round")
+
+
+def _run_over56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: "P's been waiting for the X, could you run them over" said '… over to P'
+    (above)."""
+    low = text.lower()
+    if " you " not in low or not any(w in low for w in _RUN_OVER_WORDS56):
+        return text
+    m = _RUN_OVER56.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    people = _ids(before, lexicon, "human")
+    if len(people) != 1 or len(_RUN_WANT56.findall(before)) != 1:
+        return text
+    name = next(h.name for h in lexicon.scene.humans if h.id in people)
+    return _cut52(text, m.start("w"), m.end("w"), f" to {name}", lexicon)
+
+
+# -- why the thing is to be moved, then a request with 'it' ("…, but the stapler's cluttering
+# things up, would you drop it into the box"): the thing named in the 'it', the reason taken off
+_REASON_IT56 = re.compile(
+    r"(?P<x>\bthe [a-z]+(?: [a-z]+)?)(?:['\u2019]s| is) (?:cluttering|getting in|in the way|"
+    r"taking up|blocking|hogging|in my way|underfoot|messing up)[a-z ]{0,30}?,\s*(?P<q>(?:would|"
+    r"could|can|will) you (?:please |kindly |just )?)(?P<v>drop|put|pop|stick|move|place|set|"
+    r"stow|shove|stash) it\b",
+    _F,
+)
+
+
+def _reason_it56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: "the stapler's cluttering things up, would you drop it …" said 'would you drop
+    the stapler …' (above)."""
+    low = text.lower()
+    if " it" not in low or not any(
+        w in low for w in ("clutter", "in the way", "taking up", "blocking", "hogging", "underfoot")
+    ):
+        return text
+    m = _REASON_IT56.search(text)
+    if m is None or not _objects_only(m["x"], lexicon):
+        return text
+    return _cut52(text, m.start("x"), m.end(), f"{m['q']}{m['v']} {m['x']}", lexicon)
+
+
 # -- wants and needs -------------------------------------------------------------------------------
 
 # -- 'P reckons the X would hit the spot' ("…, while Bob reckons the bottle would hit the spot",
@@ -731,6 +790,8 @@ _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _with_it56,
     _kindness56,
     _chuffed56,
+    _run_over56,
+    _reason_it56,
     _reckons56,
     _stir56,
     _oclock56,
