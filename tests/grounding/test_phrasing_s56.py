@@ -178,6 +178,13 @@ test_with_it = POLITE.test(
     ("Over to the shelf with it.", None, CELL),
     ("Bob had the apple, over to Alice with it.", None, CELL),
     ("Bob wants the apple, over to Alice with it.", None, CELL),
+    (
+        "Tom needs the packing tape, over to the driver with it please, I handed it over this "
+        "morning.",
+        None,
+        DEPOT,
+    ),
+    ("Jess needs the torch, over to her with it, she lost hers yesterday.", None, WORKSHOP),
 )
 # 'do me a kindness and' said 'do me a favour and' (_kindness56)
 test_kindness = POLITE.test(

@@ -165,7 +165,9 @@ _WITH_IT56 = re.compile(
     r"\b(?:wants|needs|would like|['\u2019]d like|could use|could do with|(?:is|['\u2019]s) after)"
     r" (?:the|a|an|his|her|their|some) [a-z]+(?: [a-z]+){0,2}?,\s*(?P<d>over|across|round|along)"
     r" to (?P<p>(?:the |mr |mrs |ms |dr |miss |person )?[a-z]+) with (?P<x>it|them)\b"
-    r"(?=\s*(?:,|\.|!|$|please\b|pls\b|ta\b|cheers\b|thanks\b))",
+    # only a courtesy after it (12c: "…, over to the driver with it please, I handed it over this
+    # morning." was read)
+    r"(?=(?:\s*,?\s*(?:please|pls|ta|cheers|thanks|thank you))?\s*[.!]*\s*$)",
     _F,
 )
 _WITH_IT_WORDS56 = ("over to", "across to", "round to", "along to")
