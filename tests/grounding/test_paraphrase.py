@@ -473,9 +473,7 @@ KNOWN_MISSES = frozenset(
         "The cup: Person B. The chips: same again, him as well.",
         "Person A's after the bottle for her flask, and for Person B, the chips, he skipped "
         "breakfast.",
-        "That bottle there is Person A's, take it across to her.",
         "Mrs Khan's tablets are due, take them to her please, and her magazine as well.",
-        "Tom's got a long drive ahead; the gloves are his, so pass them to him.",
         "The bottle for Person A, she's a ferry pilot, up at dawn, needs it now",
         "No water since lunch and Person A's flagging, the bottle, straight over to her, ta "
         "muchly.",
@@ -486,7 +484,6 @@ KNOWN_MISSES = frozenset(
         "Mr Lee needs the thermometer. Mrs Khan wants her magazine. Both now please.",
         "Person B can have the lot bar the cup, he never drinks from cups.",
         "Person B's off chips this week, so they go to Person A.",
-        "shelf for the bottle pls somewhere the baby cant grab it",
         "tom needs gloves on for the loading and mia wants tape",
         "jess is on the hammer today so give her it, and kofi needs the big spanner",
         "Park the apple on the coubter out of Bob's reach, ta.",

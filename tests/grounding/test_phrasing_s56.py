@@ -462,7 +462,9 @@ test_are_his = PRONOUNS.test(
     ),
     ("Bob's the chef; the apple is his, so take it to him.", "apple>B", CELL),
     ("Marco's the chef; the knife is his, so pass it to him.", "knife>A", KITCHEN),
-    ("Mrs Khan's the patient; the magazine is hers, so bring it to her.", "magazine>C", WARD),
+    ("Lena's the waitress; the salt is hers, so pass it to her.", "salt>B", KITCHEN),
+    # a role two people share names more than the one person: refused as before
+    ("Mrs Khan's the patient; the magazine is hers, so bring it to her.", None, WARD),
     # a first name of the other sex, someone else, a past, nothing asked: refused as before
     ("Alice's the chef; the apple is his, so take it to him.", None, CELL),
     ("Bob's the chef; the apple is his, so take it to Alice.", None, CELL),
@@ -662,3 +664,52 @@ def test_harms_way_said_with_its_apostrophe() -> None:
         _rewrites56._harms56("stick the crisps up on the shelf out of harms way", lexicon) == said
     )
     assert _rewrites56._harms56("the harms were many", lexicon) == "the harms were many"
+
+
+# -- blind53 leftovers (session 55's report) ---
+
+LEFT53 = PhrasingCases()
+
+# "P's got a long drive ahead; the X are his, so …" (_are_his56, what P has before the ';')
+test_has_his = LEFT53.test(
+    ("Tom's got a long drive ahead; the gloves are his, so pass them to him.", "gloves>B", DEPOT),
+    ("Bob has a long day ahead; the apple is his, so take it to him.", "apple>B", CELL),
+    ("Marco's got a big order on; the knife is his, so pass it to him.", "knife>A", KITCHEN),
+    # a thing of the scene or a person in what P has, the other sex: refused as before
+    ("Bob's got the cup; the apple is his, so take it to him.", None, CELL),
+    ("Bob has Alice with him; the apple is his, so take it to him.", None, CELL),
+    ("Bob's got a long day ahead; the apple is hers, so take it to her.", None, CELL),
+)
+# "that X there is P's, take it to her" said "that X is P's, so take it to her" (_owner_so56)
+test_owner_so = LEFT53.test(
+    ("That bottle there is Person A's, take it across to her.", "bottle>A", ONE),
+    ("That knife there is Marco's, pass it to him please.", "knife>A", KITCHEN),
+    (
+        "Those blankets over there are Mr Lee's, take them to him.",
+        "blanket_blue>B & blanket_grey>B",
+        WARD,
+    ),
+    ("That apple there is Bob's, give it to him.", "apple>B", CELL),
+    # someone else, a past, nothing asked: refused as before
+    ("That apple there is Bob's, give it to Alice.", None, CELL),
+    ("That apple there was Bob's, give it to him.", None, CELL),
+    ("That apple there is Bob's, take it away.", None, CELL),
+)
+# 'shelf for the bottle' opening the text said 'put the bottle on the shelf' (_surface_for56)
+test_surface_for = LEFT53.test(
+    ("shelf for the bottle pls somewhere the baby cant grab it", "bottle@shelf", FIG1),
+    ("rack for the lemon pls", "lemon@rack", KITCHEN),
+    ("mat for the teddy please", "teddy@mat", NURSERY),
+    # a question, a person, a later day: refused as before
+    ("Shelf for the apple? Or the table?", None, CELL),
+    ("Bob for the apple please.", None, CELL),
+    ("Shelf for the apple tomorrow.", None, CELL),
+    ("shelf for the apple please or the table", None, CELL),
+)
+
+
+def test_left53_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    LEFT53.refused_without(
+        (_rewrites56._are_his56, _rewrites56._owner_so56, _rewrites56._surface_for56),
+        monkeypatch,
+    )

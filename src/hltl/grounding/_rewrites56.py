@@ -6,7 +6,14 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _objects_only, _only_person, _reading
+from hltl.grounding._normalise1 import (
+    _F,
+    _ids,
+    _objects_only,
+    _only_person,
+    _reading,
+    _surface_only,
+)
 from hltl.grounding._rewrites52 import _cut52
 from hltl.grounding.lexicon import PRONOUN_SEX, VERBS, Lexicon, name_sexes
 from hltl.grounding.tree import Node
@@ -517,12 +524,13 @@ def _paid56(text: str, lexicon: Lexicon) -> str:
 
 
 # -- 'P's the R; the X are his, so …' ("Person B's the puppet maker; the chips are his, so take them
-# across to him"): the his is the one person the text names; said "The X are P's, so …" (not when a
-# first name says the other sex)
+# across to him", "Tom's got a long drive ahead; the gloves are his, so …"): the his is the one
+# person the text names; said "The X are P's, so …" (not when a first name says the other sex)
 _ARE_HIS56 = re.compile(
-    r"^(?P<p>(?:mr |mrs |ms |dr |miss |person )?[a-z]+)(?:['\u2019]s| is) (?:the|a|an|our) "
-    r"[a-z][a-z -]{0,30}?\s*[;,.]\s*(?P<x>the [a-z]+(?: [a-z]+){0,2}?) (?P<b>is|are) (?P<pr>his|"
-    r"hers),\s*(?=so\b)",
+    r"^(?P<p>(?:mr |mrs |ms |dr |miss |person )?[a-z]+)(?P<r>(?:['\u2019]s| is) (?:the|a|an|our) "
+    r"[a-z][a-z -]{0,30}?|(?:['\u2019]s got| has got| has) (?:a|an|the) [a-z][a-z -]{0,30}?)\s*"
+    r"(?:[;.]|(?<=[a-z]),)\s*(?P<x>the [a-z]+(?: [a-z]+){0,2}?) (?P<b>is|are) (?P<pr>his|hers),\s*"
+    r"(?=so\b)",
     _F,
 )
 
@@ -535,6 +543,10 @@ def _are_his56(text: str, lexicon: Lexicon) -> str:
     m = _ARE_HIS56.search(text)
     if m is None or not _only_person(m["p"], lexicon) or not _objects_only(m["x"], lexicon):
         return text
+    if _ids(m["r"], lexicon, "object") or not _ids(m["r"], lexicon, "human") <= _ids(
+        m["p"], lexicon
+    ):
+        return text  # what P is or has names no thing of the scene and no one else
     sex = name_sexes().get(m["p"].split()[-1].lower())
     if sex is not None and sex != PRONOUN_SEX[m["pr"].lower()]:
         return text
@@ -611,6 +623,53 @@ def _then_onto56(text: str, lexicon: Lexicon) -> str:
         return text
     x = m["x"][0].upper() + m["x"][1:] if m.start() == 0 else m["x"]
     return _cut52(text, m.start(), m.end(), f"{x} {m['t']}, then {y}", lexicon)
+
+
+# -- whose the thing is, said with 'there' after the thing ("That bottle there is Person A's, take
+# it across to her"): the 'there' taken off and 'so' said ("That bottle is Person A's, so take it
+# …" is read)
+_OWNER_SO56 = re.compile(
+    r"\b(?:that|this|those|these) [a-z]+(?: [a-z]+)?(?P<w> (?:there|here|over there|right there|"
+    r"just there)) (?:is|are) (?P<p>(?:mr |mrs |ms |dr |miss |person )?[a-z]+)['\u2019]s,\s*"
+    r"(?P<so>)(?=(?:take|give|pass|bring|carry|hand|run) (?:it|them)\b)",
+    _F,
+)
+
+
+def _owner_so56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: "that X there is P's, take it to her" said "that X is P's, so take it to her"
+    (above)."""
+    low = text.lower()
+    if "'s," not in low and "\u2019s," not in low:
+        return text
+    m = _OWNER_SO56.search(text)
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    said = f"{text[m.end('w') : m.start('so')]}so "
+    return _cut52(text, m.start("w"), m.end("so"), said, lexicon)
+
+
+# -- a surface named first, then the thing it is for, all in lower case and run on into 'pls'
+# ("shelf for the bottle pls somewhere the baby cant grab it", "rack for the lemon please"): said
+# 'put the bottle on the shelf …'
+_SURFACE_FOR56 = re.compile(
+    r"^(?P<s>(?:the )?[a-z]+(?: [a-z]+)?) for (?P<x>the [a-z]+(?: [a-z]+)?) (?=(?:please|pls|plz)"
+    r"\b(?!\s+or\b))",
+    _F,
+)
+
+
+def _surface_for56(text: str, lexicon: Lexicon) -> str:
+    """Session 56: 'shelf for the bottle' opening the text said 'put the bottle on the shelf'
+    (above)."""
+    if " for the " not in text.lower():
+        return text
+    m = _SURFACE_FOR56.search(text)
+    if m is None or not _surface_only(m["s"], lexicon) or not _objects_only(m["x"], lexicon):
+        return text
+    s = m["s"].lower()
+    s = s if s.startswith("the ") else f"the {s}"
+    return _cut52(text, 0, m.end(), f"Put {m['x']} on {s} ", lexicon)
 
 
 # -- lower case ------------------------------------------------------------------------------------
@@ -807,6 +866,8 @@ _STEPS56_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _both_people56,
     _has_none56,
     _then_onto56,
+    _owner_so56,
+    _surface_for56,
     _harms56,
     _ing_things56,
     _for_and56,
