@@ -246,6 +246,12 @@ test_reason_it = POLITE.test(
     ("The apple's in the way, could you give it to Bob?", None, CELL),
     ("The shelf's in the way, could you put it on the table?", None, CELL),
     ("The apple was in the way, could you put it on the shelf?", None, CELL),
+    (
+        "The stapler's cluttering things up, would you drop it into the box, I dropped it in an "
+        "hour ago.",
+        None,
+        OFFICE,
+    ),
 )
 
 

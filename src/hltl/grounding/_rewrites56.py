@@ -285,6 +285,14 @@ _REASON_IT56 = re.compile(
     _F,
 )
 
+# what may follow the request: its place, then a courtesy at most (my probe: "…, would you drop it
+# into the box, I dropped it in an hour ago." was read)
+_COURTESY_END56 = re.compile(
+    r"[^,.;!?]*(?:,\s*(?:please|pls|ta|cheers|thanks|thank you|ta very much|much appreciated|"
+    r"cheers then|ta muchly))?\s*[.!?]*\s*$",
+    _F,
+)
+
 
 def _reason_it56(text: str, lexicon: Lexicon) -> str:
     """Session 56: "the stapler's cluttering things up, would you drop it …" said 'would you drop
@@ -295,7 +303,11 @@ def _reason_it56(text: str, lexicon: Lexicon) -> str:
     ):
         return text
     m = _REASON_IT56.search(text)
-    if m is None or not _objects_only(m["x"], lexicon):
+    if (
+        m is None
+        or not _objects_only(m["x"], lexicon)
+        or not _COURTESY_END56.match(text[m.end() :])
+    ):
         return text
     return _cut52(text, m.start("x"), m.end(), f"{m['q']}{m['v']} {m['x']}", lexicon)
 
