@@ -333,6 +333,7 @@ test_oclock = WANTS.test(
     ("Priya needs the notepad for one o'clock.", None, OFFICE),
     ("Priya needed the notepad for her one o'clock.", None, OFFICE),
     ("Priya needs the notepad for her one o'clock tomorrow.", None, OFFICE),
+    ("Priya needs the notepad for her one o'clock, bring it after that.", None, OFFICE),
 )
 # "P's lost without the X" said 'P needs the X' (_lost_without56)
 test_lost_without = WANTS.test(

@@ -382,6 +382,10 @@ _OCLOCK_WORDS56 = (
     *(f"{d} am" for d in "0123456789"),
 )
 
+_AFTER_MEETING56 = re.compile(
+    r"\b(?:after|afterwards|later|then|once|when|until|till|before)\b", _F
+)
+
 
 def _oclock56(text: str, lexicon: Lexicon) -> str:
     """Session 56: 'for her one o'clock' said 'for her meeting' (above)."""
@@ -389,8 +393,8 @@ def _oclock56(text: str, lexicon: Lexicon) -> str:
     if not any(w in low for w in _OCLOCK_WORDS56):
         return text
     m = _OCLOCK56.search(text)
-    if m is None:
-        return text
+    if m is None or _AFTER_MEETING56.search(text, m.end()):
+        return text  # 12c: '…, bring it after that' waits on the meeting
     owner = m["w"].split()[0]
     return _cut52(text, m.start("w"), m.end(), f"{owner} {m['m'] or 'meeting'}", lexicon)
 
