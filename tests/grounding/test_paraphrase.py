@@ -473,9 +473,7 @@ KNOWN_MISSES = frozenset(
         "The cup: Person B. The chips: same again, him as well.",
         "Person A's after the bottle for her flask, and for Person B, the chips, he skipped "
         "breakfast.",
-        "That bottle there is Person A's, take it across to her.",
         "Mrs Khan's tablets are due, take them to her please, and her magazine as well.",
-        "Tom's got a long drive ahead; the gloves are his, so pass them to him.",
         "The bottle for Person A, she's a ferry pilot, up at dawn, needs it now",
         "No water since lunch and Person A's flagging, the bottle, straight over to her, ta "
         "muchly.",
@@ -486,7 +484,6 @@ KNOWN_MISSES = frozenset(
         "Mr Lee needs the thermometer. Mrs Khan wants her magazine. Both now please.",
         "Person B can have the lot bar the cup, he never drinks from cups.",
         "Person B's off chips this week, so they go to Person A.",
-        "shelf for the bottle pls somewhere the baby cant grab it",
         "tom needs gloves on for the loading and mia wants tape",
         "jess is on the hammer today so give her it, and kofi needs the big spanner",
         "Park the apple on the coubter out of Bob's reach, ta.",
@@ -494,37 +491,9 @@ KNOWN_MISSES = frozenset(
         "Reward Person B with the applo, he's been brilliant.",
         "A drink for Person A, she's been talking for hours: the bobtle, please.",
         # blind54 (tuned on in session 56): refusals left at its one measurement (docs/grounding.md)
-        "Oh go on, if you'd be so kind, pop the blue mug down on the counter for me, ta ever so.",
-        "Sorry, I know you're rushed off your feet, but Bob's been waiting ages for the crisps, "
-        "could you run them over, cheers.",
-        "Khob khun, you're a marvel, and would the apple go across to Person B when it suits.",
-        "If it isn't too much of a faff, hand the apple across to Person A, would you, there's a "
-        "good robot.",
-        "Hello, hello, sorry, me again, the bottle for Person B please, thanking you kindly.",
-        "Sukriya, and while you're at it, one small favour: the chips to Person A and the bottle "
-        "to Person B.",
-        "Morning, and apologies for pestering, but the stapler's cluttering things up, would you "
-        "drop it into the box, much appreciated.",
-        "Dhanyawad, you're a lifesaver, Tom needs the packing tape, over to the driver with it "
-        "please.",
-        "Do me a kindness and lay the globe on the desk, Mrs Ortiz would be chuffed to bits.",
-        "Alice has a hankering for the crisps, while Bob reckons the bottle would hit the spot.",
-        "Emma's keen on the green cup for her tea, and the doctor could do with the spoon to stir "
-        "hers.",
-        "Priya needs the notepad for her one o'clock, she'd be ever so grateful.",
-        "Mia's lost without the barcode scanner today, and Tom's hands are raw so he wants the "
-        "work gloves.",
-        "Mr Novak is wanting the salt shaker, he finds the soup a bit bland.",
-        "Person A has put her name down for the cup, while Person B is the one with a craving for "
-        "the apple.",
-        "Person B? He's the sound mixer and he's after the bottle, so hand it over to him.",
-        "The apple's meant for Person A, and so are the chips, she paid for them.",
-        "Person B's the puppet maker; the chips are his, so take them across to him.",
         "Whose is that bottle? Person A's, she left it behind when she popped out, so carry it "
         "across to her.",
         "Person A and Person B: she gets the chips, he gets the bottle.",
-        "Sam, the intern, has no pen. Give him the red one.",
-        "Tom's loading up. The small box, then the medium one, onto the belt.",
         "Alice could use the apple. Oh, and Bob. For him it's the red mug, tea's brewing.",
         "Bottle to Alice to kick things off, and once that's sorted, run the crisps over to Bob.",
         "Apple for Person A, bottle for Person B, and throw in the chips for Person A while "
@@ -582,12 +551,6 @@ KNOWN_MISSES = frozenset(
         "Teddy on the high chair, no, wait, Lily naps on the play mat, so teddy goes there "
         "instead.",
         "Drill to Kofi, wait, Jess needs it more, give it to Jess.",
-        "those crisps keep getting knocked over so stick them up on the shelf out of harms way",
-        "person a has been waiting for the apple and person b for the cup so off you go",
-        "can person a have the bottle shes got handbell ringing later",
-        "sam wants the black pen for signing things",
-        "lena needs the tongs for the salad and mr novak is after the salt shaker",
-        "jess needs the torch to see under there and kofi wants the screws",
         "Is it alright if Person B helps himself to the chips, do you reckon, and could you take "
         "them?",
         "Can Jess borrow the small spanner, hers has gone walkabout?",
@@ -639,7 +602,6 @@ KNOWN_UNCLEAR = frozenset(
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
         "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
         # blind54 (tuned on in session 56)
-        "Emma and Dana were both over by the sink; give her the sponge.",
         "Jess wants a spanner. One of them. Which, she didn't say, and I asked her twice.",
         "Person B's after one of the snacks, the apple or the chips, he said which but I've clean "
         "forgot.",
