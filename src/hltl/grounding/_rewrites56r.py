@@ -4,14 +4,567 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids, _reading
+from hltl.grounding._normalise3 import _whole_name
+from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, tasks
 
-# the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
+
+def _has(text: str, *words: str) -> bool:
+    """Whether ``text`` (lower-cased) holds one of ``words``: the cheap test a rule asks first."""
+    low = text.lower()
+    return any(w in low for w in words)
+
+
+# -- blind54: whichever / any of / one of / both / each ------------------------------------------
+
+# "Share them out so nobody's left empty-handed: …", "Hand out both things: …", "Something for
+# both of them, then: …", "A book for each child: …": a sharing-out said before a colon
+_SHARE_OUT56R = re.compiled(
+    r"^(?:(?:(?:share|hand|dish|pass|give|divvy|parcel) (?:them |these |those |the things |both "
+    r"things |both items |the lot |everything )?(?:out|round|around|up)(?: (?:both things|both "
+    r"items|the things|the lot|them|these|those))?(?: (?:so|so that) [^:;]+)?)|(?:(?:a|one) "
+    r"(?:little )?(?:something|thing|treat)|something(?: nice)?) for (?:both|each|the two) of "
+    r"them(?:,? then)?|(?P<h>(?:a|one) [a-z]+) for each (?:child|kid|person|guest|patient|one "
+    r"of them|of them|worker|student|pupil))\s*:\s*(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _share_out56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): a sharing-out said before a colon ("Share them out so nobody's left
+    empty-handed: …", "Hand out both things: …", "Something for both of them, then: …", "A book
+    for each child: …") is "One each: …" ("A book each: …"), read by the older 'each' rules,
+    which check that the list hands one thing to each of two or more people; here too the list
+    must read, and hand things to two or more people and nothing else."""
+    if not _has(text, " out", " round", " up", " of them", " each "):
+        return text
+    m = _SHARE_OUT56R.match(text.strip())
+    if m is None:
+        return text
+    node = _reading(m["rest"], lexicon)
+    if node is None:
+        return text
+    done = list(tasks(node))
+    if any(t.kind != "deliver" for t in done) or len({t.target for t in done}) < 2:
+        return text
+    head = f"{m['h']} each" if m["h"] else "One each"
+    return f"{head}: {m['rest']}"
+
+
+# "Any spare cup, white or green, to Emma": 'spare' says the robot may take any one
+_ANY_SPARE56R = re.compiled(r"\b(?P<q>any|either|one of the) spare (?=[a-z])", _F)
+
+
+def _any_spare56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "any (either) spare X" is "any X" (what is left is read by the older
+    rules, which check the kind has more than one thing)."""
+    if "spare" not in text.lower():
+        return text
+    return _ANY_SPARE56R.sub(lambda m: f"{m['q']} ", text)
+
+
+# "One of the pens to Sam, any of the three will do."
+_ANY_N_DO56R = re.compiled(
+    r"^(?:one|any) of the (?P<k>[a-z]+s) (?P<to>(?:to|for) [^,]+?),\s*(?:any|either) (?:one )?of "
+    r"(?:the|them|those|these) ?(?P<n>two|three|four|five)?(?: of them)? (?:will do|is fine|"
+    r"would do|is good|is ok|is okay)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _any_n_do56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "One of the Xs to P, any of the three will do" is "Any of the three Xs
+    to P" (the grammar checks the count against the scene); the recipient one person."""
+    if not _has(text, " do", " fine", " good", " ok"):
+        return text
+    m = _ANY_N_DO56R.match(text.strip())
+    if m is None or _person46r(m["to"][3:].strip(), lexicon) is None:
+        return text
+    n = f" {m['n']}" if m["n"] else ""
+    return f"Any of the{n} {m['k']} {m['to']}{m['end'] or '.'}"
+
+
+# "…, whichever you lay a hand on first": the robot's pick
+_LAY_HAND56R = re.compiled(
+    r"\bwhichever (?:you )?(?:lay|put|get|lays|puts|gets) (?:a|your) hands? on (?:first|soonest|"
+    r"quickest)(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _lay_hand56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "…, whichever you lay (get, put) a hand on first" after a choice is
+    "…, whichever comes to hand first" (read by the older rules)."""
+    if "hand" not in text.lower() or "whichever" not in text.lower():
+        return text
+    return _LAY_HAND56R.sub("whichever comes to hand first", text)
+
+
+# "Whichever of the two is closest, the chips or the bottle, take it to Person B."
+_WHICHEVER_OF56R = re.compiled(
+    r"^whichever (?:of (?:the|them|those|these) ?(?:two|both)?|one) (?:is|'s) (?P<how>closest|"
+    r"nearest|handiest|easiest|nearer|closer|handier|easier)(?: to (?:hand|reach|you))?,\s*"
+    r"(?P<x>the [a-z]+(?: [a-z]+)?) or (?P<y>the [a-z]+(?: [a-z]+)?),\s*(?:(?:take|bring|give|"
+    r"hand|pass|carry|get) it (?:over |across )?to (?P<p>[^,.!]+?)|it(?:'s| is| goes) (?:to|for) "
+    r"(?P<q>[^,.!]+?))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _whichever_of56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Whichever of the two is closest, the X or the Y, take it to P" is "The
+    X or the Y to P, whichever is closest" (read by the older rules): two objects of the scene,
+    one person."""
+    if "whichever" not in text.lower():
+        return text
+    m = _WHICHEVER_OF56R.match(text.strip())
+    if m is None:
+        return text
+    who = m["p"] or m["q"]
+    if _person46r(who, lexicon) is None:
+        return text
+    x, y = _ids(m["x"], lexicon, "object"), _ids(m["y"], lexicon, "object")
+    if len(x) != 1 or len(y) != 1 or x == y:
+        return text
+    if not _whole_name(m["x"], lexicon, "object") or not _whole_name(m["y"], lexicon, "object"):
+        return text
+    x_, y_ = m["x"][0].upper() + m["x"][1:], m["y"]
+    return f"{x_} or {y_} to {who}, whichever is {m['how'].lower()}{m['end'] or '.'}"
+
+
+# -- blind54: corrections -------------------------------------------------------------------------
+
+# "…, make that the lemon for him.": the thing corrected, the person said again as a pronoun
+_MAKE_THAT_FOR56R = re.compiled(
+    r"(?P<head>\b(?:to|for) (?P<p>[^,;.!?]+?),\s*(?:(?:er|erm|um|uh|oh|no|sorry|wait),\s*)*no,\s*"
+    r"make (?:that|it) (?P<x>the [a-z]+(?: [a-z]+)?)) (?:for|to) (?:him|her|them)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _make_that_for56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Salt over to Marco, er, no, make that the lemon for him." is "…, make
+    that the lemon." (the older correction rules read it): one person before the correction, one
+    whole object in it, the pronoun that person said again."""
+    if "make " not in text.lower():
+        return text
+    m = _MAKE_THAT_FOR56R.search(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    if not _whole_name(m["x"], lexicon, "object"):
+        return text
+    return f"{text.strip()[: m.start()]}{m['head']}{m['end'] or '.'}"
+
+
+# "The apple to Bob, no, sorry, I'm thinking of Carol, give it to her."
+_THINKING_OF56R = re.compiled(
+    r"(?P<cue>,\s*no,\s*(?:sorry,\s*)?)(?:i'm|i am|i was) (?:thinking of|getting mixed up with|"
+    r"confusing (?:him|her) with) (?P<q>[^,.!]+?)(?:,\s*(?:so )?(?:give|take|hand|pass|bring) it "
+    r"(?:over |across )?to (?:him|her|them))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _thinking_of56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "X to P, no, sorry, I'm thinking of Q(, give it to her)" is "X to P,
+    no, sorry, Q" (the older correction rules read it): Q one person of the scene."""
+    if not _has(text, "thinking of", "mixed up with", "confusing"):
+        return text
+    m = _THINKING_OF56R.search(text.strip())
+    if m is None or _person46r(m["q"], lexicon) is None:
+        return text
+    return f"{text.strip()[: m.start()]}{m['cue']}{m['q']}{m['end'] or '.'}"
+
+
+# "…, oh no, I've said it backwards, swap those round."
+_BACKWARDS56R = re.compiled(
+    r",\s*(?P<cue>(?:oh )?no|oops|sorry|whoops),\s*(?:i've|i have|i) (?:said|got|put|done) "
+    r"(?:it|that|them|those) (?:backwards|the wrong way round|the wrong way around|back to "
+    r"front),\s*(?:swap|switch) (?:those|them|that|it|the two|the people) (?:round|around|over)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _backwards56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "X to P, Y to Q, oh no, I've said it backwards, swap those round" is
+    "…, oh no, the other way round" (session-era rules read the swap, and refuse it where the
+    two requests do not swap)."""
+    if "swap" not in text.lower() and "switch" not in text.lower():
+        return text
+    m = _BACKWARDS56R.search(text.strip())
+    if m is None:
+        return text
+    return f"{text.strip()[: m.start()]}, {m['cue']}, the other way round{m['end'] or '.'}"
+
+
+# "Teddy on the high chair, no, wait, Lily naps on the play mat, so teddy goes there instead."
+_GOES_THERE56R = re.compiled(
+    r"(?P<cue>,\s*(?:no|wait|actually|sorry|hang on)(?:,\s*(?:no|wait|actually|sorry|hang on))*),"
+    r"\s*(?P<p>[^,;.!?]+?) (?:naps|sleeps|sits|plays|works|eats|reads|lies|likes it|keeps (?:it|"
+    r"them)) (?P<on>on|in|at|by) (?P<s>the [a-z]+(?: [a-z]+)?),\s*so (?P<x>it|they|the [a-z]+|"
+    r"[a-z]+) (?:goes|go|should go|can go|belongs?) there(?: instead)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _goes_there56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "X on S, no, wait, P naps on the T, so X goes there instead" is "X on
+    S, no, wait, on the T" (the older correction rules read it): P one person, T one whole
+    surface of the scene, the thing said again the one before the correction (or 'it')."""
+    if "there" not in text.lower():
+        return text
+    m = _GOES_THERE56R.search(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    if not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    head = text.strip()[: m.start()]
+    said = re.sub(r"^the ", "", m["x"], flags=_F).lower()
+    if said not in ("it", "they") and not head.lower().lstrip().startswith(
+        (said, f"the {said}", f"put the {said}", f"put {said}")
+    ):
+        return text
+    return f"{head}{m['cue']}, on {m['s']}{m['end'] or '.'}"
+
+
+# "Drill to Kofi, wait, Jess needs it more, give it to Jess."
+_NEEDS_MORE56R = re.compiled(
+    r"(?P<cue>,\s*(?:no|wait|actually|sorry|hang on)(?:,\s*(?:no|wait|actually|sorry|hang on))*),"
+    r"\s*(?P<p>[^,;.!?]+?) (?:needs|wants) (?:it|them) (?:more|most|first|sooner|worse),\s*"
+    r"(?P<give>(?:so )?(?:give|take|hand|pass|bring) (?:it|them) (?:over |across )?to "
+    r"(?P<q>[^,;.!?]+?))(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _needs_more56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "X to P, wait, Q needs it more, give it to Q" is "X to P, wait, give it
+    to Q" (the older correction rules read it): the one who needs it and the one it goes to the
+    same person of the scene."""
+    if not _has(text, " more", " most", "first", "sooner", "worse"):
+        return text
+    m = _NEEDS_MORE56R.search(text.strip())
+    if m is None:
+        return text
+    p, q = _person46r(m["p"], lexicon), _person46r(m["q"], lexicon)
+    if p is None or p != q:
+        return text
+    return f"{text.strip()[: m.start()]}{m['cue']}, {m['give']}{m['end'] or '.'}"
+
+
+# "Leave the bottle be, actually, on reflection, run it over to Person A."
+_LEAVE_BE56R = re.compiled(
+    r"^leave (?P<x>the [a-z]+(?: [a-z]+)?) (?:be|alone|where it is|there),\s*(?:(?:actually|no|"
+    r"wait|sorry|on reflection|on second thoughts?|thinking about it|come to think of it),\s*)+"
+    r"(?P<v>(?:run|take|bring|give|hand|pass|carry|pop|put|send|get) )it (?P<rest>(?:over |across |"
+    r"up |down )?(?:to|on|onto|in|into) [^,;.!?]+?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_be56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Leave the X be, actually, on reflection, run it over to P" is "Run
+    the X over to P": the keeping taken back by a correction cue before the one request (the
+    thing one whole object of the scene)."""
+    if "leave" not in text.lower():
+        return text
+    m = _LEAVE_BE56R.match(text.strip())
+    if m is None or not _whole_name(m["x"], lexicon, "object"):
+        return text
+    v = m["v"][0].upper() + m["v"][1:]
+    return f"{v}{m['x']} {m['rest']}{m['end'] or '.'}"
+
+
+# -- blind54: questions ---------------------------------------------------------------------------
+
+# "Is it alright if Person B helps himself to the chips, do you reckon, and could you take them?"
+_HELPS_SELF56R = re.compiled(
+    r"^(?:is it (?:alright |all right |ok |okay |fine )?if|would it be (?:alright |all right |ok |"
+    rf"okay |fine )?if) (?P<p>{_P46R}) (?:helps|help) (?:himself|herself|themselves) to (?P<x>the "
+    r"[a-z]+(?: [a-z]+)?)(?:,\s*(?:do you reckon|do you think|d'you reckon))?,?\s*and (?P<v>could|"
+    r"can|would|will) you (?:take|bring|pass|carry|run) (?:it|them) (?:over |across )?(?:to "
+    r"(?:him|her|them))?\s*\?$",
+    _F,
+)
+
+
+def _helps_self56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Is it alright if P helps himself to the X(, do you reckon), and could
+    you take it (to him)?" is "Could you take the X to P?": one person, one whole object."""
+    if "help" not in text.lower():
+        return text
+    m = _HELPS_SELF56R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    if not _whole_name(m["x"], lexicon, "object"):
+        return text
+    return f"{m['v'].capitalize()} you take {m['x']} to {m['p']}?"
+
+
+# "Can Jess borrow the small spanner, hers has gone walkabout?"
+_GONE_WALKABOUT56R = re.compiled(
+    r",\s*(?:(?:as|because|since|cause|'cause) )?(?:his|hers|theirs|his own|her own|their own) "
+    r"(?:has|'s|is) (?:gone (?:walkabout|missing|awol|astray)|disappeared|vanished|broken|bust|"
+    r"gone|lost|missing)(?P<end>\s*[?.!]?)$",
+    _F,
+)
+_BORROW56R = re.compiled(
+    rf"^(?:can|could|may|might) (?P<p>{_P46R}) (?:borrow|have|use) (?P<x>the [a-z]+(?: [a-z]+)?)"
+    r"\s*$",
+    _F,
+)
+
+
+def _gone_walkabout56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Can P borrow the X, hers has gone walkabout?" is "Can P borrow the
+    X?": the reason is about P's own one, not a thing of the scene (one person asked about, one
+    whole object)."""
+    low = text.lower()
+    if "his" not in low and "hers" not in low and "their" not in low:
+        return text
+    m = _GONE_WALKABOUT56R.search(text.strip())
+    if m is None:
+        return text
+    head = text.strip()[: m.start()]
+    b = _BORROW56R.match(head)
+    if b is None or _person46r(b["p"], lexicon) is None:
+        return text
+    if not _whole_name(b["x"], lexicon, "object"):
+        return text
+    return f"{head}?"
+
+
+# -- blind54: counts and plurals -----------------------------------------------------------------
+
+# "The pair of cups, green and white, …", "Kofi needs the pair of spanners, …"
+_PAIR_OF56R = re.compiled(r"\b(?:the|that|this) pair of (?P<k>[a-z]+s)\b", _F)
+
+
+def _pair_of56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "the pair of Xs" is "both Xs" where the scene has exactly two things of
+    the kind (the older rules read 'both' and check the count)."""
+    if "pair of" not in text.lower():
+        return text
+
+    def both(m: re.Match[str]) -> str:
+        if len(_ids(f"the {m['k']}", lexicon, "object")) != 2:
+            return m.group(0)
+        return f"both {m['k']}"
+
+    return _PAIR_OF56R.sub(both, text)
+
+
+# "…, so he's to have all four things, every last one."
+_EVERY_LAST56R = re.compiled(
+    r"(?P<all>\ball (?:(?:two|three|four|five|six) )?(?:the )?[a-z]+s|\ball of (?:them|those|"
+    r"these)|\bthe lot),\s*every (?:last|single) one(?: of (?:them|those))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _every_last56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "…all four things, every last one" is "…all four things": the count
+    said again."""
+    if "every" not in text.lower():
+        return text
+    m = _EVERY_LAST56R.search(text.strip())
+    if m is None:
+        return text
+    return f"{text.strip()[: m.start()]}{m['all']}{m['end'] or '.'}"
+
+
+# "…, so every one of the three boxes, small, medium and large, onto the belt."
+_EVERY_ONE_OF56R = re.compiled(
+    r"\bevery (?:single )?one of the (?P<n>two|three|four|five|six) (?P<k>[a-z]+s)\b", _F
+)
+
+
+def _every_one_of56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "every one of the three Xs" is "all three Xs" (the older rules check
+    the count against the scene)."""
+    if "every" not in text.lower():
+        return text
+    return _EVERY_ONE_OF56R.sub(lambda m: f"all {m['n']} {m['k']}", text)
+
+
+# "The small box and the medium one, both of them, onto the belt"
+_BOTH_OF_THEM56R = re.compiled(
+    r"^(?P<x>the [a-z]+(?: [a-z]+)? and the [a-z]+(?: [a-z]+)?),\s*(?:both of them|the two of "
+    r"them|the pair of them|both),\s*(?P<rest>(?:up |down |over |across )?(?:on|onto|in|into|to) "
+    r"\S.*)$",
+    _F,
+)
+
+
+def _both_of_them56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "The X and the Y, both of them, onto the S" is "The X and the Y onto the
+    S": the count of two said again after a list of two (the older rules read what is left)."""
+    if not _has(text, "both", " two of them", "pair of them"):
+        return text
+    m = _BOTH_OF_THEM56R.match(text.strip())
+    if m is None:
+        return text
+    return f"{m['x']} {m['rest']}"
+
+
+# "…, so bring her both blankets, blue as well as grey."
+_AS_WELL_AS56R = re.compiled(
+    r"(?P<both>\bboth (?:the )?[a-z]+s),\s*(?P<a>[a-z]+) as well as (?:the )?(?P<b>[a-z]+)"
+    r"(?=\s*(?:[,.!]|$))",
+    _F,
+)
+
+
+def _as_well_as56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "both Xs, blue as well as grey" is "both Xs, blue and grey" (read by
+    the older rules, which check the two words name the two things)."""
+    if "as well as" not in text.lower():
+        return text
+    return _AS_WELL_AS56R.sub(lambda m: f"{m['both']}, {m['a']} and {m['b']}", text)
+
+
+# "Only the single cup, to Person B, he just needs the one."
+_ONLY_SINGLE56R = re.compiled(
+    r"^(?:only|just) the (?:single|one|lone) (?P<k>[a-z]+),\s*(?P<to>(?:to|for) [^,.!]+?)"
+    r"(?:,\s*(?P<pr>he|she|they) (?:just |only )?(?:needs|wants) (?:the one|just the one|one|"
+    r"the single one))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _only_single56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Only the single X, to P(, he just needs the one)" is "The X to P" (the
+    kind one thing of the scene: else 'the X' does not read; one person)."""
+    if "only" not in text.lower() and "just" not in text.lower():
+        return text
+    m = _ONLY_SINGLE56R.match(text.strip())
+    if m is None or _person46r(m["to"][3:].strip(), lexicon) is None:
+        return text
+    if len(_ids(f"the {m['k']}", lexicon, "object")) != 1:
+        return text
+    return f"The {m['k']} {m['to']}{m['end'] or '.'}"
+
+
+# "Two things are on Person A's list, the apple and the cup, and nothing beyond that."
+_ON_LIST56R = re.compiled(
+    r"^(?P<n>two|three|four) things (?:are|'re) on (?P<p>[^,]+?)'s list,\s*(?P<x>[^,]+? and "
+    r"[^,]+?)(?:,\s*(?:and )?nothing (?:beyond|else|more|besides)(?: than)?(?: that)?)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _on_list56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Two things are on P's list, the X and the Y(, and nothing beyond
+    that)" is "Two things for P, the X and the Y" (read by the older rules, which check the
+    count): one person."""
+    if "list" not in text.lower():
+        return text
+    m = _ON_LIST56R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    return f"{m['n']} things for {m['p']}, {m['x']}{m['end'] or '.'}"
+
+
+# "There's one bottle and one bag of crisps, both want to go up onto the shelf."
+_BOTH_WANT_GO56R = re.compiled(
+    r"^there(?:'s| is| are) (?:one|a|an) (?P<x>[a-z]+(?: of [a-z]+)?) and (?:one|a|an) "
+    r"(?P<y>[a-z]+(?: of [a-z]+)?),\s*(?:and )?(?:both|the two of them|the pair of them) "
+    r"(?:want|need|have|ought) to go (?P<place>(?:up |down |back )?(?:on|onto|in|into) the "
+    r"[a-z]+(?: [a-z]+)?)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _both_want_go56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "There's one X and one Y, both want to go up onto the S" is "Put the X
+    and the Y up onto the S": each one thing of the scene (the older rules check it), nothing
+    else said."""
+    if "both" not in text.lower() and " of them" not in text.lower():
+        return text
+    m = _BOTH_WANT_GO56R.match(text.strip())
+    if m is None:
+        return text
+    if len(_ids(f"the {m['x']}", lexicon, "object")) != 1:
+        return text
+    if len(_ids(f"the {m['y']}", lexicon, "object")) != 1:
+        return text
+    return f"Put the {m['x']} and the {m['y']} {m['place']}{m['end'] or '.'}"
+
+
+# "Both items are Person A's, so take the pair of them to her."
+_BOTH_ARE_HIS56R = re.compiled(
+    r"^(?P<both>both (?:items|things|of the things|of them)) (?:are|belong to) (?P<p>[^,]+?)"
+    r"(?:'s)?,\s*so (?P<v>take|bring|give|hand|pass|carry|run) (?:the pair of them|the two of "
+    r"them|both of them|them both|them|both) (?:over |across |back )?to (?:him|her|them)"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _both_are_his56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Both items are P's, so take the pair of them to her" is "Take both
+    items to P" (the older rules read 'both' and check the scene holds two things)."""
+    if "both" not in text.lower():
+        return text
+    m = _BOTH_ARE_HIS56R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    things = "both items" if "item" in m["both"].lower() else "both things"
+    return f"{m['v'].capitalize()} {things} to {m['p']}{m['end'] or '.'}"
+
+
+# "…, she honestly doesn't mind which you bring."
+_MIND_WHICH56R = re.compiled(
+    r"(?P<head>,\s*(?:he|she|they)) (?:honestly |really |genuinely |truly )?(?P<neg>doesn't|"
+    r"does not|don't|do not) mind which(?: one)?(?: (?:you (?:bring|pick|choose|grab|take|"
+    r"fetch)|it is|it's))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _mind_which56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "…, she honestly doesn't mind which you bring" after a choice is "…,
+    she doesn't mind which" (read by the older rules, which take it only after a choice)."""
+    if "mind which" not in text.lower():
+        return text
+    m = _MIND_WHICH56R.search(text.strip())
+    if m is None:
+        return text
+    out = f"{text.strip()[: m.start()]}{m['head']} {m['neg']} mind which{m['end'] or '.'}"
+    return out if out != text.strip() else text
+
+
 _STEPS56R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
-# the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
-_STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = ()
-# refusals asked of the text before it is read (offline._parse, after the session-56 ones)
+_STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
+    _share_out56r,
+    _any_spare56r,
+    _any_n_do56r,
+    _lay_hand56r,
+    _whichever_of56r,
+    _make_that_for56r,
+    _thinking_of56r,
+    _backwards56r,
+    _goes_there56r,
+    _needs_more56r,
+    _leave_be56r,
+    _helps_self56r,
+    _gone_walkabout56r,
+    _pair_of56r,
+    _every_last56r,
+    _every_one_of56r,
+    _both_of_them56r,
+    _as_well_as56r,
+    _only_single56r,
+    _on_list56r,
+    _both_want_go56r,
+    _both_are_his56r,
+    _mind_which56r,
+)
 REFUSE56R: tuple[Callable[[str, Lexicon], None], ...] = ()
-# checks of the whole instruction's reading (offline.parse_instruction, after the session-56 ones)
 CHECK56R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
