@@ -105,7 +105,7 @@ def _lay_hand56r(text: str, lexicon: Lexicon) -> str:
 
 # "Whichever of the two is closest, the chips or the bottle, take it to Person B."
 _WHICHEVER_OF56R = re.compiled(
-    r"^whichever (?:of (?:the|them|those|these) ?(?:two|both)?|one) (?:is|'s) (?P<how>closest|"
+    r"^whichever (?:of (?:the|them|those|these) ?(?:two|both)?|one)(?: is|'s) (?P<how>closest|"
     r"nearest|handiest|easiest|nearer|closer|handier|easier)(?: to (?:hand|reach|you))?,\s*"
     r"(?P<x>the [a-z]+(?: [a-z]+)?) or (?P<y>the [a-z]+(?: [a-z]+)?),\s*(?:(?:take|bring|give|"
     r"hand|pass|carry|get) it (?:over |across )?to (?P<p>[^,.!]+?)|it(?:'s| is| goes) (?:to|for) "
@@ -287,7 +287,7 @@ _HELPS_SELF56R = re.compiled(
     r"^(?:is it (?:alright |all right |ok |okay |fine )?if|would it be (?:alright |all right |ok |"
     rf"okay |fine )?if) (?P<p>{_P46R}) (?:helps|help) (?:himself|herself|themselves) to (?P<x>the "
     r"[a-z]+(?: [a-z]+)?)(?:,\s*(?:do you reckon|do you think|d'you reckon))?,?\s*and (?P<v>could|"
-    r"can|would|will) you (?:take|bring|pass|carry|run) (?:it|them) (?:over |across )?(?:to "
+    r"can|would|will) you (?:take|bring|pass|carry|run) (?:it|them)(?: over| across)?(?: to "
     r"(?:him|her|them))?\s*\?$",
     _F,
 )
@@ -552,7 +552,6 @@ _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _backwards56r,
     _goes_there56r,
     _needs_more56r,
-    _leave_be56r,
     _helps_self56r,
     _gone_walkabout56r,
     _pair_of56r,
