@@ -342,19 +342,23 @@ def _gone_walkabout56r(text: str, lexicon: Lexicon) -> str:
 # -- blind54: counts and plurals -----------------------------------------------------------------
 
 # "The pair of cups, green and white, …", "Kofi needs the pair of spanners, …"
-_PAIR_OF56R = re.compiled(r"\b(?:the|that|this) pair of (?P<k>[a-z]+s)\b", _F)
+_PAIR_OF56R = re.compiled(
+    r"\b(?:the|that|this) pair of (?P<k>[a-z]+s)(?P<two>,\s*[a-z]+ and [a-z]+\s*,)", _F
+)
 
 
 def _pair_of56r(text: str, lexicon: Lexicon) -> str:
-    """Session 56 (12r): "the pair of Xs" is "both Xs" where the scene has exactly two things of
-    the kind (the older rules read 'both' and check the count)."""
+    """Session 56 (12r): "the pair of Xs, green and white," is "both Xs, green and white," where
+    the scene has exactly two things of the kind (the older rules read 'both' with the two words
+    said after it and check them; 'the pair of Xs' alone, or with 'the green and the white', the
+    older rules read)."""
     if "pair of" not in text.lower():
         return text
 
     def both(m: re.Match[str]) -> str:
         if len(_ids(f"the {m['k']}", lexicon, "object")) != 2:
             return m.group(0)
-        return f"both {m['k']}"
+        return f"both {m['k']}{m['two']}"
 
     return _PAIR_OF56R.sub(both, text)
 
@@ -452,8 +456,8 @@ def _only_single56r(text: str, lexicon: Lexicon) -> str:
 
 # "Two things are on Person A's list, the apple and the cup, and nothing beyond that."
 _ON_LIST56R = re.compiled(
-    r"^(?P<n>two|three|four) things (?:are|'re) on (?P<p>[^,]+?)'s list,\s*(?P<x>[^,]+? and "
-    r"[^,]+?)(?:,\s*(?:and )?nothing (?:beyond|else|more|besides)(?: than)?(?: that)?)?"
+    r"^(?P<n>two|three|four) things (?:are|'re) on (?P<p>[^,]+?)'s list,\s*(?P<x>[^.!?;:]+? and "
+    r"[^,.!?;:]+?)(?:,\s*(?:and )?nothing (?:beyond|else|more|besides)(?: than)?(?: that)?)?"
     r"(?P<end>\s*[.!]?)$",
     _F,
 )
@@ -556,7 +560,6 @@ _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _gone_walkabout56r,
     _pair_of56r,
     _every_last56r,
-    _every_one_of56r,
     _both_of_them56r,
     _as_well_as56r,
     _only_single56r,
