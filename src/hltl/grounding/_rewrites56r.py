@@ -4,12 +4,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._normalise3 import _whole_name
+from hltl.grounding._rewrites41r import _said41r
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node, tasks
+from hltl.grounding.tree import Node, Task, has_choice, tasks
 
 
 def _has(text: str, *words: str) -> bool:
@@ -265,6 +267,21 @@ _LEAVE_BE56R = re.compiled(
     r"up |down )?(?:to|on|onto|in|into) [^,;.!?]+?)(?P<end>\s*[.!]?)$",
     _F,
 )
+
+
+# what follows 'leave the X be' when the speaker takes it back: a cue, then a request moving it
+_TAKEN_BACK56R = re.compiled(
+    r"^\s*,\s*(?:(?:actually|no|wait|sorry|on reflection|on second thoughts?|thinking about it|"
+    r"come to think of it),\s*)+(?:run|take|bring|give|hand|pass|carry|pop|put|send|get) it\b",
+    _F,
+)
+
+
+def kept_taken_back56r(after: str) -> bool:
+    """Session 56 (12r): whether ``after`` (the words after "leave the X be / alone / where it
+    is") takes the keeping back ("…, actually, on reflection, run it over to P"): session 39's
+    check (offline._left_moved39l) lets such a reading through."""
+    return _TAKEN_BACK56R.match(after) is not None
 
 
 def _leave_be56r(text: str, lexicon: Lexicon) -> str:
@@ -544,6 +561,233 @@ def _mind_which56r(text: str, lexicon: Lexicon) -> str:
     return out if out != text.strip() else text
 
 
+# -- blind54: who or which was asked, forgotten (refused naming the readings) -------------------
+
+# "The globe to Noah, or was it Zoe who asked, I've got them mixed up."
+_OR_WAS_IT56R = re.compiled(
+    r"^(?P<x>[^,;.!?]+?) (?P<to>to|for) (?P<p>[^,;.!?]+?),\s*or was it (?P<q>[^,;.!?]+?) who "
+    r"(?:asked|wanted it|wanted (?:them|that)|asked for (?:it|them|that))(?:,\s*|\?\s*|\.\s*)"
+    r"(?:i(?:'ve| have)? got (?:them|it|that|those) (?:all )?(?:mixed up|muddled(?: up)?)|"
+    r"i(?:'ve| have)? (?:mixed|muddled) (?:them|it|that|those) up|i can't (?:remember|recall)|"
+    r"i(?:'ve| have)? forgotten)(?: again)?\s*[.!]?$",
+    _F,
+)
+
+
+def _or_was_it56r(text: str, lexicon: Lexicon) -> None:
+    """Session 56 (12r): "X to P, or was it Q who asked, I've got them mixed up" — the speaker
+    forgot which of two people asked (P and Q two people of the scene, X one whole object):
+    refused before the read, naming both readings (session 31's slip closing the text refused
+    it naming neither)."""
+    if "or was it" not in text.lower():
+        return
+    m = _OR_WAS_IT56R.match(text.strip())
+    if m is None:
+        return
+    p, q = _person46r(m["p"], lexicon), _person46r(m["q"], lexicon)
+    x = _ids(m["x"], lexicon, "object")
+    if p is None or q is None or p == q or len(x) != 1:
+        return
+    if not _whole_name(
+        re.sub(r"^(?:give|hand|pass|take|bring) ", "", m["x"], flags=_F), lexicon, "object"
+    ):
+        return
+    obj = next(iter(x))
+    said = " or ".join(_said41r(Task("deliver", obj, h), lexicon) for h in (p, q))
+    raise GroundingError(f"{m.group(0)!r}: the speaker has forgotten who asked: {said}: say which")
+
+
+# "…, the apple or the chips, he said which but I've clean forgot."
+_SAID_WHICH56R = re.compiled(
+    r"(?P<a>the [a-z]+(?: [a-z]+)?) or (?P<b>the [a-z]+(?: [a-z]+)?),\s*(?:and |but )?(?:he|she|"
+    r"they) (?:did )?(?:said|say|told me|mentioned) which(?: one)?,?\s*(?:but|and) (?:i(?:'ve| "
+    r"have)|i) (?:clean |completely |totally |plain )?(?:forgot|forgotten)(?: it| which)?\s*[.!]?$",
+    _F,
+)
+
+
+def _said_which56r(text: str, lexicon: Lexicon) -> None:
+    """Session 56 (12r): "…, the X or the Y, he said which but I've (clean) forgot" — a choice
+    the person made and the speaker lost: refused before the read, naming both things (each of
+    the scene; the grammar refused it on the speaker's 'I', naming neither)."""
+    if "which" not in text.lower() or "forgot" not in text.lower():
+        return
+    m = _SAID_WHICH56R.search(text.strip())
+    if m is None:
+        return
+    x, y = _ids(m["a"], lexicon, "object"), _ids(m["b"], lexicon, "object")
+    if not x or not y or x & y:
+        return
+    a, b = ", ".join(sorted(x)), ", ".join(sorted(y))
+    raise GroundingError(
+        f"{m.group(0)!r}: the speaker has forgotten which was asked for, {m['a']} ({a}) or "
+        f"{m['b']} ({b}); say which"
+    )
+
+
+# -- blind54: openers and remarks around a placing ------------------------------------------------
+
+# "Clear the floor for the mopping, would you: the bottle and the crisps, …, up onto the shelf."
+_CLEAR_FOR56R = re.compiled(
+    r"^(?:clear|tidy|free up|make (?:room|space) on) (?:the|this|that) (?P<s>[a-z]+(?: [a-z]+)?)"
+    r"(?: for (?:the )?[a-z]+(?: [a-z]+)?)?(?:,? (?:would|could|will|can) you)?(?:,? please)?"
+    r"\s*:\s*(?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _clear_for56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Clear the floor (for the mopping), would you: <placings>" is the
+    placings: the opener says why, and names no thing of the scene; nothing is put on what is
+    cleared, and what follows reads as placings only."""
+    if not _has(text, "clear", "tidy", "free up", "room on", "space on"):
+        return text
+    m = _CLEAR_FOR56R.match(text.strip())
+    if m is None or _ids(m["s"], lexicon, "object") or _ids(m["s"], lexicon, "human"):
+        return text
+    node = _reading(m["rest"], lexicon)
+    if node is None:
+        return text
+    cleared = _ids(m["s"], lexicon, "surface")
+    done = list(tasks(node))
+    if any(t.kind != "place" or t.target in cleared for t in done):
+        return text
+    return m["rest"][0].upper() + m["rest"][1:]
+
+
+# "…, onto the belt, Tom's waiting to tape them up."
+_WAITING_TO56R = re.compiled(
+    r",\s*(?P<p>[^,;.!?]+?)(?:'s| is| are|'re) (?:waiting|ready|standing by) to [a-z]+ (?:them|"
+    r"it)(?: up| down| away| off| in)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _waiting_to56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "<placings>, Tom's waiting to tape them up" is the placings: a remark
+    on what someone of the scene will do with them after, kept off when what is left reads as
+    placings only (so the one waiting is no recipient)."""
+    if not _has(text, "waiting to", "ready to", "standing by to"):
+        return text
+    m = _WAITING_TO56R.search(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# "Both of the things here, bottle and chips, belong with Person B, he's the mask maker."
+_BELONG_WITH56R = re.compiled(
+    r"^(?:both of the (?:things|items)(?: here)?|the (?:two|three|four) (?:things|items)"
+    r"(?: here)?|all (?:the|four|three|two) (?:things|items)(?: here)?),\s*(?P<x>[^,;.!?]+? and "
+    r"[^,;.!?]+?),\s*(?:belong|go|should go) (?:with|to) (?P<p>[^,;.!?]+?)"
+    r"(?P<rest>,[^;]*|\s*[.!])?$",
+    _F,
+)
+
+
+def _belong_with56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "Both of the things here, X and Y, belong with P(, he's …)" is "X and Y
+    go to P(, he's …)": the list said after the count, one person; the older rules read what
+    is left and check the count of things."""
+    if "belong" not in text.lower() and " go " not in text.lower():
+        return text
+    m = _BELONG_WITH56R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    x = m["x"][0].upper() + m["x"][1:]
+    return f"{x} go to {m['p']}{m['rest'] or '.'}"
+
+
+# "Priya's clearing the desk, so <placings>", "The driver's about to load, so <placings>"
+_DOING_SO56R = re.compiled(
+    r"^(?P<p>[^,;.!?]+?)(?:'s| is) (?:(?:about|going|getting ready|set) to [a-z]+|[a-z]+ing)"
+    r"(?: (?:the|her|his|their|up|off|out) ?[a-z]*)?,\s*so (?P<rest>\S.*)$",
+    _F,
+)
+
+
+def _doing_so56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "P's about to load (P's clearing the desk), so <placings>" is the
+    placings: what P is doing is the reason (P one person of the scene); only where what
+    follows reads alone as placings (so P is no recipient, and no pronoun looks back at P)."""
+    if ", so " not in text.lower():
+        return text
+    m = _DOING_SO56R.match(text.strip())
+    if m is None or _person46r(m["p"], lexicon) is None:
+        return text
+    node = _reading(m["rest"], lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return m["rest"][0].upper() + m["rest"][1:]
+
+
+# "…, all three, in the box they go."
+_IN_THEY_GO56R = re.compiled(
+    r",\s*(?P<prep>in|into|on|onto) (?P<s>the [a-z]+(?: [a-z]+)?) (?:they|it) go(?:es)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _in_they_go56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r): "<things>, in the box they go" is "<things> into the box": one whole
+    surface of the scene, and what is left reads as placings only."""
+    if "they go" not in text.lower() and "it goes" not in text.lower():
+        return text
+    m = _IN_THEY_GO56R.search(text.strip())
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    prep = {"in": "into", "on": "onto"}.get(m["prep"].lower(), m["prep"])
+    out = f"{text.strip()[: m.start()]} {prep} {m['s']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.kind != "place" for t in tasks(node)):
+        return text
+    return out
+
+
+# -- 12c's open wrong reading (session 56): the speaker names which, after a choice -------------
+
+# "Bob asked for the cup or the apple, it was the apple.", "…; I think it was the cup."
+_IT_WAS56R = re.compiled(
+    r"\b(?:it|that|one|which) (?:was|wasn't|was not|is|isn't|is not)\b|\bit's\b|\bthat's\b|'twas\b",
+    _F,
+)
+_CLAUSES56R = re.compiled(r"[^,;.!?]+", _F)
+
+
+def _it_was_the56r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 56 (12r; 12c's fuzz): "Bob asked for the cup or the apple, it was the apple."
+    read cup>B | apple>B: a later clause saying which it was ("it was the apple (he wanted)", "I
+    think it was the cup", "the torch it was", "it wasn't the cup") names one of the choice's
+    things, and the choice rules took it for a remark. A reading with a choice, of a text with a
+    clause after the choice holding 'it was' / "it's" / 'it wasn't' and naming one of the
+    choice's things, is refused: the robot may not pick ('it was one of those' naming none is
+    session 56's _was_one_of56l)."""
+    low = text.lower()
+    if " or " not in low or not _has(low, " was", "'s", " is", "'twas"):
+        return
+    if not has_choice(node):
+        return
+    offered = {t.obj for t in tasks(node)}
+    cut = low.rfind(" or ")
+    for m in _CLAUSES56R.finditer(text, cut):
+        said = m.group(0)
+        if _IT_WAS56R.search(said) is None:
+            continue
+        words = set(re.findall(r"[a-z]+", said.lower()))
+        if _ids(said, lexicon, "object") & offered or any(
+            words & set(o.lower().split("_")) for o in offered if "_" in o
+        ):
+            raise GroundingError(
+                f"{said.strip()!r} says which was asked for, but the reading leaves the choice "
+                "to the robot: say the one that goes"
+            )
+
+
 _STEPS56R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _share_out56r,
@@ -566,7 +810,13 @@ _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _on_list56r,
     _both_want_go56r,
     _both_are_his56r,
+    _leave_be56r,
     _mind_which56r,
+    _clear_for56r,
+    _waiting_to56r,
+    _belong_with56r,
+    _in_they_go56r,
+    _doing_so56r,
 )
-REFUSE56R: tuple[Callable[[str, Lexicon], None], ...] = ()
-CHECK56R: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+REFUSE56R: tuple[Callable[[str, Lexicon], None], ...] = (_or_was_it56r, _said_which56r)
+CHECK56R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_it_was_the56r,)
