@@ -532,15 +532,6 @@ KNOWN_MISSES = frozenset(
         "Person A's off to fire twirling after this so the bottle to her now and the chips to "
         "Person B after.",
         "Tongs to Marco, lemon to Mr Novak, he likes it in his water.",
-        "Clear the floor for the mopping, would you: the bottle and the crisps, the pair, up onto "
-        "the shelf.",
-        "The small box and the medium one, both of them, onto the belt, Tom's waiting to tape "
-        "them up.",
-        "Both of the things here, bottle and chips, belong with Person B, he's the mask maker.",
-        "Priya's clearing the desk, so the black, the blue and the red pen, all three, in the box "
-        "they go.",
-        "The driver's about to load, so every one of the three boxes, small, medium and large, "
-        "onto the belt.",
         "Both of the books, the red one as well as the green one, go to Mrs Ortiz, she's got "
         "marking to do tonight.",
         "Alice would like the crisps, though not the apple, she's not a fruit person.",
@@ -556,7 +547,6 @@ KNOWN_MISSES = frozenset(
         "Lena's gone off the white plate for some reason, bring her the blue one instead.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",
         "Jess could use the screws, but leave the hammer alone, she's got her own.",
-        "Leave the bottle be, actually, on reflection, run it over to Person A.",
         "those crisps keep getting knocked over so stick them up on the shelf out of harms way",
         "person a has been waiting for the apple and person b for the cup so off you go",
         "can person a have the bottle shes got handbell ringing later",
@@ -609,13 +599,9 @@ KNOWN_UNCLEAR = frozenset(
         "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
         # blind53 (tuned on in session 55)
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
-        "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
         # blind54 (tuned on in session 56)
         "Emma and Dana were both over by the sink; give her the sponge.",
         "Jess wants a spanner. One of them. Which, she didn't say, and I asked her twice.",
-        "Person B's after one of the snacks, the apple or the chips, he said which but I've clean "
-        "forgot.",
-        "The globe to Noah, or was it Zoe who asked, I've got them mixed up.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

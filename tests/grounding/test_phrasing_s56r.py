@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.grounding import _rewrites56r as r
+from hltl.grounding import offline
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import (
     CELL,
@@ -19,16 +20,24 @@ from tests.grounding.helpers import (
     WARD,
     WORKSHOP,
     PhrasingCases,
+    Unclear,
+    assert_case,
+    assert_names_readings,
+    assert_refusals_are,
+    assert_refused,
+    tree,
 )
 
 # the example scenes blind54 uses
-DUO, T12, F42, L44, T21, SQ, FIG1, TWO, DEPOT = (
+DUO, T12, F41, F42, L44, L24, T21, SQ, FIG1, TWO, DEPOT = (
     load_scene(ROOT / p)
     for p in (
         "examples/scenes/2-2.yaml",
         "examples/scenes/1-2.yaml",
+        "examples/scenes/4-1.yaml",
         "examples/scenes/4-2.yaml",
         "examples/scenes/4-4-line.yaml",
+        "examples/scenes/2-4-line.yaml",
         "examples/scenes/2-1.yaml",
         "examples/scenes/4-4-square.yaml",
         "examples/scenes/fig1.yaml",
@@ -654,3 +663,283 @@ test_gone_walkabout = GONE_WALKABOUT.test(
 
 def test_gone_walkabout_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
     GONE_WALKABOUT.refused_without((r._gone_walkabout56r,), monkeypatch)
+
+
+# -- openers and remarks around a placing -------------------------------------------------------
+
+# _clear_for56r: "Clear the floor (for the mopping), would you: <placings>" is the placings
+CLEAR_FOR = PhrasingCases()
+test_clear_for = CLEAR_FOR.test(
+    (
+        "Clear the floor for the mopping, would you: the bottle and the crisps, the pair, up onto "
+        "the shelf.",
+        "bottle@shelf & chips@shelf",
+        TWO,
+    ),
+    (
+        "Tidy the worktop for the baking, please: the salt and the lemon onto the rack.",
+        "salt@rack & lemon@rack",
+        KITCHEN,
+    ),
+    (
+        "Clear the floor for the mopping, would you: the apple and the cup, the pair, up onto the "
+        "shelf.",
+        "apple@shelf & cup@shelf",
+        CELL,
+    ),
+    (
+        "Clear the floor for the cleaners, would you: the stapler and the notebook, the pair, into "
+        "the box.",
+        "stapler@box & notebook@box",
+        OFFICE,
+    ),
+    # near: things put on what is cleared
+    (
+        "Clear the shelf for the mopping, would you: the apple and the cup up onto the shelf.",
+        None,
+        CELL,
+    ),
+)
+
+
+def test_clear_for_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    CLEAR_FOR.refused_without((r._clear_for56r,), monkeypatch)
+
+
+# _waiting_to56r: "<placings>, Tom's waiting to tape them up" is the placings
+WAITING_TO = PhrasingCases()
+test_waiting_to = WAITING_TO.test(
+    (
+        "The small box and the medium one, both of them, onto the belt, Tom's waiting to tape "
+        "them up.",
+        "box_small@conveyor & box_medium@conveyor",
+        DEPOT,
+    ),
+    (
+        "The green cup and the white one into the sink, Omar's standing by to wash them.",
+        "cup_green@sink & cup_white@sink",
+        LAB,
+    ),
+    (
+        "The boxes onto the belt, Tom's waiting to tape them up.",
+        "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+        DEPOT,
+    ),
+    # near: no person of the scene waiting
+    ("The apple on the shelf, the cupboard's waiting to take it.", None, CELL),
+)
+
+
+def test_waiting_to_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    # 'both of them' is _both_of_them56r's, taken out too: without either the first is refused
+    WAITING_TO.refused_without((r._waiting_to56r,), monkeypatch)
+
+
+# _belong_with56r: "Both of the things here, X and Y, belong with P(, he's …)" is "X and Y go to P"
+BELONG_WITH = PhrasingCases()
+test_belong_with = BELONG_WITH.test(
+    (
+        "Both of the things here, bottle and chips, belong with Person B, he's the mask maker.",
+        "bottle>B & chips>B",
+        L24,
+    ),
+    ("Both of the things here, bottle and chips, belong with Person A.", "bottle>A & chips>A", DUO),
+    (
+        "Both of the items here, bottle and chips, belong with Person A, she's the potter.",
+        "bottle>A & chips>A",
+        T21,
+    ),
+    (
+        "Both of the things here, the bottle and the chips, go to Person B, he's the juggler.",
+        "bottle>B & chips>B",
+        TWO,
+    ),
+    ("Both of the things here, the apple and the cup, belong with Bob.", "apple>B & cup>B", CELL),
+    # near: two people
+    ("Both of the things here, bottle and chips, belong with Person A and Person B.", None, DUO),
+)
+
+
+def test_belong_with_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BELONG_WITH.refused_without((r._belong_with56r,), monkeypatch)
+
+
+# _in_they_go56r: "<things>, in the box they go" is "<things> into the box"
+IN_THEY_GO = PhrasingCases()
+test_in_they_go = IN_THEY_GO.test(
+    ("The black pen and the blue pen, in the box they go.", "pen_black@box & pen_blue@box", OFFICE),
+    ("The salt and the lemon, on the rack they go.", "salt@rack & lemon@rack", KITCHEN),
+    ("The apple and the cup, on the shelf they go.", "apple@shelf & cup@shelf", CELL),
+    (
+        "The green cup and the white cup, into the sink they go.",
+        "cup_green@sink & cup_white@sink",
+        LAB,
+    ),
+    # near: no surface of the scene
+    ("The apple and the cup, on the window they go.", None, CELL),
+)
+
+
+def test_in_they_go_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    IN_THEY_GO.refused_without((r._in_they_go56r,), monkeypatch)
+
+
+# _doing_so56r: "P's about to load (P's clearing the desk), so <placings>" is the placings
+DOING_SO = PhrasingCases()
+test_doing_so = DOING_SO.test(
+    (
+        "The driver's about to load, so every one of the three boxes, small, medium and large, "
+        "onto the belt.",
+        "box_small@conveyor & box_medium@conveyor & box_large@conveyor",
+        DEPOT,
+    ),
+    (
+        "Tom's about to load, so the small box and the medium box onto the belt.",
+        "box_small@conveyor & box_medium@conveyor",
+        DEPOT,
+    ),
+    (
+        "Omar's clearing the tray, so the cups into the sink.",
+        "cup_green@sink & cup_white@sink",
+        LAB,
+    ),
+    (
+        "Bob's clearing the table, so the apple and the cup onto the shelf.",
+        "apple@shelf & cup@shelf",
+        CELL,
+    ),
+    (
+        "The nurse is about to do her rounds, so the jug and the pills onto the trolley.",
+        "jug@trolley & pills@trolley",
+        WARD,
+    ),
+    # near: a handing-over after 'so' (to another)
+    ("Bob's about to leave, so the apple to Alice.", None, CELL),
+)
+
+
+def test_doing_so_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    DOING_SO.refused_without((r._doing_so56r,), monkeypatch)
+
+
+def test_doing_so_and_in_they_go_read_blind54_113() -> None:
+    text = (
+        "Priya's clearing the desk, so the black, the blue and the red pen, all three, in the box "
+        "they go."
+    )
+    assert_case(text, "pen_black@box & pen_blue@box & pen_red@box", OFFICE)
+
+
+# kept_taken_back56r (asked by session 39's check _left_moved39l): "Leave the X be, actually, on
+# reflection, run it over to P" — the keeping taken back by a correction cue; the older rules read
+# the rest, and the check had refused the reading as moving a thing said to be left
+LEAVE_BE = PhrasingCases()
+test_leave_be = LEAVE_BE.test(
+    ("Leave the bottle be, actually, on reflection, run it over to Person A.", "bottle>A", T12),
+    ("Leave the stapler where it is, actually, put it in the box.", "stapler@box", OFFICE),
+    (
+        "Leave the magazine where it is, on reflection, put it on the bedside.",
+        "magazine@bedside",
+        WARD,
+    ),
+    ("Leave the jug where it is, on reflection, put it on the trolley.", "jug@trolley", WARD),
+    # near: no cue taking the keeping back, or no request after it
+    ("Leave the cup be, take it to Bob.", None, CELL),
+    ("Leave the bottle be, actually.", None, T12),
+)
+
+
+def test_leave_be_refused_without_the_check_letting_it_through(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    LEAVE_BE.refused_with(r, "kept_taken_back56r", lambda after: False, monkeypatch)
+
+
+# -- who or which was asked, forgotten: refused naming the readings ------------------------------
+
+FORGOTTEN: list[Unclear] = [
+    (
+        "The globe to Noah, or was it Zoe who asked, I've got them mixed up.",
+        CLASSROOM,
+        ("Person B", "Person C"),
+    ),
+    (
+        "The apple to Bob, or was it Carol who asked, I've got them mixed up.",
+        CELL,
+        ("Person B", "Person C"),
+    ),
+    (
+        "The jug to Mr Lee, or was it Mrs Khan who asked, I've got them mixed up.",
+        WARD,
+        ("Person B", "Person C"),
+    ),
+    (
+        "Person B's after one of the snacks, the apple or the chips, he said which but I've clean "
+        "forgot.",
+        F41,
+        ("apple", "chips"),
+    ),
+    (
+        "Kofi wants the hammer or the drill, he told me which but I forgot.",
+        WORKSHOP,
+        ("hammer", "drill"),
+    ),
+    (
+        "Lena's after the knife or the tongs, she did say which but I've completely forgotten.",
+        KITCHEN,
+        ("knife", "tongs"),
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "scene", "readings"), FORGOTTEN)
+def test_forgotten_names_readings(text: str, scene, readings: tuple[str, ...]) -> None:
+    assert_names_readings(text, scene, readings)
+
+
+def test_forgotten_refusals_are_what_name_them(monkeypatch: pytest.MonkeyPatch) -> None:
+    assert_refusals_are((r._or_was_it56r, r._said_which56r), FORGOTTEN, monkeypatch)
+
+
+# -- 12c's open wrong reading: the speaker names which, after a choice -----------------------------
+
+IT_WAS = [
+    ("Bob asked for the cup or the apple, it was the apple.", CELL),
+    ("Bob asked for the cup or the apple, it was the apple he wanted.", CELL),
+    ("Bob wanted the cup or the apple; it was the cup.", CELL),
+    ("Jess asked for one of the tools, the torch or the hammer, it was the torch.", WORKSHOP),
+    ("Lena asked for the knife or the tongs, it was the tongs.", KITCHEN),
+    ("Mr Lee wanted the jug or the magazine, it was the magazine he wanted.", WARD),
+    ("Sam asked for a pen, the red or the blue, it was the red.", OFFICE),
+    ("Bob asked for the cup or the apple, it's the apple.", CELL),
+    ("Bob asked for one of them, the cup or the apple, it was the cup.", CELL),
+    ("Bob asked for the cup or the apple, it was the apple, I think.", CELL),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), IT_WAS)
+def test_it_was_the_refused(text: str, scene) -> None:
+    assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(("text", "scene"), IT_WAS)
+def test_it_was_the_check_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    kept = tuple(c for c in offline._CHECKS if c is not r._it_was_the56r)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    assert tree(text, scene) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        # a choice with a remark naming one of its things, but not saying which it was
+        (
+            "Mrs Khan is cold, the grey blanket please, or the blue one if that's easier",
+            "blanket_grey>C | blanket_blue>C",
+            WARD,
+        ),
+        ("Bob can have the cup or the apple, he's earned it", "cup>B | apple>B", CELL),
+    ],
+)
+def test_it_was_the_kept(text: str, want: str, scene) -> None:
+    assert_case(text, want, scene)

@@ -259,16 +259,6 @@ def _needs_more56r(text: str, lexicon: Lexicon) -> str:
     return f"{text.strip()[: m.start()]}{m['cue']}, {m['give']}{m['end'] or '.'}"
 
 
-# "Leave the bottle be, actually, on reflection, run it over to Person A."
-_LEAVE_BE56R = re.compiled(
-    r"^leave (?P<x>the [a-z]+(?: [a-z]+)?) (?:be|alone|where it is|there),\s*(?:(?:actually|no|"
-    r"wait|sorry|on reflection|on second thoughts?|thinking about it|come to think of it),\s*)+"
-    r"(?P<v>(?:run|take|bring|give|hand|pass|carry|pop|put|send|get) )it (?P<rest>(?:over |across |"
-    r"up |down )?(?:to|on|onto|in|into) [^,;.!?]+?)(?P<end>\s*[.!]?)$",
-    _F,
-)
-
-
 # what follows 'leave the X be' when the speaker takes it back: a cue, then a request moving it
 _TAKEN_BACK56R = re.compiled(
     r"^\s*,\s*(?:(?:actually|no|wait|sorry|on reflection|on second thoughts?|thinking about it|"
@@ -282,19 +272,6 @@ def kept_taken_back56r(after: str) -> bool:
     is") takes the keeping back ("…, actually, on reflection, run it over to P"): session 39's
     check (offline._left_moved39l) lets such a reading through."""
     return _TAKEN_BACK56R.match(after) is not None
-
-
-def _leave_be56r(text: str, lexicon: Lexicon) -> str:
-    """Session 56 (12r): "Leave the X be, actually, on reflection, run it over to P" is "Run
-    the X over to P": the keeping taken back by a correction cue before the one request (the
-    thing one whole object of the scene)."""
-    if "leave" not in text.lower():
-        return text
-    m = _LEAVE_BE56R.match(text.strip())
-    if m is None or not _whole_name(m["x"], lexicon, "object"):
-        return text
-    v = m["v"][0].upper() + m["v"][1:]
-    return f"{v}{m['x']} {m['rest']}{m['end'] or '.'}"
 
 
 # -- blind54: questions ---------------------------------------------------------------------------
@@ -753,7 +730,8 @@ def _in_they_go56r(text: str, lexicon: Lexicon) -> str:
 
 # "Bob asked for the cup or the apple, it was the apple.", "…; I think it was the cup."
 _IT_WAS56R = re.compiled(
-    r"\b(?:it|that|one|which) (?:was|wasn't|was not|is|isn't|is not)\b|\bit's\b|\bthat's\b|'twas\b",
+    r"\b(?:it|that|one|which) (?:was|wasn't|was not)\b|'twas\b|\b(?:it's|it is|it isn't|it is "
+    r"not|that's|that is) (?:not )?the\b",
     _F,
 )
 _CLAUSES56R = re.compiled(r"[^,;.!?]+", _F)
@@ -810,7 +788,6 @@ _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _on_list56r,
     _both_want_go56r,
     _both_are_his56r,
-    _leave_be56r,
     _mind_which56r,
     _clear_for56r,
     _waiting_to56r,
