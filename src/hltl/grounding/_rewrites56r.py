@@ -10,7 +10,7 @@ from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._normalise3 import _whole_name
 from hltl.grounding._rewrites41r import _said41r
 from hltl.grounding._rewrites46r import _P46R, _person46r
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, Task, has_choice, tasks
 
 
@@ -166,18 +166,24 @@ def _make_that_for56r(text: str, lexicon: Lexicon) -> str:
 _THINKING_OF56R = re.compiled(
     r"(?P<cue>,\s*no,\s*(?:sorry,\s*)?)(?:i'm|i am|i was) (?:thinking of|getting mixed up with|"
     r"confusing (?:him|her) with) (?P<q>[^,.!]+?)(?:,\s*(?:so )?(?:give|take|hand|pass|bring) it "
-    r"(?:over |across )?to (?:him|her|them))?(?P<end>\s*[.!]?)$",
+    r"(?:over |across )?to (?P<pr>him|her|them))?(?P<end>\s*[.!]?)$",
     _F,
 )
 
 
 def _thinking_of56r(text: str, lexicon: Lexicon) -> str:
     """Session 56 (12r): "X to P, no, sorry, I'm thinking of Q(, give it to her)" is "X to P,
-    no, sorry, Q" (the older correction rules read it): Q one person of the scene."""
+    no, sorry, Q" (the older correction rules read it): Q one person of the scene, and a him /
+    her after it one Q may be (12c's probe: "…, I'm thinking of Carol, give it to him." stays
+    refused)."""
     if not _has(text, "thinking of", "mixed up with", "confusing"):
         return text
     m = _THINKING_OF56R.search(text.strip())
-    if m is None or _person46r(m["q"], lexicon) is None:
+    q = None if m is None else _person46r(m["q"], lexicon)
+    if m is None or q is None:
+        return text
+    sex = PRONOUN_SEX.get((m["pr"] or "").lower())
+    if sex is not None and unnamed_sex44l(q, lexicon) not in (None, sex):
         return text
     return f"{text.strip()[: m.start()]}{m['cue']}{m['q']}{m['end'] or '.'}"
 
@@ -766,6 +772,93 @@ def _it_was_the56r(text: str, node: Node, lexicon: Lexicon) -> None:
             )
 
 
+# -- 12c's 01:39 probe: reports read as requests ------------------------------------------------
+
+# "Both cups, green and white, went to Emma.": a done verb after a list said with its apposition
+_DONE_LIST56R = re.compiled(
+    r"^(?P<said>(?P<pre>[^.;:!?]*?),\s*(?:went|were (?:given|taken|handed|brought|put|passed|"
+    r"delivered|placed|sent)|got (?:given|taken|put|handed|sent)|(?:have|'ve|had|has|'s) (?:gone|been "
+    r"(?:given|taken|handed|put|sent|brought)))) (?:over |across |back |up |down )?(?:to|on|"
+    r"onto|in|into)\b",
+    _F,
+)
+_ASKED_VERB56R = re.compiled(
+    r"\b(?:give|hand|pass|bring|take|put|place|pop|run|carry|send|fetch|get|stick|set|move|"
+    r"leave|deliver|grab)\b",
+    _F,
+)
+
+
+def _done_list56r(text: str, lexicon: Lexicon) -> None:
+    """Session 56 (12r; 12c's probe): "Both cups, green and white, went to Emma." (main:
+    cup_green>C & cup_white>C; "…, were put in the sink", "…, have gone to Bob") is a report of
+    what was done: the done refusals did not see past the list's apposition. Refused where
+    nothing before the done verb asks for anything."""
+    if not _has(text, "went", "were ", "got ", "gone", "been "):
+        return
+    m = _DONE_LIST56R.match(text.strip())
+    if m is None or _ASKED_VERB56R.search(m["pre"]) is not None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what was done, not what to do: say the request, e.g. 'give Bob the "
+        "cup'"
+    )
+
+
+# "I shared them out …: <list>", "Did you share them out: <list>?", "I've tidied up: <list>"
+_DONE_COLON56R = re.compiled(
+    r"^(?P<said>(?:(?:i|we)(?:'ve| have| had)? (?:already |just |now )?(?:shared|handed|dished|"
+    r"divvied|parcelled|cleared|tidied|sorted|put|given|moved|done|passed|split)|(?:did|have|"
+    r"has|had) (?:you|we|they|he|she) (?:already |just )?[a-z]+)\b[^:]*):",
+    _F,
+)
+
+
+def _done_colon56r(text: str, lexicon: Lexicon) -> None:
+    """Session 56 (12r; 12c's probe): "I shared them out so nobody was left empty-handed: the
+    apple to Bob and the cup to Alice." (main: apple>B & cup>A), "Did you share them out: …?",
+    "I've cleared the floor for the mopping: the bottle and the crisps are up on the shelf." —
+    what the speaker did (or asks was done) before a colon: the list after it says how it was
+    done, not what to do. Refused."""
+    if ":" not in text:
+        return
+    m = _DONE_COLON56R.match(text.strip())
+    if m is None:
+        return
+    raise GroundingError(
+        f"{m['said']!r} says what was done (or asks it), not what to do: say the request"
+    )
+
+
+# "The apple to Bob, no, sorry, Carol, give it to him.": the closing him / her no recipient may be
+_GIVE_IT_TO56R = re.compiled(
+    r"[,;.]\s*(?:so |and )?(?:give|take|hand|pass|bring|run) (?:it|them) (?:over |across |back )?"
+    r"to (?P<pr>him|her)\s*[.!]?$",
+    _F,
+)
+
+
+def _give_it_to56r(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 56 (12r; 12c's probe): "The apple to Bob, no, sorry, Carol, give it to him." read
+    apple>C: a closing "give it to him / her" said again of the one corrected to, whom the scene
+    says is of the other sex (a title, a word of kin, a first name of one sex, the corpus's
+    Person A / Person B). A reading none of whose recipients the him / her may be is refused."""
+    if "him" not in text.lower() and "her" not in text.lower():
+        return
+    m = _GIVE_IT_TO56R.search(text.strip())
+    if m is None:
+        return
+    sex = PRONOUN_SEX[m["pr"].lower()]
+    got = {t.target for t in tasks(node) if t.kind == "deliver"}
+    if not got:
+        return
+    if all(unnamed_sex44l(h, lexicon) not in (None, sex) for h in got):
+        raise GroundingError(
+            f"{m['pr']!r} cannot be {' or '.join(sorted(got))}, who the request hands it to: "
+            "name the person"
+        )
+
+
 _STEPS56R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _share_out56r,
@@ -795,5 +888,10 @@ _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _in_they_go56r,
     _doing_so56r,
 )
-REFUSE56R: tuple[Callable[[str, Lexicon], None], ...] = (_or_was_it56r, _said_which56r)
-CHECK56R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_it_was_the56r,)
+REFUSE56R: tuple[Callable[[str, Lexicon], None], ...] = (
+    _or_was_it56r,
+    _said_which56r,
+    _done_list56r,
+    _done_colon56r,
+)
+CHECK56R: tuple[Callable[[str, Node, Lexicon], None], ...] = (_it_was_the56r, _give_it_to56r)
