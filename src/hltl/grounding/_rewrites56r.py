@@ -777,8 +777,8 @@ def _it_was_the56r(text: str, node: Node, lexicon: Lexicon) -> None:
 # "Both cups, green and white, went to Emma.": a done verb after a list said with its apposition
 _DONE_LIST56R = re.compiled(
     r"^(?P<said>(?P<pre>[^.;:!?]*?),\s*(?:went|were (?:given|taken|handed|brought|put|passed|"
-    r"delivered|placed|sent)|got (?:given|taken|put|handed|sent)|(?:have|'ve|had|has|'s) (?:gone|been "
-    r"(?:given|taken|handed|put|sent|brought)))) (?:over |across |back |up |down )?(?:to|on|"
+    r"delivered|placed|sent)|got (?:given|taken|put|handed|sent)|(?:have|'ve|had|has|'s) (?:gone|"
+    r"been (?:given|taken|handed|put|sent|brought)))) (?:over |across |back |up |down )?(?:to|on|"
     r"onto|in|into)\b",
     _F,
 )
