@@ -511,8 +511,9 @@ test_thinking_of = THINKING_OF.test(
     ("The lemon to Lena, no, sorry, I'm thinking of Marco, give it to him.", "lemon>A", KITCHEN),
     ("The jug to Mr Lee, no, I'm thinking of Mrs Khan.", "jug>C", WARD),
     ("Drill to Kofi, no, sorry, I was thinking of Jess, hand it to her.", "drill>B", WORKSHOP),
-    # near: a thing, not a person
+    # near: a thing, not a person; a him after it Carol cannot be (12c's probe)
     ("The apple to Bob, no, sorry, I'm thinking of the cup.", None, CELL),
+    ("The apple to Bob, no, sorry, I'm thinking of Carol, give it to him.", None, CELL),
 )
 
 
@@ -942,4 +943,67 @@ def test_it_was_the_check_is_what_refuses(text: str, scene, monkeypatch) -> None
     ],
 )
 def test_it_was_the_kept(text: str, want: str, scene) -> None:
+    assert_case(text, want, scene)
+
+
+# -- 12c's 01:39 probe: reports and a him / her read as requests (main read each) ------------------
+
+DONE_SAID = [
+    ("Both cups, green and white, went to Emma.", LAB),
+    ("The pair of cups, green and white, went to Emma.", LAB),
+    ("Both cups, green and white, were put in the sink.", LAB),
+    ("Both mugs, red and blue, went to Bob.", CELL),
+    ("Both mugs, red and blue, have gone to Bob.", CELL),
+    (
+        "I shared them out so nobody was left empty-handed: the apple to Bob and the cup to Alice.",
+        CELL,
+    ),
+    ("Did you share them out: the apple to Bob and the cup to Alice?", CELL),
+    (
+        "I've cleared the floor for the mopping: the bottle and the crisps are up on the shelf.",
+        TWO,
+    ),
+    ("I've tidied up: the bottle and the crisps are on the shelf.", TWO),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), DONE_SAID)
+def test_done_said_refused(text: str, scene) -> None:
+    assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(("text", "scene"), [c for c in DONE_SAID if "pair of" not in c[0]])
+def test_done_said_refusals_are_what_refuse(text: str, scene, monkeypatch) -> None:
+    off = {r._done_list56r, r._done_colon56r}
+    monkeypatch.setattr(offline, "_REFUSALS", tuple(f for f in offline._REFUSALS if f not in off))
+    assert tree(text, scene) is not None
+
+
+GIVE_IT_TO = [
+    ("The apple to Bob, no, sorry, Carol, give it to him.", CELL),
+    ("The lemon to Marco, no, sorry, Lena, give it to him.", KITCHEN),
+    ("The jug to Mrs Khan, no, Mr Lee, give it to her.", WARD),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), GIVE_IT_TO)
+def test_give_it_to_refused(text: str, scene) -> None:
+    assert_refused(text, scene)
+
+
+@pytest.mark.parametrize(("text", "scene"), GIVE_IT_TO)
+def test_give_it_to_check_is_what_refuses(text: str, scene, monkeypatch) -> None:
+    kept = tuple(c for c in offline._CHECKS if c is not r._give_it_to56r)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    assert tree(text, scene) is not None
+
+
+@pytest.mark.parametrize(
+    ("text", "want", "scene"),
+    [
+        ("The apple to Bob, no, sorry, Carol, give it to her.", "apple>C", CELL),
+        ("The lemon to Lena, no, sorry, Marco, give it to him.", "lemon>A", KITCHEN),
+    ],
+)
+def test_give_it_to_kept(text: str, want: str, scene) -> None:
     assert_case(text, want, scene)

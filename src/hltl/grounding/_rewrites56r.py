@@ -10,6 +10,7 @@ from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._normalise3 import _whole_name
 from hltl.grounding._rewrites41r import _said41r
 from hltl.grounding._rewrites46r import _P46R, _person46r
+from hltl.grounding._rewrites52s import _other_sex52s
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, Task, has_choice, tasks
 
@@ -838,21 +839,29 @@ _GIVE_IT_TO56R = re.compiled(
 )
 
 
+_CUE56R = re.compiled(
+    r"[,;.]\s*(?:no|sorry|wait|hang on|i mean|actually|make that|scratch that)\b", _F
+)
+
+
 def _give_it_to56r(text: str, node: Node, lexicon: Lexicon) -> None:
     """Session 56 (12r; 12c's probe): "The apple to Bob, no, sorry, Carol, give it to him." read
     apple>C: a closing "give it to him / her" said again of the one corrected to, whom the scene
-    says is of the other sex (a title, a word of kin, a first name of one sex, the corpus's
-    Person A / Person B). A reading none of whose recipients the him / her may be is refused."""
+    says is of the other sex (a title, a word of kin, a first name of one sex; not the corpus's
+    Person A / Person B convention). After a correction only, a reading none of whose
+    recipients the him / her may be is refused."""
     if "him" not in text.lower() and "her" not in text.lower():
         return
     m = _GIVE_IT_TO56R.search(text.strip())
     if m is None:
         return
+    if _CUE56R.search(text[: m.start()]) is None:
+        return  # no correction before it (blind20 #52: 'Person B …, take them over to her')
     sex = PRONOUN_SEX[m["pr"].lower()]
     got = {t.target for t in tasks(node) if t.kind == "deliver"}
     if not got:
         return
-    if all(unnamed_sex44l(h, lexicon) not in (None, sex) for h in got):
+    if all(_other_sex52s(h, sex, lexicon) for h in got):
         raise GroundingError(
             f"{m['pr']!r} cannot be {' or '.join(sorted(got))}, who the request hands it to: "
             "name the person"
