@@ -982,7 +982,7 @@ def test_done_said_refusals_are_what_refuse(text: str, scene, monkeypatch) -> No
 GIVE_IT_TO = [
     ("The apple to Bob, no, sorry, Carol, give it to him.", CELL),
     ("The lemon to Marco, no, sorry, Lena, give it to him.", KITCHEN),
-    ("The jug to Mrs Khan, no, Mr Lee, give it to her.", WARD),
+    ("The cup to Alice, no, sorry, Bob, give it to her.", CELL),
 ]
 
 
