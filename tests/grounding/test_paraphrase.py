@@ -334,8 +334,6 @@ KNOWN_MISSES = frozenset(
         # blind48 (tuned on in session 50): refusals left at its one measurement (docs/grounding.md)
         "Cup to Person A first, she's the palm reader at the fete. Then the apple. That one's "
         "Person B's.",
-        "Person A gets the bottle and Person B gets the apple and they're both off to the willow "
-        "weaving",
         "Bottle to Person A she's the scenery painter and after that the chips to Person B no "
         "hurry at all mate",
         "Here's the plan. The bottle. Person A. That's all.",
@@ -385,8 +383,6 @@ KNOWN_MISSES = frozenset(
         "Blue pen to Sam and the notepad to Priya she's got the etymology meeting at two.",
         "Teddy goes down on the play mat where she can reach. After that the bib to Lily, it's "
         "nearly lunch.",
-        "Of the boxes, two go on the belt today: the small one and the medium one, the large "
-        "stays put.",
         "Alice is off crisps this week, so it's the bottle she wants, not those.",
         "Person B's allergic to apples, so let him have everything else you've got.",
         "Person A doesn't eat chips, but any of the other three things will do her, your choice.",

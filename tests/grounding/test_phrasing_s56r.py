@@ -1007,3 +1007,69 @@ def test_give_it_to_check_is_what_refuses(text: str, scene, monkeypatch) -> None
 )
 def test_give_it_to_kept(text: str, want: str, scene) -> None:
     assert_case(text, want, scene)
+
+
+# -- older parts (session-55 leftovers) -----------------------------------------------------------
+
+# _of_the_n56r: "Of the Xs, two go on the S: the A one and the B one(, the C stays put)"
+OF_THE_N = PhrasingCases()
+test_of_the_n = OF_THE_N.test(
+    (
+        "Of the boxes, two go on the belt today: the small one and the medium one, the large "
+        "stays put.",
+        "box_small@conveyor & box_medium@conveyor",
+        DEPOT,
+    ),
+    (
+        "Of the pens, two go in the box: the black one and the red one, the blue stays put.",
+        "pen_black@box & pen_red@box",
+        OFFICE,
+    ),
+    (
+        "Of the plates, two go on the rack: the white one and the blue one.",
+        "plate_white@rack & plate_blue@rack",
+        KITCHEN,
+    ),
+    (
+        "Of the pens, three go in the box now: the black one, the blue one and the red one.",
+        "pen_black@box & pen_blue@box & pen_red@box",
+        OFFICE,
+    ),
+    # near: a thing not of the kind, a count not the list's, what went
+    ("Of the pens, two go in the box: the black one and the stapler.", None, OFFICE),
+    ("Of the pens, three go in the box: the black one and the red one.", None, OFFICE),
+    ("Of the boxes, two went on the belt: the small one and the medium one.", None, DEPOT),
+)
+
+
+def test_of_the_n_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    OF_THE_N.refused_without((r._of_the_n56r,), monkeypatch)
+
+
+# _both_off_to56r: "P gets X and Q gets Y and they're both off to the willow weaving"
+BOTH_OFF_TO = PhrasingCases()
+test_both_off_to = BOTH_OFF_TO.test(
+    (
+        "Person A gets the bottle and Person B gets the apple and they're both off to the willow "
+        "weaving",
+        "bottle>A & apple>B",
+        F41,
+    ),
+    (
+        "Alice gets the cup and Bob gets the apple and they're both off to the allotment.",
+        "cup>A & apple>B",
+        CELL,
+    ),
+    (
+        "Mr Lee gets the jug and Mrs Khan gets the magazine and they're both going to physio.",
+        "jug>B & magazine>C",
+        WARD,
+    ),
+    # near: a place of the scene, or one person
+    ("Alice gets the cup and Bob gets the apple and they're both off to the shelf.", None, CELL),
+    ("Alice gets the cup and the apple and they're both off to the allotment.", None, CELL),
+)
+
+
+def test_both_off_to_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    BOTH_OFF_TO.refused_without((r._both_off_to56r,), monkeypatch)

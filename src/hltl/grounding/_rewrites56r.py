@@ -9,6 +9,7 @@ from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F, _ids, _reading
 from hltl.grounding._normalise3 import _whole_name
 from hltl.grounding._rewrites41r import _said41r
+from hltl.grounding._rewrites42s import _remark_only42s
 from hltl.grounding._rewrites46r import _P46R, _person46r
 from hltl.grounding._rewrites52s import _other_sex52s
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
@@ -868,6 +869,74 @@ def _give_it_to56r(text: str, node: Node, lexicon: Lexicon) -> None:
         )
 
 
+# -- older parts (session-55 leftovers): counts --------------------------------------------------
+
+# "Of the boxes, two go on the belt today: the small one and the medium one, the large stays put."
+_OF_THE_N56R = re.compiled(
+    r"^of the (?P<k>[a-z]+s),\s*(?P<n>two|three|four) (?:go|should go|need to go|want to go) "
+    r"(?P<on>on|onto|in|into) (?P<s>the [a-z]+(?: (?!today|now|please)[a-z]+)?)(?: today| now| "
+    r"please)?\s*:\s*"
+    r"(?P<list>[^:;]+?)(?:,\s*the [a-z]+(?: one)? (?:stays put|stays where it is|stays|can stay"
+    r"(?: put)?))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+_N56R = {"two": 2, "three": 3, "four": 4}
+
+
+def _of_the_n56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r; blind50 #115): "Of the Xs, two go on the S: the A one and the B one(, the
+    C stays put)" is "The A one and the B one on the S" where that reads as placing exactly two
+    things, each an X of the scene, on the surface said (the one that stays is not placed)."""
+    if "of the" not in text.lower():
+        return text
+    m = _OF_THE_N56R.match(text.strip())
+    if m is None or not _whole_name(m["s"], lexicon, "surface"):
+        return text
+    on = {"on": "onto", "in": "into"}.get(m["on"].lower(), m["on"])
+    k = m["k"].lower()
+    one = k[:-2] if k.endswith(("xes", "shes", "ches", "sses")) else k[:-1]
+    said = re.sub(r"\b(the [a-z]+) ones?\b", rf"\1 {one}", m["list"], flags=_F)
+    out = f"{said[0].upper()}{said[1:]} {on} {m['s']}{m['end'] or '.'}"
+    node = _reading(out, lexicon)
+    kind = _ids(f"the {m['k']}", lexicon, "object")
+    surface = _ids(m["s"], lexicon, "surface")
+    if node is None:
+        return text
+    done = list(tasks(node))
+    if len(done) != _N56R[m["n"].lower()] or any(
+        t.kind != "place" or t.obj not in kind or t.target not in surface for t in done
+    ):
+        return text
+    return out
+
+
+# "Person A gets the bottle and Person B gets the apple and they're both off to the willow weaving"
+_BOTH_OFF_TO56R = re.compiled(
+    r"(?:,\s*|\s+)and (?:they're|they are) both (?:off|going|heading) (?:to|for) "
+    r"(?P<what>[^,.;!?]+)(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _both_off_to56r(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12r; blind48 #65): "P gets X and Q gets Y and they're both off to the willow
+    weaving" is "P gets X and Q gets Y": where they are off to names nothing of the scene, and
+    what is left hands things to two people."""
+    if "both" not in text.lower():
+        return text
+    m = _BOTH_OFF_TO56R.search(text.strip())
+    if m is None or not _remark_only42s(m["what"], lexicon):
+        return text
+    out = f"{text.strip()[: m.start()]}{m['end'] or ''}"
+    node = _reading(out, lexicon)
+    if node is None:
+        return text
+    done = list(tasks(node))
+    if any(t.kind != "deliver" for t in done) or len({t.target for t in done}) != 2:
+        return text
+    return out
+
+
 _STEPS56R_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _share_out56r,
@@ -896,6 +965,8 @@ _STEPS56R: tuple[Callable[[str, Lexicon], str], ...] = (
     _belong_with56r,
     _in_they_go56r,
     _doing_so56r,
+    _of_the_n56r,
+    _both_off_to56r,
 )
 REFUSE56R: tuple[Callable[[str, Lexicon], None], ...] = (
     _or_was_it56r,
