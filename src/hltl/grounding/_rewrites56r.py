@@ -695,15 +695,28 @@ _DOING_SO56R = re.compiled(
 )
 
 
+# what says the things are moved: 'onto' / 'into', or a verb of putting ('on the S' alone may say
+# where they lie)
+_MOVED_TO56R = re.compiled(
+    r"\b(?:onto|into|on to|in to|put|place|pop|stick|set|move|lay)\b|\bthey go\b", _F
+)
+
+
 def _doing_so56r(text: str, lexicon: Lexicon) -> str:
     """Session 56 (12r): "P's about to load (P's clearing the desk), so <placings>" is the
     placings: what P is doing is the reason (P one person of the scene); only where what
-    follows reads alone as placings (so P is no recipient, and no pronoun looks back at P)."""
+    follows reads alone as placings (so P is no recipient, and no pronoun looks back at P) and
+    says they are moved ('onto', 'into', a verb of putting: "…, so both of the blocks on the
+    high chair" may say where they lie, session 28's near form)."""
     if ", so " not in text.lower():
         return text
     m = _DOING_SO56R.match(text.strip())
     if m is None or _person46r(m["p"], lexicon) is None:
         return text
+    if _MOVED_TO56R.search(m["rest"]) is None:
+        return (
+            text  # "Grandad's clearing the floor, so both of the blocks on the high chair." (s28r)
+        )
     node = _reading(m["rest"], lexicon)
     if node is None or any(t.kind != "place" for t in tasks(node)):
         return text
