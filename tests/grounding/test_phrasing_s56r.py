@@ -63,11 +63,6 @@ test_share_out = SHARE_OUT.test(
         CELL,
     ),
     (
-        "Something for each of them: Marco gets the knife, Lena the salt.",
-        "knife>A & salt>B",
-        KITCHEN,
-    ),
-    (
         "A little something for both of them: Mr Lee gets the magazine, Mrs Khan the jug.",
         "magazine>B & jug>C",
         WARD,
@@ -105,13 +100,16 @@ test_share_out = SHARE_OUT.test(
         WARD,
     ),
     (
-        "A plate for each of them: Marco the white one, and the blue one for Lena.",
-        "plate_white>A & plate_blue>B",
-        KITCHEN,
+        "A pen for each of them: Priya the black one, and the red one for Sam.",
+        "pen_black>A & pen_red>B",
+        OFFICE,
     ),
     # near: everything to one person, or nothing after the colon
     ("Something for both of them, then: Alice gets the apple and the cup.", None, CELL),
     ("A plate for each of them: Marco the white one and the blue one.", None, KITCHEN),
+    # 'each of them' naming two of the scene's three people (session 49's near form)
+    ("A plate for each of them: Marco the white one, and the blue one for Lena.", None, KITCHEN),
+    ("Something for each of them: the cup to Alice and the apple to Bob.", None, CELL),
     ("Share them out so nobody's left empty-handed.", None, CELL),
 )
 

@@ -30,8 +30,8 @@ _SHARE_OUT56R = re.compiled(
     r"^(?:(?:(?:share|hand|dish|pass|give|divvy|parcel) (?:them |these |those |the things |both "
     r"things |both items |the lot |everything )?(?:out|round|around|up)(?: (?:both things|both "
     r"items|the things|the lot|them|these|those))?(?: (?:so|so that) [^:;]+)?)|(?:(?:a|one) "
-    r"(?:little )?(?:something|thing|treat)|something(?: nice)?) for (?:both|each|the two) of "
-    r"them(?:,? then)?|(?P<h>(?:a|one) [a-z]+) for each (?:child|kid|person|guest|patient|one "
+    r"(?:little )?(?:something|thing|treat)|something(?: nice)?) for (?P<q>both|each|the two) of "
+    r"them(?:,? then)?|(?P<h>(?:a|one) [a-z]+) for each (?P<n>child|kid|person|guest|patient|one "
     r"of them|of them|worker|student|pupil))\s*:\s*(?P<rest>\S.*)$",
     _F,
 )
@@ -42,7 +42,9 @@ def _share_out56r(text: str, lexicon: Lexicon) -> str:
     empty-handed: …", "Hand out both things: …", "Something for both of them, then: …", "A book
     for each child: …") is "One each: …" ("A book each: …"), read by the older 'each' rules,
     which check that the list hands one thing to each of two or more people; here too the list
-    must read, and hand things to two or more people and nothing else."""
+    must read, and hand things to two or more people and nothing else ('both of them' two,
+    'each of them' every person of the scene: "Something for each of them: the cup to Alice and
+    the apple to Bob." with Carol there stays refused, session 49's near form)."""
     if not _has(text, " out", " round", " up", " of them", " each "):
         return text
     m = _SHARE_OUT56R.match(text.strip())
@@ -52,8 +54,14 @@ def _share_out56r(text: str, lexicon: Lexicon) -> str:
     if node is None:
         return text
     done = list(tasks(node))
-    if any(t.kind != "deliver" for t in done) or len({t.target for t in done}) < 2:
+    got = {t.target for t in done}
+    if any(t.kind != "deliver" for t in done) or len(got) < 2:
         return text
+    q, n = (m["q"] or "").lower(), (m["n"] or "").lower()
+    if q in ("both", "the two") and len(got) != 2:
+        return text
+    if (q == "each" or n.endswith("of them")) and len(got) != len(lexicon.scene.humans):
+        return text  # "Something for each of them: …" naming two of three (session 49's near)
     head = f"{m['h']} each" if m["h"] else "One each"
     return f"{head}: {m['rest']}"
 
