@@ -334,8 +334,6 @@ KNOWN_MISSES = frozenset(
         # blind48 (tuned on in session 50): refusals left at its one measurement (docs/grounding.md)
         "Cup to Person A first, she's the palm reader at the fete. Then the apple. That one's "
         "Person B's.",
-        "Person A gets the bottle and Person B gets the apple and they're both off to the willow "
-        "weaving",
         "Bottle to Person A she's the scenery painter and after that the chips to Person B no "
         "hurry at all mate",
         "Here's the plan. The bottle. Person A. That's all.",
@@ -385,8 +383,6 @@ KNOWN_MISSES = frozenset(
         "Blue pen to Sam and the notepad to Priya she's got the etymology meeting at two.",
         "Teddy goes down on the play mat where she can reach. After that the bib to Lily, it's "
         "nearly lunch.",
-        "Of the boxes, two go on the belt today: the small one and the medium one, the large "
-        "stays put.",
         "Alice is off crisps this week, so it's the bottle she wants, not those.",
         "Person B's allergic to apples, so let him have everything else you've got.",
         "Person A doesn't eat chips, but any of the other three things will do her, your choice.",
@@ -501,36 +497,8 @@ KNOWN_MISSES = frozenset(
         "Person A's off to fire twirling after this so the bottle to her now and the chips to "
         "Person B after.",
         "Tongs to Marco, lemon to Mr Novak, he likes it in his water.",
-        "Clear the floor for the mopping, would you: the bottle and the crisps, the pair, up onto "
-        "the shelf.",
-        "Person A's happy with any one of the four, she honestly doesn't mind which you bring.",
-        "Something for both of them, then: Person A gets the bottle, Person B the cup.",
-        "Whichever of the two is closest, the chips or the bottle, take it to Person B.",
-        "Share them out so nobody's left empty-handed: chips for Person B, and Person A gets the "
-        "bottle.",
-        "Any spare cup, white or green, to Emma, she isn't fussy.",
-        "One of the pens to Sam, any of the three will do.",
-        "The small box and the medium one, both of them, onto the belt, Tom's waiting to tape "
-        "them up.",
-        "Mr Novak needs a plate, white or blue, whichever you lay a hand on first.",
-        "A book for each child: Noah the red one, and the green one for Zoe.",
-        "There's one bottle and one bag of crisps, both want to go up onto the shelf.",
-        "Person B is packing the picnic basket, so he's to have all four things, every last one.",
-        "Two things are on Person A's list, the apple and the cup, and nothing beyond that.",
-        "Only the single cup, to Person B, he just needs the one.",
-        "Both items are Person A's, so take the pair of them to her.",
-        "Both of the things here, bottle and chips, belong with Person B, he's the mask maker.",
-        "Hand out both things: chips for Person A, bottle for Person B.",
-        "The pair of cups, green and white, into the sink for washing.",
-        "Priya's clearing the desk, so the black, the blue and the red pen, all three, in the box "
-        "they go.",
-        "Mrs Khan's shivering under the one sheet, so bring her both blankets, blue as well as "
-        "grey.",
-        "The driver's about to load, so every one of the three boxes, small, medium and large, "
-        "onto the belt.",
         "Both of the books, the red one as well as the green one, go to Mrs Ortiz, she's got "
         "marking to do tonight.",
-        "Kofi needs the pair of spanners, small and large, for the bolts.",
         "Alice would like the crisps, though not the apple, she's not a fruit person.",
         "The bottle's not for Alice, it's for Bob, take it to him.",
         "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
@@ -544,16 +512,6 @@ KNOWN_MISSES = frozenset(
         "Lena's gone off the white plate for some reason, bring her the blue one instead.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",
         "Jess could use the screws, but leave the hammer alone, she's got her own.",
-        "The apple to Bob, no, sorry, I'm thinking of Carol, give it to her.",
-        "Leave the bottle be, actually, on reflection, run it over to Person A.",
-        "Chips to Person B, bottle to Person A, oh no, I've said it backwards, swap those round.",
-        "Salt over to Marco, er, no, make that the lemon for him.",
-        "Teddy on the high chair, no, wait, Lily naps on the play mat, so teddy goes there "
-        "instead.",
-        "Drill to Kofi, wait, Jess needs it more, give it to Jess.",
-        "Is it alright if Person B helps himself to the chips, do you reckon, and could you take "
-        "them?",
-        "Can Jess borrow the small spanner, hers has gone walkabout?",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)
@@ -600,12 +558,8 @@ KNOWN_UNCLEAR = frozenset(
         "Lena asked me for a plate, was it the white one or the blue one? I can't recall.",
         # blind53 (tuned on in session 55)
         "Emma or Dana, one of them asked for the white cup. Can't remember who. Sorry.",
-        "Omar wants either the bansna or the spoon, he did say which but I've forgotten.",
         # blind54 (tuned on in session 56)
         "Jess wants a spanner. One of them. Which, she didn't say, and I asked her twice.",
-        "Person B's after one of the snacks, the apple or the chips, he said which but I've clean "
-        "forgot.",
-        "The globe to Noah, or was it Zoe who asked, I've got them mixed up.",
     }
 )
 # measured once and reported (docs/grounding.md), not asserted: a blind part's misses, wrong

@@ -4833,6 +4833,8 @@ def _left_moved39l(text: str, node: Node, lexicon: Lexicon) -> None:
     for m in _LEFT39L.finditer(text):
         if text[: m.start()].lower().rstrip().endswith(("don't", "don\u2019t", "do not", "never")):
             continue  # "Don't leave the bottle where it is; hand it to Person A."
+        if _rewrites56r.kept_taken_back56r(text[m.end() :]):
+            continue  # "Leave the bottle be, actually, on reflection, run it over to P" (s56, 12r)
         what = m["what"]
         left = _ids(what, lexicon, "object")
         one = re.fullmatch(r"(?:the|that|this)\s+(?P<adj>[a-z]+)\s+ones?", what, re.I)
