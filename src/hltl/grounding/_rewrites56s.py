@@ -4,14 +4,141 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from hltl.errors import GroundingError
+from hltl.grounding import gate as re
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only
+from hltl.grounding._rewrites55s import _BE55S, _DET55S, _STATE55S
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, Task, tasks
+
+# -- session 56 (12s): where a thing is, beside a request for another thing ---------------------
+#
+# "The apple's on the shelf, give Bob the cup." read `apple@shelf & cup>B` (12c, session 55's
+# doubtful): the grammar reads a goal said as a state ("The apple is on the shelf." is a placing,
+# session 51), so a state clause beside a request placed the thing. Beside a request for another
+# thing, with no order between them, 'the X's / is / are (still / up / sat …) on the S' says where
+# the X is as often as where it goes ("The apple is still on the shelf, so give Bob the cup.",
+# "Give Bob the cup, the apple's on the shelf."): such a reading is refused. Session 55's
+# `_where_is55s` refuses it beside another task on the same X. Read as before: the state alone,
+# two states ("The apple's on the shelf and the cup's on the table."), an order ('Once the X is on
+# the S, …', '…, then …'), a placing said with its verb or verbless ('The apple on the shelf, the
+# cup to Bob.').
+
+
+def _states56s(text: str, lexicon: Lexicon) -> set[tuple[str, str]]:
+    """The (object, surface) pairs of the state clauses 'the X's / is / are … on the S' in
+    ``text`` (a verb 'be' said; the X one thing's name alone)."""
+    out: set[tuple[str, str]] = set()
+    for m in _STATE55S.finditer(text):
+        if not m["be"]:
+            continue  # 'The apple on the shelf, …': verbless, a placing asked for
+        named = _names(m["x"], lexicon)
+        said = m["x"].lower().split(" ", 1)
+        bare = said[1] if said[0] in _DET55S and len(said) > 1 else m["x"].lower()
+        if len(named) != 1 or named[0].text.lower() != bare or not _objects_only(bare, lexicon):
+            continue
+        xs, ss = _ids(m["x"], lexicon), _ids(m["s"], lexicon, "surface")
+        out.update((x, s) for x in xs for s in ss)
+    return out
+
+
+def _beside56s(node: Node, states: set[tuple[str, str]]) -> Task | None:
+    """A placing of ``states`` in ``node`` beside (an ``and`` / ``or``, no order) a task that is
+    no such placing."""
+    if isinstance(node, Task):
+        return None
+    for c in node.children:
+        found = _beside56s(c, states)
+        if found is not None:
+            return found
+    if node.op == "seq":
+        return None
+    per = [list(tasks(c)) for c in node.children]
+    for i, mine in enumerate(per):
+        said = [t for t in mine if t.kind == "place" and (t.obj, t.target) in states]
+        if not said:
+            continue
+        for j, theirs in enumerate(per):
+            if j != i and any(u.kind != "place" or (u.obj, u.target) not in states for u in theirs):
+                return said[0]
+    return None
+
+
+def _where_is56s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 56 (12s): where a thing is, beside a request for another thing (above)."""
+    if isinstance(node, Task):
+        return
+    low = text.lower()
+    if not any(w in low for w in _BE55S):
+        return
+    if not any(t.kind == "place" for t in tasks(node)):
+        return
+    states = _states56s(text, lexicon)
+    if not states:
+        return
+    t = _beside56s(node, states)
+    if t is not None:
+        raise GroundingError(
+            f"'the {t.obj} … on the {t.target}' may say where the {t.obj} is, not where it goes, "
+            f"beside the rest of the request: say 'put the {t.obj} on the {t.target}' to have it "
+            "placed, or ask only for the rest"
+        )
+
+
+# -- session 56 (12s): 'Give Bob the red mug, not Alice, the blue.' ---------------------------
+#
+# read `mug_red>B & mug_blue>B` (12c, session 55's doubtful): ', not P,' set against the person of
+# the request, then a thing with no verb or person of its own: the thing may be P's instead ("not
+# Alice — (she gets) the blue"), or the request's person's too; the robot may not pick. Refused
+# when P is a person of the scene and the thing after it names objects only, closing the text
+# ('please / thanks / cheers' may follow), after a request that named a thing. Read as before:
+# ', not Alice.' at the end, 'not Alice, Bob' (a correction of the person), 'not the blue' (an
+# object left out), 'Give Bob, not Alice, the red mug.' (the request's own thing).
+_THING_WORDS56S = frozenset({"one", "other", "ones", "others"})
+_NOT_P_THEN56S = re.compiled(
+    r",\s*not (?:to |for )?(?P<p>(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+))\s*[,;:—–-]"
+    r"\s*(?:and |but |just |only )?(?P<y>(?:the|a|an|that|this|those|these|his|her) "
+    r"(?:[a-z]+ ){0,2}?[a-z]+)(?:,? (?:please|thanks|cheers|ta))?\s*[.!]?\s*$",
+    _F,
+)
+
+
+def _not_p_then56s(text: str, lexicon: Lexicon) -> None:
+    """Session 56 (12s): ', not P, the Y' closing a request (above)."""
+    if "not " not in text.lower():
+        return
+    m = _NOT_P_THEN56S.search(text)
+    if (
+        m is None
+        or not _ids(m["p"], lexicon, "human")
+        or _ids(m["p"], lexicon) - _ids(m["p"], lexicon, "human")
+    ):
+        return
+    if not _ids(text[: m.start()], lexicon, "object"):
+        return  # 'Give Bob, not Alice, the red mug.': the thing of the request itself
+    y = m["y"]
+    bare = y.split(" ", 1)[1].lower()
+    if _names(y, lexicon):
+        if not _objects_only(y, lexicon):
+            return  # 'not Alice, the chef': a person or a place
+    elif not set(bare.split()) <= _THING_WORDS56S | {
+        w.lower()
+        for o in lexicon.scene.objects
+        for n in (o.id.replace("_", " "), *o.aliases)
+        for w in n.split()
+    }:
+        return  # 'not Alice, the poor thing': no thing of the scene
+    raise GroundingError(
+        f"'not {m['p']}, {y}' may say {m['p']} is not to get {y} (someone else is), or that the "
+        "request's person gets it too: say who gets each thing"
+    )
+
 
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-56 ones)
-REFUSE56S: tuple[Callable[[str, Lexicon], None], ...] = ()
+REFUSE56S: tuple[Callable[[str, Lexicon], None], ...] = (_not_p_then56s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-56 ones)
-CHECK56S: tuple[Callable[[str, Node, Lexicon], None], ...] = ()
+CHECK56S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_where_is56s,)

@@ -1,0 +1,118 @@
+"""Session-56 phrasings of issue 12 (engineer 12s): 12c's open wrong readings (where a thing is,
+beside a request for another thing; ', not P, the Y') and blind54's sentence splits, negation and
+exclusion, each as a family (fresh sentences in other scenes, each read (wrongly) or refused on
+main 085b81dc as the test says, and near sentences); docs/grounding.md, "Session 56 (engineer
+12s)"."""
+
+from __future__ import annotations
+
+import pytest
+
+from hltl.grounding import _rewrites56s as r56s
+from hltl.grounding import offline
+from hltl.world.scene import Scene, load_scene
+from tests.grounding.helpers import (
+    CELL,
+    CLASSROOM,
+    KITCHEN,
+    NURSERY,
+    OFFICE,
+    ROOT,
+    WARD,
+    WORKSHOP,
+    PhrasingCases,
+    assert_case,
+    tree,
+)
+
+TWO, T21, DUO, L44, F41, L24, T12 = (
+    load_scene(ROOT / f"examples/scenes/{n}.yaml")
+    for n in ("two_arms", "2-1", "2-2", "4-4-line", "4-1", "2-4-line", "1-2")
+)
+
+# -- where a thing is, beside a request for another thing (_where_is56s, a check) --------------
+#
+# each read on main 085b81dc as a placing AND the other request (12c, session 55: "The apple's on
+# the shelf, give Bob the cup." -> apple@shelf & cup>B)
+WHERE_IS = [
+    ("The apple's on the shelf, give Bob the cup.", CELL),
+    ("The apple is on the table, the cup goes to Bob.", CELL),
+    ("The apple is still on the shelf, so give Bob the cup.", CELL),
+    ("Give Bob the cup, the apple's on the shelf.", CELL),
+    ("The lemon's on the counter, give Lena the knife.", KITCHEN),
+    ("Give Marco the tongs, the salt's on the rack.", KITCHEN),
+    ("The knife is still on the worktop, so pass Mr Novak the lemon.", KITCHEN),
+    ("The jug's on the bedside table, give Mrs Khan the pills.", WARD),
+    ("Give Mr Lee the magazine, the thermometer is on the trolley.", WARD),
+    ("The drill's on the bench, pass Jess the torch.", WORKSHOP),
+    ("The stapler's in the box, give Sam the red pen.", OFFICE),
+    ("The teddy's on the mat, so give Lily the bib.", NURSERY),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), WHERE_IS)
+def test_where_is56s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_where_is56s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the check each is read (placed there, and the other request)."""
+    kept = tuple(c for c in offline._CHECKS if c is not r56s._where_is56s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    for text, scene in WHERE_IS:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: the state alone, two states, an order ('once', 'then'), a placing said verbless
+# or with its verb: read as before
+test_where_is56s_near = PhrasingCases().test(
+    ("The apple is on the shelf.", "apple@shelf", CELL),
+    ("The apple's on the shelf and the cup's on the table.", "apple@shelf & cup@table", CELL),
+    ("The apple is on the shelf, then give Bob the cup.", "apple@shelf ; cup>B", CELL),
+    ("Once the apple is on the shelf, give Bob the cup.", "apple@shelf ; cup>B", CELL),
+    ("The apple on the shelf, the cup to Bob.", "apple@shelf & cup>B", CELL),
+    ("Put the apple on the shelf and give Bob the cup.", "apple@shelf & cup>B", CELL),
+    (
+        "Once the lemon's on the counter, give the knife to Lena.",
+        "lemon@counter ; knife>B",
+        KITCHEN,
+    ),
+)
+
+# -- ', not P, the Y' closing a request (_not_p_then56s, a refusal before the read) -------------
+#
+# each read on main 085b81dc as both things to the request's person (12c, session 55: "Give Bob
+# the red mug, not Alice, the blue." -> mug_red>B & mug_blue>B)
+NOT_P_THEN = [
+    ("Give Bob the red mug, not Alice, the blue.", CELL),
+    ("Give Bob the red mug, not Alice, and the blue.", CELL),
+    ("Give Marco the knife, not Lena, the tongs.", KITCHEN),
+    ("Hand Mr Novak the white plate, not Lena, the blue one.", KITCHEN),
+    ("Take Mrs Khan the blue blanket, not Mr Lee, the grey one.", WARD),
+    ("Hand Kofi the hammer, not Jess, the screws.", WORKSHOP),
+    ("Give Priya the black pen, not Sam, the blue.", OFFICE),
+    ("Give Lily the red block, not Ava, the green one.", NURSERY),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), NOT_P_THEN)
+def test_not_p_then56s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_not_p_then56s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the refusal each is read (both things to the request's person)."""
+    kept = tuple(c for c in offline._REFUSALS if c is not r56s._not_p_then56s)
+    monkeypatch.setattr(offline, "_REFUSALS", kept)
+    for text, scene in NOT_P_THEN:
+        assert tree(text, scene) is not None, text
+
+
+# near sentences: the person left out at the end, a thing left out, a correction of the person
+test_not_p_then56s_near = PhrasingCases().test(
+    ("Give Bob the red mug, not Alice.", "mug_red>B", CELL),
+    ("Give Bob the red mug, not the blue.", "mug_red>B", CELL),
+    ("Crisps to Bob, ah, not Bob, Alice.", "chips>A", CELL),
+    ("Give Zoe the ruler. Wait, not Zoe, Noah.", "ruler>B", CLASSROOM),
+    ("Give Bob, not Alice, the red mug.", "mug_red>B", CELL),
+)
