@@ -567,12 +567,10 @@ KNOWN_MISSES = frozenset(
         "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
         "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
         "that.",
-        "Person A's off the chips this week, just give her the bottle.",
         "Give the chips to anyone but Person A.",
         "Person A wants the bottle, and no, she doesn't want anything else.",
         "Leave Person B out this time round; both the bottle and the chips are headed to Person A.",
         "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
-        "Lena's gone off the white plate for some reason, bring her the blue one instead.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",
         "Jess could use the screws, but leave the hammer alone, she's got her own.",
         "The apple to Bob, no, sorry, I'm thinking of Carol, give it to her.",

@@ -116,3 +116,41 @@ test_not_p_then56s_near = PhrasingCases().test(
     ("Give Zoe the ruler. Wait, not Zoe, Noah.", "ruler>B", CLASSROOM),
     ("Give Bob, not Alice, the red mug.", "mug_red>B", CELL),
 )
+
+# -- 'P's (gone) off the X, give her the Y' (_off_the56s) ---------------------------------------
+#
+# blind54 #127 #136 and fresh ones in other scenes, each refused on main 085b81dc
+OFF_THE = PhrasingCases()
+test_off_the56s = OFF_THE.test(
+    ("Person A's off the chips this week, just give her the bottle.", "bottle>A", DUO),
+    (
+        "Lena's gone off the white plate for some reason, bring her the blue one instead.",
+        "plate_blue>B",
+        KITCHEN,
+    ),
+    ("Bob's off the apple, so give him the cup.", "cup>B", CELL),
+    ("Alice is off the red mug today, hand her the blue one.", "mug_blue>A", CELL),
+    ("Mrs Khan's off the magazine at the moment, take her the jug.", "jug>C", WARD),
+    (
+        "Jess is off the big spanner today, just hand her the small one.",
+        "spanner_small>B",
+        WORKSHOP,
+    ),
+    ("Sam's off the red pen, give him the black one.", "pen_black>B", OFFICE),
+    ("Lily's gone off the teddy lately, give her the red block.", "block_red>A", NURSERY),
+)
+
+
+def test_off_the56s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    OFF_THE.refused_without((r56s._off_the56s,), monkeypatch)
+
+
+# near sentences: 'off to', the thing itself asked for, a holding, a question, a remark closing a
+# request: read as before, or refused
+test_off_the56s_near = PhrasingCases().test(
+    ("Lily's off to nap, give her the teddy.", "teddy>A", NURSERY),
+    ("Bob's off the apple, give him the apple.", None, CELL),
+    ("Bob's off the apple, he had the cup.", None, CELL),
+    ("Bob's off the apple.", None, CELL),
+    ("Crisps to Alice, sorry, I mean Bob, Alice is off crisps.", "chips>B", CELL),
+)

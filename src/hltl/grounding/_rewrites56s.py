@@ -6,7 +6,10 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person
+from hltl.grounding._rewrites44r import _read_without44r
+from hltl.grounding._rewrites51s import _plain51s
+from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S
 from hltl.grounding._rewrites55s import _BE55S, _DET55S, _STATE55S
 from hltl.grounding.lexicon import Lexicon
 from hltl.grounding.tree import Node, Task, tasks
@@ -134,8 +137,50 @@ def _not_p_then56s(text: str, lexicon: Lexicon) -> None:
     )
 
 
+# -- session 56 (12s): 'P's (gone) off the X, give her the Y' -----------------------------------
+#
+# "Person A's off the chips this week, just give her the bottle." and "Lena's gone off the white
+# plate for some reason, bring her the blue one instead." (blind54 #127 #136): a person 'off' a
+# thing (not wanting it now), then a request: said "P doesn't want the X, …", which session 39's
+# rules read; a time or reason right after the thing ('this week', 'today', 'for some reason', 'at
+# the moment', 'lately') is the speaker's context, read as now, and dropped. P one person named
+# (not a pronoun: a remark closing a request, "…, she's off salt", is left as it was); the X one
+# thing or kind of the scene, named whole; the reading must hand the X to no one; nothing that
+# says a holding or a doing (session 53's `_UNSAFE53S`). 'off to / off for / off home' are no
+# such clause.
+_OFF_THE56S = re.compiled(
+    rf"^(?P<p>{_WHO53S})(?:'s| is| has)(?: (?:gone|gone right|really|a bit|totally|properly))? "
+    r"off (?:the |her |his |their )?(?P<x>[a-z]+(?: [a-z]+)??)(?: (?:this week|today|at the "
+    r"moment|for now|lately|these days|for some reason|right now|for the moment|for a bit|for a "
+    r"while))?(?P<rest>\s*[,;]\s*(?:so |and |but |just |only )?\S.*)$",
+    _F,
+)
+
+
+def _off_the56s(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12s): "P's (gone) off the X, give her the Y" said "P doesn't want the X, …"
+    (above)."""
+    if " off " not in text.lower():
+        return text
+    if text.rstrip().endswith("?") or _UNSAFE53S.search(text):
+        return text
+    m = _OFF_THE56S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    x = _ids(m["x"], lexicon)
+    named = _names(m["x"], lexicon)
+    if not x or x != _ids(m["x"], lexicon, "object") or len(named) != 1:
+        return text
+    if named[0].text.lower() != m["x"].lower():
+        return text  # 'off the teddy box': not the thing named whole
+    out = f"{m['p']} doesn't want the {m['x']}{m['rest']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
-_STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = ()
+_STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_off_the56s,)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-56 ones)
