@@ -563,7 +563,6 @@ KNOWN_MISSES = frozenset(
         "marking to do tonight.",
         "Kofi needs the pair of spanners, small and large, for the bolts.",
         "Alice would like the crisps, though not the apple, she's not a fruit person.",
-        "The bottle's not for Alice, it's for Bob, take it to him.",
         "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
         "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
         "that.",

@@ -15,6 +15,7 @@ from tests.grounding.helpers import (
     CELL,
     CLASSROOM,
     KITCHEN,
+    LAB,
     NURSERY,
     OFFICE,
     ROOT,
@@ -153,4 +154,28 @@ test_off_the56s_near = PhrasingCases().test(
     ("Bob's off the apple, he had the cup.", None, CELL),
     ("Bob's off the apple.", None, CELL),
     ("Crisps to Alice, sorry, I mean Bob, Alice is off crisps.", "chips>B", CELL),
+)
+
+# -- 'The X's not for P, it's for Q, take it to him.' (_not_for_take56s) ----------------------
+#
+# blind54 #121 and fresh ones in other scenes, each refused on main 085b81dc ('him' could be P)
+NOT_FOR_TAKE = PhrasingCases()
+test_not_for_take56s = NOT_FOR_TAKE.test(
+    ("The bottle's not for Alice, it's for Bob, take it to him.", "bottle>B", TWO),
+    ("The apple's not for Alice, it's for Bob, take it to him.", "apple>B", CELL),
+    ("The lemon's not for Marco, it's for Mr Novak, take it to him.", "lemon>C", KITCHEN),
+    ("The lemon's not for Lena, it's for Marco, so pass it to him.", "lemon>A", KITCHEN),
+    ("The spoon's not for Emma, it's for Omar, hand it to him.", "spoon>B", LAB),
+    ("The globe's not for Noah, it's for Zoe, take it to her.", "globe>C", CLASSROOM),
+)
+
+
+def test_not_for_take56s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOT_FOR_TAKE.refused_without((r56s._not_for_take56s,), monkeypatch)
+
+
+# near sentences: the pronoun not of Q's sex (it may be P), stays refused
+test_not_for_take56s_near = PhrasingCases().test(
+    ("The bottle's not for Bob, it's for Alice, take it to him.", None, TWO),
+    ("The globe's not for Noah, it's for Zoe, take it to him.", None, CLASSROOM),
 )

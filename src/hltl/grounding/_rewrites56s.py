@@ -11,7 +11,7 @@ from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding._rewrites51s import _plain51s
 from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S
 from hltl.grounding._rewrites55s import _BE55S, _DET55S, _STATE55S
-from hltl.grounding.lexicon import Lexicon
+from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, Task, tasks
 
 # -- session 56 (12s): where a thing is, beside a request for another thing ---------------------
@@ -179,8 +179,46 @@ def _off_the56s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 56 (12s): 'The X's not for P, it's for Q, take it to him.' ------------------------
+#
+# blind54 #121: who a thing is not for, who it is for, then the request for it to 'him / her':
+# the pronoun stands for Q, the person it is for (P is the one it is not for). Said "The X isn't
+# for P, it's for Q.", which the grammar reads. The pronoun of Q's sex by the scene (a title, a
+# word of kin, a first name, the corpus's 'Person A / B'), or Q's sex unknown and P's the other;
+# 'them' for either; P and Q one person each, apart; the X one thing; nothing after but 'please'.
+_NOT_FOR_TAKE56S = re.compiled(
+    r"^(?P<head>(?:the|that|this) (?P<x>[a-z]+(?: [a-z]+)?)(?:'s not| is not| isn't) (?:meant |"
+    rf"intended )?for (?P<p>{_WHO53S})\s*[,;]\s*(?:it's|it is) (?:meant |intended |actually |"
+    rf"really )?for (?P<q>{_WHO53S}))\s*[,;]\s*(?:so |and |just )?(?:give|take|hand|pass|bring|"
+    r"run|carry) it(?: (?:over|across|along|round))?(?: to)? (?P<pro>him|her|them)(?:,? please)?"
+    r"(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _not_for_take56s(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12s): "The X's not for P, it's for Q, take it to him." said "The X isn't for
+    P, it's for Q." (above)."""
+    if "for " not in text.lower():
+        return text
+    m = _NOT_FOR_TAKE56S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon) or not _only_person(m["q"], lexicon):
+        return text
+    (p,), (q,) = _ids(m["p"], lexicon), _ids(m["q"], lexicon)
+    if p == q or len(_ids(m["x"], lexicon, "object")) != 1:
+        return text
+    pro = m["pro"].lower()
+    if pro != "them":
+        sex = PRONOUN_SEX[pro]
+        said_q, said_p = unnamed_sex44l(q, lexicon), unnamed_sex44l(p, lexicon)
+        if said_q != sex and not (said_q is None and said_p not in (None, sex)):
+            return text
+    out = f"{m['head']}{m['end'] or '.'}"
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
-_STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_off_the56s,)
+_STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_off_the56s, _not_for_take56s)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-56 ones)
