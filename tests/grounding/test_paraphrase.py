@@ -567,7 +567,6 @@ KNOWN_MISSES = frozenset(
         "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
         "that.",
         "Give the chips to anyone but Person A.",
-        "Person A wants the bottle, and no, she doesn't want anything else.",
         "Leave Person B out this time round; both the bottle and the chips are headed to Person A.",
         "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",

@@ -179,3 +179,29 @@ test_not_for_take56s_near = PhrasingCases().test(
     ("The bottle's not for Bob, it's for Alice, take it to him.", None, TWO),
     ("The globe's not for Noah, it's for Zoe, take it to him.", None, CLASSROOM),
 )
+
+# -- '…, and no, she doesn't want anything else.' (_nothing_else56s) ---------------------------
+#
+# blind54 #130 and fresh ones in other scenes, each refused on main 085b81dc (negation)
+NOTHING_ELSE = PhrasingCases()
+test_nothing_else56s = NOTHING_ELSE.test(
+    ("Person A wants the bottle, and no, she doesn't want anything else.", "bottle>A", T12),
+    ("Bob wants the apple, and no, he doesn't want anything else.", "apple>B", CELL),
+    ("Give Carol the cup, she doesn't need anything else.", "cup>C", CELL),
+    ("Mr Lee needs the jug, and no, he doesn't need anything else thanks.", "jug>B", WARD),
+    ("Jess wants the torch, and no, she doesn't want anything else.", "torch>B", WORKSHOP),
+    ("Give Sam the stapler, he doesn't need anything else.", "stapler>B", OFFICE),
+)
+
+
+def test_nothing_else56s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NOTHING_ELSE.refused_without((r56s._nothing_else56s,), monkeypatch)
+
+
+# near sentences: a past want, a pronoun of the other sex, two people before it: stay refused
+test_nothing_else56s_near = PhrasingCases().test(
+    ("Bob wanted the apple, and no, he doesn't want anything else.", None, CELL),
+    ("Bob wants the apple, and no, she doesn't want anything else.", None, CELL),
+    ("Bob wants the apple and Carol the cup, he doesn't want anything else.", None, CELL),
+    ("Bob had the apple, he doesn't want anything else.", None, CELL),
+)

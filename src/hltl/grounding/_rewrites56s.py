@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from hltl.errors import GroundingError
 from hltl.grounding import gate as re
-from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person
+from hltl.grounding._normalise1 import _F, _ids, _names, _objects_only, _only_person, _reading
 from hltl.grounding._rewrites44r import _read_without44r
 from hltl.grounding._rewrites51s import _plain51s
 from hltl.grounding._rewrites53s import _UNSAFE53S, _WHO53S
@@ -217,8 +217,58 @@ def _not_for_take56s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 56 (12s): '…, and no, she doesn't want anything else.' ----------------------------
+#
+# blind54 #130 "Person A wants the bottle, and no, she doesn't want anything else.": a closing
+# clause that the one person of the request wants nothing more is "…, and nothing else", which
+# the grammar reads. The request before it names one person, whom the he / she may be (the scene
+# says no other sex) or whom it names again; nothing after but 'thanks / at all'; not after a
+# past want ('Bob wanted the apple, …') or a holding (session 53's `_UNSAFE53S`).
+_NOTHING_ELSE56S = re.compiled(
+    r"^(?P<head>.+?)\s*[,;]\s*(?:and |but )?(?:no\s*,?\s*)?(?P<pro>he|she|they|"
+    r"(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:doesn't|does not|don't|do not) "
+    r"(?:want|need) (?:anything|owt|a thing) else(?: (?:at all|thanks|though))?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+_PAST56S = re.compiled(
+    r"\b(?:wanted|needed|asked|fancied|liked|was|were|did|used to|would have|'d have)\b", _F
+)
+
+
+def _nothing_else56s(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12s): "…, and no, she doesn't want anything else." said "…, and nothing
+    else." (above)."""
+    if " else" not in text.lower():
+        return text
+    m = _NOTHING_ELSE56S.match(text.strip())
+    if m is None:
+        return text
+    if _PAST56S.search(m["head"]) or _UNSAFE53S.search(m["head"]):
+        return text  # 'Bob wanted the apple, …': a past want is left as it was
+    people = _ids(m["head"], lexicon, "human")
+    if len(people) != 1:
+        return text
+    (p,) = people
+    pro = m["pro"].lower()
+    if pro in PRONOUN_SEX:
+        if unnamed_sex44l(p, lexicon) not in (None, PRONOUN_SEX[pro]):
+            return text
+    elif pro == "they" or _ids(m["pro"], lexicon) != {p}:
+        return text
+    out = f"{m['head']}, and nothing else{m['end']}"
+    node = _reading(out, lexicon)
+    if node is None or any(t.target != p for t in tasks(node)):
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
-_STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (_off_the56s, _not_for_take56s)
+_STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
+    _off_the56s,
+    _not_for_take56s,
+    _nothing_else56s,
+)
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-56 ones)
