@@ -566,7 +566,6 @@ KNOWN_MISSES = frozenset(
         "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
         "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
         "that.",
-        "Give the chips to anyone but Person A.",
         "Leave Person B out this time round; both the bottle and the chips are headed to Person A.",
         "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",

@@ -205,3 +205,29 @@ test_nothing_else56s_near = PhrasingCases().test(
     ("Bob wants the apple and Carol the cup, he doesn't want anything else.", None, CELL),
     ("Bob had the apple, he doesn't want anything else.", None, CELL),
 )
+
+# -- 'Give the chips to anyone but Person A.' (_anyone_but56s) ----------------------------------
+#
+# blind54 #128 and fresh ones in other scenes of two people, each refused on main 085b81dc
+ANYONE_BUT = PhrasingCases()
+test_anyone_but56s = ANYONE_BUT.test(
+    ("Give the chips to anyone but Person A.", "chips>B", L24),
+    ("Give anyone but Person B the bottle.", "bottle>A", L24),
+    ("The chips go to anybody except Person A.", "chips>B", DUO),
+    ("Hand the stapler to anyone but Sam.", "stapler>A", OFFICE),
+    ("Pass someone other than Priya the red pen.", "pen_red>B", OFFICE),
+    ("Take the torch to anybody apart from Kofi, please.", "torch>B", WORKSHOP),
+)
+
+
+def test_anyone_but56s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    ANYONE_BUT.refused_without((r56s._anyone_but56s,), monkeypatch)
+
+
+# near sentences: three people, a negation of the request, a question, done: stay refused
+test_anyone_but56s_near = PhrasingCases().test(
+    ("Give the apple to anyone but Bob.", None, CELL),
+    ("Don't give the chips to anyone but Person A.", None, L24),
+    ("Did you give the chips to anyone but Person A?", None, L24),
+    ("The chips went to anyone but Person A.", None, L24),
+)

@@ -263,11 +263,46 @@ def _nothing_else56s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 56 (12s): 'Give the chips to anyone but Person A.' --------------------------------
+#
+# blind54 #128: in a scene of two people, 'to anyone / anybody / someone (else) but / except /
+# other than / apart from / bar P' (closing its clause) and 'give anyone but P the X' are the
+# other person (session 35's `_whoever_not35r` reads 'to whoever isn't P' so). With more people it
+# is left (and refused); not after a negation of the request ("Don't give the chips to anyone but
+# Person A.").
+_ANYONE_BUT56S = re.compiled(
+    r"\b(?:(?P<to>to )|(?P<v>give|hand|pass|bring|take) )(?:anyone|anybody|someone|somebody)"
+    r"(?: else)? (?:but|except|other than|apart from|bar|besides|save) (?P<p>person [a-z]|"
+    r"(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)(?(to)(?=\s*(?:[,;.!]|$))|"
+    r"(?= (?:the|a|an|that|this|those|these) ))",
+    _F,
+)
+_NOT_BEFORE56S = re.compiled(r"\b(?:don't|do not|never|not|mustn't|shouldn't|can't|no)\b", _F)
+
+
+def _anyone_but56s(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12s): 'to anyone but P' in a scene of two people is 'to' the other (above)."""
+    low = text.lower()
+    if "any" not in low and "some" not in low:
+        return text
+    people = lexicon.scene.humans
+    if len(people) != 2:
+        return text
+    m = _ANYONE_BUT56S.search(text)
+    if m is None or not _only_person(m["p"], lexicon) or _NOT_BEFORE56S.search(text[: m.start()]):
+        return text
+    (said,) = _ids(m["p"], lexicon)
+    other = next(h for h in people if h.id != said)
+    head = "to " if m["to"] else f"{m['v']} "
+    return f"{text[: m.start()]}{head}{other.name}{text[m.end() :]}"
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _off_the56s,
     _not_for_take56s,
     _nothing_else56s,
+    _anyone_but56s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
