@@ -563,10 +563,8 @@ KNOWN_MISSES = frozenset(
         "marking to do tonight.",
         "Kofi needs the pair of spanners, small and large, for the bolts.",
         "Alice would like the crisps, though not the apple, she's not a fruit person.",
-        "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
         "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
         "that.",
-        "Leave Person B out this time round; both the bottle and the chips are headed to Person A.",
         "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",
         "Jess could use the screws, but leave the hammer alone, she's got her own.",

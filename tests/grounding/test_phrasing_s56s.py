@@ -231,3 +231,43 @@ test_anyone_but56s_near = PhrasingCases().test(
     ("Did you give the chips to anyone but Person A?", None, L24),
     ("The chips went to anyone but Person A.", None, L24),
 )
+
+# -- a person left out, then a request for others (_left_out56s) --------------------------------
+#
+# blind54 #124 #131 and fresh ones in other scenes, each refused on main 085b81dc
+LEFT_OUT = PhrasingCases()
+test_left_out56s = LEFT_OUT.test(
+    (
+        "Leave Person B out this time round; both the bottle and the chips are headed to Person A.",
+        "bottle>A & chips>A",
+        T21,
+    ),
+    (
+        "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
+        "bottle>B",
+        L44,
+    ),
+    ("Leave Carol out this time; give Bob the apple and Alice the cup.", "apple>B & cup>A", CELL),
+    ("Give Bob the cup, and don't let Alice talk you into giving it to her.", "cup>B", CELL),
+    ("Leave Marco out for now, the lemon and the salt go to Lena.", "lemon>B & salt>B", KITCHEN),
+    ("The tongs go to Lena, and don't let Marco sweet-talk you into it.", "tongs>B", KITCHEN),
+    (
+        "Count Mr Lee out today: the jug and the magazine are for Mrs Khan.",
+        "jug>C & magazine>C",
+        WARD,
+    ),
+    ("Give Jess the torch, but don't let Kofi persuade you otherwise.", "torch>B", WORKSHOP),
+)
+
+
+def test_left_out56s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    LEFT_OUT.refused_without((r56s._left_out56s,), monkeypatch)
+
+
+# near sentences: the person left out is the one the request hands to, a request that hands
+# nothing: stay refused
+test_left_out56s_near = PhrasingCases().test(
+    ("Leave Person A out; both the bottle and the chips are headed to Person A.", None, T21),
+    ("Give Person B the cup, and don't let Person B talk you out of it.", None, L44),
+    ("Leave Bob out this time; Alice had the apple.", None, CELL),
+)

@@ -297,12 +297,55 @@ def _anyone_but56s(text: str, lexicon: Lexicon) -> str:
     return f"{text[: m.start()]}{head}{other.name}{text[m.end() :]}"
 
 
+# -- session 56 (12s): a person left out, then a request for others ----------------------------
+#
+# blind54 #131 "Leave Person B out this time round; both the bottle and the chips are headed to
+# Person A." and #124 "The bottle goes to Person B, and don't let Person A talk you into it being
+# hers.": a clause that leaves a person out ('Leave / Count P out (this time (round))', opening the
+# text) or that forbids being talked round by P ("(and / but) don't let P talk / persuade / sweet-
+# talk you into …", closing it) beside a request that hands P nothing: the request alone is what
+# to do, and the clause is dropped. The rest must read, hand something over and give P nothing.
+_LEAVE_OUT56S = re.compiled(
+    rf"^(?:leave|count|keep) (?P<p>{_WHO53S}) out(?: of (?:it|this|things))?(?: (?:this time"
+    r"(?: round| around)?|for now|today|for once))?\s*[;:,.—–-]\s*(?P<rest>\S.*)$",
+    _F,
+)
+_TALKED_ROUND56S = re.compiled(
+    rf"^(?P<rest>.*?\S)\s*[,;]?\s*(?:and |but )?(?:don't|do not|never) let (?P<p>{_WHO53S}) "
+    r"(?:talk|persuade|sweet-talk|sweet talk|con|convince|wheedle|charm|coax) you (?:into|out of|"
+    r"otherwise|round|around)\b[^,;.!?]*(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _left_out56s(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12s): 'Leave P out this time; …' and '…, and don't let P talk you into …'
+    dropped beside a request that hands P nothing (above)."""
+    low = text.lower()
+    if " out" not in low and "let " not in low:
+        return text
+    m = _LEAVE_OUT56S.match(text.strip()) or _TALKED_ROUND56S.match(text.strip())
+    if m is None or not _only_person(m["p"], lexicon):
+        return text
+    (p,) = _ids(m["p"], lexicon)
+    rest = m["rest"]
+    out = f"{rest[:1].upper()}{rest[1:]}" if "end" not in m.groupdict() else f"{rest}{m['end']}"
+    node = _reading(out, lexicon)
+    if node is None:
+        return text
+    given = [t for t in tasks(node) if t.kind == "deliver"]
+    if not given or any(t.target == p for t in tasks(node)):
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _off_the56s,
     _not_for_take56s,
     _nothing_else56s,
     _anyone_but56s,
+    _left_out56s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
