@@ -183,7 +183,6 @@ KNOWN_MISSES = frozenset(
         "crisps.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
         "pinochle.",
-        "Person B gets the chips, leave the bottle where it is, he's got his own.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "The applie goes on the shelf for now.",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
@@ -567,7 +566,6 @@ KNOWN_MISSES = frozenset(
         "that.",
         "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",
-        "Jess could use the screws, but leave the hammer alone, she's got her own.",
         "The apple to Bob, no, sorry, I'm thinking of Carol, give it to her.",
         "Leave the bottle be, actually, on reflection, run it over to Person A.",
         "Chips to Person B, bottle to Person A, oh no, I've said it backwards, swap those round.",

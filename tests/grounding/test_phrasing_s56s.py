@@ -153,6 +153,7 @@ test_off_the56s_near = PhrasingCases().test(
     ("Bob's off the apple, give him the apple.", None, CELL),
     ("Bob's off the apple, he had the cup.", None, CELL),
     ("Bob's off the apple.", None, CELL),
+    ("Alice is off the chips, she has the bottle.", None, CELL),
     ("Crisps to Alice, sorry, I mean Bob, Alice is off crisps.", "chips>B", CELL),
 )
 
@@ -204,6 +205,9 @@ test_nothing_else56s_near = PhrasingCases().test(
     ("Bob wants the apple, and no, she doesn't want anything else.", None, CELL),
     ("Bob wants the apple and Carol the cup, he doesn't want anything else.", None, CELL),
     ("Bob had the apple, he doesn't want anything else.", None, CELL),
+    # 12c (on b28068d5): a holding before it
+    ("Alice has the bottle, and no, she doesn't want anything else.", None, CELL),
+    ("Alice's got the bottle, she doesn't need anything else.", None, CELL),
 )
 
 # -- 'Give the chips to anyone but Person A.' (_anyone_but56s) ----------------------------------
@@ -270,4 +274,35 @@ test_left_out56s_near = PhrasingCases().test(
     ("Leave Person A out; both the bottle and the chips are headed to Person A.", None, T21),
     ("Give Person B the cup, and don't let Person B talk you out of it.", None, L44),
     ("Leave Bob out this time; Alice had the apple.", None, CELL),
+    ("Leave Bob out; Alice has the apple.", None, CELL),
+    ("Leave Bob out; Alice's got the apple.", None, CELL),
+)
+
+# -- '…, but leave the X alone, she's got her own.' (_leave_alone56s) --------------------------
+#
+# blind54 #139 and fresh ones in other scenes, each refused on main 085b81dc
+LEAVE_ALONE = PhrasingCases()
+test_leave_alone56s = LEAVE_ALONE.test(
+    (
+        "Jess could use the screws, but leave the hammer alone, she's got her own.",
+        "screws>B",
+        WORKSHOP,
+    ),
+    ("Bob wants the apple, but leave the cup alone, he's got his own.", "apple>B", CELL),
+    ("Mr Lee needs the jug, but leave the magazine be, he's got his own.", "jug>B", WARD),
+    ("Give Lily the teddy, and leave the bib alone, she's got her own.", "teddy>A", NURSERY),
+)
+
+
+def test_leave_alone56s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    LEAVE_ALONE.refused_without((r56s._leave_alone56s,), monkeypatch)
+
+
+# near sentences: 'she's got them / one' (the request may be done), a past want, the thing asked
+# for left alone: stay refused
+test_leave_alone56s_near = PhrasingCases().test(
+    ("Jess could use the screws, but leave the hammer alone, she's got them.", None, WORKSHOP),
+    ("Jess could use the screws, but leave the hammer alone, she's got one.", None, WORKSHOP),
+    ("Bob wanted the apple, but leave the cup alone, he's got his own.", None, CELL),
+    ("Give Bob the cup, but leave the cup alone.", None, CELL),
 )

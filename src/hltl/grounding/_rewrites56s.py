@@ -14,6 +14,14 @@ from hltl.grounding._rewrites55s import _BE55S, _DET55S, _STATE55S
 from hltl.grounding.lexicon import PRONOUN_SEX, Lexicon, unnamed_sex44l
 from hltl.grounding.tree import Node, Task, tasks
 
+# a holding said of someone ('Alice has the bottle', "she's got it", 'holding'): the rules that
+# drop or restate a clause beside a request leave such a text as it was (12c: "Alice has the
+# bottle, and no, she doesn't want anything else." was read bottle>A)
+_HOLDS56S = re.compiled(
+    r"\b(?:has|have|'s got|'ve got|got|hold|holds|holding|keeps|kept|had)\b", _F
+)
+
+
 # -- session 56 (12s): where a thing is, beside a request for another thing ---------------------
 #
 # "The apple's on the shelf, give Bob the cup." read `apple@shelf & cup>B` (12c, session 55's
@@ -162,7 +170,7 @@ def _off_the56s(text: str, lexicon: Lexicon) -> str:
     (above)."""
     if " off " not in text.lower():
         return text
-    if text.rstrip().endswith("?") or _UNSAFE53S.search(text):
+    if text.rstrip().endswith("?") or _UNSAFE53S.search(text) or _HOLDS56S.search(text):
         return text
     m = _OFF_THE56S.match(text.strip())
     if m is None or not _only_person(m["p"], lexicon):
@@ -223,7 +231,8 @@ def _not_for_take56s(text: str, lexicon: Lexicon) -> str:
 # clause that the one person of the request wants nothing more is "…, and nothing else", which
 # the grammar reads. The request before it names one person, whom the he / she may be (the scene
 # says no other sex) or whom it names again; nothing after but 'thanks / at all'; not after a
-# past want ('Bob wanted the apple, …') or a holding (session 53's `_UNSAFE53S`).
+# past want ('Bob wanted the apple, …') or a holding ('Alice has the bottle, …', 12c; session 53's
+# `_UNSAFE53S`).
 _NOTHING_ELSE56S = re.compiled(
     r"^(?P<head>.+?)\s*[,;]\s*(?:and |but )?(?:no\s*,?\s*)?(?P<pro>he|she|they|"
     r"(?:person [a-z]|(?:mr|mrs|ms|miss|dr) [a-z]+|[a-z]+)) (?:doesn't|does not|don't|do not) "
@@ -244,7 +253,7 @@ def _nothing_else56s(text: str, lexicon: Lexicon) -> str:
     m = _NOTHING_ELSE56S.match(text.strip())
     if m is None:
         return text
-    if _PAST56S.search(m["head"]) or _UNSAFE53S.search(m["head"]):
+    if _PAST56S.search(m["head"]) or _UNSAFE53S.search(m["head"]) or _HOLDS56S.search(m["head"]):
         return text  # 'Bob wanted the apple, …': a past want is left as it was
     people = _ids(m["head"], lexicon, "human")
     if len(people) != 1:
@@ -288,6 +297,8 @@ def _anyone_but56s(text: str, lexicon: Lexicon) -> str:
     people = lexicon.scene.humans
     if len(people) != 2:
         return text
+    if _HOLDS56S.search(text) or _UNSAFE53S.search(text):
+        return text
     m = _ANYONE_BUT56S.search(text)
     if m is None or not _only_person(m["p"], lexicon) or _NOT_BEFORE56S.search(text[: m.start()]):
         return text
@@ -324,6 +335,8 @@ def _left_out56s(text: str, lexicon: Lexicon) -> str:
     low = text.lower()
     if " out" not in low and "let " not in low:
         return text
+    if _HOLDS56S.search(text) or _UNSAFE53S.search(text):
+        return text
     m = _LEAVE_OUT56S.match(text.strip()) or _TALKED_ROUND56S.match(text.strip())
     if m is None or not _only_person(m["p"], lexicon):
         return text
@@ -339,6 +352,45 @@ def _left_out56s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 56 (12s): '…, but leave the X alone, she's got her own.' --------------------------
+#
+# blind54 #139 "Jess could use the screws, but leave the hammer alone, she's got her own.": a
+# thing to be left where it is ('leave the X alone / be / where it is'), after a request for
+# other things, is "…, but not the X", which the grammar reads ("…, but not the hammer, she's got
+# her own." reads). The X one thing of the scene, named whole; the rest must read without it; after
+# it only "(as) she's got her own" (not 'she's got it / them / one', which may say the request is
+# done); not after a past want or a holding.
+_LEAVE_ALONE56S = re.compiled(
+    r"^(?P<head>.+?\S)\s*[,;]\s*(?:but |and |just )?leave (?P<x>(?:the|that|this|those|these) "
+    r"[a-z]+(?: [a-z]+)?) (?:alone|be|where (?:it is|they are)|where it's|where they're|out of it)"
+    r"(?P<tail>\s*[,;]\s*(?:as |since |because |cos )?(?:he|she|they|[a-z]+)(?:'s| has|'ve| have)"
+    r" (?:already )?got (?:his|her|their) own(?: ones?)?)?(?P<end>\s*[.!]?)$",
+    _F,
+)
+
+
+def _leave_alone56s(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12s): "…, but leave the X alone" said "…, but not the X" (above)."""
+    if "leave " not in text.lower():
+        return text
+    m = _LEAVE_ALONE56S.match(text.strip())
+    if m is None or _PAST56S.search(m["head"]) or _HOLDS56S.search(m["head"]):
+        return text  # 'Bob wanted the apple, …': a past want, a holding: left as it was
+    if _UNSAFE53S.search(m["head"]):
+        return text
+    x = _ids(m["x"], lexicon)
+    bare = m["x"].split(" ", 1)[1]
+    named = _names(bare, lexicon)
+    if not x or x != _ids(m["x"], lexicon, "object") or len(named) != 1:
+        return text
+    if named[0].text.lower() != bare.lower():
+        return text
+    out = f"{m['head']}, but not {m['x']}{m['tail'] or ''}{m['end']}"
+    if _read_without44r(out, text, m["x"], lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _off_the56s,
@@ -346,6 +398,7 @@ _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _nothing_else56s,
     _anyone_but56s,
     _left_out56s,
+    _leave_alone56s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
