@@ -562,8 +562,6 @@ KNOWN_MISSES = frozenset(
         "marking to do tonight.",
         "Kofi needs the pair of spanners, small and large, for the bolts.",
         "Alice would like the crisps, though not the apple, she's not a fruit person.",
-        "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
-        "that.",
         "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",
         "The apple to Bob, no, sorry, I'm thinking of Carol, give it to her.",

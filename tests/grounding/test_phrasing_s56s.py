@@ -306,3 +306,43 @@ test_leave_alone56s_near = PhrasingCases().test(
     ("Bob wanted the apple, but leave the cup alone, he's got his own.", None, CELL),
     ("Give Bob the cup, but leave the cup alone.", None, CELL),
 )
+
+# -- 'The X holds no interest for P, it's the Y he's been eyeing, so …' (_no_interest56s) -------
+#
+# blind54 #125 and fresh ones in other scenes, each refused on main 085b81dc (negation)
+NO_INTEREST = PhrasingCases()
+test_no_interest56s = NO_INTEREST.test(
+    (
+        "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
+        "that.",
+        "apple>B",
+        F41,
+    ),
+    ("The cup holds no interest for Person B, give him the apple.", "apple>B", F41),
+    ("Bob has no interest in the apple, it's the cup he's been eyeing.", "cup>B", CELL),
+    ("Mr Novak has no interest in the lemon, pass him the salt.", "salt>C", KITCHEN),
+    (
+        "The magazine holds no interest for Mr Lee, it's the jug he's been eyeing, so bring him "
+        "that.",
+        "jug>B",
+        WARD,
+    ),
+)
+
+
+def test_no_interest56s_refused_without(monkeypatch: pytest.MonkeyPatch) -> None:
+    NO_INTEREST.refused_without((r56s._no_interest56s,), monkeypatch)
+
+
+# near sentences: the thing itself to another person, a holding, a done request: stay refused
+test_no_interest56s_near = PhrasingCases().test(
+    ("Bob isn't interested in the apple, give it to Alice.", None, CELL),
+    ("Bob isn't interested in the apple, he has the cup.", None, CELL),
+    (
+        "The apple holds no interest for Bob, it's the cup he's been eyeing, I gave it him.",
+        None,
+        CELL,
+    ),
+    ("Bob's off the apple, so give him the cup, I gave it him.", None, CELL),
+    ("Leave Carol out; give Bob the apple, I handed it over already.", None, CELL),
+)

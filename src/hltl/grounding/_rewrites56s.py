@@ -20,6 +20,12 @@ from hltl.grounding.tree import Node, Task, tasks
 _HOLDS56S = re.compiled(
     r"\b(?:has|have|'s got|'ve got|got|hold|holds|holding|keeps|kept|had)\b", _F
 )
+# a thing said as given already ('I gave it him', 'handed over', 'sent'): the same rules leave a
+# text holding one of these as it was (the refusals of a done request are asked of the text as
+# said, not of a rule's restatement of it)
+_DONE56S = re.compiled(
+    r"\b(?:gave|given|handed|passed|brought|took|taken|sent|delivered|done|already|dropped)\b", _F
+)
 
 
 # -- session 56 (12s): where a thing is, beside a request for another thing ---------------------
@@ -170,6 +176,8 @@ def _off_the56s(text: str, lexicon: Lexicon) -> str:
     (above)."""
     if " off " not in text.lower():
         return text
+    if _DONE56S.search(text):
+        return text
     if text.rstrip().endswith("?") or _UNSAFE53S.search(text) or _HOLDS56S.search(text):
         return text
     m = _OFF_THE56S.match(text.strip())
@@ -208,6 +216,8 @@ def _not_for_take56s(text: str, lexicon: Lexicon) -> str:
     """Session 56 (12s): "The X's not for P, it's for Q, take it to him." said "The X isn't for
     P, it's for Q." (above)."""
     if "for " not in text.lower():
+        return text
+    if _DONE56S.search(text):
         return text
     m = _NOT_FOR_TAKE56S.match(text.strip())
     if m is None or not _only_person(m["p"], lexicon) or not _only_person(m["q"], lexicon):
@@ -249,6 +259,8 @@ def _nothing_else56s(text: str, lexicon: Lexicon) -> str:
     """Session 56 (12s): "…, and no, she doesn't want anything else." said "…, and nothing
     else." (above)."""
     if " else" not in text.lower():
+        return text
+    if _DONE56S.search(text):
         return text
     m = _NOTHING_ELSE56S.match(text.strip())
     if m is None:
@@ -294,6 +306,8 @@ def _anyone_but56s(text: str, lexicon: Lexicon) -> str:
     low = text.lower()
     if "any" not in low and "some" not in low:
         return text
+    if _DONE56S.search(text):
+        return text
     people = lexicon.scene.humans
     if len(people) != 2:
         return text
@@ -335,6 +349,8 @@ def _left_out56s(text: str, lexicon: Lexicon) -> str:
     low = text.lower()
     if " out" not in low and "let " not in low:
         return text
+    if _DONE56S.search(text):
+        return text
     if _HOLDS56S.search(text) or _UNSAFE53S.search(text):
         return text
     m = _LEAVE_OUT56S.match(text.strip()) or _TALKED_ROUND56S.match(text.strip())
@@ -373,6 +389,8 @@ def _leave_alone56s(text: str, lexicon: Lexicon) -> str:
     """Session 56 (12s): "…, but leave the X alone" said "…, but not the X" (above)."""
     if "leave " not in text.lower():
         return text
+    if _DONE56S.search(text):
+        return text
     m = _LEAVE_ALONE56S.match(text.strip())
     if m is None or _PAST56S.search(m["head"]) or _HOLDS56S.search(m["head"]):
         return text  # 'Bob wanted the apple, …': a past want, a holding: left as it was
@@ -391,6 +409,58 @@ def _leave_alone56s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 56 (12s): 'The X holds no interest for P, it's the Y he's been eyeing, so …' -------
+#
+# blind54 #125: a thing a person has no interest in ('the X holds / has no interest for P', 'P
+# has no interest in / isn't interested in the X'), then a request: said "P doesn't want the X,
+# …", which session 39's rules read; "it's the Y (that) he's been eyeing (up)" in the rest is
+# "it's the Y he wants". P one person named; the X one thing of the scene, named whole; the
+# reading hands the X to no one; no holding, no question.
+_NO_INTEREST56S = re.compiled(
+    r"^(?:(?P<x>(?:the|that|this) [a-z]+(?: [a-z]+)?) (?:holds|has) (?:no|zero|not the slightest|"
+    rf"little) (?:interest|appeal) for (?P<p>{_WHO53S})|(?P<p2>{_WHO53S}) (?:has no interest in|"
+    r"isn't interested in|is not interested in|has zero interest in) (?P<x2>(?:the|that|this) "
+    r"[a-z]+(?: [a-z]+)?))(?P<rest>\s*[,;]\s*\S.*)$",
+    _F,
+)
+_EYEING56S = re.compiled(
+    r"\b(?P<head>it's (?:the|that|this) [a-z]+(?: [a-z]+)? (?:that )?(?:he|she))(?:'s| has) been "
+    r"eyeing(?: up)?\b",
+    _F,
+)
+
+
+def _no_interest56s(text: str, lexicon: Lexicon) -> str:
+    """Session 56 (12s): "The X holds no interest for P, …" said "P doesn't want the X, …"
+    (above)."""
+    if "interest" not in text.lower():
+        return text
+    if _DONE56S.search(text):
+        return text
+    if text.rstrip().endswith("?") or _UNSAFE53S.search(text):
+        return text
+    m = _NO_INTEREST56S.match(text.strip())
+    if m is None:
+        return text
+    p, x = m["p"] or m["p2"], m["x"] or m["x2"]
+    if not _only_person(p, lexicon):
+        return text
+    bare = x.split(" ", 1)[1]
+    named = _names(bare, lexicon)
+    ids = _ids(x, lexicon)
+    if not ids or ids != _ids(x, lexicon, "object") or len(named) != 1:
+        return text
+    if named[0].text.lower() != bare.lower():
+        return text
+    rest = _EYEING56S.sub(lambda e: f"{e['head']} wants", m["rest"])
+    if _HOLDS56S.search(rest):
+        return text  # "…, he has the cup": a holding
+    out = f"{p} doesn't want {x}{rest}"
+    if _read_without44r(out, text, x, lexicon) == text:
+        return text
+    return _plain51s(out, text, lexicon)
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _off_the56s,
@@ -399,6 +469,7 @@ _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _anyone_but56s,
     _left_out56s,
     _leave_alone56s,
+    _no_interest56s,
 )
 # the normaliser's rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
