@@ -346,3 +346,28 @@ test_no_interest56s_near = PhrasingCases().test(
     ("Bob's off the apple, so give him the cup, I gave it him.", None, CELL),
     ("Leave Carol out; give Bob the apple, I handed it over already.", None, CELL),
 )
+
+# -- a thing handed to the person said to be off it (_was_off56s, a check) ----------------------
+#
+# each read on main 085b81dc as handing the thing too (12s's probe: "Bob was off the apple, so
+# give him the cup." -> apple>B & cup>B)
+WAS_OFF = [
+    ("Bob was off the apple, so give him the cup.", CELL),
+    ("Bob's been off the apple, give him the cup.", CELL),
+    ("Alice was off the crisps, so hand her the apple.", CELL),
+    ("Mr Novak was off the lemon, pass him the salt.", KITCHEN),
+    ("Jess was off the torch, give her the drill.", WORKSHOP),
+]
+
+
+@pytest.mark.parametrize(("text", "scene"), WAS_OFF)
+def test_was_off56s_refused(text: str, scene: Scene) -> None:
+    assert_case(text, None, scene)
+
+
+def test_was_off56s_is_what_refuses(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without the check each is read (the thing handed over too)."""
+    kept = tuple(c for c in offline._CHECKS if c is not r56s._was_off56s)
+    monkeypatch.setattr(offline, "_CHECKS", kept)
+    for text, scene in WAS_OFF:
+        assert tree(text, scene) is not None, text

@@ -461,6 +461,37 @@ def _no_interest56s(text: str, lexicon: Lexicon) -> str:
     return _plain51s(out, text, lexicon)
 
 
+# -- session 56 (12s): 'Bob was off the apple, so give him the cup.' ----------------------------
+#
+# read `apple>B & cup>B` on main 085b81dc (12s's own probe): a person 'off' a thing (now or before:
+# 's / is / was / has been / had gone off the X) is not to be handed that thing: a reading that
+# hands the X to that person is refused.
+_WAS_OFF56S = re.compiled(
+    rf"\b(?P<p>{_WHO53S})(?:'s| is| was| has been| had been|'d been|'s been| has gone| had gone|"
+    r"'d gone| went)(?: (?:gone|right|really|a bit|totally|properly|completely))? off (?:the |her "
+    r"|his |their )?(?P<x>[a-z]+(?: [a-z]+)?)",
+    _F,
+)
+
+
+def _was_off56s(text: str, node: Node, lexicon: Lexicon) -> None:
+    """Session 56 (12s): a thing handed to the person said to be off it (above)."""
+    if " off " not in text.lower():
+        return
+    given = {(t.obj, t.target) for t in tasks(node) if t.kind == "deliver"}
+    if not given:
+        return
+    for m in _WAS_OFF56S.finditer(text):
+        people = _ids(m["p"], lexicon, "human")
+        things = _ids(m["x"], lexicon, "object") | _ids(m["x"].split(" ")[0], lexicon, "object")
+        for x, p in given:
+            if p in people and x in things:
+                raise GroundingError(
+                    f"{m.group(0)!r} says {m['p']} is off the {x}, yet the reading hands it to "
+                    f"{m['p']}: say who gets what"
+                )
+
+
 # the normaliser's first rewrites (wired into normalise._STEPS19, before the session-56 ones)
 _STEPS56S_FIRST: tuple[Callable[[str, Lexicon], str], ...] = (
     _off_the56s,
@@ -476,4 +507,4 @@ _STEPS56S: tuple[Callable[[str, Lexicon], str], ...] = ()
 # refusals asked of the text before it is read (offline._parse, after the session-56 ones)
 REFUSE56S: tuple[Callable[[str, Lexicon], None], ...] = (_not_p_then56s,)
 # checks of the whole instruction's reading (offline.parse_instruction, after the session-56 ones)
-CHECK56S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_where_is56s,)
+CHECK56S: tuple[Callable[[str, Node, Lexicon], None], ...] = (_where_is56s, _was_off56s)
