@@ -276,6 +276,9 @@ test_left_out56s_near = PhrasingCases().test(
     ("Leave Bob out this time; Alice had the apple.", None, CELL),
     ("Leave Bob out; Alice has the apple.", None, CELL),
     ("Leave Bob out; Alice's got the apple.", None, CELL),
+    # a past want after it: left as it was
+    ("Leave Lena out; the knife was for Marco.", None, KITCHEN),
+    ("Leave Lena out this time; Marco wanted the knife.", None, KITCHEN),
 )
 
 # -- '…, but leave the X alone, she's got her own.' (_leave_alone56s) --------------------------
