@@ -183,7 +183,6 @@ KNOWN_MISSES = frozenset(
         "crisps.",
         "Two things for two people: Person A's the chips, Person B's the bottle, both off to "
         "pinochle.",
-        "Person B gets the chips, leave the bottle where it is, he's got his own.",
         "Bottle up on the shelf, oh, hang on, I meant hand it to Person A.",
         "The applie goes on the shelf for now.",
         # blind39 (tuned on in session 41): refusals left at its one measurement (docs/grounding.md)
@@ -500,18 +499,8 @@ KNOWN_MISSES = frozenset(
         "Both of the books, the red one as well as the green one, go to Mrs Ortiz, she's got "
         "marking to do tonight.",
         "Alice would like the crisps, though not the apple, she's not a fruit person.",
-        "The bottle's not for Alice, it's for Bob, take it to him.",
-        "The bottle goes to Person B, and don't let Person A talk you into it being hers.",
-        "The cup holds no interest for Person B, it's the apple he's been eyeing, so give him "
-        "that.",
-        "Person A's off the chips this week, just give her the bottle.",
-        "Give the chips to anyone but Person A.",
-        "Person A wants the bottle, and no, she doesn't want anything else.",
-        "Leave Person B out this time round; both the bottle and the chips are headed to Person A.",
         "Mr Lee wants a blanket but not the grey one, he swears it makes him itch, so the other.",
-        "Lena's gone off the white plate for some reason, bring her the blue one instead.",
         "Not the red block for Lily, she keeps chewing it, give her the green.",
-        "Jess could use the screws, but leave the hammer alone, she's got her own.",
     }
 )
 # refused without all the readings the refusal should list (docs/grounding.md reports them)

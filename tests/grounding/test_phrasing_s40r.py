@@ -16,6 +16,7 @@ from hltl.grounding import (
     _rewrites44r,
     _rewrites54r,
     _rewrites55s,
+    _rewrites56s,
     offline,
 )
 from hltl.grounding._normalise4 import _placed_then34r, _where_was_i36r
@@ -313,6 +314,8 @@ def test_refused_without_these_steps(monkeypatch: pytest.MonkeyPatch) -> None:
             _rewrites54r._he_said54r,
             # session 55 (12s): 'the green one' after 'the red book' said 'the green book' reads it
             _rewrites55s._bare_adj55s,
+            # session 56 (12s): "P's gone off the X, …" said "P doesn't want the X, …" reads it
+            _rewrites56s._off_the56s,
         ),
         monkeypatch,
     )

@@ -13,7 +13,7 @@ from __future__ import annotations
 import pytest
 
 from hltl.errors import GroundingError
-from hltl.grounding import _rewrites41l, offline
+from hltl.grounding import _rewrites41l, _rewrites56s, offline
 from hltl.world.scene import load_scene
 from tests.grounding.helpers import CELL, KITCHEN, ROOT, WARD, WORKSHOP, PhrasingCases
 
@@ -138,11 +138,10 @@ def test_each_taken_back_reads_without_the_check(
 ) -> None:
     from hltl.bench.grounding import show_tree
 
-    monkeypatch.setattr(
-        offline,
-        "_CHECKS",
-        tuple(c for c in offline._CHECKS if c is not _rewrites41l._taken_back41l),
-    )
+    # session 56 (12s): _was_off56s refuses 'Bob has gone off the cup' beside a handover of the
+    # cup to him too (same family), so it is taken out as well
+    off = (_rewrites41l._taken_back41l, _rewrites56s._was_off56s)
+    monkeypatch.setattr(offline, "_CHECKS", tuple(c for c in offline._CHECKS if c not in off))
     assert show_tree(offline.parse_instruction(text, CELL)) == was
 
 
