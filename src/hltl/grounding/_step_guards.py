@@ -2149,6 +2149,7 @@ GUARDS: dict[str, Entry | str] = {
             ("_rx", ("function", "hltl.grounding._normalise1:_rx", "c45b8b30fae68122")),
         ),
     ),
+    "hltl.grounding._normalise2:_described29": ("d2656c741d3902ed", ((",",), (), False), ()),
     "hltl.grounding._normalise2:_do_that34": ("20bdb2d4971a3232", (("so do ",), (), False), ()),
     "hltl.grounding._normalise2:_doing25": (
         "685d32d139faf3d4",
@@ -12220,6 +12221,7 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
+    "hltl.grounding._rewrites43s:_placed_for43s": ("537cf8ea7fbb4008", ((), (" for ",), False), ()),
     "hltl.grounding._rewrites43s:_priority43s": (
         "b0a658bf3f82d735",
         (
@@ -13452,6 +13454,11 @@ GUARDS: dict[str, Entry | str] = {
         ((), ("prefer", "rather"), False),
         (),
     ),
+    "hltl.grounding._rewrites48r:_said_again_for48r": (
+        "959e170eb16aa0ce",
+        ((), (" for ", " to "), False),
+        (),
+    ),
     "hltl.grounding._rewrites48r:_scattered48r": (
         "c9c70ab14646e0da",
         ((), ("like", "place", "sea", "sieve"), False),
@@ -13533,6 +13540,15 @@ GUARDS: dict[str, Entry | str] = {
         (),
     ),
     "hltl.grounding._rewrites49:_in_way49": ("346d99fa7f34acad", ((" way",), (), False), ()),
+    "hltl.grounding._rewrites49:_last_of49": (
+        "03f553ec4a64075f",
+        (
+            ("few of the ", "half of the ", "last of the ", "remainder of the ", "rest of the "),
+            (),
+            False,
+        ),
+        (),
+    ),
     "hltl.grounding._rewrites49:_left49": ("e237dab75b148fe3", ((" left ",), (), False), ()),
     "hltl.grounding._rewrites49:_midway49": (
         "94bd2ab25158e3d2",
@@ -14568,6 +14584,22 @@ GUARDS: dict[str, Entry | str] = {
     "hltl.grounding._rewrites54:_after_had54": (
         "1d01440e2cd13b45",
         ((), ("done with", "finished", "had ", "used "), False),
+        (),
+    ),
+    "hltl.grounding._rewrites54:_before_gets54": (
+        "cefdc6cba8984c97",
+        (
+            (),
+            (
+                "before any",
+                "before it",
+                "before some",
+                "before that",
+                "before they",
+                "before those",
+            ),
+            False,
+        ),
         (),
     ),
     "hltl.grounding._rewrites54:_cant_get_up54": (

@@ -448,18 +448,24 @@ class _Reader:
                 or not isinstance(elt, ast.Compare)
                 or len(elt.ops) != 1
                 or not isinstance(elt.ops[0], ast.In)
-                or not isinstance(elt.left, ast.Name)
-                or elt.left.id != comp.target.id
             ):
                 raise _Unread("any")
             fold = self._hay(elt.comparators[0])
-            return frozenset(("in", w, fold) for w in self._words(comp.iter))
+            listed = self._words(comp.iter)
+            if isinstance(elt.left, ast.Name) and elt.left.id == comp.target.id:
+                return frozenset(("in", w, fold) for w in listed)
+            # session 56 (12p): 'any(f"{w} of the " in text for w in ("last", …))': each
+            # word in the f-string (no conversion or format), the rest written out
+            return frozenset(("in", said, fold) for said in self._filled(elt.left, comp, listed))
         return self._search(node)
 
     def absent(self, node: ast.expr) -> frozenset[Atom]:
         """Atoms such that ``node`` is true wherever none of them is present in the text."""
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
             return self.present(node.operand)
+        counted = self._few(node)
+        if counted is not None:
+            return counted
         if self._both_same(node, ast.Eq):
             return frozenset()  # 'out == text': true while both are the text
         helper = self._compared_helper(node, ast.Eq)
@@ -487,6 +493,98 @@ class _Reader:
                     return self.matches[left.id]
                 return self._search(left)
         raise _Unread("test")
+
+    def _filled(
+        self, node: ast.expr, comp: ast.comprehension, words: tuple[str, ...]
+    ) -> tuple[str, ...]:
+        """Session 56 (12p): the strings of the f-string ``node`` with each of ``words`` for the
+        comprehension's name (its other parts strings the reader reads)."""
+        if not isinstance(node, ast.JoinedStr) or not isinstance(comp.target, ast.Name):
+            raise _Unread("any")
+        name = comp.target.id
+        parts: list[str | None] = []  # None: the word
+        for part in node.values:
+            if isinstance(part, ast.FormattedValue):
+                if part.conversion != -1 or part.format_spec is not None:
+                    raise _Unread("format")
+                if isinstance(part.value, ast.Name) and part.value.id == name:
+                    parts.append(None)
+                    continue
+                parts.append(self._str(part.value))
+            else:
+                parts.append(self._str(part))
+        if None not in parts:
+            raise _Unread("any")
+        return tuple("".join(w if p is None else p for p in parts) for w in words)
+
+    def _counts(self, node: ast.expr) -> frozenset[Atom]:
+        """Session 56 (12p): the atoms of a count that is 0 wherever none of them is present:
+        ``text.count(W)`` (of the text, lower-cased or a stretch of it), such counts added,
+        or ``sum(low.count(w) for w in WORDS)``."""
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+            return self._counts(node.left) | self._counts(node.right)
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr == "count"
+            and len(node.args) == 1
+            and not node.keywords
+        ):
+            fold = self._part(node.func.value)
+            return frozenset({("in", self._str(node.args[0]), fold)})
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id == "sum"
+            and "sum" not in self.glob
+            and "sum" not in self.locals
+            and len(node.args) == 1
+            and not node.keywords
+            and isinstance(node.args[0], ast.GeneratorExp)
+            and len(node.args[0].generators) == 1
+        ):
+            gen = node.args[0]
+            comp = gen.generators[0]
+            elt = gen.elt
+            if (
+                comp.ifs
+                or comp.is_async
+                or not isinstance(comp.target, ast.Name)
+                or not isinstance(elt, ast.Call)
+                or not isinstance(elt.func, ast.Attribute)
+                or elt.func.attr != "count"
+                or len(elt.args) != 1
+                or elt.keywords
+                or not isinstance(elt.args[0], ast.Name)
+                or elt.args[0].id != comp.target.id
+            ):
+                raise _Unread("sum")
+            fold = self._part(elt.func.value)
+            return frozenset(("in", w, fold) for w in self._words(comp.iter))
+        raise _Unread("count")
+
+    def _few(self, node: ast.expr) -> frozenset[Atom] | None:
+        """Session 56 (12p): the atoms of a test of a count (``_counts``) true where the count is
+        0 — ``< N`` or ``!= N`` (N ≥ 1), ``<= N`` (N ≥ 0), ``== 0`` — so true wherever none of
+        them is present; None where ``node`` is no such test."""
+        if (
+            not isinstance(node, ast.Compare)
+            or len(node.ops) != 1
+            or not isinstance(node.comparators[0], ast.Constant)
+            or type(node.comparators[0].value) is not int
+        ):
+            return None
+        op, n = node.ops[0], node.comparators[0].value
+        if not (
+            (isinstance(op, ast.Lt | ast.NotEq) and n >= 1)
+            or (isinstance(op, ast.LtE) and n >= 0)
+            or (isinstance(op, ast.Eq) and n == 0)
+        ):
+            return None
+        try:
+            return self._counts(node.left)
+        except _Unread:
+            return None
 
     def _both_same(self, node: ast.expr, op: type[ast.cmpop]) -> bool:
         """Whether ``node`` compares two names that are the text with ``op`` (session 49)."""
