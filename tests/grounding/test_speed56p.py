@@ -19,7 +19,11 @@ from hltl.grounding import _normalise3 as n3
 from hltl.grounding import (
     _rewrites41,
     _rewrites42,
+    _rewrites43s,
     _rewrites44,
+    _rewrites48r,
+    _rewrites49,
+    _rewrites54,
     _step_guards,
     normalise,
     stepguard,
@@ -60,6 +64,11 @@ _REWRITTEN = (
     "Could you spare a minute to give Carol the bottle?",
     "With all due respect, the bottle to Alice, thanking you.",
     "Excuse the mess, the chips to Bob",
+    "Put the crisps on the table before it gets knocked over.",
+    "Alice requires the bottle for the last of the parcels.",
+    "The chips for Person B, oh no hang on, the bottle for Person B.",
+    "Give Carol the chips, the bottle on the table for Bob.",
+    "The fizzy stuff, the bottle, should go to Bob.",
 )
 
 
@@ -99,6 +108,12 @@ _NOW_GUARDED: tuple[_Step, ...] = (
     n1._a_kind_for,
     n1._wanting_that,
     n1._possessed14,
+    # an f-string in any(), a count test (below)
+    _rewrites54._before_gets54,
+    _rewrites49._last_of49,
+    _rewrites48r._said_again_for48r,
+    _rewrites43s._placed_for43s,
+    n2._described29,
 )
 
 
@@ -372,3 +387,121 @@ def test_a_changed_tuple_of_patterns_drops_the_guard(
     assert entry is not None
     monkeypatch.setitem(globals(), name, value)
     assert stepguard.guard(step, entry) is None
+
+
+# -- the reader: an f-string in any(), a test of a count ------------------------------------------
+
+_TOY_WORDS = ("last", "rest")
+
+
+def _toy_fstring(text: str, lexicon: Lexicon) -> str:
+    if not any(f"{w} of the " in text.lower() for w in ("last", "rest")):
+        return text
+    return text + "!"
+
+
+def _toy_fstring_module(text: str, lexicon: Lexicon) -> str:
+    if not any(f"the {w} " in text for w in _TOY_WORDS):
+        return text
+    return text + "!"
+
+
+def _toy_fstring_format(text: str, lexicon: Lexicon) -> str:
+    if not any(f"{w!r} of" in text for w in ("last", "rest")):  # a conversion: not read
+        return text
+    return text + "!"
+
+
+def _toy_fstring_other(text: str, lexicon: Lexicon) -> str:
+    said = "x"
+    if not any(f"{said} of" in text for _w in ("last", "rest")):  # not the loop's name
+        return text
+    return text + "!"
+
+
+def _toy_count(text: str, lexicon: Lexicon) -> str:
+    if text.count(",") < 2:
+        return text
+    return text + "!"
+
+
+def _toy_counts(text: str, lexicon: Lexicon) -> str:
+    low = text.lower()
+    if low.count(" for ") + low.count(" to ") <= 1:
+        return text
+    return text + "!"
+
+
+def _toy_count_once(text: str, lexicon: Lexicon) -> str:
+    if text.lower().count(" for ") != 1:
+        return text
+    return text + "!"
+
+
+def _toy_count_sum(text: str, lexicon: Lexicon) -> str:
+    low = text.lower()
+    if sum(low.count(w) for w in ("no", "sorry")) < 2:
+        return text
+    return text + "!"
+
+
+def _toy_count_more(text: str, lexicon: Lexicon) -> str:
+    if text.count(",") > 1:  # true only where a comma is: 'return text' where it is not read
+        return text
+    return text + "!"
+
+
+def _toy_count_zero(text: str, lexicon: Lexicon) -> str:
+    if text.count(",") < 0:  # never true: not read
+        return text
+    return text + "!"
+
+
+def _toy_count_plus(text: str, lexicon: Lexicon) -> str:
+    if text.count(",") + 1 < 2:  # not only counts: not read
+        return text
+    return text + "!"
+
+
+@pytest.mark.parametrize(
+    ("step", "want"),
+    [
+        (_toy_fstring, ((), ("last of the ", "rest of the "), False)),
+        (_toy_fstring_module, (("the last ", "the rest "), (), False)),
+        (_toy_fstring_format, None),
+        (_toy_fstring_other, None),
+        (_toy_count, ((",",), (), False)),
+        (_toy_counts, ((), (" for ", " to "), False)),
+        (_toy_count_once, ((), (" for ",), False)),
+        (_toy_count_sum, ((), ("no", "sorry"), False)),
+        (_toy_count_more, None),
+        (_toy_count_zero, None),
+        (_toy_count_plus, None),
+    ],
+    ids=lambda x: getattr(x, "__name__", "want"),
+)
+def test_an_fstring_in_any_and_a_count_are_read(step: _Step, want: stepguard.Guard | None) -> None:
+    entry = stepguard.read_guard(step)
+    assert (entry and entry[1]) == want
+    if entry is None:
+        return
+    assert stepguard.guard(step, entry) == want
+    said = (
+        "Give the last of the crisps to Bob, the rest of the apples to Alice, thanks",
+        "the rest for Bob, for Alice, to Carol",
+        "No, sorry, no",
+        "give Bob the cup",
+        "for Bob",
+        "the cup for Bob",
+    )
+    for text in said:
+        if not stepguard.may_act(entry[1], text, text.lower(), text.isascii()):
+            assert step(text, Lexicon.of(CELL)) == text
+    assert any(step(t, Lexicon.of(CELL)) != t for t in said)  # not vacuous
+
+
+def test_a_changed_tuple_of_fstring_words_drops_the_guard(monkeypatch: pytest.MonkeyPatch) -> None:
+    entry = stepguard.read_guard(_toy_fstring_module)
+    assert entry is not None
+    monkeypatch.setitem(globals(), "_TOY_WORDS", ("last",))
+    assert stepguard.guard(_toy_fstring_module, entry) is None
