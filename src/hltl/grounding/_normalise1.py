@@ -3748,13 +3748,25 @@ def _possessed14(text: str, lexicon: Lexicon) -> str:
 def _said14(text: str, lexicon: Lexicon) -> str:
     """Ways people close, favour, hedge and dictate that session 14's probes showed ('do me a
     favour and', '…, eh', '… and Bob's your uncle', 'like I said', 'new line'), taken off where
-    they name nothing; and wants said another way ('could do with', 'will be wanting', 'Bob
-    mentioned he'd like', 'ordered', "Bob's request: …"), rewritten when their subject is one
-    person of the scene."""
+    they name nothing. Session 56 (12p): the rest of what the step did is the steps after it in
+    the normaliser (_said14_spaced56p, _wants14_56p, _a_kind_for, _wanting_that, _possessed14,
+    _pronoun_said), in the same order, so that the step guard reads the word-gated ones."""
     for pattern, repl in _SAID14:
         text = _drop(pattern, text, lexicon, repl)
+    return text
+
+
+def _said14_spaced56p(text: str, _lexicon: Lexicon) -> str:
+    """Session 56 (12p): _said14's text single-spaced, a full stop opening it taken off (as the
+    step did after its rewrites)."""
     text = " ".join(text.split()).strip()
-    text = re.sub(r"^[.\s]+", "", text)
+    return re.sub(r"^[.\s]+", "", text)
+
+
+def _wants14_56p(text: str, lexicon: Lexicon) -> str:
+    """Wants said another way ('could do with', 'will be wanting', 'Bob mentioned he'd like',
+    'ordered', "Bob's request: …"), rewritten when their subject is one person of the scene
+    (session 14's _said14; a step of its own since session 56)."""
     for pattern, repl in _WANTS14:
         m = re.search(pattern, text, _F)
         if m is None:
@@ -3767,9 +3779,7 @@ def _said14(text: str, lexicon: Lexicon) -> str:
         ):
             continue
         text = text[: m.start()] + m.expand(repl) + text[m.end() :]
-    text = re.sub(r"\bwants the the\b", "wants the", text, flags=_F)
-    text = _a_kind_for(text, lexicon)
-    return _pronoun_said(_possessed14(_wanting_that(text, lexicon), lexicon), lexicon)
+    return re.sub(r"\bwants the the\b", "wants the", text, flags=_F)
 
 
 # -- remarks read by kind: a clause that is provably inert ----------------------------------------

@@ -448,18 +448,24 @@ class _Reader:
                 or not isinstance(elt, ast.Compare)
                 or len(elt.ops) != 1
                 or not isinstance(elt.ops[0], ast.In)
-                or not isinstance(elt.left, ast.Name)
-                or elt.left.id != comp.target.id
             ):
                 raise _Unread("any")
             fold = self._hay(elt.comparators[0])
-            return frozenset(("in", w, fold) for w in self._words(comp.iter))
+            listed = self._words(comp.iter)
+            if isinstance(elt.left, ast.Name) and elt.left.id == comp.target.id:
+                return frozenset(("in", w, fold) for w in listed)
+            # session 56 (12p): 'any(f"{w} of the " in text for w in ("last", …))': each
+            # word in the f-string (no conversion or format), the rest written out
+            return frozenset(("in", said, fold) for said in self._filled(elt.left, comp, listed))
         return self._search(node)
 
     def absent(self, node: ast.expr) -> frozenset[Atom]:
         """Atoms such that ``node`` is true wherever none of them is present in the text."""
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
             return self.present(node.operand)
+        counted = self._few(node)
+        if counted is not None:
+            return counted
         if self._both_same(node, ast.Eq):
             return frozenset()  # 'out == text': true while both are the text
         helper = self._compared_helper(node, ast.Eq)
@@ -487,6 +493,98 @@ class _Reader:
                     return self.matches[left.id]
                 return self._search(left)
         raise _Unread("test")
+
+    def _filled(
+        self, node: ast.expr, comp: ast.comprehension, words: tuple[str, ...]
+    ) -> tuple[str, ...]:
+        """Session 56 (12p): the strings of the f-string ``node`` with each of ``words`` for the
+        comprehension's name (its other parts strings the reader reads)."""
+        if not isinstance(node, ast.JoinedStr) or not isinstance(comp.target, ast.Name):
+            raise _Unread("any")
+        name = comp.target.id
+        parts: list[str | None] = []  # None: the word
+        for part in node.values:
+            if isinstance(part, ast.FormattedValue):
+                if part.conversion != -1 or part.format_spec is not None:
+                    raise _Unread("format")
+                if isinstance(part.value, ast.Name) and part.value.id == name:
+                    parts.append(None)
+                    continue
+                parts.append(self._str(part.value))
+            else:
+                parts.append(self._str(part))
+        if None not in parts:
+            raise _Unread("any")
+        return tuple("".join(w if p is None else p for p in parts) for w in words)
+
+    def _counts(self, node: ast.expr) -> frozenset[Atom]:
+        """Session 56 (12p): the atoms of a count that is 0 wherever none of them is present:
+        ``text.count(W)`` (of the text, lower-cased or a stretch of it), such counts added,
+        or ``sum(low.count(w) for w in WORDS)``."""
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+            return self._counts(node.left) | self._counts(node.right)
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr == "count"
+            and len(node.args) == 1
+            and not node.keywords
+        ):
+            fold = self._part(node.func.value)
+            return frozenset({("in", self._str(node.args[0]), fold)})
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id == "sum"
+            and "sum" not in self.glob
+            and "sum" not in self.locals
+            and len(node.args) == 1
+            and not node.keywords
+            and isinstance(node.args[0], ast.GeneratorExp)
+            and len(node.args[0].generators) == 1
+        ):
+            gen = node.args[0]
+            comp = gen.generators[0]
+            elt = gen.elt
+            if (
+                comp.ifs
+                or comp.is_async
+                or not isinstance(comp.target, ast.Name)
+                or not isinstance(elt, ast.Call)
+                or not isinstance(elt.func, ast.Attribute)
+                or elt.func.attr != "count"
+                or len(elt.args) != 1
+                or elt.keywords
+                or not isinstance(elt.args[0], ast.Name)
+                or elt.args[0].id != comp.target.id
+            ):
+                raise _Unread("sum")
+            fold = self._part(elt.func.value)
+            return frozenset(("in", w, fold) for w in self._words(comp.iter))
+        raise _Unread("count")
+
+    def _few(self, node: ast.expr) -> frozenset[Atom] | None:
+        """Session 56 (12p): the atoms of a test of a count (``_counts``) true where the count is
+        0 — ``< N`` or ``!= N`` (N ≥ 1), ``<= N`` (N ≥ 0), ``== 0`` — so true wherever none of
+        them is present; None where ``node`` is no such test."""
+        if (
+            not isinstance(node, ast.Compare)
+            or len(node.ops) != 1
+            or not isinstance(node.comparators[0], ast.Constant)
+            or type(node.comparators[0].value) is not int
+        ):
+            return None
+        op, n = node.ops[0], node.comparators[0].value
+        if not (
+            (isinstance(op, ast.Lt | ast.NotEq) and n >= 1)
+            or (isinstance(op, ast.LtE) and n >= 0)
+            or (isinstance(op, ast.Eq) and n == 0)
+        ):
+            return None
+        try:
+            return self._counts(node.left)
+        except _Unread:
+            return None
 
     def _both_same(self, node: ast.expr, op: type[ast.cmpop]) -> bool:
         """Whether ``node`` compares two names that are the text with ``op`` (session 49)."""
@@ -619,6 +717,8 @@ class _Reader:
             return self._iteration(stmt.iter)
         except _Unread:
             pass
+        with contextlib.suppress(_Unread):
+            return self._searched_loop(stmt)
         if not isinstance(stmt.iter, ast.Name) or len(stmt.body) != 1:
             raise _Unread("loop")
         target, body = stmt.target, stmt.body[0]
@@ -657,6 +757,170 @@ class _Reader:
         if kind != "re" or said != marker:
             raise _Unread("loop body")
         return frozenset(("re", p, flags) for p in patterns)
+
+    def _searched_loop(self, stmt: ast.For) -> frozenset[Atom]:
+        """Session 56 (12p): the atoms of a loop over a module's tuple of patterns (strings or
+        compiled; or (pattern, replacement) pairs) whose body opens with a search of the text by
+        the loop's pattern and goes on to the next pattern where it finds nothing::
+
+            for P, R in _MODULE_PAIRS:
+                m = re.search(P, text[, F])   # re.match, _rx(P).search(text), P.search(text),
+                if m is None[ or …]:          # re.search(_rx(P), text)
+                    continue
+                …                             # anything: run only on a match
+
+        or whose body is that search and ``if m is not None[ and …]: …``, or whose one statement
+        is a loop over the pattern's matches in the text (``for m in
+        list(re.finditer(P, text))[::-1]: …``). Without any pattern's words the first search
+        finds nothing, so the text is as it was at the next one, and so on: the loop leaves the
+        text as it is (its match name is None after it, read as nothing known)."""
+        if not isinstance(stmt.iter, ast.Name) or stmt.iter.id in self.locals:
+            raise _Unread("loop")
+        target = stmt.target
+        names = [target] if isinstance(target, ast.Name) else getattr(target, "elts", [])
+        if not names or len(names) > 2 or not all(isinstance(n, ast.Name) for n in names):
+            raise _Unread("loop target")
+        bound = [n.id for n in names if isinstance(n, ast.Name)]
+        if any(n in (*self.same, *self.lowers, *self.matches) for n in bound):
+            raise _Unread("loop target")
+        value = self.glob.get(stmt.iter.id)
+        if not isinstance(value, tuple) or not value:
+            raise _Unread(stmt.iter.id)
+        pairs = all(isinstance(v, tuple) and len(v) == 2 for v in value)
+        heads = [v[0] for v in value] if pairs else list(value)
+        if (len(names) == 2) != pairs or (not pairs and not isinstance(target, ast.Name)):
+            raise _Unread("loop shape")
+        if all(type(h) is str for h in heads):
+            strings = True
+        elif all(isinstance(h, re.Pattern) for h in heads):
+            strings = False
+        else:
+            raise _Unread(stmt.iter.id)
+        first = stmt.body[0]
+        if isinstance(first, ast.For):
+            # for m in list(re.finditer(P, text))[::-1]: … (the loop's one statement)
+            if len(stmt.body) != 1 or first.orelse:
+                raise _Unread("loop body")
+            bound_inner = [n.id for n in ast.walk(first.target) if isinstance(n, ast.Name)]
+            if any(n in (*self.same, *self.lowers, *self.matches) for n in bound_inner):
+                raise _Unread("loop target")
+            node = first.iter
+            while True:
+                if (
+                    isinstance(node, ast.Call)
+                    and isinstance(node.func, ast.Name)
+                    and node.func.id in _BUILTIN_WRAPS
+                    and node.func.id not in self.glob
+                    and len(node.args) == 1
+                    and not node.keywords
+                ):
+                    node = node.args[0]
+                    continue
+                if (
+                    isinstance(node, ast.Subscript)
+                    and isinstance(node.slice, ast.Slice)
+                    and node.slice.lower is None
+                    and node.slice.upper is None
+                    and isinstance(node.slice.step, ast.UnaryOp)
+                    and isinstance(node.slice.step.op, ast.USub)
+                    and isinstance(node.slice.step.operand, ast.Constant)
+                    and node.slice.step.operand.value == 1
+                ):
+                    node = node.value
+                    continue
+                break
+            kind, flags = self._loop_search(node, bound[0], strings, _ITERATIONS)
+        else:
+            if len(stmt.body) < 2:
+                raise _Unread("loop body")
+            test = stmt.body[1]
+            if (
+                not isinstance(first, ast.Assign)
+                or len(first.targets) != 1
+                or not isinstance(first.targets[0], ast.Name)
+            ):
+                raise _Unread("loop body")
+            match = first.targets[0].id
+            if match in bound or match in self.same or match in self.lowers:
+                raise _Unread("loop body")
+            if not isinstance(test, ast.If) or test.orelse:
+                raise _Unread("loop body")
+            cond = test.test
+            if len(test.body) == 1 and isinstance(test.body[0], ast.Continue):
+                # 'if m is None[ or …]: continue' (true where m is None, the rest not asked)
+                op: type[ast.cmpop] = ast.Is
+                if isinstance(cond, ast.BoolOp) and isinstance(cond.op, ast.Or):
+                    cond = cond.values[0]
+            elif len(stmt.body) == 2:
+                # the body's last statement 'if m is not None[ and …]: …' (false where m is None)
+                op = ast.IsNot
+                if isinstance(cond, ast.BoolOp) and isinstance(cond.op, ast.And):
+                    cond = cond.values[0]
+            else:
+                raise _Unread("loop body")
+            if not (
+                isinstance(cond, ast.Compare)
+                and len(cond.ops) == 1
+                and isinstance(cond.ops[0], op)
+                and isinstance(cond.left, ast.Name)
+                and cond.left.id == match
+                and isinstance(cond.comparators[0], ast.Constant)
+                and cond.comparators[0].value is None
+            ):
+                raise _Unread("loop body")
+            kind, flags = self._loop_search(first.value, bound[0], strings, _SEARCHES)
+            self.matches.pop(match, None)  # None after the loop without the atoms
+        if strings:
+            said = tuple(str(h) for h in heads)
+            self.deps[stmt.iter.id] = ("patterns", "pairs" if pairs else "strings", said)
+            return frozenset((kind, h, flags) for h in said)
+        compiled = tuple((h.pattern, int(h.flags)) for h in heads)
+        self.deps[stmt.iter.id] = ("compiled", "pairs" if pairs else "single", compiled)
+        return frozenset((kind, p, f) for p, f in compiled)
+
+    def _loop_search(
+        self, node: ast.expr, pattern: str, strings: bool, kinds: tuple[str, ...]
+    ) -> tuple[str, int]:
+        """The atom kind and flags of a search (one of ``kinds``) of the text by the loop's
+        pattern name ``pattern`` (the flags of the tuple's strings; the compiled patterns' own
+        are taken where ``strings`` is false: -1)."""
+        if not isinstance(node, ast.Call) or not isinstance(node.func, ast.Attribute):
+            raise _Unread("loop search")
+        func, args = node.func, node.args
+        kw = {k.arg: k.value for k in node.keywords}
+        if func.attr not in kinds:
+            raise _Unread("loop search")
+
+        def named(arg: ast.expr) -> bool:
+            return isinstance(arg, ast.Name) and arg.id == pattern
+
+        def rx(arg: ast.expr) -> bool:  # _rx(P): P compiled case-blind
+            return (
+                isinstance(arg, ast.Call)
+                and len(arg.args) == 1
+                and not arg.keywords
+                and named(arg.args[0])
+                and self._helper(arg.func, _RX)
+            )
+
+        if self._re_module(func.value) and len(args) >= 2:
+            if strings and named(args[0]):  # re.search(P, text[, F])
+                if set(kw) - {"flags"} or len(args) > 3 or (len(args) == 3 and kw):
+                    raise _Unread("loop search")
+                kind = self._searched(args[1])
+                return kind, self._flags(args[2] if len(args) > 2 else kw.get("flags"))
+            if len(args) == 2 and not kw and strings and rx(args[0]):
+                return self._searched(args[1]), int(re.IGNORECASE)  # re.search(_rx(P), text)
+            if len(args) == 2 and not kw and not strings and named(args[0]):
+                return self._searched(args[1]), -1  # re.search(P, text): P's own flags
+            raise _Unread("loop search")
+        if len(args) != 1 or kw:
+            raise _Unread("loop search")
+        if strings and rx(func.value):
+            return self._searched(args[0]), int(re.IGNORECASE)  # _rx(P).search(text)
+        if not strings and named(func.value):
+            return self._searched(args[0]), -1  # P.search(text)
+        raise _Unread("loop search")
 
     def _inert(self, stmt: ast.stmt) -> bool:
         """Whether ``stmt`` only binds names of the step's own that no atom is read of (a
@@ -1083,6 +1347,17 @@ def _holds(fn: Callable[..., Any], deps: tuple[Dep, ...]) -> bool:
                 or fingerprint(value) != was[2]
                 or not _holds(value, was[3])
             ):
+                return False
+        elif kind == "compiled":  # session 56 (12p): a tuple of compiled patterns (or pairs)
+            if not isinstance(value, tuple) or not value:
+                return False
+            pairs = was[1] == "pairs"
+            if any(isinstance(v, tuple) != pairs for v in value):
+                return False
+            heads = [v[0] if pairs and len(v) == 2 else None if pairs else v for v in value]
+            if not all(isinstance(h, re.Pattern) for h in heads):
+                return False
+            if tuple((h.pattern, int(h.flags)) for h in heads if h is not None) != was[2]:
                 return False
         elif kind == "patterns":
             if not isinstance(value, tuple) or not value:
