@@ -163,7 +163,9 @@ Verdict = Literal["exact", "refused", "unclear", "wrong"]
 # committed alone, never opened by the engineers who change the grounder before its one measurement
 # at the end of session 54; tuned on in session 55), blind54 (written in session 55 by another
 # engineer and committed alone, never opened by the engineers who change the grounder before its one
-# measurement at the end of session 55; tuned on in session 56).
+# measurement at the end of session 55; tuned on in session 56), blind55 (written in session 56 by
+# another engineer and committed alone, never opened by the engineers who change the grounder before
+# its one measurement at the end of session 56; to be tuned on in session 57).
 CORPUS_DIR = Path("tests/grounding/paraphrase")
 PARTS = (
     "tuning",
@@ -235,6 +237,7 @@ PARTS = (
     "blind52",
     "blind53",
     "blind54",
+    "blind55",
 )
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z_][A-Za-z0-9_]*)|([>@&|;()]))")
