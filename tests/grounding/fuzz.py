@@ -1644,6 +1644,11 @@ FORGET_CLOSERS = (
     ", I'd have to check.",
     ", it didn't stick.",
     ", I only half heard.",
+    # session 56 (12c): only that it was one of the two, in the past (blind54 #99: "…, the torch
+    # or the hammer, it was one of those." read as a free choice; wordings the lead's fix missed)
+    ", it was one of those.",
+    ", it was one of those ones.",
+    ", it was either one or the other.",
 )
 # ... and a remark after a choice that is no forgetting (the speaker does not mind, or is sure
 # either will do): the choice stands (`free`: the entry; session 50's rule must not take these)
@@ -1661,6 +1666,14 @@ FORGET_OBJECTS = (
     "{P} asked for the {o} or the {x}{c}",
     "It was the {o} or the {x} {p} was after{c}",
     "{P} needs the {o}, or was it the {x}{c}",
+)
+# ... that object or another asked for, then which it was said (session 56, 12c: read on main as
+# the robot's choice): the entry's handover
+FORGET_NAMED = (
+    "{P} asked for the {x} or the {o}, it was the {o}.",
+    "{P} wanted the {o} or the {x}; it was the {o}.",
+    "{P} asked for one of them, the {x} or the {o}, it was the {o}.",
+    "{P} was after the {x} or the {o}, it was the {o} {p} wanted.",
 )
 # ... that person or another ({q}): refused
 FORGET_PEOPLE = (
@@ -1690,7 +1703,7 @@ _FREE_CHOICE = frozenset(
         "fussed",
     )
 )
-FORGET_FORMS = ("closed", "objects", "people", "free")
+FORGET_FORMS = ("closed", "objects", "people", "free", "named")
 # kin (session 50; 12r's "Grandad said she wants the teddy." read teddy>B, session 34's check of
 # a pronoun against the people named knowing first names only): a he / she who wants, or a him /
 # her who is given, said of a person the scene names by a word of kin or a title of the other sex
@@ -1767,6 +1780,9 @@ DONE_AFTER = (
     ", I've already handed that over.",
     ", that's been handed over already.",
     ". I gave that over earlier.",
+    # session 56 (12c): with a time of the handover, or 'that one' (read on main 085b81dc)
+    ", I handed it over this morning.",
+    ", I already handed that one over.",
 )
 # ... ticked off, then another one-of-a-kind object ({x}) for the person: that handover only
 DONE_CHECKLIST = (
@@ -3921,7 +3937,8 @@ def forgets(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     never knew which (`closed`, FORGET_CLOSERS: refused); of one handover of a one-of-a-kind
     object naming its one person by a name and nothing else of the scene, that object or another
     said as the person's want and closed by such a remark (`objects`, FORGET_OBJECTS: refused,
-    both as readings), or that person or another (`people`, FORGET_PEOPLE: refused)."""
+    both as readings), or that person or another (`people`, FORGET_PEOPLE: refused); that object
+    or another asked for, then which it was said (`named`, FORGET_NAMED: the entry)."""
     text = entry.text.strip()
     want = entry.want
     if text.endswith("?") or want is None:
@@ -3954,6 +3971,10 @@ def forgets(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterat
     if people and fitting:
         said = rng.choice(fitting).format(q=rng.choice(people), **keys)
         yield Variant(part, entry.scene, said, None, "refuse", "forgets", (), "people")
+    fitting = [f for f in FORGET_NAMED if _fits(f, scene)]
+    if others and fitting:
+        said = rng.choice(fitting).format(x=_name(scene, rng.choice(others)), **keys)
+        yield Variant(part, entry.scene, said, want, "same", "forgets", (), "named")
 
 
 def kin(part: str, entry: Entry, scene: Scene, rng: random.Random) -> Iterator[Variant]:

@@ -705,7 +705,7 @@ def _lots(entry: Entry, seed: int) -> list[fuzz.Variant]:
 @pytest.mark.parametrize(
     ("text", "want", "forms"),
     [
-        ("Give Bob the apple.", "apple>B", ("objects", "people")),
+        ("Give Bob the apple.", "apple>B", ("objects", "people", "named")),
         ("Give Bob the apple or the cup.", "apple>B | cup>B", ("closed", "free")),
         ("Alice wants the red mug or the blue one.", "mug_red>A | mug_blue>A", ("closed", "free")),
         # a choice said to be free: only `free`
@@ -739,6 +739,8 @@ def test_forgets_are_made_for_a_choice_or_one_handover_of_a_one_of_a_kind_object
             if v.form == "free":
                 assert v.want == entry.want and v.must == "same"
                 assert v.text.endswith(fuzz.FORGET_FREE), v.text
+            elif v.form == "named":
+                assert v.want == entry.want and v.must == "same" and not v.readings
             else:
                 assert v.want is None and v.must == "refuse"
                 assert v.text.endswith(fuzz.FORGET_CLOSERS), v.text
@@ -752,6 +754,8 @@ def test_each_forgetting_names_the_two_it_could_be() -> None:
     said: set[str] = set()
     for seed in range(400):
         for v in _forgets(entry, seed):
+            if v.form == "named":
+                continue
             found = [
                 (f, c, x)
                 for f in (*fuzz.FORGET_OBJECTS, *fuzz.FORGET_PEOPLE)
@@ -767,6 +771,28 @@ def test_each_forgetting_names_the_two_it_could_be() -> None:
             else:
                 assert form in fuzz.FORGET_PEOPLE and x in ("Alice", "Carol") and not v.readings
     assert said == {*fuzz.FORGET_OBJECTS, *fuzz.FORGET_PEOPLE, *fuzz.FORGET_CLOSERS}
+
+
+def test_each_named_forgetting_says_the_entrys_object_last() -> None:
+    """Session 56: "Bob asked for the cup or the apple, it was the apple." is the entry's handover,
+    the other object said only as what it was not."""
+    entry = _entry("cell", "Give Bob the apple.", "apple>B")
+    ids = {"cup": "cup", "water bottle": "bottle", "crisps": "chips"}
+    said: set[str] = set()
+    for seed in range(200):
+        for v in _forgets(entry, seed):
+            if v.form != "named":
+                continue
+            found = [
+                f
+                for f in fuzz.FORGET_NAMED
+                for x in ids
+                if v.text == f.format(p="Bob", P="Bob", o="apple", x=x)
+            ]
+            assert len(found) == 1, v.text
+            said.add(found[0])
+            assert v.want == entry.want and v.text.rstrip(".").endswith(("apple", "Bob wanted"))
+    assert said == set(fuzz.FORGET_NAMED)
 
 
 @pytest.mark.parametrize(
