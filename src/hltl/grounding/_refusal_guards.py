@@ -1107,7 +1107,7 @@ GUARDS: dict[str, Entry | str] = {
             ),
         ),
     ),
-    "hltl.grounding._rewrites56l:_was_one_of56l": ("972ab9fe19a9e73d", ((), ("one",), False), ()),
+    "hltl.grounding._rewrites56l:_was_one_of56l": ("277dbe923255e895", ((), ("one",), False), ()),
     "hltl.grounding._rewrites56r:_done_colon56r": ("2e55c36fa8a35b4e", ((":",), (), False), ()),
     "hltl.grounding._rewrites56r:_give_it_to56r": (
         "4e9e0979e086a88a",

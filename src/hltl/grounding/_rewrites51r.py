@@ -456,11 +456,12 @@ _DONE51R = re.compiled(
     r"(?: already| now| by now| earlier| just now)?\s*(?=[,;.!?]|$)|"
     # … and handed over with no one said, or given said of the thing ("…, I've already handed it
     # over.", "…, I gave it him.", "…, it's been given to him already.": 12c's fuzz)
-    r"\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed|brought|took|sent) "
+    # (brought, took, sent: a short time only — "I brought it in this morning" is no handing)
+    r"\bi(?:'ve| have)?(?: already| just)? (?:brought|took|sent) "
     # session 56 (lead; 12c: "Give Bob the apple, I've already handed that over." read apple>B)
     rf"{_THING_DONE51R}(?: (?P<to2>him|her|them))?(?: (?:over|across|round|back))?"
     r"(?: already| earlier| just now| a minute ago| before)?\s*(?=[,;.!?]|$)"
-    # … given, handed or passed, then when ("…, I handed it over yesterday.")
+    # … given, handed or passed, to whom and when ("…, I handed it over yesterday.")
     r"|\bi(?:'ve| have)?(?: already| just)? (?:gave|given|handed|passed) "
     rf"{_THING_DONE51R}(?: (?P<to4>him|her|them))?(?: (?:over|across|round|back))?"
     rf"(?: to (?P<to5>him|her|them|{_P46R}))?{_WHEN_DONE51R}\s*(?=[,;.!?]|$)"
@@ -977,19 +978,19 @@ def _why_fix51r(text: str, lexicon: Lexicon) -> str:
     return out
 
 
-_BACK51R = re.compiled(
+# the words of a correction cue (the one list both patterns below are built from)
+_BACK_WORDS51R = (
     r"\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|"
-    r"actually|i mean|i meant)\b",
-    _F,
+    r"actually|i mean|i meant)"
 )
+_BACK51R = re.compiled(rf"{_BACK_WORDS51R}\b", _F)
 
 # session 56 (lead; 12c's fuzz on blind54 #149: "Put the bottle, no, just give the bottle to Person
 # A, that's been handed over already." read bottle>A): a correction cue right before the remark
 # ("The red book for Noah, no, he's finished that, the green one"; "…, and no, not Lily, she's had
 # hers.") says it of what is taken back; one said before a new request does not
 _BACK_JUST51R = re.compiled(
-    r"\b(?:no|sorry|wait|hang on|hold on|scratch that|strike that|my mistake|my bad|whoops|oops|"
-    r"actually|i mean|i meant)\s*[,;:.!?-]*\s*"
+    rf"{_BACK_WORDS51R}\s*[,;:.!?-]*\s*"
     # … or the person it takes back or gives to, said after the cue ("…, and no, not Lily, she's
     # had hers.", "Stapler to Priya, no, to Sam, Priya's got one.")
     r"(?:(?:not|to|for) [\w' ]{1,30}?\s*[,;:.!?-]*\s*)?(?:(?:and|but|so)\s+)?$",

@@ -7,9 +7,9 @@ from collections.abc import Callable
 from hltl.grounding import gate as re
 from hltl.grounding._normalise1 import _F
 from hltl.grounding._rewrites49l import choice_forgotten49l
-from hltl.grounding._rewrites50l import _FREE50L, _has_choice50l
+from hltl.grounding._rewrites50l import _FREE50L
 from hltl.grounding.lexicon import Lexicon
-from hltl.grounding.tree import Node
+from hltl.grounding.tree import Node, has_choice
 
 # -- the speaker remembers only that it was one of the options ------------------------------
 #
@@ -36,9 +36,9 @@ def _was_one_of56l(text: str, node: Node, lexicon: Lexicon) -> None:
     refused naming the options (session 49's `choice_forgotten49l`), unless the text leaves the
     choice free ("either's fine")."""
     low = text.lower()
-    if "one" not in low or ("was" not in low and "twas" not in low and "were" not in low):
+    if "one" not in low or ("was" not in low and "were" not in low):  # ('twas holds 'was')
         return
-    if not _has_choice50l(node):
+    if not has_choice(node):
         return
     m = _ONE_OF56L.search(text)
     # the remark's own 'either' ("it was either one or the other") leaves nothing free
